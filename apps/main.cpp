@@ -1,0 +1,33 @@
+// lancer: parse arguments, run one subcommand. Everything else is library code.
+#include <cstdio>
+#include <exception>
+#include <vector>
+
+#include "commands.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"lancer: a ray tracer for hand-written POV-Ray-like scenes"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "lancer 0.1.0");
+    std::vector<lancer::app::Command> commands = {
+        lancer::app::add_check_command(app),
+        lancer::app::add_render_command(app),
+        lancer::app::add_plugins_command(app),
+    };
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        // CLI11 prints usage errors as "error: ..." with the offending argument.
+        int status = app.exit(error);
+        return status == 0 ? 0 : 2;
+    }
+    try {
+        for (const auto& command : commands) {
+            if (command.cli->parsed()) return command.run();
+        }
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "lancer: error: %s\n", error.what());
+        return 1;
+    }
+    return 2;
+}

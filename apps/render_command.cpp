@@ -1,0 +1,13 @@
+// `lancer render`.
+#include "commands.h"
+
+namespace lancer::app {
+
+Command add_render_command(CLI::App& app) {
+    Command command;
+    command.cli = app.add_subcommand("render", "render");
+    command.run = [] { return 1; };  // TODO(host): implemented with the plugin host
+    return command;
+}
+
+}  // namespace lancer::app

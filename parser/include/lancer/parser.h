@@ -1,0 +1,59 @@
+// The front end's public face: scene text in, scene graph or located
+// diagnostics out. Never throws for bad input and never exits.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "lancer/scene_graph.h"
+
+namespace lancer {
+
+struct Diagnostic {
+    enum class Severity { Error, Warning, Note };
+    Severity severity = Severity::Error;
+    sg::SourceLocation location;
+    std::string message;
+    // Where the file holding `location` was included from, innermost first.
+    std::vector<sg::SourceLocation> include_chain;
+};
+
+struct ParseOptions {
+    // Searched after the including file's folder: LANCER_INCLUDE_PATH's
+    // folders are appended by default_include_path(), then lancer's include/.
+    std::vector<std::string> include_path;
+    // Values of POV's image_width / image_height until a render_settings
+    // block sets them (the command line's size when given).
+    int image_width = 640;
+    int image_height = 480;
+    bool image_size_from_command_line = false;
+    // Resource limits: exceeding one is a located error, never a hang.
+    long max_loop_iterations = 10'000'000;
+    int max_include_depth = 64;
+    int max_macro_depth = 200;
+    int max_nesting_depth = 256;
+};
+
+struct ParseResult {
+    std::optional<sg::SceneGraph> scene;  // set iff there is no error
+    std::vector<Diagnostic> diagnostics;  // errors, warnings and notes in order
+    bool ok() const { return scene.has_value(); }
+};
+
+// The scene's folder is searched first, then options.include_path.
+ParseResult parse_scene_file(const std::string& path, const ParseOptions& options = {});
+// `name` stands for the file name in diagnostics; includes resolve against
+// the current directory, then options.include_path.
+ParseResult parse_scene_string(std::string_view text, const std::string& name = "<string>",
+                               const ParseOptions& options = {});
+
+// LANCER_INCLUDE_PATH's folders, then lancer's own include/ folder.
+std::vector<std::string> default_include_path();
+
+// "file:line:col: error: message", then the source line and a caret under
+// the column, then "note: included from file:line" for each include.
+std::string format_diagnostic(const Diagnostic& diagnostic);
+
+}  // namespace lancer

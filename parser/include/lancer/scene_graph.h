@@ -1,0 +1,249 @@
+// The scene graph: what a scene file means, after every directive has run and
+// every expression has been folded. The evaluator builds it; render/ compiles
+// it into a RenderScene. It knows nothing of Embree, plugins or the AST.
+//
+// Conventions (POV-Ray's): left-handed, +y up, lengths in scene units,
+// colours linear RGB. Every node carries the source location it came from so
+// later stages can report errors where the user can act on them.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace lancer::sg {
+
+using Vec2 = glm::dvec2;
+using Vec3 = glm::dvec3;
+using Mat4 = glm::dmat4;  // column-major, acts on column vectors (GLM)
+
+struct SourceLocation {
+    std::shared_ptr<const std::string> file;  // path as the user named it
+    int line = 0;                              // 1-based; 0 = unknown
+    int column = 0;                            // 1-based
+};
+
+// A colour with POV-Ray's optional filter and transmit channels.
+struct Color {
+    Vec3 rgb{0.0};
+    double filter = 0.0;    // fraction of light passing through, tinted by rgb
+    double transmit = 0.0;  // fraction of light passing through untinted
+};
+
+// ---------------------------------------------------------------- textures
+
+enum class ImageFormat { Png, Jpeg, Exr, Hdr, Tga, Tiff, Unknown };
+
+// POV-Ray map_type values: 0 planar, 1 spherical, 2 cylindrical, 5 torus.
+enum class MapType { Planar = 0, Spherical = 1, Cylindrical = 2, Torus = 5, UV = 100 };
+
+struct ImageMap {
+    std::string path;  // resolved to an existing file at evaluation time
+    ImageFormat format = ImageFormat::Unknown;
+    // lancer maps image_map through the surface (u,v) by default, which is
+    // what a user of meshes and OBJ files expects; an explicit map_type
+    // selects POV-Ray's projections.
+    MapType map_type = MapType::UV;
+    int interpolate = 2;    // 0 none, 2 bilinear, 4 normalized distance (POV)
+    bool once = false;      // no repeat outside [0,1]^2
+    double filter_all = 0.0;
+    double transmit_all = 0.0;
+    bool srgb = true;       // 8-bit formats are sRGB-encoded; EXR/HDR are linear
+    SourceLocation location;
+};
+
+struct Pigment {
+    enum class Kind { Solid, Checker, Image };
+    Kind kind = Kind::Solid;
+    Color color;                 // Solid; POV default pigment is black
+    Color checker[2] = {{Vec3(1.0)}, {Vec3(0.0, 1.0, 0.0)}};  // POV defaults: white, green
+    ImageMap image;              // Image
+    // Pigment-space transform (scale/rotate/translate written inside the
+    // pigment or texture); maps object space to pattern space.
+    Mat4 pattern_from_object{1.0};
+    SourceLocation location;
+};
+
+struct Reflection {
+    Vec3 min{0.0};          // reflectance at normal incidence ...
+    Vec3 max{0.0};          // ... and at grazing incidence
+    double falloff = 1.0;   // POV's falloff exponent
+    bool fresnel = false;   // use the interior's ior instead of falloff
+    double exponent = 1.0;
+    double metallic = 0.0;
+};
+
+// Finish defaults are POV-Ray 3.7's (texture.cpp:Create_Finish).
+struct Finish {
+    Vec3 ambient{0.1};
+    Vec3 emission{0.0};     // radiance emitted = emission * pigment colour
+    double diffuse = 0.6;
+    double brilliance = 1.0;
+    double specular = 0.0;  // Blinn lobe albedo
+    double roughness = 0.05;
+    double phong = 0.0;     // Phong lobe albedo
+    double phong_size = 40.0;
+    double metallic = 0.0;
+    Reflection reflection;
+    SourceLocation location;
+};
+
+struct Interior {
+    double ior = 1.0;
+    SourceLocation location;
+};
+
+// A texture in POV terms: pigment + finish (+ the object's interior, which
+// POV keeps separately but every integrator needs at the same hit).
+struct Material {
+    Pigment pigment;
+    Finish finish;
+    Interior interior;
+    std::string name;  // the #declare'd name, if any, for summaries and errors
+    SourceLocation location;
+};
+using MaterialRef = std::shared_ptr<const Material>;
+
+// ------------------------------------------------------------------ shapes
+
+struct Sphere {
+    Vec3 center{0.0};
+    double radius = 1.0;
+};
+
+// Points p with dot(p, normal) = distance (POV's plane { normal, distance }).
+struct Plane {
+    Vec3 normal{0.0, 1.0, 0.0};
+    double distance = 0.0;
+};
+
+struct Box {
+    Vec3 corner1{-1.0};
+    Vec3 corner2{1.0};
+};
+
+// Indexed triangles. `triangle`, `smooth_triangle`, `mesh`, `mesh2` and
+// `obj_mesh` all produce one; a mesh reused through `object { Name }` is the
+// same shared_ptr, so the renderer can build it once and instance it.
+struct TriangleMesh {
+    struct Face {
+        int position[3];
+        int normal[3] = {-1, -1, -1};  // -1: flat shading
+        int uv[3] = {-1, -1, -1};      // -1: barycentric (u,v)
+        int material = -1;             // index into materials; -1: the object's
+    };
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;
+    std::vector<Vec2> uvs;
+    std::vector<Face> faces;
+    std::vector<MaterialRef> materials;  // per-face textures, MTL materials
+    std::string source;                  // OBJ path, when loaded from a file
+};
+using MeshRef = std::shared_ptr<const TriangleMesh>;
+
+struct Object;
+struct Group {
+    std::vector<Object> children;
+};
+
+struct Object {
+    enum class Kind { Sphere, Plane, Box, Triangle, SmoothTriangle, Mesh, Mesh2, ObjMesh, Union };
+    Kind kind = Kind::Sphere;
+    std::variant<Sphere, Plane, Box, MeshRef, Group> shape;
+    // Maps this object's own space to its parent's space (the group it is
+    // in, or the world). Children of a union compose with their parent's.
+    Mat4 parent_from_object{1.0};
+    MaterialRef material;  // null: inherit from the enclosing group, else default
+    bool no_shadow = false;
+    bool hollow = false;
+    std::string name;  // the #declare'd name it was instanced from, if any
+    SourceLocation location;
+};
+
+// ------------------------------------------------------------------ lights
+
+struct Light {
+    enum class Kind { Point, Directional, AreaRectangle, AreaSphere };
+    Kind kind = Kind::Point;
+    Vec3 position{0.0};     // world space, transforms applied
+    Vec3 color{1.0};        // see docs/scene-language.md for the unit
+    Vec3 point_at{0.0, 0.0, 1.0};  // Directional: light travels position -> point_at
+    // AreaRectangle: the rectangle position ± axis1/2 ± axis2/2.
+    Vec3 axis1{0.0};
+    Vec3 axis2{0.0};
+    int samples1 = 1;   // POV's n1, n2: accepted, used as a sampling hint
+    int samples2 = 1;
+    bool jitter = false;
+    int adaptive = 0;
+    bool circular = false;
+    bool orient = false;
+    double radius = 0.0;  // AreaSphere
+    // POV's fade: attenuation 2 / (1 + (d / fade_distance)^fade_power) when
+    // fade_distance > 0; otherwise physical inverse-square falloff.
+    double fade_distance = 0.0;
+    double fade_power = 0.0;
+    bool parallel = false;
+    SourceLocation location;
+};
+
+// ------------------------------------------------------------------ camera
+
+// Resolved as POV-Ray 3.7 does (pov-3.7-semantics.md §1): the ray through
+// normalized image coordinates (x0, y0) in [-0.5, 0.5] is
+// normalize(direction + x0 * right + y0 * up) from location (perspective),
+// or direction from location + x0 * right + y0 * up (orthographic).
+struct Camera {
+    enum class Projection { Perspective, Orthographic };
+    Projection projection = Projection::Perspective;
+    Vec3 location{0.0};
+    Vec3 direction{0.0, 0.0, 1.0};
+    Vec3 right{1.33, 0.0, 0.0};
+    Vec3 up{0.0, 1.0, 0.0};
+    SourceLocation location_in_source;
+};
+
+// ---------------------------------------------------------------- settings
+
+struct GlobalSettings {
+    double assumed_gamma = 1.0;
+    int max_trace_level = 5;
+    Vec3 ambient_light{1.0};
+    double adc_bailout = 1.0 / 255.0;
+};
+
+// One integrator parameter as written in the scene, kept typed and located
+// so the plugin host can reject a parameter the plugin does not declare.
+struct ParameterValue {
+    std::variant<double, Vec3, std::string, bool> value;
+    SourceLocation location;
+};
+
+// lancer extension: `render_settings { ... }`. Unset fields take the command
+// line's value, then lancer's default.
+struct RenderSettings {
+    std::optional<std::string> integrator;
+    std::map<std::string, ParameterValue> parameters;
+    std::optional<int> width;
+    std::optional<int> height;
+    std::optional<int> samples;
+    std::optional<std::uint64_t> seed;
+    SourceLocation location;
+};
+
+struct SceneGraph {
+    std::optional<Camera> camera;  // absent: POV's default camera
+    std::vector<Light> lights;
+    std::vector<Object> objects;
+    Vec3 background{0.0};
+    GlobalSettings global;
+    RenderSettings render;
+    std::string main_file;  // the scene file's path
+};
+
+}  // namespace lancer::sg

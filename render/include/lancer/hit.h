@@ -1,0 +1,46 @@
+// What a ray finds: the nearest surface point and everything shading needs.
+#pragma once
+
+#include <cstdint>
+
+#include "lancer/ray.h"
+
+namespace lancer {
+
+class Material;
+class Light;
+
+struct Hit {
+    float t = kInfinity;         // ray parameter of the hit
+    Vec3 position{0.0f};         // world space
+    Vec3 geometric_normal{0.0f}; // unit, the surface's own orientation (not flipped)
+    Vec3 shading_normal{0.0f};   // unit, interpolated (smooth meshes), same side as geometric
+    Vec2 uv{0.0f};               // surface coordinates, see docs/scene-language.md per shape
+    // Conservative bound on the absolute floating-point error of `position`
+    // per axis; spawn_ray offsets by it so new rays never re-hit this surface.
+    Vec3 position_error{0.0f};
+    const Material* material = nullptr;  // never null for a hit the scene returns
+    const Light* emitter = nullptr;      // area light or emissive object, else null
+    std::uint32_t object_id = 0;         // index of the world-space instance
+    std::uint32_t primitive_id = 0;
+    bool casts_shadow = true;            // false for no_shadow objects
+
+    // Unit normals turned to face the side `toward` (e.g. -ray.direction):
+    // POV-Ray surfaces are two-sided.
+    Vec3 facing_normal(const Vec3& toward) const {
+        return glm::dot(geometric_normal, toward) < 0.0f ? -shading_normal : shading_normal;
+    }
+    bool is_front_face(const Vec3& toward) const { return glm::dot(geometric_normal, toward) >= 0.0f; }
+
+    // Origin offset off the surface along the geometric normal, on the side
+    // `direction` leaves towards, by position_error (pbrt's OffsetRayOrigin).
+    Vec3 offset_origin(const Vec3& direction) const;
+    // A ray leaving the surface in `direction` (normalised here).
+    Ray spawn_ray(const Vec3& direction) const;
+    // A shadow ray from the surface towards `target`: unit direction, t_max
+    // the distance less a margin scaled to the magnitude of `target`, so a
+    // light lying on another surface does not shadow itself.
+    Ray spawn_ray_to(const Vec3& target) const;
+};
+
+}  // namespace lancer

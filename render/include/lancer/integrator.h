@@ -1,0 +1,52 @@
+// The integrator plugin ABI. A plugin is one shared library exporting
+//     extern "C" const lancer::IntegratorDescriptor* lancer_integrator_descriptor();
+// (write LANCER_EXPORT_INTEGRATOR(descriptor) at the end of the .cpp). The
+// host owns the pixel loop, film, threads, progress and output; a plugin
+// only supplies the radiance carried by one camera ray.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+#include "lancer/parameters.h"
+#include "lancer/ray.h"
+#include "lancer/render_scene.h"
+#include "lancer/sampler.h"
+
+namespace lancer {
+
+// Bump whenever a header a plugin compiles against changes layout or
+// virtual tables; the host refuses any other version.
+inline constexpr std::uint32_t kPluginAbiVersion = 1;
+
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+    // Once per render, before any radiance() call (precomputation).
+    virtual void prepare(const RenderScene& scene) {}
+    // Radiance arriving at the camera along `ray`. Called concurrently from
+    // many threads: must not mutate the integrator. Use only `sampler` for
+    // randomness.
+    virtual Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const = 0;
+    // True if one sample per pixel gives the exact answer (no randomness).
+    virtual bool is_deterministic() const { return false; }
+};
+
+struct IntegratorDescriptor {
+    std::uint32_t abi_version;
+    const char* name;         // what `-i NAME` selects; also the library's file name
+    const char* description;  // one line
+    const ParameterDecl* parameters;
+    std::size_t parameter_count;
+    // Creates the integrator; parameters are validated and carry defaults.
+    std::unique_ptr<Integrator> (*create)(const ParameterSet& parameters);
+};
+
+}  // namespace lancer
+
+#define LANCER_EXPORT_INTEGRATOR(descriptor)                                                  \
+    extern "C" __attribute__((visibility("default"))) const ::lancer::IntegratorDescriptor*  \
+    lancer_integrator_descriptor() {                                                         \
+        return &(descriptor);                                                                \
+    }

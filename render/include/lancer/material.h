@@ -1,0 +1,104 @@
+// The one material model every integrator shares (docs/integrators.md).
+//
+// A surface scatters light through up to four components, each weighted by
+// the finish and the pigment at the hit:
+//   - a diffuse lobe            f = diffuse * pigment / pi * cos^(brilliance-1)
+//   - a Phong lobe              f = phong * (n+2)/(2 pi) * max(0, R.wi)^n, n = phong_size
+//   - a Blinn specular lobe     f = specular * (k+8)/(8 pi) * max(0, N.H)^k, k = 1/roughness
+//   - a perfect mirror          weight reflectance(cos) (POV's reflection{min max falloff})
+//   - a smooth dielectric       weight transmittance (pigment filter/transmit), Snell with ior
+// plus emission (radiance = emission * pigment) and POV's ambient term
+// (ambient * pigment * ambient_light; used only by integrators without
+// indirect light).
+//
+// The glossy lobes are normalised so `phong` and `specular` are albedos (as
+// POV-Ray's `phong albedo` / `specular albedo`), which keeps every BSDF
+// energy conserving and lets the direct-lighting integrators and the path
+// tracer agree on directly lit scenes.
+#pragma once
+
+#include "lancer/hit.h"
+#include "lancer/ray.h"
+
+namespace lancer {
+
+class Texture;
+
+// Everything a material needs to know about one hit, with the pigment
+// already looked up.
+struct SurfaceSample {
+    Color pigment{0.0f};   // rgb of the pigment at the hit (linear)
+    float filter = 0.0f;   // pigment's filter at the hit
+    float transmit = 0.0f; // pigment's transmit at the hit
+};
+
+struct MaterialParameters {
+    const Texture* pigment = nullptr;  // never null after compilation
+    Color ambient{0.1f};
+    Color emission{0.0f};
+    float diffuse = 0.6f;
+    float brilliance = 1.0f;
+    float specular = 0.0f;
+    float roughness = 0.05f;
+    float phong = 0.0f;
+    float phong_size = 40.0f;
+    float metallic = 0.0f;
+    Color reflection_min{0.0f};
+    Color reflection_max{0.0f};
+    float reflection_falloff = 1.0f;
+    bool reflection_fresnel = false;
+    float ior = 1.0f;
+};
+
+class Material {
+public:
+    explicit Material(const MaterialParameters& parameters) : m_params(parameters) {}
+
+    const MaterialParameters& parameters() const { return m_params; }
+
+    // Pigment colour, filter and transmit at the hit (texture lookup).
+    SurfaceSample sample_surface(const Hit& hit) const;
+
+    // Fraction of light that passes through the surface: filter + transmit,
+    // in [0, 1]. Diffuse and glossy lobes are scaled by (1 - it).
+    float transparency(const SurfaceSample& surface) const;
+    // Colour of transmitted light per unit transparency: filter tints by the
+    // pigment, transmit does not.
+    Color transmission_tint(const SurfaceSample& surface) const;
+
+    // Radiance emitted towards the viewer (two-sided).
+    Color emitted(const SurfaceSample& surface) const;
+    // POV's ambient term, ambient * pigment * ambient_light.
+    Color ambient(const SurfaceSample& surface, const Color& ambient_light) const;
+
+    // The non-delta BRDF (diffuse + phong + specular, times opacity) for
+    // light arriving from wi and leaving towards wo. All vectors unit; n is
+    // the shading normal facing wo. Returns 0 when wi is below the surface.
+    Color brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const;
+    // The diffuse part alone (gather replaces only this term).
+    Color diffuse_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo,
+                       const Vec3& wi) const;
+    // The glossy part alone (phong + specular).
+    Color glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo,
+                      const Vec3& wi) const;
+
+    // Mirror reflectance for cos_i = dot(n, wo) (POV's reflection block; with
+    // fresnel, Fresnel of ior scaled between min and max). Zero: no mirror.
+    Color mirror_reflectance(const SurfaceSample& surface, float cos_i, bool entering) const;
+    bool has_mirror() const;
+    bool has_glossy() const { return m_params.phong > 0.0f || m_params.specular > 0.0f; }
+    bool is_emissive() const;
+
+private:
+    MaterialParameters m_params;
+};
+
+// Reflect `d` (pointing at the surface) about unit normal n.
+inline Vec3 reflect(const Vec3& d, const Vec3& n) { return d - 2.0f * glm::dot(d, n) * n; }
+// Refract `d` (unit, pointing at the surface) through unit n (facing against
+// d) with eta = n_incident / n_transmitted. False on total internal reflection.
+bool refract(const Vec3& d, const Vec3& n, float eta, Vec3& transmitted);
+// Unpolarised Fresnel reflectance of a dielectric interface.
+float fresnel_dielectric(float cos_i, float eta);
+
+}  // namespace lancer
