@@ -31,6 +31,10 @@ public:
     virtual Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const = 0;
     // True if one sample per pixel gives the exact answer (no randomness).
     virtual bool is_deterministic() const { return false; }
+    // The sampler the host gives radiance(); one per thread, cloned.
+    virtual std::unique_ptr<Sampler> make_sampler(std::uint64_t seed) const {
+        return make_independent_sampler(seed);
+    }
 };
 
 struct IntegratorDescriptor {
