@@ -25,4 +25,11 @@ public:
 // (seed, pixel, sample, dimension).
 std::unique_ptr<Sampler> make_independent_sampler(std::uint64_t seed);
 
+// Owen-scrambled Sobol points (Joe–Kuo direction numbers), one independent
+// scramble per (seed, pixel, dimension); the sample index runs through the
+// sequence, so a pixel's first 2^k samples are stratified in every 2D
+// projection of the table. Dimensions beyond the table fall back to hashed
+// independent values. Best with power-of-two sample counts.
+std::unique_ptr<Sampler> make_sobol_sampler(std::uint64_t seed);
+
 }  // namespace lancer
