@@ -1,0 +1,151 @@
+// The seed's simple local lighting model, shared by the shadow, whitted and
+// gather integrators (docs/integrators.md): at one surface hit, the light
+// reflected from every light of the simple model (point and directional
+// lights, and the point proxy of every area light and emitter), the
+// surface's emission and POV's ambient term, with or without shadow rays.
+// Header-only: the plugins inline it, liblancer's ABI is untouched.
+#pragma once
+
+#include <cmath>
+
+#include "lancer/render_scene.h"
+
+namespace lancer {
+
+// One surface hit as seen along one ray, with the pigment looked up once.
+struct ShadingContext {
+    const Hit& hit;
+    const Material& material;
+    SurfaceSample surface;
+    Vec3 wo;        // unit, from the hit towards where the ray came from
+    Vec3 normal;    // unit shading normal on the side of wo (surfaces are two-sided)
+    bool entering;  // the ray arrives on the front face (from outside a closed object)
+};
+
+inline ShadingContext make_shading_context(const Hit& hit, const Ray& ray) {
+    const Vec3 wo = -glm::normalize(ray.direction);
+    return ShadingContext{hit, *hit.material, hit.material->sample_surface(hit), wo,
+                          hit.facing_normal(wo), hit.is_front_face(wo)};
+}
+
+// Reflected radiance split by lobe, so an integrator can weight or replace
+// one lobe (whitted takes diffuse away from mirrors, gather replaces it).
+struct LobeRadiance {
+    Color diffuse{0.0f};
+    Color glossy{0.0f};
+
+    Color total() const { return diffuse + glossy; }
+    bool is_black() const { return lancer::is_black(diffuse) && lancer::is_black(glossy); }
+    LobeRadiance& operator+=(const LobeRadiance& other) {
+        diffuse += other.diffuse;
+        glossy += other.glossy;
+        return *this;
+    }
+    LobeRadiance& operator*=(const Color& weight) {
+        diffuse *= weight;
+        glossy *= weight;
+        return *this;
+    }
+};
+
+inline bool is_finite(const Color& c) {
+    return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
+}
+
+// Radiance the surface reflects towards wo from one light sample, without
+// occlusion: brdf * |cos| * radiance / pdf. Black for an empty sample and
+// for a degenerate one (a proxy lying on the shading point itself gives
+// 0/0), so a lamp's own surface never turns NaN.
+inline LobeRadiance reflect_light_sample(const ShadingContext& at, const LightSample& sample) {
+    if (!(sample.pdf > 0.0f) || lancer::is_black(sample.radiance)) return {};
+    const Color incident =
+        sample.radiance * (std::abs(glm::dot(at.normal, sample.wi)) / sample.pdf);
+    LobeRadiance reflected;
+    reflected.diffuse = at.material.diffuse_brdf(at.surface, at.normal, at.wo, sample.wi) * incident;
+    if (at.material.has_glossy())
+        reflected.glossy = at.material.glossy_brdf(at.surface, at.normal, at.wo, sample.wi) * incident;
+    if (!is_finite(reflected.diffuse) || !is_finite(reflected.glossy)) return {};
+    return reflected;
+}
+
+// How much light leaving `target` reaches the hit: 1 when nothing lies
+// between, 0 behind an opaque shadow caster. Transparent surfaces on the way
+// filter it by transparency * transmission tint without bending it
+// (POV-Ray's filtered shadows), so a fully transmitting object casts no
+// shadow. `own_light`'s surface is skipped: the proxy of a sphere light sits
+// at its centre, inside the light's own geometry.
+inline Color transmittance_to(const RenderScene& scene, const Hit& from, const Vec3& target,
+                              const Light* own_light = nullptr) {
+    Ray ray = from.spawn_ray_to(target);
+    if (!scene.occluded(ray)) return Color(1.0f);  // the common case: one cheap query
+
+    // Walk the surfaces in between, nearest first. The bound only guards
+    // against pathological stacks of coplanar transparent faces.
+    constexpr int kMaxSurfacesCrossed = 64;
+    Color throughput(1.0f);
+    for (int crossed = 0; crossed < kMaxSurfacesCrossed; ++crossed) {
+        Hit blocker;
+        if (!scene.intersect(ray, blocker)) return throughput;
+        const bool filters = blocker.casts_shadow && (own_light == nullptr || blocker.emitter != own_light);
+        if (filters) {
+            const Material& material = *blocker.material;
+            const SurfaceSample surface = material.sample_surface(blocker);
+            const float transparency = material.transparency(surface);
+            if (!(transparency > 0.0f)) return Color(0.0f);
+            throughput *= transparency * material.transmission_tint(surface);
+            if (lancer::is_black(throughput)) return throughput;
+        }
+        ray = blocker.spawn_ray_to(target);
+    }
+    return Color(0.0f);
+}
+
+enum class Shadows {
+    None,  // every light reaches every surface facing it (raycast, gather's secondary hits)
+    Hard,  // one shadow ray per light towards its (proxy) position
+};
+
+// The light that stands in for `light` in the simple model: itself for point
+// and directional lights, its proxy for area lights and emitters.
+inline const Light& simple_model_light(const Light& light) {
+    return light.is_delta() ? light : light.proxy();
+}
+
+// Reflected light from one light of the simple model (see simple_model_light).
+inline LobeRadiance reflect_simple_light(const RenderScene& scene, const ShadingContext& at,
+                                         const Light& light, Shadows shadows) {
+    const Light& stand_in = simple_model_light(light);
+    // Point and directional lights ignore u: one sample is exact.
+    const LightSample sample = stand_in.sample(at.hit.position, Vec2(0.5f));
+    LobeRadiance reflected = reflect_light_sample(at, sample);
+    if (shadows == Shadows::Hard && !reflected.is_black())
+        reflected *= transmittance_to(scene, at.hit, sample.point, &light);
+    return reflected;
+}
+
+// Direct light from every light of the simple model. Iterates scene.lights()
+// and takes each one's stand-in, which is exactly scene.local_lights() but
+// keeps the identity of the area light a proxy stands for (for shadows).
+inline LobeRadiance simple_direct_light(const RenderScene& scene, const ShadingContext& at,
+                                        Shadows shadows) {
+    LobeRadiance total;
+    for (const Light* light : scene.lights()) total += reflect_simple_light(scene, at, *light, shadows);
+    return total;
+}
+
+// Radiance the surface emits towards wo: the light's own emission when the
+// hit lies on an area light or emitter, else the material's.
+inline Color surface_emission(const ShadingContext& at) {
+    if (at.hit.emitter != nullptr) return at.hit.emitter->emitted(at.hit, at.wo);
+    return at.material.emitted(at.surface);
+}
+
+// POV's ambient term, scaled by the surface's opacity as POV-Ray does: the
+// light of a transparent surface is what passes through it, so a fully
+// transmitting object shows no ambient (nor diffuse, nor highlights).
+inline Color opaque_ambient(const RenderScene& scene, const ShadingContext& at) {
+    const float opacity = 1.0f - at.material.transparency(at.surface);
+    return opacity * at.material.ambient(at.surface, scene.options().ambient_light);
+}
+
+}  // namespace lancer
