@@ -1,0 +1,184 @@
+// `lancer render` and `lancer plugins` as a user meets them: bad arguments
+// get an "error:" line and a non-zero status, and nothing is written unless
+// the whole render succeeds.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "run_command.h"
+
+namespace lancer::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+#define EXPECT_CONTAINS(text, part) \
+    EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
+
+class CliRender : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_folder = binary_path("tests/cli_render_out/") +
+                   ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        fs::remove_all(m_folder);
+        fs::create_directories(m_folder);
+        m_scene = m_folder / "ball.pov";
+        std::ofstream(m_scene) << "camera { location <0, 0, -5> look_at <0, 0, 0> angle 40 }\n"
+                                  "light_source { <5, 5, -5> color rgb <1, 1, 1> }\n"
+                                  "sphere { <0, 0, 0>, 1 pigment { color rgb <1, 0.5, 0.2> } }\n";
+    }
+
+    // The scene, a small size and the output in this test's folder.
+    CommandResult render(const std::string& extra, const std::string& output = "out.png") {
+        return run_lancer("render '" + m_scene.string() + "' --width 32 --height 24 -o '" +
+                          (m_folder / output).string() + "' " + extra);
+    }
+    bool wrote(const std::string& output = "out.png") const { return fs::exists(m_folder / output); }
+    bool folder_holds_only_the_scene() const {
+        int count = 0;
+        for ([[maybe_unused]] const auto& entry : fs::directory_iterator(m_folder)) ++count;
+        return count == 1;
+    }
+
+    fs::path m_folder;
+    fs::path m_scene;
+};
+
+TEST_F(CliRender, WritesTheImageAndASummary) {
+    const CommandResult result = render("");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_TRUE(wrote());
+    EXPECT_CONTAINS(result.output, "32x24");
+    EXPECT_CONTAINS(result.output, "1 spp");
+    EXPECT_CONTAINS(result.output, "raycast");
+}
+
+TEST_F(CliRender, EveryBuiltInIntegratorRenders) {
+    for (const std::string name : {"raycast", "normal", "albedo", "depth"}) {
+        const CommandResult result = render("-i " + name + " --quiet", name + ".exr");
+        EXPECT_EQ(result.exit_code, 0) << name << ": " << result.output;
+        EXPECT_TRUE(wrote(name + ".exr")) << name;
+    }
+}
+
+TEST_F(CliRender, DefaultOutputIsTheSceneNameInTheCurrentFolder) {
+    const CommandResult result =
+        run_lancer("render '" + m_scene.string() + "' --width 8 --height 6 --quiet; ls ball.png && rm ball.png");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+}
+
+TEST_F(CliRender, UnknownIntegratorListsWhatExists) {
+    const CommandResult result = render("-i no_such_integrator");
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_CONTAINS(result.output, "error:");
+    EXPECT_CONTAINS(result.output, "no integrator plugin 'no_such_integrator'");
+    EXPECT_CONTAINS(result.output, "raycast");
+    EXPECT_TRUE(folder_holds_only_the_scene());
+}
+
+TEST_F(CliRender, BadArgumentsAreUsageErrors) {
+    const struct {
+        const char* arguments;
+        const char* message;
+    } cases[] = {
+        {"--crop 1,2,3", "--crop expects four integers"},
+        {"--crop a,b,c,d", "--crop expects four integers"},
+        {"--crop 10,10,5,20", "not a non-empty rectangle"},
+        {"--crop 0,0,33,24", "not a non-empty rectangle"},
+        {"--width 0", "--width must be a positive"},
+        {"--height -3", "--height must be a positive"},
+        {"--spp 0", "--spp must be at least 1"},
+        {"-p ambient", "-p expects key=value"},
+        {"-p =1", "-p expects key=value"},
+    };
+    for (const auto& c : cases) {
+        const CommandResult result = render(c.arguments);
+        EXPECT_EQ(result.exit_code, 2) << c.arguments << ": " << result.output;
+        EXPECT_CONTAINS(result.output, "error:");
+        EXPECT_CONTAINS(result.output, c.message);
+    }
+    EXPECT_TRUE(folder_holds_only_the_scene());
+}
+
+TEST_F(CliRender, UnknownOutputExtension) {
+    const CommandResult result = render("", "out.xyz");
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_CONTAINS(result.output, "unknown image extension");
+    EXPECT_TRUE(folder_holds_only_the_scene());
+}
+
+TEST_F(CliRender, ParametersAreCheckedAgainstThePlugin) {
+    CommandResult result = render("-p no_such_parameter=1");
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_CONTAINS(result.output, "-p no_such_parameter=1");
+    EXPECT_CONTAINS(result.output, "ambient (bool)");  // what raycast does declare
+    result = render("-p ambient=maybe");
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_CONTAINS(result.output, "expects a boolean");
+    EXPECT_TRUE(folder_holds_only_the_scene());
+    result = render("-p ambient=off -p specular=false");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+}
+
+TEST_F(CliRender, SceneErrorIsLocatedAndWritesNothing) {
+    std::ofstream(m_scene) << "camera { location <0, 0, -5> look_at <0, 0, 0> }\n"
+                              "sphere { <0, 0, 0>, 1 pigment { color rgb <1, 0, 0> }\n";  // missing '}'
+    const CommandResult result = render("");
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_CONTAINS(result.output, "ball.pov:");
+    EXPECT_CONTAINS(result.output, "error:");
+    EXPECT_TRUE(folder_holds_only_the_scene());
+}
+
+TEST_F(CliRender, MissingSceneFile) {
+    const CommandResult result = run_lancer("render /nonexistent/scene.pov -o '" + (m_folder / "x.png").string() + "'");
+    EXPECT_NE(result.exit_code, 0);
+    EXPECT_CONTAINS(result.output, "error");
+    EXPECT_FALSE(wrote("x.png"));
+}
+
+TEST_F(CliRender, MissingOutputFolderFailsBeforeRendering) {
+    const CommandResult result = render("", "no/such/folder/out.png");
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_CONTAINS(result.output, "does not exist");
+}
+
+TEST_F(CliRender, SceneRenderSettingsAreDefaultsTheCommandLineOverrides) {
+    std::ofstream(m_scene) << "camera { location <0, 0, -5> look_at <0, 0, 0> angle 40 }\n"
+                              "light_source { <5, 5, -5> color rgb <1, 1, 1> }\n"
+                              "sphere { <0, 0, 0>, 1 pigment { color rgb <1, 0.5, 0.2> } }\n"
+                              "render_settings { integrator \"depth\" width 20 height 10 max_distance 10 }\n";
+    CommandResult result = run_lancer("render '" + m_scene.string() + "' -o '" + (m_folder / "a.png").string() + "'");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_CONTAINS(result.output, "20x10");
+    EXPECT_CONTAINS(result.output, "depth");
+    result = run_lancer("render '" + m_scene.string() + "' --width 16 -i normal -o '" +
+                        (m_folder / "b.png").string() + "'");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_CONTAINS(result.output, "16x10");
+    EXPECT_CONTAINS(result.output, "normal");
+    EXPECT_CONTAINS(result.output, "warning");  // depth's max_distance does not apply to normal
+}
+
+TEST(CliPlugins, ListsEveryBuiltInPluginWithItsParameters) {
+    const CommandResult result = run_lancer("plugins");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    for (const char* expected : {"raycast", "normal", "albedo", "depth", "ambient", "max_distance",
+                                 "lancer/plugins/raycast.so", "bool", "float"}) {
+        EXPECT_CONTAINS(result.output, expected);
+    }
+}
+
+TEST(CliPlugins, ShowsOnePluginOrFails) {
+    CommandResult result = run_lancer("plugins depth");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_CONTAINS(result.output, "max_distance");
+    EXPECT_EQ(result.output.find("raycast.so"), std::string::npos);
+    result = run_lancer("plugins nope");
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+}
+
+}  // namespace
+}  // namespace lancer::test

@@ -1,0 +1,50 @@
+// silhouette — a sample integrator written outside lancer's source tree.
+//
+// Every surface a camera ray hits shows one flat grey level; rays that miss
+// show the scene's background. Built with find_package(lancer) and loaded
+// through LANCER_PLUGIN_PATH by tests/out_of_tree_plugin_test.cpp.
+//
+// | parameter | type  | default | meaning                        |
+// |-----------|-------|---------|--------------------------------|
+// | `level`   | float | 1       | grey level of every hit surface |
+//
+// Example:
+//     LANCER_PLUGIN_PATH=build lancer render scene.pov -i silhouette -p level=0.5
+#include <iterator>
+
+#include <lancer/integrator.h>
+
+namespace {
+
+class Silhouette final : public lancer::Integrator {
+public:
+    explicit Silhouette(float level) : m_level(level) {}
+
+    lancer::Color radiance(const lancer::Ray& ray, const lancer::RenderScene& scene,
+                           lancer::Sampler&) const override {
+        lancer::Hit hit;
+        return scene.intersect(ray, hit) ? lancer::Color(m_level) : scene.background(ray);
+    }
+
+    bool is_deterministic() const override { return true; }
+
+private:
+    float m_level;
+};
+
+const lancer::ParameterDecl kParameters[] = {
+    {"level", lancer::ParameterType::Float, "1", "grey level of every hit surface"},
+};
+
+std::unique_ptr<lancer::Integrator> create(const lancer::ParameterSet& parameters) {
+    return std::make_unique<Silhouette>(float(parameters.get_float("level", 1.0)));
+}
+
+const lancer::IntegratorDescriptor kDescriptor = {
+    lancer::kPluginAbiVersion, "silhouette", "flat grey where a surface is hit (out-of-tree sample)",
+    kParameters, std::size(kParameters), &create,
+};
+
+}  // namespace
+
+LANCER_EXPORT_INTEGRATOR(kDescriptor)
