@@ -143,7 +143,7 @@ Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hi
         m_p_blinn = w_blinn / w_smooth;
     }
     m_phong_exponent = std::max(0.0f, p.phong_size);
-    m_blinn_exponent = 1.0f / std::max(p.roughness, 1e-6f);
+    m_blinn_exponent = 1.0f / std::max(p.roughness, 1e-4f);
 
     // Mirror (POV's reflection block).
     m_mirror = material.has_mirror() ? material.mirror_reflectance(surface, cos_o, m_entering)
