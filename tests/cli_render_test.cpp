@@ -149,7 +149,7 @@ TEST_F(CliRender, SceneRenderSettingsAreDefaultsTheCommandLineOverrides) {
     std::ofstream(m_scene) << "camera { location <0, 0, -5> look_at <0, 0, 0> angle 40 }\n"
                               "light_source { <5, 5, -5> color rgb <1, 1, 1> }\n"
                               "sphere { <0, 0, 0>, 1 pigment { color rgb <1, 0.5, 0.2> } }\n"
-                              "render_settings { integrator \"depth\" width 20 height 10 max_distance 10 }\n";
+                              "render_settings { integrator \"depth\" { max_distance 10 } width 20 height 10 }\n";
     CommandResult result = run_lancer("render '" + m_scene.string() + "' -o '" + (m_folder / "a.png").string() + "'");
     EXPECT_EQ(result.exit_code, 0) << result.output;
     EXPECT_CONTAINS(result.output, "20x10");

@@ -6,23 +6,25 @@
 // surface's BRDF (diffuse, Phong and Blinn lobes) times |cos| between the
 // shading normal and the light, times the light's incident radiance; no
 // shadow rays, so every light reaches every surface facing it. POV-Ray's
-// ambient term and the surface's own emission are added; a ray that hits
-// nothing returns the background. No randomness: one sample per pixel is
-// exact (more samples only anti-alias).
+// ambient term and the surface's own emission (an area light's, when the
+// ray hits the lamp) are added; a ray that hits nothing returns the
+// background. The model is local_shading.h's, shared with shadow, whitted
+// and gather, so all four agree wherever nothing is occluded. No
+// randomness: one sample per pixel is exact (more only anti-alias).
 //
 // | parameter  | type | default | meaning                                          |
 // |------------|------|---------|--------------------------------------------------|
-// | `ambient`  | bool | true    | add POV's ambient term (ambient × pigment × ambient_light) |
+// | `ambient`  | bool | true    | add POV's ambient term (ambient × pigment × ambient_light × opacity) |
 // | `specular` | bool | true    | include the glossy lobes (phong, specular); false: diffuse only |
 //
 // Example:
 //     lancer render scenes/demo.pov -i raycast -p specular=false -o demo_diffuse.png
 // or in the scene:
-//     render_settings { integrator "raycast" ambient off }
-#include <cmath>
+//     render_settings { integrator "raycast" { ambient off } }
 #include <iterator>
 
 #include <lancer/integrator.h>
+#include <lancer/local_shading.h>
 
 namespace {
 
@@ -36,24 +38,13 @@ public:
     Color radiance(const Ray& ray, const RenderScene& scene, Sampler&) const override {
         Hit hit;
         if (!scene.intersect(ray, hit)) return scene.background(ray);
-
-        const Material& material = *hit.material;
-        const SurfaceSample surface = material.sample_surface(hit);
-        const Vec3 wo = -glm::normalize(ray.direction);
-        const Vec3 n = hit.facing_normal(wo);
-
-        Color radiance = material.emitted(surface);
-        if (m_with_ambient) radiance += material.ambient(surface, scene.options().ambient_light);
-
-        // Every local light is a point or directional light (proxies stand
-        // in for area lights), so one sample at any u is exact.
-        for (const Light* light : scene.local_lights()) {
-            const LightSample incident = light->sample(hit.position, Vec2(0.5f));
-            if (incident.pdf <= 0.0f || is_black(incident.radiance)) continue;
-            const Color f = m_with_specular ? material.brdf(surface, n, wo, incident.wi)
-                                            : material.diffuse_brdf(surface, n, wo, incident.wi);
-            radiance += f * std::abs(glm::dot(n, incident.wi)) * incident.radiance / incident.pdf;
-        }
+        // The same local model as shadow/whitted/gather (local_shading.h),
+        // without shadow rays, so the integrators agree where nothing occludes.
+        const ShadingContext at = make_shading_context(hit, ray);
+        Color radiance = surface_emission(at);
+        if (m_with_ambient) radiance += opaque_ambient(scene, at);
+        const LobeRadiance reflected = simple_direct_light(scene, at, Shadows::None);
+        radiance += m_with_specular ? reflected.total() : reflected.diffuse;
         return radiance;
     }
 
