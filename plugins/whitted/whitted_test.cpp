@@ -1,0 +1,165 @@
+// The whitted integrator on scenes with known answers: invisible glass,
+// mirrors, total internal reflection, POV-Ray's depth and bailout limits.
+#include <cmath>
+
+#include "../seed_integrators_test.h"
+
+namespace lancer {
+namespace {
+
+using namespace seed_test;
+
+// A lit floor and back wall seen by a small camera, optionally with a
+// sphere in front (the object under test).
+sg::SceneGraph room(std::optional<sg::Object> extra) {
+    sg::SceneGraph graph;
+    graph.camera = camera({0.0, 1.5, -5.0}, {0.0, -0.2, 1.0});
+    graph.objects.push_back(plane({0.0, 1.0, 0.0}, 0.0, material([](sg::Material& m) {
+        m.pigment.kind = sg::Pigment::Kind::Checker;
+        m.finish.specular = 0.3;
+    })));
+    graph.objects.push_back(plane({0.0, 0.0, -1.0}, -4.0, material([](sg::Material& m) {
+        m.pigment.color.rgb = {0.8, 0.4, 0.2};
+        m.finish.phong = 0.4;
+    })));
+    graph.lights.push_back(point_light({-2.0, 6.0, -4.0}, sg::Vec3(60.0)));
+    graph.lights.push_back(square_light({2.0, 5.0, 0.0}, 1.0, sg::Vec3(20.0)));
+    if (extra) graph.objects.push_back(*extra);
+    return graph;
+}
+
+TEST(WhittedIntegrator, FullyTransmittingSphereWithIorOneIsInvisible) {
+    // Default finish (diffuse 0.6, ambient 0.1): a transparent object has no
+    // diffuse, no ambient and casts no shadow.
+    sg::Object glass = sphere({0.0, 1.0, 0.0}, 1.0, material([](sg::Material& m) {
+        m.pigment.color.transmit = 1.0;
+        m.interior.ior = 1.0;
+    }));
+    const auto with_sphere = RenderScene::compile(room(glass));
+    const auto without_sphere = RenderScene::compile(room(std::nullopt));
+    const auto whitted = load_integrator("whitted", *with_sphere);
+    const Film seen = render_small(*with_sphere, *whitted, 32, 24);
+    const Film reference = render_small(*without_sphere, *whitted, 32, 24);
+    float largest_difference = 0.0f;
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 32; ++x)
+            largest_difference = glm::max(largest_difference, max_component(glm::abs(seen.mean(x, y) - reference.mean(x, y))));
+    EXPECT_LT(largest_difference, 1e-4f);
+}
+
+// A floor mirror of reflectance rho under a camera looking down at 45
+// degrees; the reflected ray meets a uniformly coloured wall.
+constexpr sg::Vec3 kWallColour{0.2, 0.5, 0.9};
+
+sg::SceneGraph mirror_facing_wall(sg::MaterialRef mirror) {
+    sg::SceneGraph graph;
+    graph.objects.push_back(plane({0.0, 1.0, 0.0}, 0.0, std::move(mirror)));
+    graph.objects.push_back(plane({0.0, 0.0, -1.0}, -10.0, flat_colour(kWallColour)));
+    graph.lights.push_back(point_light({0.0, 5.0, 1.0}, sg::Vec3(30.0)));
+    return graph;
+}
+const Ray kDownAt45 = ray_towards(Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 0.0f, 1.0f));
+
+TEST(WhittedIntegrator, MirrorShowsWallColourTimesReflectance) {
+    const auto scene = RenderScene::compile(mirror_facing_wall(material([](sg::Material& m) {
+        m.finish.diffuse = 0.0;
+        m.finish.ambient = sg::Vec3(0.0);
+        m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.7);
+    })));
+    const auto whitted = load_integrator("whitted", *scene);
+    const Color seen = mean_radiance(*whitted, *scene, kDownAt45);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], 0.7f * float(kWallColour[c]), 1e-5f) << "channel " << c;
+}
+
+TEST(WhittedIntegrator, MirrorShowsNoDiffuse) {
+    // reflection 1 with POV's default diffuse 0.6 and ambient 0.1, lit from
+    // above: the seed's mirror shows only the wall.
+    const auto scene = RenderScene::compile(mirror_facing_wall(material([](sg::Material& m) {
+        m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(1.0);
+    })));
+    const auto whitted = load_integrator("whitted", *scene);
+    const Color seen = mean_radiance(*whitted, *scene, kDownAt45);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], float(kWallColour[c]), 1e-5f) << "channel " << c;
+
+    // POV-Ray's additive reflection keeps the diffuse and ambient terms on top.
+    const auto additive = load_integrator("whitted", *scene, {{"additive_reflection", "true"}});
+    EXPECT_GT(mean_radiance(*additive, *scene, kDownAt45).r, float(kWallColour[0]) + 0.1f);
+}
+
+// A slab of dense glass (y in [-1, 0], ior 1.5) under a red sky, over a
+// black floor; inside it, a green ball. A ray inside the slab meets the top
+// face at a grazing angle, reflects totally and finds the ball; a steeper
+// ray leaves into the sky.
+sg::SceneGraph glass_slab() {
+    sg::SceneGraph graph;
+    graph.background = {1.0, 0.0, 0.0};
+    graph.objects.push_back(box({-100.0, -1.0, -100.0}, {100.0, 0.0, 100.0}, material([](sg::Material& m) {
+        m.pigment.color.transmit = 1.0;
+        m.finish.ambient = sg::Vec3(0.0);
+        m.finish.diffuse = 0.0;
+        m.interior.ior = 1.5;
+    })));
+    graph.objects.push_back(sphere({10.0, -0.5, 0.0}, 0.3, flat_colour({0.0, 1.0, 0.0})));
+    graph.objects.push_back(plane({0.0, 1.0, 0.0}, -2.0, flat_colour({0.0, 0.0, 0.0})));
+    return graph;
+}
+
+TEST(WhittedIntegrator, TotalInternalReflectionAtGrazingAngle) {
+    const auto scene = RenderScene::compile(glass_slab());
+    for (const char* fresnel : {"false", "true"}) {
+        const auto whitted = load_integrator("whitted", *scene, {{"fresnel", fresnel}});
+        // sin(incidence) = 0.995 > 1/1.5: no light crosses the top face.
+        const Ray grazing{Vec3(0.0f, -0.5f, 0.0f), glm::normalize(Vec3(1.0f, 0.1f, 0.0f))};
+        const Color seen = mean_radiance(*whitted, *scene, grazing);
+        EXPECT_NEAR(seen.r, 0.0f, 1e-6f) << "fresnel " << fresnel;
+        EXPECT_NEAR(seen.g, 1.0f, 1e-5f) << "fresnel " << fresnel;
+    }
+}
+
+TEST(WhittedIntegrator, SteepRayLeavesTheDenseMedium) {
+    const auto scene = RenderScene::compile(glass_slab());
+    const Ray steep{Vec3(0.0f, -0.5f, 0.0f), glm::normalize(Vec3(0.5f, 1.0f, 0.0f))};
+    // Fixed coefficients: all of the transparency passes into the sky.
+    const auto fixed = load_integrator("whitted", *scene);
+    EXPECT_NEAR(mean_radiance(*fixed, *scene, steep).r, 1.0f, 1e-5f);
+    // Fresnel: the sky is seen through 1 - F of the glass-to-air interface.
+    const auto fresnel = load_integrator("whitted", *scene, {{"fresnel", "true"}});
+    const float cos_i = glm::dot(steep.direction, Vec3(0.0f, 1.0f, 0.0f));
+    EXPECT_NEAR(mean_radiance(*fresnel, *scene, steep).r, 1.0f - fresnel_dielectric(cos_i, 1.5f), 1e-5f);
+}
+
+// Two facing mirrors of reflectance 1/2 and ambient 1 (no diffuse): each
+// level adds (1 - 1/2) * 1 and passes half on, so a ray traced to level D
+// sees 1 - 2^-D.
+sg::SceneGraph facing_half_mirrors(double adc_bailout) {
+    sg::SceneGraph graph;
+    const auto half_mirror = material([](sg::Material& m) {
+        m.finish.ambient = sg::Vec3(1.0);
+        m.finish.diffuse = 0.0;
+        m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.5);
+    });
+    graph.objects.push_back(plane({0.0, 0.0, 1.0}, 1.0, half_mirror));
+    graph.objects.push_back(plane({0.0, 0.0, 1.0}, -1.0, half_mirror));
+    graph.global.adc_bailout = adc_bailout;
+    return graph;
+}
+const Ray kAlongZ{Vec3(0.0f), Vec3(0.0f, 0.0f, 1.0f)};
+
+TEST(WhittedIntegrator, DepthFollowsPovRayLevels) {
+    const auto scene = RenderScene::compile(facing_half_mirrors(1e-6));
+    // Default: the scene's max_trace_level 5 (camera ray = level 1).
+    EXPECT_NEAR(mean_radiance(*load_integrator("whitted", *scene), *scene, kAlongZ).g, 1.0f - 1.0f / 32.0f, 1e-5f);
+    EXPECT_NEAR(mean_radiance(*load_integrator("whitted", *scene, {{"max_depth", "1"}}), *scene, kAlongZ).g, 0.5f,
+                1e-5f);
+    EXPECT_NEAR(mean_radiance(*load_integrator("whitted", *scene, {{"max_depth", "3"}}), *scene, kAlongZ).g, 0.875f,
+                1e-5f);
+}
+
+TEST(WhittedIntegrator, StopsWhenPathWeightFallsUnderAdcBailout) {
+    // Weights 1, 1/2, 1/4, 1/8: with adc_bailout 0.2 the fourth level is not traced.
+    const auto scene = RenderScene::compile(facing_half_mirrors(0.2));
+    EXPECT_NEAR(mean_radiance(*load_integrator("whitted", *scene), *scene, kAlongZ).g, 0.875f, 1e-5f);
+}
+
+}  // namespace
+}  // namespace lancer
