@@ -1,0 +1,318 @@
+// path — the unbiased reference path tracer every other integrator is
+// measured against.
+//
+// Monte Carlo path tracing of the shared material model (material.h) with
+// next-event estimation on the scene's lights (point, directional, rectangle
+// and sphere area lights, emissive objects), BSDF importance sampling
+// (bsdf_sampling.h), and multiple importance sampling of the two with the
+// power heuristic, so small bright lights and glossy reflections of large
+// ones both converge quickly. Paths are cut by Russian roulette after
+// `rr_depth` bounces (unbiased) and by `max_depth` (a truncation: light
+// that needs more bounces is left out). Converges to the exact solution of
+// the scene model, with these deliberate differences from POV-Ray:
+//   - POV's ambient term is ignored: indirect light is computed, not faked;
+//   - area lights and emissive objects are visible and emit by radiance;
+//   - transparent surfaces with an ior are smooth dielectrics (Fresnel
+//     reflection and refraction inside the transmitted share), with
+//     radiance scaled by (eta_from/eta_to)^2 across the interface.
+// Camera rays that hit a light see its emission; rays that escape see the
+// background (not importance sampled).
+//
+// | parameter        | type   | default       | meaning                                                        |
+// |------------------|--------|---------------|----------------------------------------------------------------|
+// | `max_depth`      | int    | 16            | bounces: 0 emission only, 1 direct light only; < 0 unlimited   |
+// | `rr_depth`       | int    | 3             | bounces before Russian roulette starts                         |
+// | `clamp`          | float  | 0             | cap on a sample's max component (biased firefly control); 0 off |
+// | `sampler`        | string | "independent" | "independent" or "sobol" (Owen-scrambled; use 2^k samples)     |
+// | `light_sampling` | string | "power"       | light per NEE: "power" (by emitted power), "uniform", or "all" |
+// | `strategy`       | string | "mis"         | "mis", "nee" (light sampling only), "bsdf" (BSDF sampling only) |
+//
+// `strategy` exists to test the estimator: the three converge to the same
+// image (delta lights are always sampled by NEE, the only way to reach them).
+//
+// Example:
+//     lancer render scenes/cornell.pov -i path -s 256 -p sampler=sobol -o cornell.exr
+// or in the scene:
+//     render_settings { integrator "path" max_depth 8 sampler "sobol" }
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <lancer/bsdf_sampling.h>
+#include <lancer/integrator.h>
+
+namespace {
+
+using namespace lancer;
+
+enum class SamplerKind { Independent, Sobol };
+enum class LightSelection { Power, Uniform, All };
+enum class Strategy { Mis, Nee, Bsdf };
+
+// Bounce cap standing in for "unlimited": Russian roulette ends paths long
+// before it unless every surface reflects everything.
+constexpr int kUnlimitedDepth = 1 << 16;
+
+struct PathSettings {
+    int max_depth = 16;
+    int rr_depth = 3;
+    float clamp = 0.0f;
+    SamplerKind sampler = SamplerKind::Independent;
+    LightSelection light_selection = LightSelection::Power;
+    Strategy strategy = Strategy::Mis;
+};
+
+class PathIntegrator final : public Integrator {
+public:
+    explicit PathIntegrator(const PathSettings& settings) : m_settings(settings) {}
+
+    void prepare(const RenderScene& scene) override {
+        // Light selection probabilities: mostly by emitted power, with a
+        // uniform share so a light whose power() underestimates it (or is 0)
+        // still gets sampled; uniform if any power is not finite.
+        const std::vector<const Light*>& lights = scene.lights();
+        m_prepared_for = &scene;
+        m_light_probability.assign(lights.size(), 0.0f);
+        if (lights.empty()) return;
+        const float uniform = 1.0f / float(lights.size());
+        std::vector<double> power(lights.size(), 0.0);
+        double total = 0.0;
+        bool finite = true;
+        for (std::size_t i = 0; i < lights.size(); ++i) {
+            power[i] = std::max(0.0, double(luminance(lights[i]->power())));
+            finite = finite && std::isfinite(power[i]);
+            total += power[i];
+        }
+        for (std::size_t i = 0; i < lights.size(); ++i) {
+            if (m_settings.light_selection != LightSelection::Power || !finite || !(total > 0.0))
+                m_light_probability[i] = uniform;
+            else
+                m_light_probability[i] = float(0.9 * power[i] / total + 0.1 * uniform);
+        }
+        m_light_cdf.assign(lights.size(), 0.0f);
+        float running = 0.0f;
+        for (std::size_t i = 0; i < lights.size(); ++i) m_light_cdf[i] = running += m_light_probability[i];
+    }
+
+    std::unique_ptr<Sampler> make_sampler(std::uint64_t seed) const override {
+        return m_settings.sampler == SamplerKind::Sobol ? make_sobol_sampler(seed)
+                                                        : make_independent_sampler(seed);
+    }
+
+    Color radiance(const Ray& camera_ray, const RenderScene& scene, Sampler& sampler) const override {
+        const int max_depth = m_settings.max_depth < 0 ? kUnlimitedDepth : m_settings.max_depth;
+        Ray ray = camera_ray;
+        ray.direction = glm::normalize(ray.direction);
+
+        Color radiance(0.0f);
+        Color throughput(1.0f);
+        // Product of the (eta_from/eta_to)^2 factors in `throughput`, divided
+        // out for Russian roulette so it does not kill paths inside glass.
+        float radiance_scale = 1.0f;
+        bool delta_bounce = true;  // the camera counts as a delta event
+        float previous_pdf = 0.0f;  // solid-angle density of the last BSDF sample
+        Vec3 previous_point(0.0f);
+
+        for (int depth = 0;; ++depth) {
+            Hit hit;
+            if (!scene.intersect(ray, hit)) {
+                radiance += throughput * scene.background(ray);
+                break;
+            }
+            const Vec3 wo = -ray.direction;
+            const Material& material = *hit.material;
+            const SurfaceSample surface = material.sample_surface(hit);
+
+            // Emission seen along the path, MIS-weighted against NEE when
+            // NEE could have produced the same path.
+            if (hit.emitter != nullptr) {
+                const Color emitted = hit.emitter->emitted(hit, wo);
+                if (!is_black(emitted)) {
+                    float weight = 1.0f;
+                    if (!delta_bounce && m_settings.strategy == Strategy::Nee &&
+                        selection_probability(scene, hit.emitter) > 0.0f)
+                        weight = 0.0f;
+                    if (!delta_bounce && m_settings.strategy == Strategy::Mis) {
+                        const float light_pdf = selection_probability(scene, hit.emitter) *
+                                                 hit.emitter->pdf(previous_point, ray.direction, hit);
+                        weight = power_heuristic(previous_pdf, light_pdf);
+                    }
+                    radiance += throughput * weight * emitted;
+                }
+            } else if (material.is_emissive()) {
+                // An emitter the scene gives no light for: only BSDF sampling
+                // reaches it, so it takes full weight.
+                radiance += throughput * material.emitted(surface);
+            }
+            if (depth >= max_depth) break;
+
+            const Bsdf bsdf(material, surface, hit, wo);
+            if (bsdf.is_black()) break;
+
+            // Next-event estimation. The dimensions are drawn even when
+            // unused so every bounce consumes the same ones (keeps Sobol
+            // dimensions aligned across samples).
+            const float u_light = sampler.next_1d();
+            const Vec2 u_light_point = sampler.next_2d();
+            if (bsdf.has_smooth())
+                radiance += throughput * direct_light(scene, hit, bsdf, u_light, u_light_point, sampler);
+
+            // Continue the path by sampling the BSDF.
+            const float u_choice = sampler.next_1d();
+            const Vec2 u_direction = sampler.next_2d();
+            const float u_roulette = sampler.next_1d();
+            const BsdfSample scattered = bsdf.sample(u_choice, u_direction);
+            if (!scattered.valid()) break;
+            throughput *= scattered.weight;
+            radiance_scale *= transmission_scale(hit, wo, scattered, material);
+            delta_bounce = scattered.is_delta;
+            previous_pdf = scattered.pdf;
+            previous_point = hit.position;
+            ray = hit.spawn_ray(scattered.wi);
+
+            // Russian roulette on the throughput without the interface
+            // scaling; survival probability capped at 1 (no boost).
+            if (depth + 1 >= m_settings.rr_depth) {
+                const float survive = std::min(1.0f, max_component(throughput) / radiance_scale);
+                if (!(survive > 0.0f) || u_roulette >= survive) break;
+                throughput /= survive;
+            }
+        }
+
+        if (m_settings.clamp > 0.0f) {
+            const float peak = max_component(radiance);
+            if (peak > m_settings.clamp) radiance *= m_settings.clamp / peak;
+        }
+        return radiance;
+    }
+
+private:
+    // The (eta_from/eta_to)^2 radiance factor a dielectric refraction put
+    // into the weight (1 for anything else).
+    static float transmission_scale(const Hit& hit, const Vec3& wo, const BsdfSample& s,
+                                    const Material& material) {
+        if (!s.is_transmission) return 1.0f;
+        const float ior = material.parameters().ior;
+        if (!(ior > 0.0f) || std::abs(ior - 1.0f) < 1e-6f) return 1.0f;
+        const float eta = hit.is_front_face(wo) ? 1.0f / ior : ior;
+        return eta * eta;
+    }
+
+    // Probability that NEE picks `light` (1 when every light is sampled).
+    float selection_probability(const RenderScene& scene, const Light* light) const {
+        if (m_settings.light_selection == LightSelection::All) return 1.0f;
+        const std::vector<const Light*>& lights = scene.lights();
+        if (&scene != m_prepared_for || m_light_probability.size() != lights.size())
+            return lights.empty() ? 0.0f : 1.0f / float(lights.size());
+        for (std::size_t i = 0; i < lights.size(); ++i)
+            if (lights[i] == light) return m_light_probability[i];
+        return 0.0f;  // not a light NEE knows: BSDF sampling takes full weight
+    }
+
+    // Light reaching `hit` straight from the lights, through the smooth
+    // lobes of `bsdf`, MIS-weighted against BSDF sampling.
+    Color direct_light(const RenderScene& scene, const Hit& hit, const Bsdf& bsdf, float u_light,
+                       const Vec2& u_point, Sampler& sampler) const {
+        const std::vector<const Light*>& lights = scene.lights();
+        if (lights.empty()) return Color(0.0f);
+        if (m_settings.light_selection == LightSelection::All) {
+            Color sum(0.0f);
+            for (std::size_t i = 0; i < lights.size(); ++i)
+                sum += light_contribution(scene, hit, bsdf, *lights[i], 1.0f,
+                                          i == 0 ? u_point : sampler.next_2d());
+            return sum;
+        }
+        // One light, chosen by the selection distribution.
+        std::size_t index = 0;
+        float probability = 0.0f;
+        if (&scene == m_prepared_for && m_light_cdf.size() == lights.size()) {
+            const float target = u_light * m_light_cdf.back();
+            index = std::size_t(std::upper_bound(m_light_cdf.begin(), m_light_cdf.end(), target) -
+                                m_light_cdf.begin());
+            index = std::min(index, lights.size() - 1);
+            probability = m_light_probability[index];
+        } else {
+            index = std::min(std::size_t(u_light * float(lights.size())), lights.size() - 1);
+            probability = 1.0f / float(lights.size());
+        }
+        if (!(probability > 0.0f)) return Color(0.0f);
+        return light_contribution(scene, hit, bsdf, *lights[index], probability, u_point);
+    }
+
+    Color light_contribution(const RenderScene& scene, const Hit& hit, const Bsdf& bsdf,
+                             const Light& light, float selection, const Vec2& u) const {
+        const bool delta = light.is_delta();
+        if (!delta && m_settings.strategy == Strategy::Bsdf) return Color(0.0f);
+        const LightSample incident = light.sample(hit.position, u);
+        if (!(incident.pdf > 0.0f) || is_black(incident.radiance)) return Color(0.0f);
+        const Color f = bsdf.eval(incident.wi);
+        if (is_black(f)) return Color(0.0f);
+        if (scene.occluded(hit.spawn_ray_to(incident.point))) return Color(0.0f);
+        const float light_pdf = selection * incident.pdf;
+        float weight = 1.0f;
+        if (!incident.is_delta && m_settings.strategy == Strategy::Mis)
+            weight = power_heuristic(light_pdf, bsdf.pdf(incident.wi));
+        return f * incident.radiance * (weight / light_pdf);
+    }
+
+    PathSettings m_settings;
+    // Light selection, built in prepare() for one scene.
+    const RenderScene* m_prepared_for = nullptr;
+    std::vector<float> m_light_probability;
+    std::vector<float> m_light_cdf;
+};
+
+const ParameterDecl kParameters[] = {
+    {"max_depth", ParameterType::Int, "16",
+     "bounces: 0 emission only, 1 direct light only; negative: unlimited"},
+    {"rr_depth", ParameterType::Int, "3", "bounces before Russian roulette starts"},
+    {"clamp", ParameterType::Float, "0",
+     "cap on each sample's largest component (biased firefly control); 0: off"},
+    {"sampler", ParameterType::String, "independent",
+     "\"independent\" or \"sobol\" (Owen-scrambled Sobol; best with 2^k samples)"},
+    {"light_sampling", ParameterType::String, "power",
+     "light chosen per NEE: \"power\", \"uniform\", or \"all\" (every light each time)"},
+    {"strategy", ParameterType::String, "mis",
+     "\"mis\" (default), \"nee\" (light sampling only) or \"bsdf\" (BSDF sampling only)"},
+};
+
+std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
+    PathSettings settings;
+    settings.max_depth = int(parameters.get_int("max_depth", 16));
+    settings.rr_depth = int(std::max<std::int64_t>(0, parameters.get_int("rr_depth", 3)));
+    settings.clamp = float(std::max(0.0, parameters.get_float("clamp", 0.0)));
+
+    const std::string sampler = parameters.get_string("sampler", "independent");
+    if (sampler == "independent") settings.sampler = SamplerKind::Independent;
+    else if (sampler == "sobol") settings.sampler = SamplerKind::Sobol;
+    else throw std::invalid_argument("path: sampler must be \"independent\" or \"sobol\", not \"" + sampler + "\"");
+
+    const std::string selection = parameters.get_string("light_sampling", "power");
+    if (selection == "power") settings.light_selection = LightSelection::Power;
+    else if (selection == "uniform") settings.light_selection = LightSelection::Uniform;
+    else if (selection == "all") settings.light_selection = LightSelection::All;
+    else throw std::invalid_argument("path: light_sampling must be \"power\", \"uniform\" or \"all\", not \"" + selection + "\"");
+
+    const std::string strategy = parameters.get_string("strategy", "mis");
+    if (strategy == "mis") settings.strategy = Strategy::Mis;
+    else if (strategy == "nee") settings.strategy = Strategy::Nee;
+    else if (strategy == "bsdf") settings.strategy = Strategy::Bsdf;
+    else throw std::invalid_argument("path: strategy must be \"mis\", \"nee\" or \"bsdf\", not \"" + strategy + "\"");
+    return std::make_unique<PathIntegrator>(settings);
+}
+
+const IntegratorDescriptor kDescriptor = {
+    kPluginAbiVersion,
+    "path",
+    "unbiased path tracing: NEE + BSDF sampling with MIS, Russian roulette (the reference)",
+    kParameters,
+    std::size(kParameters),
+    &create,
+};
+
+}  // namespace
+
+LANCER_EXPORT_INTEGRATOR(kDescriptor)
