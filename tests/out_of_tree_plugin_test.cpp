@@ -39,7 +39,7 @@ ShellResult run_shell(const std::string& command) {
     return result;
 }
 
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+std::string shell_quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
     const fs::path work = binary_path("tests/out_of_tree_work");
@@ -51,7 +51,7 @@ TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
 
     // 1. Install.
     const ShellResult install =
-        run_shell(quoted(cmake) + " --install " + quoted(LANCER_BINARY_DIR) + " --prefix " + quoted(prefix));
+        run_shell(shell_quoted(cmake) + " --install " + shell_quoted(LANCER_BINARY_DIR) + " --prefix " + shell_quoted(prefix));
     ASSERT_EQ(install.exit_code, 0) << install.output;
     for (const char* installed :
          {"bin/lancer", "lib/liblancer.so", "lib/lancer/plugins/raycast.so", "lib/lancer/plugins/depth.so",
@@ -66,11 +66,11 @@ TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
 
     // 2. Configure and build the sample plugin against the installed package only.
     const ShellResult configure =
-        run_shell(quoted(cmake) + " -S " + quoted(source_path("tests/out_of_tree_plugin")) + " -B " +
-                  quoted(plugin_build) + " -G '" + LANCER_CMAKE_GENERATOR + "' -DCMAKE_BUILD_TYPE=Release" +
-                  " -DCMAKE_PREFIX_PATH=" + quoted(prefix));
+        run_shell(shell_quoted(cmake) + " -S " + shell_quoted(source_path("tests/out_of_tree_plugin")) + " -B " +
+                  shell_quoted(plugin_build) + " -G '" + LANCER_CMAKE_GENERATOR + "' -DCMAKE_BUILD_TYPE=Release" +
+                  " -DCMAKE_PREFIX_PATH=" + shell_quoted(prefix));
     ASSERT_EQ(configure.exit_code, 0) << configure.output;
-    const ShellResult build = run_shell(quoted(cmake) + " --build " + quoted(plugin_build) + " -j 2");
+    const ShellResult build = run_shell(shell_quoted(cmake) + " --build " + shell_quoted(plugin_build) + " -j 2");
     ASSERT_EQ(build.exit_code, 0) << build.output;
     ASSERT_TRUE(fs::exists(plugin_build / "silhouette.so")) << build.output;
 
@@ -81,9 +81,9 @@ TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
                             "sphere { <0, 0, 0>, 1 pigment { color rgb <1, 0, 0> } }\n";
     const fs::path image = work / "sphere.exr";
     const ShellResult render =
-        run_shell("LANCER_PLUGIN_PATH=" + quoted(plugin_build) + " " + quoted(prefix / "bin/lancer") +
-                  " render " + quoted(scene) + " -i silhouette -p level=0.25 --width 32 --height 24 -o " +
-                  quoted(image) + " --quiet");
+        run_shell("LANCER_PLUGIN_PATH=" + shell_quoted(plugin_build) + " " + shell_quoted(prefix / "bin/lancer") +
+                  " render " + shell_quoted(scene) + " -i silhouette -p level=0.25 --width 32 --height 24 -o " +
+                  shell_quoted(image) + " --quiet");
     ASSERT_EQ(render.exit_code, 0) << render.output;
 
     auto input = OIIO::ImageInput::open(image.string());
@@ -100,8 +100,8 @@ TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
     EXPECT_NEAR(channel(0, 0, 0), 0.0f, 1e-6f);
 
     // `lancer plugins` lists it with its parameter, beside the built-in ones.
-    const ShellResult listing = run_shell("LANCER_PLUGIN_PATH=" + quoted(plugin_build) + " " +
-                                          quoted(prefix / "bin/lancer") + " plugins");
+    const ShellResult listing = run_shell("LANCER_PLUGIN_PATH=" + shell_quoted(plugin_build) + " " +
+                                          shell_quoted(prefix / "bin/lancer") + " plugins");
     EXPECT_EQ(listing.exit_code, 0) << listing.output;
     EXPECT_NE(listing.output.find("silhouette"), std::string::npos) << listing.output;
     EXPECT_NE(listing.output.find("level"), std::string::npos) << listing.output;

@@ -81,7 +81,7 @@ TEST(RaycastIntegrator, MatteWallUnderAPointLightFollowsTheInverseSquareLaw) {
     constexpr int kSize = 101;
     for (const double distance : {1.0, 2.0, 4.0, 8.0}) {
         const Film film = render(wall_scene(distance), *raycast.integrator, kSize, 2);
-        for (const auto [x, y] : {std::pair{50, 50}, {75, 50}, {50, 15}, {90, 90}, {10, 35}}) {
+        for (const auto& [x, y] : {std::pair{50, 50}, {75, 50}, {50, 15}, {90, 90}, {10, 35}}) {
             // The pixel centre's direction; direction (0,0,0.5), right and up of length 1.
             const double sx = (x + 0.5) / kSize - 0.5;
             const double sy = 0.5 - (y + 0.5) / kSize;

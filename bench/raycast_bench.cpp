@@ -1,0 +1,280 @@
+// Primary-ray throughput of the raycast integrator through the whole host
+// (render_image: tiles, sampler, camera rays, intersection, shading, film)
+// against the same camera rays through a bare rtcIntersect1 loop on the same
+// triangles, both on 2 threads. The target: raycast >= 0.7x bare.
+//
+//   build/bin/lancer_bench --benchmark_filter=Raycast
+//
+// Counters: Mrays/s for each, `ratio` = raycast / bare (BM_RaycastOverBareEmbree),
+// and the render scene's memory per triangle (resident set growth while
+// compiling, and the process peak).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <embree3/rtcore.h>
+#include <tbb/blocked_range2d.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "lancer/plugin_host.h"
+#include "lancer/renderer.h"
+#include "lancer/scene_graph.h"
+
+namespace {
+
+using namespace lancer;
+
+constexpr int kGrid = 709;  // 2 * 708^2 = 1,002,528 triangles
+constexpr int kWidth = 1024;
+constexpr int kHeight = 768;
+constexpr int kThreads = 2;
+
+// Kilobytes from /proc/self/status ("VmRSS:", "VmHWM:").
+long status_kilobytes(const char* field) {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line)) {
+        if (line.rfind(field, 0) == 0) return std::atol(line.c_str() + std::strlen(field));
+    }
+    return 0;
+}
+
+// A rippled height field over [-1,1]^2 in the xz plane, seen from above at
+// an angle so every pixel's ray hits it and the BVH has real depth.
+std::shared_ptr<sg::TriangleMesh> make_height_field() {
+    auto mesh = std::make_shared<sg::TriangleMesh>();
+    mesh->positions.reserve(std::size_t(kGrid) * kGrid);
+    for (int j = 0; j < kGrid; ++j) {
+        for (int i = 0; i < kGrid; ++i) {
+            const double x = 2.0 * i / (kGrid - 1) - 1.0;
+            const double z = 2.0 * j / (kGrid - 1) - 1.0;
+            mesh->positions.emplace_back(x, 0.05 * std::sin(23.0 * x) * std::cos(17.0 * z), z);
+        }
+    }
+    mesh->faces.reserve(std::size_t(2) * (kGrid - 1) * (kGrid - 1));
+    for (int j = 0; j + 1 < kGrid; ++j) {
+        for (int i = 0; i + 1 < kGrid; ++i) {
+            const int a = j * kGrid + i, b = a + 1, c = a + kGrid, d = c + 1;
+            sg::TriangleMesh::Face first, second;
+            first.position[0] = a, first.position[1] = c, first.position[2] = b;
+            second.position[0] = b, second.position[1] = c, second.position[2] = d;
+            mesh->faces.push_back(first);
+            mesh->faces.push_back(second);
+        }
+    }
+    return mesh;
+}
+
+struct BenchScene {
+    std::shared_ptr<sg::TriangleMesh> mesh;
+    std::unique_ptr<RenderScene> scene;
+    Plugin plugin;
+    std::unique_ptr<Integrator> raycast;
+    std::vector<Ray> camera_rays;  // one per pixel centre, row-major
+    double rss_bytes_per_triangle = 0.0;
+
+    RTCDevice device = nullptr;
+    RTCScene bare_scene = nullptr;
+    std::vector<float> vertices;         // xyz per vertex, padded for Embree's 16-byte loads
+    std::vector<unsigned> indices;       // three per triangle
+
+    std::size_t triangles() const { return mesh->faces.size(); }
+
+    BenchScene() {
+        mesh = make_height_field();
+        sg::SceneGraph graph;
+        sg::Camera camera;
+        camera.location = sg::Vec3(0.0, 1.6, -1.3);
+        const sg::Vec3 forward = glm::normalize(sg::Vec3(0.0, -1.6, 1.3));
+        const sg::Vec3 right = glm::normalize(glm::cross(sg::Vec3(0.0, 1.0, 0.0), forward));
+        camera.direction = forward;
+        camera.right = right * (double(kWidth) / kHeight) * 0.7;
+        camera.up = glm::cross(forward, right) * 0.7;
+        graph.camera = camera;
+        sg::Light light;
+        light.position = sg::Vec3(2.0, 4.0, -3.0);
+        graph.lights.push_back(light);
+        sg::Object object;
+        object.kind = sg::Object::Kind::Mesh;
+        object.shape = sg::MeshRef(mesh);
+        auto material = std::make_shared<sg::Material>();
+        material->pigment.color.rgb = sg::Vec3(0.8);
+        object.material = material;
+        graph.objects.push_back(object);
+
+        const long rss_before = status_kilobytes("VmRSS:");
+        scene = RenderScene::compile(graph);
+        const long rss_after = status_kilobytes("VmRSS:");
+        rss_bytes_per_triangle = 1024.0 * double(rss_after - rss_before) / double(triangles());
+
+        plugin = load_plugin("raycast");
+        raycast = plugin.descriptor->create(resolve_parameters(*plugin.descriptor, {}, {}));
+        raycast->prepare(*scene);
+
+        camera_rays.reserve(std::size_t(kWidth) * kHeight);
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                camera_rays.push_back(scene->camera().generate_ray(x + 0.5f, y + 0.5f, kWidth, kHeight));
+            }
+        }
+        build_bare_embree();
+    }
+
+    void build_bare_embree() {
+        vertices.reserve(mesh->positions.size() * 3 + 1);
+        for (const auto& p : mesh->positions) {
+            vertices.push_back(float(p.x));
+            vertices.push_back(float(p.y));
+            vertices.push_back(float(p.z));
+        }
+        vertices.push_back(0.0f);
+        for (const auto& face : mesh->faces) {
+            for (int k = 0; k < 3; ++k) indices.push_back(unsigned(face.position[k]));
+        }
+        device = rtcNewDevice(nullptr);
+        bare_scene = rtcNewScene(device);
+        RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertices.data(), 0,
+                                   3 * sizeof(float), mesh->positions.size());
+        rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices.data(), 0,
+                                   3 * sizeof(unsigned), mesh->faces.size());
+        rtcCommitGeometry(geometry);
+        rtcAttachGeometry(bare_scene, geometry);
+        rtcReleaseGeometry(geometry);
+        rtcCommitScene(bare_scene);
+    }
+
+    ~BenchScene() {
+        raycast.reset();  // before its plugin's code is unloaded
+        if (bare_scene) rtcReleaseScene(bare_scene);
+        if (device) rtcReleaseDevice(device);
+    }
+
+    // Seconds for one frame through the host with raycast.
+    double render_raycast() const {
+        RenderOptions options;
+        options.width = kWidth;
+        options.height = kHeight;
+        options.threads = kThreads;
+        options.progress = ProgressMode::Quiet;
+        Film film(kWidth, kHeight);
+        const auto start = std::chrono::steady_clock::now();
+        render_image(*scene, *raycast, options, film);
+        benchmark::DoNotOptimize(film.mean(kWidth / 2, kHeight / 2));
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+
+    // Seconds for the same rays through rtcIntersect1 alone, same tiles and threads.
+    double trace_bare() const {
+        tbb::task_arena arena(kThreads);
+        std::vector<unsigned> hits(kHeight, 0);
+        const auto start = std::chrono::steady_clock::now();
+        arena.execute([&] {
+            tbb::parallel_for(tbb::blocked_range2d<int>(0, kHeight, 16, 0, kWidth, 16),
+                              [&](const tbb::blocked_range2d<int>& tile) {
+                                  RTCIntersectContext context;
+                                  rtcInitIntersectContext(&context);
+                                  for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
+                                      unsigned row_hits = 0;
+                                      for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+                                          const Ray& ray = camera_rays[std::size_t(y) * kWidth + x];
+                                          RTCRayHit query;
+                                          query.ray.org_x = ray.origin.x;
+                                          query.ray.org_y = ray.origin.y;
+                                          query.ray.org_z = ray.origin.z;
+                                          query.ray.dir_x = ray.direction.x;
+                                          query.ray.dir_y = ray.direction.y;
+                                          query.ray.dir_z = ray.direction.z;
+                                          query.ray.tnear = ray.t_min;
+                                          query.ray.tfar = ray.t_max;
+                                          query.ray.time = 0.0f;
+                                          query.ray.mask = 0xFFFFFFFFu;
+                                          query.ray.id = 0;
+                                          query.ray.flags = 0;
+                                          query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+                                          query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+                                          rtcIntersect1(bare_scene, &context, &query);
+                                          row_hits += query.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+                                      }
+                                      // Rows are split across tiles; relaxed accumulation is fine
+                                      // for a value only kept alive for the optimiser.
+                                      __atomic_add_fetch(&hits[y], row_hits, __ATOMIC_RELAXED);
+                                  }
+                              });
+        });
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        benchmark::DoNotOptimize(hits.data());
+        return seconds;
+    }
+};
+
+BenchScene& bench_scene() {
+    static BenchScene scene;  // built once: compiling 1M triangles is not what is measured
+    return scene;
+}
+
+constexpr double kRaysPerFrame = double(kWidth) * kHeight;
+
+void set_common_counters(benchmark::State& state, const BenchScene& bench) {
+    state.counters["triangles"] = double(bench.triangles());
+    state.counters["scene_bytes_per_triangle"] = bench.rss_bytes_per_triangle;
+    state.counters["peak_bytes_per_triangle"] =
+        1024.0 * double(status_kilobytes("VmHWM:")) / double(bench.triangles());
+}
+
+void BM_RaycastPrimaryRays(benchmark::State& state) {
+    BenchScene& bench = bench_scene();
+    double seconds = 0.0;
+    for (auto _ : state) {
+        const double frame = bench.render_raycast();
+        state.SetIterationTime(frame);
+        seconds += frame;
+    }
+    state.counters["Mrays/s"] = kRaysPerFrame * double(state.iterations()) / seconds / 1e6;
+    set_common_counters(state, bench);
+}
+
+void BM_BareEmbreePrimaryRays(benchmark::State& state) {
+    BenchScene& bench = bench_scene();
+    double seconds = 0.0;
+    for (auto _ : state) {
+        const double frame = bench.trace_bare();
+        state.SetIterationTime(frame);
+        seconds += frame;
+    }
+    state.counters["Mrays/s"] = kRaysPerFrame * double(state.iterations()) / seconds / 1e6;
+    set_common_counters(state, bench);
+}
+
+// Both in alternation, so drift in machine load hits both alike.
+void BM_RaycastOverBareEmbree(benchmark::State& state) {
+    BenchScene& bench = bench_scene();
+    double raycast_seconds = 0.0, bare_seconds = 0.0;
+    for (auto _ : state) {
+        const double raycast = bench.render_raycast();
+        const double bare = bench.trace_bare();
+        raycast_seconds += raycast;
+        bare_seconds += bare;
+        state.SetIterationTime(raycast + bare);
+    }
+    const double frames = double(state.iterations());
+    state.counters["raycast_Mrays/s"] = kRaysPerFrame * frames / raycast_seconds / 1e6;
+    state.counters["bare_Mrays/s"] = kRaysPerFrame * frames / bare_seconds / 1e6;
+    state.counters["ratio"] = bare_seconds / raycast_seconds;
+    set_common_counters(state, bench);
+}
+
+BENCHMARK(BM_RaycastPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_BareEmbreePrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_RaycastOverBareEmbree)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(4.0);
+
+}  // namespace
+
+BENCHMARK_MAIN();
