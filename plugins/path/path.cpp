@@ -14,7 +14,9 @@
 //   - area lights and emissive objects are visible and emit by radiance;
 //   - transparent surfaces with an ior are smooth dielectrics (Fresnel
 //     reflection and refraction inside the transmitted share), with
-//     radiance scaled by (eta_from/eta_to)^2 across the interface.
+//     radiance scaled by (eta_from/eta_to)^2 across the interface;
+//   - as in whitted (the seed: "a mirror has no diffuse"), the diffuse lobe
+//     is scaled by 1 - reflectance per channel unless additive_reflection.
 // Camera rays that hit a light see its emission; rays that escape see the
 // background (not importance sampled).
 //
@@ -26,6 +28,7 @@
 // | `sampler`        | string | "independent" | "independent" or "sobol" (Owen-scrambled; use 2^k samples)     |
 // | `light_sampling` | string | "power"       | light per NEE: "power" (by emitted power), "uniform", or "all" |
 // | `strategy`       | string | "mis"         | "mis", "nee" (light sampling only), "bsdf" (BSDF sampling only) |
+// | `additive_reflection` | bool | false       | POV-Ray's sum: a mirror keeps its diffuse term (as whitted's)   |
 //
 // `strategy` exists to test the estimator: the three converge to the same
 // image (delta lights are always sampled by NEE, the only way to reach them).
@@ -63,6 +66,7 @@ struct PathSettings {
     SamplerKind sampler = SamplerKind::Independent;
     LightSelection light_selection = LightSelection::Power;
     Strategy strategy = Strategy::Mis;
+    bool additive_reflection = false;
 };
 
 class PathIntegrator final : public Integrator {
@@ -149,7 +153,7 @@ public:
             }
             if (depth >= max_depth) break;
 
-            const Bsdf bsdf(material, surface, hit, wo);
+            const Bsdf bsdf(material, surface, hit, wo, m_settings.additive_reflection);
             if (bsdf.is_black()) break;
 
             // Next-event estimation. The dimensions are drawn even when
@@ -277,6 +281,8 @@ const ParameterDecl kParameters[] = {
      "light chosen per NEE: \"power\", \"uniform\", or \"all\" (every light each time)"},
     {"strategy", ParameterType::String, "mis",
      "\"mis\" (default), \"nee\" (light sampling only) or \"bsdf\" (BSDF sampling only)"},
+    {"additive_reflection", ParameterType::Bool, "false",
+     "POV-Ray's sum: reflection does not remove the diffuse term (as whitted's)"},
 };
 
 std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
@@ -296,6 +302,7 @@ std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
     else if (selection == "all") settings.light_selection = LightSelection::All;
     else throw std::invalid_argument("path: light_sampling must be \"power\", \"uniform\" or \"all\", not \"" + selection + "\"");
 
+    settings.additive_reflection = parameters.get_bool("additive_reflection", false);
     const std::string strategy = parameters.get_string("strategy", "mis");
     if (strategy == "mis") settings.strategy = Strategy::Mis;
     else if (strategy == "nee") settings.strategy = Strategy::Nee;

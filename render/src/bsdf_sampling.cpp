@@ -122,18 +122,32 @@ float blinn_lobe_pdf(const Vec3& n, const Vec3& wo, const Vec3& wi, float expone
 
 // ------------------------------------------------------------------ material
 
-Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hit, const Vec3& wo)
+Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hit, const Vec3& wo,
+           bool additive_reflection)
     : m_material(material), m_surface(surface), m_wo(wo) {
     const MaterialParameters& p = material.parameters();
     m_n = hit.facing_normal(wo);
     m_entering = hit.is_front_face(wo);
     const float cos_o = std::max(0.0f, glm::dot(m_n, wo));
 
+    // Mirror (POV's reflection block) and, unless reflection adds to it as
+    // in POV-Ray, the diffuse share it takes away (whitted's "a mirror has
+    // no diffuse").
+    const Color rho_r = material.has_mirror()
+                            ? glm::clamp(material.mirror_reflectance(surface, cos_o, m_entering),
+                                         Color(0.0f), Color(1.0f))
+                            : Color(0.0f);
+    m_diffuse_scale = additive_reflection ? Color(1.0f) : Color(1.0f) - rho_r;
+    m_mirror = rho_r;
+
     // Smooth lobes: probabilities by albedo. brdf() scales them all by the
     // opacity, so the mixture only needs their ratios.
     m_transparency = std::clamp(material.transparency(surface), 0.0f, 1.0f);
     const float opacity = 1.0f - m_transparency;
-    const float w_diffuse = p.diffuse > 0.0f ? p.diffuse * std::max(0.0f, luminance(surface.pigment)) : 0.0f;
+    const float w_diffuse =
+        p.diffuse > 0.0f
+            ? p.diffuse * std::max(0.0f, luminance(surface.pigment * m_diffuse_scale))
+            : 0.0f;
     const float w_phong = std::max(0.0f, p.phong);
     const float w_blinn = std::max(0.0f, p.specular);
     const float w_smooth = w_diffuse + w_phong + w_blinn;
@@ -145,48 +159,52 @@ Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hi
     m_phong_exponent = std::max(0.0f, p.phong_size);
     m_blinn_exponent = 1.0f / std::max(p.roughness, 1e-4f);
 
-    // Mirror (POV's reflection block).
-    m_mirror = material.has_mirror() ? material.mirror_reflectance(surface, cos_o, m_entering)
-                                     : Color(0.0f);
-
-    // Dielectric: Fresnel at wo, the refracted direction, TIR.
-    float w_dielectric = 0.0f;
+    // Dielectric: Fresnel at wo, the refracted direction, TIR. Its
+    // reflected share T*F joins the mirror as max(rho_r, T*F) per channel,
+    // so a material that already says `reflection { fresnel on }` is not
+    // reflected twice (whitted's fresnel=true does the same).
+    Color transmitted(0.0f);
     if (m_transparency > 0.0f) {
         m_tint = material.transmission_tint(surface);
         const float ior = p.ior > 0.0f ? p.ior : 1.0f;
-        m_passthrough = std::abs(ior - 1.0f) < 1e-6f;
-        if (m_passthrough) {
-            m_fresnel = 0.0f;
+        float fresnel = 0.0f;
+        if (std::abs(ior - 1.0f) < 1e-6f) {
             m_eta = 1.0f;
             m_refracted = -wo;
         } else {
             m_eta = m_entering ? 1.0f / ior : ior;
             if (refract(-wo, m_n, m_eta, m_refracted)) {
-                m_fresnel = std::clamp(fresnel_dielectric(cos_o, m_eta), 0.0f, 1.0f);
+                fresnel = std::clamp(fresnel_dielectric(cos_o, m_eta), 0.0f, 1.0f);
                 m_refracted = glm::normalize(m_refracted);
             } else {
-                m_fresnel = 1.0f;  // total internal reflection
+                fresnel = 1.0f;  // total internal reflection
             }
         }
-        w_dielectric = m_transparency *
-                       (m_fresnel + (1.0f - m_fresnel) * std::max(0.0f, luminance(m_tint)));
+        m_mirror = glm::max(m_mirror, Color(m_transparency * fresnel));
+        // Radiance is compressed by (eta_wo / eta_wi)^2 crossing into the
+        // denser medium (m_eta = eta_wo / eta_wi).
+        transmitted = m_tint * (m_transparency * (1.0f - fresnel) * m_eta * m_eta);
     }
+    m_transmitted = transmitted;
 
     // Component probabilities.
     const float s = opacity * w_smooth;
     const float m = std::max(0.0f, luminance(m_mirror));
-    const float total = s + m + w_dielectric;
+    const float t = std::max(0.0f, luminance(m_transmitted));
+    const float total = s + m + t;
     if (total > 0.0f && std::isfinite(total)) {
         m_p_smooth = s / total;
         m_p_mirror = m / total;
-        m_p_dielectric = w_dielectric / total;
+        m_p_dielectric = t / total;
     }
 }
 
 Color Bsdf::eval(const Vec3& wi) const {
     const float cos_i = glm::dot(m_n, wi);
     if (cos_i <= 0.0f || m_p_smooth <= 0.0f) return Color(0.0f);
-    return m_material.brdf(m_surface, m_n, m_wo, wi) * cos_i;
+    return (m_material.diffuse_brdf(m_surface, m_n, m_wo, wi) * m_diffuse_scale +
+            m_material.glossy_brdf(m_surface, m_n, m_wo, wi)) *
+           cos_i;
 }
 
 float Bsdf::smooth_pdf(const Vec3& wi) const {
@@ -237,22 +255,13 @@ BsdfSample Bsdf::sample(float u_choice, const Vec2& u) const {
     }
     u_choice -= m_p_mirror;
 
-    // Dielectric: Fresnel reflection or refraction, chosen by F.
+    // Dielectric refraction (or straight through with ior 1).
     if (m_p_dielectric > 0.0f) {
-        const float v = std::min(u_choice / m_p_dielectric, 0x1.fffffep-1f);
+        out.wi = m_refracted;
         out.is_delta = true;
-        if (v < m_fresnel) {
-            out.wi = glm::normalize(reflect(-m_wo, m_n));
-            out.pdf = m_p_dielectric * m_fresnel;
-            out.weight = Color(m_transparency / m_p_dielectric);
-        } else {
-            out.wi = m_refracted;
-            out.is_transmission = true;
-            out.pdf = m_p_dielectric * (1.0f - m_fresnel);
-            // Radiance gets compressed by (eta_wo / eta_wi)^2 crossing into
-            // the denser medium; m_eta = eta_wo / eta_wi.
-            out.weight = m_tint * (m_transparency * m_eta * m_eta / m_p_dielectric);
-        }
+        out.is_transmission = true;
+        out.pdf = m_p_dielectric;
+        out.weight = m_transmitted / m_p_dielectric;
     }
     return out;
 }

@@ -257,6 +257,15 @@ TEST(BsdfSampling, EnergyConservation) {
         add("blinn", [r](MaterialParameters& p) { p.specular = 1.0f; p.roughness = r; });
     add("mix", [](MaterialParameters& p) { p.diffuse = 0.5f; p.phong = 0.25f; p.specular = 0.25f; });
     add("mirror", [](MaterialParameters& p) { p.reflection_max = p.reflection_min = Color(1.0f); });
+ add("half mirror", [](MaterialParameters& p) {
+        p.diffuse = 1.0f;
+        p.reflection_max = p.reflection_min = Color(0.5f);
+    });
+    add("fresnel glass", [](MaterialParameters& p) {
+        p.ior = 1.5f;
+        p.reflection_max = Color(1.0f);
+        p.reflection_fresnel = true;
+    }, Color(1.0f), 0.0f, 1.0f);
     add("glass", [](MaterialParameters& p) { p.ior = 1.5f; }, Color(1.0f), 0.0f, 1.0f);
     add("filter glass", [](MaterialParameters& p) { p.ior = 1.33f; p.diffuse = 0.1f; },
         Color(0.5f, 0.9f, 0.3f), 0.7f, 0.2f);

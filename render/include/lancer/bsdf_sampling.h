@@ -91,21 +91,26 @@ struct BsdfSample {
 // Components, chosen discretely in proportion to a rough albedo (so dark
 // components cost few samples; every component that can contribute keeps a
 // positive probability, so the choice never biases):
-//   smooth    (1 - transparency) * (diffuse + phong + blinn), evaluated by
-//             Material::brdf, sampled as a one-sample mixture of the three
-//             lobes weighted by their albedos (diffuse * luminance(pigment),
-//             phong, specular);
-//   mirror    Material::mirror_reflectance, direction reflect(-wo, n);
-//   dielectric transparency * Fresnel: reflect with probability F (weight
-//             untinted), refract with 1 - F (weight transmission_tint), and
-//             with ior = 1 pass straight through. Total internal reflection
-//             has F = 1. Refraction scales radiance by (eta_wo/eta_wi)^2
+//   smooth    (1 - transparency) * ((1 - rho_r) * diffuse + phong + blinn),
+//             from Material::diffuse_brdf and glossy_brdf, sampled as a
+//             one-sample mixture of the three lobes weighted by their
+//             albedos (diffuse * luminance(pigment), phong, specular). The
+//             (1 - rho_r) per channel is whitted's "a mirror has no diffuse"
+//             (docs/integrators.md); additive_reflection drops it (POV's sum);
+//   mirror    max(rho_r, T * F) per channel, direction reflect(-wo, n):
+//             rho_r = Material::mirror_reflectance, T = transparency, F the
+//             Fresnel reflectance of the ior at wo (1 under total internal
+//             reflection), so a `reflection { fresnel on }` glass does not
+//             reflect twice — as whitted with fresnel=true;
+//   refraction T * (1 - F) * transmission_tint, Snell's direction (straight
+//             through for ior 1), radiance scaled by (eta_wo/eta_wi)^2
 //             (radiance is not symmetric across an interface; pbrt's
 //             TransportMode::Radiance).
 class Bsdf {
 public:
     // `wo` unit, pointing away from the hit (towards the previous vertex).
-    Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hit, const Vec3& wo);
+    Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hit, const Vec3& wo,
+         bool additive_reflection = false);
 
     // f(wo, wi) * |cos(n, wi)| of the smooth components; 0 below the surface.
     Color eval(const Vec3& wi) const;
@@ -130,10 +135,10 @@ private:
     bool m_entering = true;   // wo is on the geometric normal's side
     float m_transparency = 0.0f;
     Color m_tint{0.0f};
-    Color m_mirror{0.0f};
-    float m_fresnel = 0.0f;   // dielectric reflectance at wo (1 under TIR)
-    float m_eta = 1.0f;       // n on wo's side / n on the far side
-    bool m_passthrough = true;  // ior == 1: no bending, no Fresnel
+    Color m_diffuse_scale{1.0f};  // 1 - rho_r, or 1 with additive reflection
+    Color m_mirror{0.0f};         // delta reflectance
+    Color m_transmitted{0.0f};    // delta transmittance, radiance-scaled
+    float m_eta = 1.0f;           // n on wo's side / n on the far side
     Vec3 m_refracted{0.0f};
     // Component and lobe probabilities (each group sums to 1 or is all 0).
     float m_p_smooth = 0.0f, m_p_mirror = 0.0f, m_p_dielectric = 0.0f;
