@@ -1,0 +1,472 @@
+// RenderScene on Embree 3: the only file that talks to Embree.
+//
+// Geometry IDs index our own tables: analytic shapes (spheres, boxes,
+// rectangle lights) are one user geometry per kind whose primitive IDs index
+// the instance table; a mesh used once is a world-space triangle geometry;
+// a mesh used several times is built once in its own Embree scene and
+// instanced. Infinite planes live outside the BVH and are tested
+// analytically after it.
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+#include "lancer/scene_error.h"
+#include "lancer/scene_graph.h"
+#include "scene_builder.h"
+
+namespace lancer {
+namespace {
+
+constexpr unsigned kInvalidId = RTC_INVALID_GEOMETRY_ID;
+
+// One Embree user geometry's primitives: instance indices per primitive.
+struct AnalyticGroup {
+    const SceneData* data = nullptr;
+    ShapeKind kind = ShapeKind::Sphere;
+    std::vector<std::uint32_t> instances;
+};
+
+// What an Embree geometry id of the top-level scene stands for.
+struct GeometryEntry {
+    const AnalyticGroup* group = nullptr;  // analytic: primID indexes group->instances
+    std::uint32_t instance = 0;            // mesh or mesh instance
+};
+
+// occluded()'s context: lets the filter skip no_shadow meshes.
+struct ShadowContext {
+    RTCIntersectContext base;
+    const std::vector<GeometryEntry>* geometries;
+    const SceneData* data;
+};
+
+// Ray in an object's space, in double.
+void ray_to_object(const Instance& instance, const float org[3], const float dir[3], DVec3& o, DVec3& d) {
+    o = instance.placement.point_to_object(DVec3(org[0], org[1], org[2]));
+    d = instance.placement.vector_to_object(DVec3(dir[0], dir[1], dir[2]));
+}
+
+bool intersect_analytic(const Instance& instance, const DVec3& o, const DVec3& d, double t_min, double t_max,
+                        double& t, int& face) {
+    face = 0;
+    switch (instance.kind) {
+    case ShapeKind::Sphere: return intersect_sphere(instance.sphere, o, d, t_min, t_max, t);
+    case ShapeKind::Box: return intersect_box(instance.box, o, d, t_min, t_max, t, face);
+    case ShapeKind::Rectangle: return intersect_rectangle(instance.rectangle, o, d, t_min, t_max, t);
+    case ShapeKind::Plane: return intersect_plane(instance.plane, o, d, t_min, t_max, t);
+    default: return false;
+    }
+}
+
+void analytic_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* group = static_cast<const AnalyticGroup*>(args->geometryUserPtr);
+    const Instance& instance = group->data->instances[group->instances[args->primID]];
+    *args->bounds_o = RTCBounds{instance.bounds_lower.x, instance.bounds_lower.y, instance.bounds_lower.z, 0.0f,
+                                instance.bounds_upper.x, instance.bounds_upper.y, instance.bounds_upper.z, 0.0f};
+}
+
+void analytic_intersect(const RTCIntersectFunctionNArguments* args) {
+    if (!args->valid[0] || args->N != 1) return;
+    const auto* group = static_cast<const AnalyticGroup*>(args->geometryUserPtr);
+    const Instance& instance = group->data->instances[group->instances[args->primID]];
+    auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
+    const float org[3] = {rayhit->ray.org_x, rayhit->ray.org_y, rayhit->ray.org_z};
+    const float dir[3] = {rayhit->ray.dir_x, rayhit->ray.dir_y, rayhit->ray.dir_z};
+    DVec3 o, d;
+    ray_to_object(instance, org, dir, o, d);
+    double t;
+    int face;
+    if (!intersect_analytic(instance, o, d, rayhit->ray.tnear, rayhit->ray.tfar, t, face)) return;
+    const float t_float = float(t);
+    if (!(t_float < rayhit->ray.tfar)) return;
+    rayhit->ray.tfar = t_float;
+    rayhit->hit.u = float(face);
+    rayhit->hit.v = 0.0f;
+    rayhit->hit.Ng_x = 0.0f;
+    rayhit->hit.Ng_y = 1.0f;
+    rayhit->hit.Ng_z = 0.0f;
+    rayhit->hit.primID = args->primID;
+    rayhit->hit.geomID = args->geomID;
+    rayhit->hit.instID[0] = args->context->instID[0];
+}
+
+void analytic_occluded(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0] || args->N != 1) return;
+    const auto* group = static_cast<const AnalyticGroup*>(args->geometryUserPtr);
+    const Instance& instance = group->data->instances[group->instances[args->primID]];
+    if (!instance.casts_shadow) return;
+    auto* ray = reinterpret_cast<RTCRay*>(args->ray);
+    const float org[3] = {ray->org_x, ray->org_y, ray->org_z};
+    const float dir[3] = {ray->dir_x, ray->dir_y, ray->dir_z};
+    DVec3 o, d;
+    ray_to_object(instance, org, dir, o, d);
+    double t;
+    int face;
+    if (intersect_analytic(instance, o, d, ray->tnear, ray->tfar, t, face)) ray->tfar = -INFINITY;
+}
+
+// Rejects hits on meshes of no_shadow objects during occluded().
+void skip_no_shadow(const RTCFilterFunctionNArguments* args) {
+    const auto* context = reinterpret_cast<const ShadowContext*>(args->context);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (!args->valid[i]) continue;
+        unsigned top = RTCHitN_instID(args->hit, args->N, i, 0);
+        if (top == kInvalidId) top = RTCHitN_geomID(args->hit, args->N, i);
+        if (top >= context->geometries->size()) continue;
+        const GeometryEntry& entry = (*context->geometries)[top];
+        if (entry.group) continue;
+        if (!context->data->instances[entry.instance].casts_shadow) args->valid[i] = 0;
+    }
+}
+
+void record_device_error(void* user, RTCError code, const char* message) {
+    auto* log = static_cast<std::string*>(user);
+    if (log->empty()) *log = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
+}
+
+void fill_embree_ray(const Ray& ray, RTCRay& out) {
+    out.org_x = ray.origin.x;
+    out.org_y = ray.origin.y;
+    out.org_z = ray.origin.z;
+    out.dir_x = ray.direction.x;
+    out.dir_y = ray.direction.y;
+    out.dir_z = ray.direction.z;
+    out.tnear = glm::max(ray.t_min, 0.0f);
+    out.tfar = glm::max(ray.t_max, out.tnear);
+    out.time = 0.0f;
+    out.mask = 0xffffffffu;
+    out.id = 0;
+    out.flags = 0;
+}
+
+class EmbreeScene final : public RenderScene {
+public:
+    explicit EmbreeScene(std::unique_ptr<SceneData> data) : m_data(std::move(data)) {
+        m_device = rtcNewDevice(nullptr);
+        if (!m_device) throw std::runtime_error("cannot create the Embree device");
+        rtcSetDeviceErrorFunction(m_device, record_device_error, &m_device_error);
+        build();
+        if (!m_device_error.empty()) throw std::runtime_error(m_device_error);
+    }
+    ~EmbreeScene() override {
+        if (m_scene) rtcReleaseScene(m_scene);
+        for (RTCScene s : m_mesh_scenes) rtcReleaseScene(s);
+        if (m_device) rtcReleaseDevice(m_device);
+    }
+
+    bool intersect(const Ray& ray, Hit& hit) const override;
+    bool occluded(const Ray& ray) const override;
+    const std::vector<const Light*>& lights() const override { return m_data->lights; }
+    const std::vector<const Light*>& local_lights() const override { return m_data->local_lights; }
+    const Camera& camera() const override { return m_data->camera; }
+    Color background(const Ray&) const override { return m_data->background; }
+    const SceneOptions& options() const override { return m_data->options; }
+    Bounds bounds() const override { return m_data->bounds; }
+
+private:
+    void build();
+    RTCGeometry make_triangles(const MeshData& mesh, const std::vector<float>& positions);
+    void complete_analytic_hit(const Instance& instance, const Ray& ray, float t, int face, Hit& hit) const;
+    void complete_mesh_hit(const Instance& instance, std::uint32_t primitive, float b1, float b2, Hit& hit) const;
+
+    std::unique_ptr<SceneData> m_data;
+    RTCDevice m_device = nullptr;
+    RTCScene m_scene = nullptr;
+    std::vector<RTCScene> m_mesh_scenes;
+    std::map<const MeshData*, RTCScene> m_scene_of_mesh;
+    std::vector<std::unique_ptr<AnalyticGroup>> m_groups;
+    std::vector<GeometryEntry> m_geometries;  // by top-level geomID
+    std::vector<std::uint32_t> m_planes;      // instance indices
+    std::string m_device_error;
+    bool m_has_no_shadow_mesh = false;
+};
+
+RTCGeometry EmbreeScene::make_triangles(const MeshData& mesh, const std::vector<float>& positions) {
+    RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Shared buffers: Embree reads our arrays (padded by one float, as its
+    // SIMD loads require), no copies.
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, positions.data(), 0,
+                               3 * sizeof(float), (positions.size() - 1) / 3);
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.indices.data(), 0,
+                               3 * sizeof(std::uint32_t), mesh.indices.size() / 3);
+    rtcCommitGeometry(geometry);
+    return geometry;
+}
+
+void EmbreeScene::build() {
+    SceneData& data = *m_data;
+    const bool any_no_shadow_mesh = [&] {
+        for (const Instance& i : data.instances)
+            if (i.kind == ShapeKind::Mesh && !i.casts_shadow) return true;
+        return false;
+    }();
+    m_has_no_shadow_mesh = any_no_shadow_mesh;
+    m_scene = rtcNewScene(m_device);
+    rtcSetSceneFlags(m_scene, RTCSceneFlags(RTC_SCENE_FLAG_ROBUST |
+                                            (any_no_shadow_mesh ? RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION : 0)));
+    rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);
+
+    // Analytic kinds present in the scene, one user geometry each.
+    std::map<ShapeKind, AnalyticGroup*> groups;
+    for (std::uint32_t index = 0; index < data.instances.size(); ++index) {
+        const Instance& instance = data.instances[index];
+        if (instance.kind == ShapeKind::Plane) {
+            m_planes.push_back(index);
+            continue;
+        }
+        if (instance.kind == ShapeKind::Mesh) continue;
+        AnalyticGroup*& group = groups[instance.kind];
+        if (!group) {
+            m_groups.push_back(std::make_unique<AnalyticGroup>());
+            group = m_groups.back().get();
+            group->data = m_data.get();
+            group->kind = instance.kind;
+        }
+        group->instances.push_back(index);
+    }
+    auto attach = [&](RTCGeometry geometry, GeometryEntry entry) {
+        const unsigned id = rtcAttachGeometry(m_scene, geometry);
+        rtcReleaseGeometry(geometry);
+        if (m_geometries.size() <= id) m_geometries.resize(id + 1);
+        m_geometries[id] = entry;
+    };
+    for (auto& [kind, group] : groups) {
+        RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(geometry, unsigned(group->instances.size()));
+        rtcSetGeometryUserData(geometry, group);
+        rtcSetGeometryBoundsFunction(geometry, analytic_bounds, nullptr);
+        rtcSetGeometryIntersectFunction(geometry, analytic_intersect);
+        rtcSetGeometryOccludedFunction(geometry, analytic_occluded);
+        rtcCommitGeometry(geometry);
+        attach(geometry, GeometryEntry{group, 0});
+    }
+
+    // Meshes: world-space geometry when used once, instanced otherwise.
+    for (std::uint32_t index = 0; index < data.instances.size(); ++index) {
+        const Instance& instance = data.instances[index];
+        if (instance.kind != ShapeKind::Mesh) continue;
+        const MeshData& mesh = *instance.mesh;
+        if (mesh.indices.empty()) continue;
+        if (instance.mesh_in_world) {
+            attach(make_triangles(mesh, instance.world_positions), GeometryEntry{nullptr, index});
+            continue;
+        }
+        RTCScene& shared = m_scene_of_mesh[&mesh];
+        if (!shared) {
+            shared = rtcNewScene(m_device);
+            rtcSetSceneFlags(shared, RTC_SCENE_FLAG_ROBUST);
+            rtcSetSceneBuildQuality(shared, RTC_BUILD_QUALITY_HIGH);
+            RTCGeometry triangles = make_triangles(mesh, mesh.object_positions);
+            rtcAttachGeometry(shared, triangles);
+            rtcReleaseGeometry(triangles);
+            rtcCommitScene(shared);
+            m_mesh_scenes.push_back(shared);
+        }
+        RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(geometry, shared);
+        float transform[16];
+        for (int col = 0; col < 4; ++col)
+            for (int row = 0; row < 4; ++row)
+                transform[4 * col + row] = float(instance.placement.world_from_object[col][row]);
+        rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, transform);
+        rtcCommitGeometry(geometry);
+        attach(geometry, GeometryEntry{nullptr, index});
+    }
+    rtcCommitScene(m_scene);
+}
+
+void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray, float t, int face,
+                                        Hit& hit) const {
+    DVec3 o, d;
+    const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+    const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+    ray_to_object(instance, org, dir, o, d);
+    const DVec3 p = o + double(t) * d;
+    SurfaceGeometry g;
+    switch (instance.kind) {
+    case ShapeKind::Sphere: g = sphere_surface(instance.sphere, p); break;
+    case ShapeKind::Box: g = box_surface(instance.box, p, face); break;
+    case ShapeKind::Plane: g = plane_surface(instance.plane, p); break;
+    default: g = rectangle_surface(instance.rectangle, p); break;
+    }
+    const DVec3 world = instance.placement.point_to_world(g.point);
+    hit.position = Vec3(world);
+    hit.position_error = instance.placement.world_point_error(g.point, world);
+    hit.geometric_normal = Vec3(instance.placement.normal_to_world_unit(g.normal));
+    hit.shading_normal = hit.geometric_normal;
+    hit.uv = g.uv;
+    hit.material = instance.material;
+    hit.primitive_id = std::uint32_t(face);
+}
+
+void EmbreeScene::complete_mesh_hit(const Instance& instance, std::uint32_t primitive, float u, float v,
+                                    Hit& hit) const {
+    const MeshData& mesh = *instance.mesh;
+    const sg::TriangleMesh& source = *mesh.source;
+    const std::uint32_t face_index = mesh.face_of_triangle[primitive];
+    const sg::TriangleMesh::Face& face = source.faces[face_index];
+    const std::vector<float>& positions = instance.mesh_in_world ? instance.world_positions : mesh.object_positions;
+    // The hit from the same float vertices Embree intersected, in double:
+    // an affine combination, so it lies on the triangle's plane.
+    const std::uint32_t* corner = &mesh.indices[3 * primitive];
+    DVec3 vertex[3];
+    for (int k = 0; k < 3; ++k)
+        vertex[k] = DVec3(positions[3 * corner[k]], positions[3 * corner[k] + 1], positions[3 * corner[k] + 2]);
+    const double b1 = u, b2 = v, b0 = 1.0 - b1 - b2;
+    const DVec3 p = b0 * vertex[0] + b1 * vertex[1] + b2 * vertex[2];
+    DVec3 normal = glm::cross(vertex[1] - vertex[0], vertex[2] - vertex[0]);
+    const double normal_length = glm::length(normal);
+    normal = normal_length > 0.0 ? normal / normal_length : DVec3(0.0, 1.0, 0.0);
+    // Error: what the float vertices and Embree's float test may be off by,
+    // scaled by the largest vertex coordinate (pbrt-v4's triangle bound,
+    // made generous for Embree's own arithmetic).
+    DVec3 magnitude = glm::max(glm::abs(vertex[0]), glm::max(glm::abs(vertex[1]), glm::abs(vertex[2])));
+    const double largest = std::max({magnitude.x, magnitude.y, magnitude.z});
+    const DVec3 object_error(16.0 * FLT_EPSILON * largest);
+    DVec3 world, world_normal;
+    Vec3 error;
+    if (instance.mesh_in_world) {
+        world = p;
+        world_normal = normal;
+        error = Vec3(object_error + 2.0 * double(FLT_EPSILON) * glm::abs(p));
+    } else {
+        world = instance.placement.point_to_world(p);
+        world_normal = instance.placement.normal_to_world_unit(normal);
+        const DMat3 a(instance.placement.world_from_object);
+        DVec3 spread(0.0);
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col < 3; ++col) spread[row] += std::fabs(a[col][row]) * object_error[col];
+        // Embree maps the ray to object space in float: an error of a few
+        // ULPs of the world coordinates and the translation too.
+        error = Vec3(spread) + 8.0f * instance.placement.world_point_error(DVec3(largest), world);
+    }
+    hit.position = Vec3(world);
+    hit.position_error = error;
+    hit.geometric_normal = Vec3(world_normal);
+    hit.shading_normal = hit.geometric_normal;
+    if (face.normal[0] >= 0 && !source.normals.empty()) {
+        DVec3 interpolated(0.0);
+        const double weight[3] = {b0, b1, b2};
+        for (int k = 0; k < 3; ++k) {
+            const int n = face.normal[k];
+            if (n >= 0 && std::size_t(n) < source.normals.size()) interpolated += weight[k] * source.normals[n];
+        }
+        if (glm::length(interpolated) > 0.0) {
+            const Vec3 shading(instance.placement.normal_to_world_unit(interpolated));
+            hit.shading_normal = shading;
+            // Keep both normals on the side the mesh author's normals give.
+            if (glm::dot(shading, hit.geometric_normal) < 0.0f) hit.geometric_normal = -hit.geometric_normal;
+        }
+    }
+    if (face.uv[0] >= 0 && !source.uvs.empty()) {
+        glm::dvec2 uv(0.0);
+        const double weight[3] = {b0, b1, b2};
+        for (int k = 0; k < 3; ++k) {
+            const int index = face.uv[k];
+            if (index >= 0 && std::size_t(index) < source.uvs.size()) uv += weight[k] * source.uvs[index];
+        }
+        hit.uv = Vec2(uv);
+    } else {
+        hit.uv = Vec2(u, v);
+    }
+    const Material* face_material =
+        face_index < instance.face_materials.size() ? instance.face_materials[face_index] : nullptr;
+    hit.material = face_material ? face_material : instance.material;
+    hit.primitive_id = face_index;
+}
+
+bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayhit;
+    fill_embree_ray(ray, rayhit.ray);
+    rayhit.hit.geomID = kInvalidId;
+    rayhit.hit.primID = kInvalidId;
+    rayhit.hit.instID[0] = kInvalidId;
+    rayhit.hit.u = rayhit.hit.v = 0.0f;
+    rtcIntersect1(m_scene, &context, &rayhit);
+
+    // Planes are outside the BVH: test them against the nearest so far.
+    std::uint32_t plane_hit = kInvalidId;
+    double plane_t = rayhit.hit.geomID != kInvalidId ? double(rayhit.ray.tfar) : double(rayhit.ray.tfar);
+    for (std::uint32_t index : m_planes) {
+        const Instance& instance = m_data->instances[index];
+        DVec3 o, d;
+        const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+        const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+        ray_to_object(instance, org, dir, o, d);
+        double t;
+        if (intersect_plane(instance.plane, o, d, rayhit.ray.tnear, plane_t, t)) {
+            plane_t = t;
+            plane_hit = index;
+        }
+    }
+    if (plane_hit != kInvalidId) {
+        const Instance& instance = m_data->instances[plane_hit];
+        hit = Hit{};
+        hit.t = float(plane_t);
+        complete_analytic_hit(instance, ray, float(plane_t), 0, hit);
+        hit.object_id = plane_hit;
+        hit.casts_shadow = instance.casts_shadow;
+        hit.emitter = instance.emitter;
+        return true;
+    }
+    if (rayhit.hit.geomID == kInvalidId) return false;
+
+    hit = Hit{};
+    hit.t = rayhit.ray.tfar;
+    const unsigned top = rayhit.hit.instID[0] != kInvalidId ? rayhit.hit.instID[0] : rayhit.hit.geomID;
+    const GeometryEntry& entry = m_geometries[top];
+    std::uint32_t index;
+    if (entry.group) {
+        index = entry.group->instances[rayhit.hit.primID];
+        complete_analytic_hit(m_data->instances[index], ray, rayhit.ray.tfar, int(rayhit.hit.u), hit);
+    } else {
+        index = entry.instance;
+        complete_mesh_hit(m_data->instances[index], rayhit.hit.primID, rayhit.hit.u, rayhit.hit.v, hit);
+    }
+    const Instance& instance = m_data->instances[index];
+    hit.object_id = index;
+    hit.casts_shadow = instance.casts_shadow;
+    hit.emitter = hit.material && hit.material->is_emissive() ? instance.emitter : nullptr;
+    if (instance.light) hit.emitter = instance.light;
+    return true;
+}
+
+bool EmbreeScene::occluded(const Ray& ray) const {
+    ShadowContext context;
+    rtcInitIntersectContext(&context.base);
+    context.geometries = &m_geometries;
+    context.data = m_data.get();
+    if (m_has_no_shadow_mesh) context.base.filter = skip_no_shadow;
+    RTCRay shadow_ray;
+    fill_embree_ray(ray, shadow_ray);
+    rtcOccluded1(m_scene, &context.base, &shadow_ray);
+    if (shadow_ray.tfar == -INFINITY) return true;
+    for (std::uint32_t index : m_planes) {
+        const Instance& instance = m_data->instances[index];
+        if (!instance.casts_shadow) continue;
+        DVec3 o, d;
+        const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+        const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+        ray_to_object(instance, org, dir, o, d);
+        double t;
+        if (intersect_plane(instance.plane, o, d, glm::max(ray.t_min, 0.0f), ray.t_max, t)) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::unique_ptr<RenderScene> RenderScene::compile(const sg::SceneGraph& graph) {
+    return std::make_unique<EmbreeScene>(build_scene_data(graph));
+}
+
+}  // namespace lancer

@@ -1,0 +1,131 @@
+// The concrete lights (internal to liblancer). Units, lancer/light.h:
+// a light of `color C` has radiant intensity pi*C (point), irradiance pi*C
+// on a perpendicular surface (directional); area lights are physical
+// Lambertian emitters with the same on-axis intensity.
+#pragma once
+
+#include <memory>
+
+#include "lancer/light.h"
+#include "shapes.h"
+
+namespace lancer {
+
+// Isotropic, or with a |cos| pattern about `pattern_axis` when it is not
+// zero (the proxy of a flat two-sided emitter).
+class PointLight final : public Light {
+public:
+    // intensity in radiance units times area (W/sr); fade as POV's when
+    // fade_distance > 0, else inverse-square.
+    PointLight(const Vec3& position, const Color& intensity, float fade_distance = 0.0f,
+               float fade_power = 0.0f, const Vec3& pattern_axis = Vec3(0.0f));
+    Kind kind() const override { return Kind::Point; }
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    Color power() const override;
+    const Vec3& position() const { return m_position; }
+    const Color& intensity() const { return m_intensity; }
+
+private:
+    Vec3 m_position;
+    Color m_intensity;
+    float m_fade_distance;
+    float m_fade_power;
+    Vec3 m_pattern_axis;
+};
+
+class DirectionalLight final : public Light {
+public:
+    // `travel`: direction light travels (position -> point_at); the scene
+    // sphere places the shadow-ray target beyond all geometry.
+    DirectionalLight(const Vec3& travel, const Color& irradiance, const Vec3& scene_center, float scene_radius);
+    Kind kind() const override { return Kind::Directional; }
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    Color power() const override;
+
+private:
+    Vec3 m_to_light;
+    Color m_irradiance;
+    Vec3 m_scene_center;
+    float m_scene_radius;
+};
+
+// Two-sided Lambertian parallelogram, radiance pi*C/area.
+class RectangleLight final : public Light {
+public:
+    RectangleLight(const AnalyticRectangle& rectangle, const Color& color);
+    Kind kind() const override { return Kind::Rectangle; }
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    float pdf(const Vec3& p, const Vec3& wi, const Hit& light_hit) const override;
+    Color emitted(const Hit& light_hit, const Vec3& wo) const override { return m_radiance; }
+    Color power() const override;
+    const Light& proxy() const override { return *m_proxy; }
+    const Color& radiance() const { return m_radiance; }
+    const AnalyticRectangle& rectangle() const { return m_rectangle; }
+
+private:
+    AnalyticRectangle m_rectangle;
+    glm::dvec3 m_normal;
+    double m_area;
+    Color m_radiance;
+    std::unique_ptr<PointLight> m_proxy;
+};
+
+// Solid-angle sampling of the cone a sphere subtends from p (outside), in
+// double precision. Returns false when p is inside or on the sphere.
+struct ConeSample {
+    DVec3 point, normal;
+    double pdf = 0.0;  // solid angle
+};
+bool sample_sphere_cone(const DVec3& center, double radius, const DVec3& p, const Vec2& u, ConeSample& out);
+double sphere_cone_pdf(const DVec3& center, double radius, const DVec3& p);
+
+// Sphere of radius R with radiance C/R^2: intensity pi*C in every direction.
+class SphereLight final : public Light {
+public:
+    SphereLight(const DVec3& center, double radius, const Color& color);
+    Kind kind() const override { return Kind::Sphere; }
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    float pdf(const Vec3& p, const Vec3& wi, const Hit& light_hit) const override;
+    Color emitted(const Hit& light_hit, const Vec3& wo) const override { return m_radiance; }
+    Color power() const override;
+    const Light& proxy() const override { return *m_proxy; }
+    const Color& radiance() const { return m_radiance; }
+
+private:
+    DVec3 m_center;
+    double m_radius;
+    Color m_radiance;
+    std::unique_ptr<PointLight> m_proxy;
+};
+
+// An object whose material emits: radiance emission * pigment, two-sided.
+class EmissiveShapeLight final : public Light {
+public:
+    // `sphere`: when set (a sphere under a similarity transform, world
+    // centre and radius), sampled by the cone it subtends.
+    struct SphereShape {
+        AnalyticSphere world;   // centre and radius in world space
+        AnalyticSphere object;  // as the scene gave it, for (u,v)
+        Placement placement;
+    };
+    EmissiveShapeLight(std::unique_ptr<SurfaceSampler> surface, std::uint32_t object_id,
+                       const Material* material, const SphereShape* sphere);
+    Kind kind() const override { return Kind::EmissiveShape; }
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    float pdf(const Vec3& p, const Vec3& wi, const Hit& light_hit) const override;
+    Color emitted(const Hit& light_hit, const Vec3& wo) const override;
+    Color power() const override { return m_power; }
+    const Light& proxy() const override { return *m_proxy; }
+
+private:
+    Color radiance_at(const Hit& hit) const;
+    std::unique_ptr<SurfaceSampler> m_surface;
+    std::uint32_t m_object_id;
+    const Material* m_material;
+    bool m_has_sphere = false;
+    SphereShape m_sphere;
+    Color m_power{0.0f};
+    std::unique_ptr<PointLight> m_proxy;
+};
+
+}  // namespace lancer

@@ -1,0 +1,149 @@
+// The shared material model documented in lancer/material.h.
+#include "lancer/material.h"
+
+#include <cmath>
+
+#include "lancer/texture.h"
+
+namespace lancer {
+namespace {
+
+constexpr float kInvPi = 1.0f / kPi;
+
+// POV-Ray's empirical Fresnel-like curve for `metallic` (texture.cpp), x is
+// the angle from the normal over pi/2.
+float metallic_curve(float cos_angle) {
+    const float x = std::acos(glm::clamp(cos_angle, -1.0f, 1.0f)) / (0.5f * kPi);
+    const float f = 0.014567225f / ((x - 1.12f) * (x - 1.12f)) - 0.011612903f;
+    return glm::clamp(f, 0.0f, 1.0f);
+}
+
+// Blinn exponent k = 1/roughness; roughness 0 means an arbitrarily sharp lobe.
+float blinn_exponent(float roughness) { return 1.0f / glm::max(roughness, 1e-4f); }
+
+}  // namespace
+
+SurfaceSample Material::sample_surface(const Hit& hit) const {
+    SurfaceSample surface;
+    if (m_params.pigment == nullptr) return surface;
+    const TextureSample texel = m_params.pigment->evaluate(hit);
+    surface.pigment = texel.rgb;
+    surface.filter = texel.filter;
+    surface.transmit = texel.transmit;
+    return surface;
+}
+
+float Material::transparency(const SurfaceSample& surface) const {
+    return glm::clamp(surface.filter + surface.transmit, 0.0f, 1.0f);
+}
+
+Color Material::transmission_tint(const SurfaceSample& surface) const {
+    const float total = surface.filter + surface.transmit;
+    if (!(total > 0.0f)) return Color(0.0f);
+    return (surface.filter * surface.pigment + Color(surface.transmit)) / total;
+}
+
+Color Material::emitted(const SurfaceSample& surface) const { return m_params.emission * surface.pigment; }
+
+Color Material::ambient(const SurfaceSample& surface, const Color& ambient_light) const {
+    return m_params.ambient * surface.pigment * ambient_light;
+}
+
+Color Material::diffuse_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo,
+                             const Vec3& wi) const {
+    const float cos_i = glm::dot(n, wi);
+    if (!(cos_i > 0.0f) || m_params.diffuse == 0.0f) return Color(0.0f);
+    const float opacity = 1.0f - transparency(surface);
+    float shape = 1.0f;
+    if (m_params.brilliance != 1.0f) shape = std::pow(cos_i, m_params.brilliance - 1.0f);
+    return m_params.diffuse * opacity * kInvPi * shape * surface.pigment;
+}
+
+Color Material::glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo,
+                            const Vec3& wi) const {
+    const float cos_i = glm::dot(n, wi);
+    if (!(cos_i > 0.0f) || !has_glossy()) return Color(0.0f);
+    float lobe = 0.0f;
+    if (m_params.phong > 0.0f) {
+        // Phong: around the mirror direction of wo, normalised to albedo `phong`.
+        const Vec3 mirror = reflect(-wo, n);
+        const float c = glm::dot(mirror, wi);
+        if (c > 0.0f) {
+            const float exponent = m_params.phong_size;
+            lobe += m_params.phong * (exponent + 2.0f) / (2.0f * kPi) * std::pow(c, exponent);
+        }
+    }
+    if (m_params.specular > 0.0f) {
+        // Blinn: half-vector lobe, normalised with (k+8)/(8 pi).
+        const Vec3 half_sum = wo + wi;
+        const float length = glm::length(half_sum);
+        if (length > 0.0f) {
+            const float c = glm::dot(n, half_sum / length);
+            if (c > 0.0f) {
+                const float k = blinn_exponent(m_params.roughness);
+                lobe += m_params.specular * (k + 8.0f) / (8.0f * kPi) * std::pow(c, k);
+            }
+        }
+    }
+    if (!(lobe > 0.0f)) return Color(0.0f);
+    const float opacity = 1.0f - transparency(surface);
+    Color tint(1.0f);
+    if (m_params.metallic > 0.0f) {
+        // POV's metallic highlight: tinted towards the pigment away from grazing.
+        const float f = metallic_curve(cos_i);
+        tint = Color(1.0f) + m_params.metallic * (1.0f - f) * (surface.pigment - Color(1.0f));
+    }
+    return opacity * lobe * tint;
+}
+
+Color Material::brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const {
+    return diffuse_brdf(surface, n, wo, wi) + glossy_brdf(surface, n, wo, wi);
+}
+
+Color Material::mirror_reflectance(const SurfaceSample& surface, float cos_i, bool entering) const {
+    if (!has_mirror()) return Color(0.0f);
+    cos_i = glm::clamp(cos_i, 0.0f, 1.0f);
+    const Color& r_min = m_params.reflection_min;
+    const Color& r_max = m_params.reflection_max;
+    if (m_params.reflection_fresnel) {
+        // POV's Fresnel (ComputeReflectivity) with the relative index.
+        const float n = entering ? m_params.ior : 1.0f / glm::max(m_params.ior, 1e-6f);
+        const float radicand = n * n + cos_i * cos_i - 1.0f;
+        if (!(radicand > 0.0f)) return r_max;
+        const float g = std::sqrt(radicand);
+        const float a = (g - cos_i) / (g + cos_i);
+        const float b = (cos_i * (g + cos_i) - 1.0f) / (cos_i * (g - cos_i) + 1.0f);
+        const float fresnel = glm::clamp(0.5f * a * a * (1.0f + b * b), 0.0f, 1.0f);
+        return fresnel * r_max + (1.0f - fresnel) * r_min;
+    }
+    const float w = std::pow(1.0f - cos_i, m_params.reflection_falloff);
+    return w * r_max + (1.0f - w) * r_min;
+}
+
+bool Material::has_mirror() const {
+    return max_component(m_params.reflection_max) > 0.0f || max_component(m_params.reflection_min) > 0.0f;
+}
+
+bool Material::is_emissive() const { return max_component(m_params.emission) > 0.0f; }
+
+bool refract(const Vec3& d, const Vec3& n, float eta, Vec3& transmitted) {
+    const float cos_i = -glm::dot(d, n);
+    const float sin2_t = eta * eta * glm::max(0.0f, 1.0f - cos_i * cos_i);
+    if (sin2_t >= 1.0f) return false;
+    const float cos_t = std::sqrt(1.0f - sin2_t);
+    transmitted = glm::normalize(eta * d + (eta * cos_i - cos_t) * n);
+    return true;
+}
+
+float fresnel_dielectric(float cos_i, float eta) {
+    // eta = n_incident / n_transmitted; cos_i measured on the incident side.
+    cos_i = glm::clamp(std::fabs(cos_i), 0.0f, 1.0f);
+    const float sin2_t = eta * eta * (1.0f - cos_i * cos_i);
+    if (sin2_t >= 1.0f) return 1.0f;
+    const float cos_t = std::sqrt(1.0f - sin2_t);
+    const float r_parallel = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    const float r_perpendicular = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    return 0.5f * (r_parallel * r_parallel + r_perpendicular * r_perpendicular);
+}
+
+}  // namespace lancer

@@ -1,0 +1,49 @@
+// Building pigments from the scene graph (internal to liblancer).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lancer/scene_graph.h"
+#include "lancer/texture.h"
+
+
+namespace lancer {
+
+// For each object id, the map from world space to the space of the object
+// the texture was attached to (POV: a texture moves with the transforms
+// applied after it). Owned by the render scene; textures only read it.
+using TextureSpaces = std::vector<glm::dmat4>;
+
+// Owns the OpenImageIO TextureSystem; created only when a scene has an
+// image_map.
+class ImageTextureSystem;
+
+class TextureFactory {
+public:
+    explicit TextureFactory(const TextureSpaces& spaces);
+    ~TextureFactory();
+    TextureFactory(const TextureFactory&) = delete;
+    TextureFactory& operator=(const TextureFactory&) = delete;
+
+    // Throws lancer::SceneError at the image_map's location when the image
+    // cannot be read.
+    std::unique_ptr<Texture> make(const sg::Pigment& pigment);
+    // A constant colour (default black pigment, light materials).
+    static std::unique_ptr<Texture> make_solid(const Color& rgb, float filter = 0.0f, float transmit = 0.0f);
+
+    bool has_image_system() const { return m_images != nullptr; }
+
+private:
+    const TextureSpaces& m_spaces;
+    std::shared_ptr<ImageTextureSystem> m_images;
+};
+
+// POV-Ray map_type projections of a pattern-space point to (u,v), v up.
+Vec2 planar_map(const glm::dvec3& p);
+Vec2 spherical_map(const glm::dvec3& p);
+Vec2 cylindrical_map(const glm::dvec3& p);
+
+}  // namespace lancer
