@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <string>
 #include <sys/wait.h>
 
@@ -27,9 +28,16 @@ struct ShellResult {
     std::string output;
 };
 
-ShellResult run_shell(const std::string& command) {
+// Runs the words joined by spaces; each word is already shell-quoted if needed.
+ShellResult run_shell(std::initializer_list<std::string> words) {
+    std::string command;
+    for (const auto& word : words) {
+        command += word;
+        command += ' ';
+    }
+    command += "2>&1";
     ShellResult result;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;
     std::array<char, 4096> buffer;
     std::size_t n;
@@ -39,7 +47,12 @@ ShellResult run_shell(const std::string& command) {
     return result;
 }
 
-std::string shell_quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+std::string shell_quoted(const fs::path& path) {
+    std::string quoted = "'";
+    quoted += path.string();
+    quoted += '\'';
+    return quoted;
+}
 
 TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
     const fs::path work = binary_path("tests/out_of_tree_work");
@@ -51,7 +64,7 @@ TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
 
     // 1. Install.
     const ShellResult install =
-        run_shell(shell_quoted(cmake) + " --install " + shell_quoted(LANCER_BINARY_DIR) + " --prefix " + shell_quoted(prefix));
+        run_shell({shell_quoted(cmake), "--install", shell_quoted(LANCER_BINARY_DIR), "--prefix", shell_quoted(prefix)});
     ASSERT_EQ(install.exit_code, 0) << install.output;
     for (const char* installed :
          {"bin/lancer", "lib/liblancer.so", "lib/lancer/plugins/raycast.so", "lib/lancer/plugins/depth.so",
@@ -66,11 +79,11 @@ TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
 
     // 2. Configure and build the sample plugin against the installed package only.
     const ShellResult configure =
-        run_shell(shell_quoted(cmake) + " -S " + shell_quoted(source_path("tests/out_of_tree_plugin")) + " -B " +
-                  shell_quoted(plugin_build) + " -G '" + LANCER_CMAKE_GENERATOR + "' -DCMAKE_BUILD_TYPE=Release" +
-                  " -DCMAKE_PREFIX_PATH=" + shell_quoted(prefix));
+        run_shell({shell_quoted(cmake), "-S", shell_quoted(source_path("tests/out_of_tree_plugin")), "-B",
+                   shell_quoted(plugin_build), "-G", shell_quoted(LANCER_CMAKE_GENERATOR), "-DCMAKE_BUILD_TYPE=Release",
+                   "-DCMAKE_PREFIX_PATH=" + shell_quoted(prefix)});
     ASSERT_EQ(configure.exit_code, 0) << configure.output;
-    const ShellResult build = run_shell(shell_quoted(cmake) + " --build " + shell_quoted(plugin_build) + " -j 2");
+    const ShellResult build = run_shell({shell_quoted(cmake), "--build", shell_quoted(plugin_build), "-j", "2"});
     ASSERT_EQ(build.exit_code, 0) << build.output;
     ASSERT_TRUE(fs::exists(plugin_build / "silhouette.so")) << build.output;
 
@@ -81,9 +94,9 @@ TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
                             "sphere { <0, 0, 0>, 1 pigment { color rgb <1, 0, 0> } }\n";
     const fs::path image = work / "sphere.exr";
     const ShellResult render =
-        run_shell("LANCER_PLUGIN_PATH=" + shell_quoted(plugin_build) + " " + shell_quoted(prefix / "bin/lancer") +
-                  " render " + shell_quoted(scene) + " -i silhouette -p level=0.25 --width 32 --height 24 -o " +
-                  shell_quoted(image) + " --quiet");
+        run_shell({"LANCER_PLUGIN_PATH=" + shell_quoted(plugin_build), shell_quoted(prefix / "bin/lancer"), "render",
+                   shell_quoted(scene), "-i silhouette -p level=0.25 --width 32 --height 24 --quiet -o",
+                   shell_quoted(image)});
     ASSERT_EQ(render.exit_code, 0) << render.output;
 
     auto input = OIIO::ImageInput::open(image.string());
@@ -100,8 +113,8 @@ TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
     EXPECT_NEAR(channel(0, 0, 0), 0.0f, 1e-6f);
 
     // `lancer plugins` lists it with its parameter, beside the built-in ones.
-    const ShellResult listing = run_shell("LANCER_PLUGIN_PATH=" + shell_quoted(plugin_build) + " " +
-                                          shell_quoted(prefix / "bin/lancer") + " plugins");
+    const ShellResult listing = run_shell(
+        {"LANCER_PLUGIN_PATH=" + shell_quoted(plugin_build), shell_quoted(prefix / "bin/lancer"), "plugins"});
     EXPECT_EQ(listing.exit_code, 0) << listing.output;
     EXPECT_NE(listing.output.find("silhouette"), std::string::npos) << listing.output;
     EXPECT_NE(listing.output.find("level"), std::string::npos) << listing.output;
