@@ -1,0 +1,250 @@
+// Intersections, normals, (u,v), transforms, instancing and materials of
+// the compiled scene, from scene graphs built in C++.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "lancer/render_scene.h"
+#include "lancer/scene_error.h"
+#include "scene_test_helpers.h"
+
+namespace lancer {
+namespace {
+
+using namespace lancer::testing;
+
+std::unique_ptr<RenderScene> compile_objects(std::vector<sg::Object> objects) {
+    sg::SceneGraph graph;
+    graph.objects = std::move(objects);
+    return RenderScene::compile(graph);
+}
+
+TEST(EmbreeScene, SphereHitNormalAndUv) {
+    auto scene = compile_objects({sphere_object({0, 0, 5}, 1.0)});
+    Hit hit;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0), Vec3(0, 0, 1)), hit));
+    EXPECT_NEAR(hit.t, 4.0f, 1e-5f);
+    EXPECT_NEAR(hit.position.z, 4.0f, 1e-5f);
+    EXPECT_NEAR(hit.geometric_normal.z, -1.0f, 1e-6f);
+    EXPECT_EQ(hit.geometric_normal, hit.shading_normal);
+    // POV spherical map: equator at v = 0.5; -z is 3/4 of the way round from +x.
+    EXPECT_NEAR(hit.uv.y, 0.5f, 1e-6f);
+    EXPECT_NEAR(hit.uv.x, 0.75f, 1e-6f);
+    ASSERT_NE(hit.material, nullptr);
+    EXPECT_EQ(hit.emitter, nullptr);
+    // Default material: black pigment.
+    EXPECT_EQ(hit.material->sample_surface(hit).pigment, Color(0.0f));
+    // North pole.
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0, 5, 5), Vec3(0, -1, 0)), hit));
+    EXPECT_NEAR(hit.uv.y, 1.0f, 1e-6f);
+    EXPECT_FALSE(scene->intersect(make_ray(Vec3(0, 2, 0), Vec3(0, 0, 1)), hit));
+}
+
+TEST(EmbreeScene, RayFromInsideSphereHitsFarSide) {
+    auto scene = compile_objects({sphere_object({0, 0, 0}, 2.0)});
+    Hit hit;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0), Vec3(1, 0, 0)), hit));
+    EXPECT_NEAR(hit.t, 2.0f, 1e-6f);
+    EXPECT_FALSE(hit.is_front_face(Vec3(-1, 0, 0)));
+    EXPECT_NEAR(hit.facing_normal(Vec3(-1, 0, 0)).x, -1.0f, 1e-6f);
+}
+
+TEST(EmbreeScene, BoxFacesNormalsAndUv) {
+    auto scene = compile_objects({box_object({-1, -2, -3}, {1, 2, 3})});
+    Hit hit;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(-10, 1, 1.5f), Vec3(1, 0, 0)), hit));
+    EXPECT_NEAR(hit.t, 9.0f, 1e-5f);
+    EXPECT_EQ(hit.geometric_normal, Vec3(-1, 0, 0));
+    // x faces map (z, y) over the face.
+    EXPECT_NEAR(hit.uv.x, (1.5f + 3.0f) / 6.0f, 1e-6f);
+    EXPECT_NEAR(hit.uv.y, (1.0f + 2.0f) / 4.0f, 1e-6f);
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0.5f, 10, -1.5f), Vec3(0, -1, 0)), hit));
+    EXPECT_EQ(hit.geometric_normal, Vec3(0, 1, 0));
+    EXPECT_NEAR(hit.uv.x, 0.75f, 1e-6f);
+    EXPECT_NEAR(hit.uv.y, 0.25f, 1e-6f);
+}
+
+TEST(EmbreeScene, PlaneHitUsesObjectXz) {
+    auto scene = compile_objects({plane_object({0, 2, 0}, -1.0)});  // normal normalised: y = -1
+    Hit hit;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(3, 5, 7), Vec3(0, -1, 0)), hit));
+    EXPECT_NEAR(hit.t, 6.0f, 1e-5f);
+    EXPECT_EQ(hit.geometric_normal, Vec3(0, 1, 0));
+    EXPECT_NEAR(hit.uv.x, 3.0f, 1e-6f);
+    EXPECT_NEAR(hit.uv.y, 7.0f, 1e-6f);
+    EXPECT_TRUE(scene->bounds().empty());  // planes are not finite geometry
+}
+
+TEST(EmbreeScene, TriangleBarycentricUvAndMeshUv) {
+    auto mesh = triangle_mesh({0, 0, 5}, {4, 0, 5}, {0, 4, 5});
+    auto scene = compile_objects({mesh_object(mesh)});
+    Hit hit;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(1, 2, 0), Vec3(0, 0, 1)), hit));
+    EXPECT_NEAR(hit.t, 5.0f, 1e-5f);
+    EXPECT_NEAR(std::fabs(hit.geometric_normal.z), 1.0f, 1e-6f);
+    EXPECT_NEAR(hit.uv.x, 0.25f, 1e-5f);
+    EXPECT_NEAR(hit.uv.y, 0.5f, 1e-5f);
+
+    auto textured = std::make_shared<sg::TriangleMesh>(*mesh);
+    textured->uvs = {{10, 10}, {14, 10}, {10, 14}};
+    textured->faces[0].uv[0] = 0;
+    textured->faces[0].uv[1] = 1;
+    textured->faces[0].uv[2] = 2;
+    scene = compile_objects({mesh_object(textured)});
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(1, 2, 0), Vec3(0, 0, 1)), hit));
+    EXPECT_NEAR(hit.uv.x, 11.0f, 1e-4f);
+    EXPECT_NEAR(hit.uv.y, 12.0f, 1e-4f);
+}
+
+TEST(EmbreeScene, SmoothTriangleInterpolatesNormals) {
+    auto mesh = std::make_shared<sg::TriangleMesh>(*triangle_mesh({0, 0, 5}, {4, 0, 5}, {0, 4, 5}));
+    mesh->normals = {glm::normalize(glm::dvec3(-1, 0, -1)), glm::normalize(glm::dvec3(1, 0, -1)), {0, 0, -1}};
+    for (int k = 0; k < 3; ++k) mesh->faces[0].normal[k] = k;
+    auto scene = compile_objects({mesh_object(mesh)});
+    Hit hit;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(2, 0.001f, 0), Vec3(0, 0, 1)), hit));
+    EXPECT_NEAR(hit.shading_normal.x, 0.0f, 1e-3f);
+    EXPECT_LT(hit.shading_normal.z, 0.0f);
+    EXPECT_LT(hit.geometric_normal.z, 0.0f);  // turned to the authored side
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0.01f, 0.01f, 0), Vec3(0, 0, 1)), hit));
+    EXPECT_LT(hit.shading_normal.x, -0.6f);
+}
+
+TEST(EmbreeScene, TransformsComposeThroughUnions) {
+    // A unit sphere in a union translated by +10 x, itself scaled by 2.
+    sg::Object child = sphere_object({0, 0, 0}, 1.0);
+    child.parent_from_object = glm::scale(glm::dmat4(1.0), glm::dvec3(2.0));
+    sg::Object group;
+    group.kind = sg::Object::Kind::Union;
+    group.shape = sg::Group{{child}};
+    group.parent_from_object = glm::translate(glm::dmat4(1.0), glm::dvec3(10, 0, 0));
+    group.material = solid_material({1, 0, 0});
+    auto scene = compile_objects({group});
+    Hit hit;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(10, 0, -10), Vec3(0, 0, 1)), hit));
+    EXPECT_NEAR(hit.t, 8.0f, 1e-5f);
+    EXPECT_EQ(hit.material->sample_surface(hit).pigment, Color(1, 0, 0));  // inherited
+    const Bounds b = scene->bounds();
+    EXPECT_NEAR(b.lower.x, 8.0f, 1e-4f);
+    EXPECT_NEAR(b.upper.x, 12.0f, 1e-4f);
+}
+
+TEST(EmbreeScene, NonUniformScaleGivesEllipsoidNormals) {
+    sg::Object o = sphere_object({0, 0, 0}, 1.0);
+    o.parent_from_object = glm::scale(glm::dmat4(1.0), glm::dvec3(4, 1, 1));
+    auto scene = compile_objects({o});
+    Hit hit;
+    // Point (2, y, 0) on the ellipsoid x^2/16 + y^2 = 1: y = sqrt(3)/2.
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(2, 5, 0), Vec3(0, -1, 0)), hit));
+    EXPECT_NEAR(hit.position.y, std::sqrt(3.0f) / 2.0f, 1e-5f);
+    const Vec3 expected = glm::normalize(Vec3(2.0f / 16.0f, std::sqrt(3.0f) / 2.0f, 0.0f));
+    EXPECT_NEAR(glm::dot(hit.geometric_normal, expected), 1.0f, 1e-5f);
+}
+
+TEST(EmbreeScene, MeshUsedTwiceIsInstancedWithEachTransform) {
+    auto mesh = triangle_mesh({-1, -1, 0}, {1, -1, 0}, {0, 1, 0});
+    auto scene = compile_objects({mesh_object(mesh, solid_material({1, 0, 0}),
+                                              glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 5))),
+                                  mesh_object(mesh, solid_material({0, 1, 0}),
+                                              glm::translate(glm::dmat4(1.0), glm::dvec3(10, 0, 7)))});
+    Hit hit;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0, 0, 0), Vec3(0, 0, 1)), hit));
+    EXPECT_NEAR(hit.t, 5.0f, 1e-5f);
+    EXPECT_EQ(hit.material->sample_surface(hit).pigment, Color(1, 0, 0));
+    const std::uint32_t first = hit.object_id;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(10, 0, 0), Vec3(0, 0, 1)), hit));
+    EXPECT_NEAR(hit.t, 7.0f, 1e-5f);
+    EXPECT_NEAR(hit.position.x, 10.0f, 1e-5f);
+    EXPECT_EQ(hit.material->sample_surface(hit).pigment, Color(0, 1, 0));
+    EXPECT_NE(hit.object_id, first);
+}
+
+TEST(EmbreeScene, NoShadowObjectsDoNotOcclude) {
+    sg::Object blocker = sphere_object({0, 0, 5}, 1.0);
+    sg::Object mesh_blocker = mesh_object(triangle_mesh({-1, -1, 0}, {1, -1, 0}, {0, 1, 0}), nullptr,
+                                          glm::translate(glm::dmat4(1.0), glm::dvec3(5, 0, 5)));
+    auto shadowing = compile_objects({blocker, mesh_blocker});
+    EXPECT_TRUE(shadowing->occluded(make_ray(Vec3(0), Vec3(0, 0, 1))));
+    EXPECT_TRUE(shadowing->occluded(make_ray(Vec3(5, 0, 0), Vec3(0, 0, 1))));
+    Ray short_ray = make_ray(Vec3(0), Vec3(0, 0, 1));
+    short_ray.t_max = 3.0f;
+    EXPECT_FALSE(shadowing->occluded(short_ray));
+    blocker.no_shadow = true;
+    mesh_blocker.no_shadow = true;
+    auto scene = compile_objects({blocker, mesh_blocker});
+    EXPECT_FALSE(scene->occluded(make_ray(Vec3(0), Vec3(0, 0, 1))));
+    EXPECT_FALSE(scene->occluded(make_ray(Vec3(5, 0, 0), Vec3(0, 0, 1))));
+    Hit hit;
+    EXPECT_TRUE(scene->intersect(make_ray(Vec3(0), Vec3(0, 0, 1)), hit));  // still visible
+    EXPECT_FALSE(hit.casts_shadow);
+}
+
+TEST(EmbreeScene, AreaLightsAreVisibleEmitters) {
+    sg::SceneGraph graph;
+    sg::Light rectangle;
+    rectangle.kind = sg::Light::Kind::AreaRectangle;
+    rectangle.position = {0, 5, 0};
+    rectangle.axis1 = {2, 0, 0};
+    rectangle.axis2 = {0, 0, 2};
+    rectangle.color = {1, 1, 1};
+    graph.lights.push_back(rectangle);
+    auto scene = RenderScene::compile(graph);
+    ASSERT_EQ(scene->lights().size(), 1u);
+    ASSERT_EQ(scene->local_lights().size(), 1u);
+    EXPECT_EQ(scene->lights()[0]->kind(), Light::Kind::Rectangle);
+    EXPECT_EQ(scene->local_lights()[0]->kind(), Light::Kind::Point);
+    Hit hit;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0.5f, 0, 0.5f), Vec3(0, 1, 0)), hit));
+    EXPECT_EQ(hit.emitter, scene->lights()[0]);
+    const SurfaceSample surface = hit.material->sample_surface(hit);
+    // Le = pi * C / area, shown by both the material and the light.
+    EXPECT_NEAR(hit.material->emitted(surface).r, kPi / 4.0f, 1e-5f);
+    EXPECT_NEAR(hit.emitter->emitted(hit, Vec3(0, -1, 0)).r, kPi / 4.0f, 1e-5f);
+    EXPECT_EQ(hit.material->brdf(surface, Vec3(0, -1, 0), Vec3(0, -1, 0), Vec3(0, -1, 0)), Color(0.0f));
+}
+
+TEST(EmbreeScene, EmissiveObjectsBecomeLightsExceptPlanes) {
+    auto glowing = solid_material({1, 1, 1}, 0.0, {2, 2, 2});
+    auto scene = compile_objects({sphere_object({0, 0, 5}, 1.0, glowing), box_object({3, 0, 0}, {4, 1, 1}, glowing),
+                                  mesh_object(triangle_mesh({0, 0, 9}, {1, 0, 9}, {0, 1, 9}), glowing),
+                                  plane_object({0, 1, 0}, -10.0, glowing)});
+    EXPECT_EQ(scene->lights().size(), 3u);
+    EXPECT_EQ(scene->local_lights().size(), 3u);
+    Hit hit;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0), Vec3(0, 0, 1)), hit));
+    ASSERT_NE(hit.emitter, nullptr);
+    EXPECT_EQ(hit.emitter->kind(), Light::Kind::EmissiveShape);
+    EXPECT_NEAR(hit.emitter->emitted(hit, Vec3(0, 0, -1)).g, 2.0f, 1e-6f);
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0, 0, 0), Vec3(0, -1, 0)), hit));  // the plane still shows
+    EXPECT_EQ(hit.emitter, nullptr);
+    EXPECT_NEAR(hit.material->emitted(hit.material->sample_surface(hit)).r, 2.0f, 1e-6f);
+}
+
+TEST(EmbreeScene, BadMeshIndexIsASceneError) {
+    auto mesh = std::make_shared<sg::TriangleMesh>(*triangle_mesh({0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
+    mesh->faces[0].position[2] = 7;
+    sg::Object o = mesh_object(mesh);
+    o.location.line = 12;
+    try {
+        compile_objects({o});
+        FAIL() << "expected a SceneError";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.location().line, 12);
+    }
+}
+
+TEST(EmbreeScene, OptionsBackgroundAndDefaultCamera) {
+    sg::SceneGraph graph;
+    graph.background = {0.1, 0.2, 0.3};
+    graph.global.max_trace_level = 9;
+    auto scene = RenderScene::compile(graph);
+    EXPECT_EQ(scene->options().max_trace_level, 9);
+    EXPECT_NEAR(scene->background(Ray{}).b, 0.3f, 1e-7f);
+    EXPECT_NEAR(scene->camera().right().x, 1.33f, 1e-7f);
+    Hit hit;
+    EXPECT_FALSE(scene->intersect(make_ray(Vec3(0), Vec3(0, 0, 1)), hit));
+    EXPECT_FALSE(scene->occluded(make_ray(Vec3(0), Vec3(0, 0, 1))));
+}
+
+}  // namespace
+}  // namespace lancer
