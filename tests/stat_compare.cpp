@@ -60,7 +60,7 @@ double z_score(double difference, double variance) {
 }  // namespace
 
 ImageComparison compare_images(const PixelStatistics& image, const PixelStatistics& reference,
-                               double alpha, int block) {
+                               double alpha, int block, double absolute_tolerance) {
     if (image.width != reference.width || image.height != reference.height)
         throw std::invalid_argument("compare_images: images differ in size");
     const PixelStatistics a = image.block_average(block);
@@ -83,9 +83,13 @@ ImageComparison compare_images(const PixelStatistics& image, const PixelStatisti
         }
     };
 
+    auto shrink = [&](double d) {
+        return std::copysign(std::max(0.0, std::abs(d) - absolute_tolerance), d);
+    };
     glm::dvec3 sum_difference(0.0), sum_variance(0.0);
     for (std::size_t i = 0; i < pixels; ++i) {
-        const glm::dvec3 difference = a.mean[i] - b.mean[i];
+        glm::dvec3 difference = a.mean[i] - b.mean[i];
+        for (int c = 0; c < 3; ++c) difference[c] = shrink(difference[c]);
         const glm::dvec3 variance = a.variance_of_mean[i] + b.variance_of_mean[i];
         sum_difference += difference;
         sum_variance += variance;
