@@ -1,4 +1,6 @@
 // Rectangle and sphere area lights: physically present emitters.
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "lights.h"
@@ -19,8 +21,10 @@ float area_to_solid_angle(double pdf_area, const DVec3& p, const DVec3& point, c
     return std::isfinite(pdf) ? float(pdf) : 0.0f;
 }
 
-LightSample make_sample(const DVec3& p, const DVec3& point, const Color& radiance, float pdf) {
+LightSample make_sample(const DVec3& p, const DVec3& surface_point, const DVec3& normal, const Color& radiance,
+                        float pdf) {
     LightSample s;
+    const DVec3 point = lift_towards(surface_point, normal, p);
     const DVec3 offset = point - p;
     const double distance = glm::length(offset);
     if (!(distance > 0.0) || !(pdf > 0.0f)) return s;
@@ -58,7 +62,8 @@ LightSample RectangleLight::sample(const Vec3& p, const Vec2& u) const {
     const DVec3 point = m_rectangle.center + (double(u.x) - 0.5) * m_rectangle.axis1 +
                         (double(u.y) - 0.5) * m_rectangle.axis2;
     const DVec3 origin(p);
-    return make_sample(origin, point, m_radiance, area_to_solid_angle(1.0 / m_area, origin, point, m_normal));
+    return make_sample(origin, point, m_normal, m_radiance,
+                       area_to_solid_angle(1.0 / m_area, origin, point, m_normal));
 }
 
 float RectangleLight::pdf(const Vec3& p, const Vec3&, const Hit& light_hit) const {
@@ -68,6 +73,12 @@ float RectangleLight::pdf(const Vec3& p, const Vec3&, const Hit& light_hit) cons
 Color RectangleLight::power() const { return float(2.0 * kPiD * m_area) * m_radiance; }
 
 // -------------------------------------------------------------------- cone
+
+DVec3 lift_towards(const DVec3& point, const DVec3& normal, const DVec3& p) {
+    const double magnitude = std::max({std::fabs(point.x), std::fabs(point.y), std::fabs(point.z)});
+    const double lift = 4.0 * double(FLT_EPSILON) * magnitude;
+    return glm::dot(normal, p - point) >= 0.0 ? point + lift * normal : point - lift * normal;
+}
 
 bool sample_sphere_cone(const DVec3& center, double radius, const DVec3& p, const Vec2& u, ConeSample& out) {
     const DVec3 to_center = center - p;
@@ -124,7 +135,7 @@ LightSample SphereLight::sample(const Vec3& p, const Vec2& u) const {
     const DVec3 origin(p);
     ConeSample cone;
     if (sample_sphere_cone(m_center, m_radius, origin, u, cone))
-        return make_sample(origin, cone.point, m_radiance, float(cone.pdf));
+        return make_sample(origin, cone.point, cone.normal, m_radiance, float(cone.pdf));
     // Inside (or on) the sphere: uniform over its area.
     const double z = 1.0 - 2.0 * double(u.x);
     const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
@@ -132,7 +143,7 @@ LightSample SphereLight::sample(const Vec3& p, const Vec2& u) const {
     const DVec3 normal(r * std::cos(phi), z, r * std::sin(phi));
     const DVec3 point = m_center + m_radius * normal;
     const double pdf_area = 1.0 / (4.0 * kPiD * m_radius * m_radius);
-    return make_sample(origin, point, m_radiance, area_to_solid_angle(pdf_area, origin, point, normal));
+    return make_sample(origin, point, normal, m_radiance, area_to_solid_angle(pdf_area, origin, point, normal));
 }
 
 float SphereLight::pdf(const Vec3& p, const Vec3&, const Hit& light_hit) const {

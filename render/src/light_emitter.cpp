@@ -76,13 +76,14 @@ LightSample EmissiveShapeLight::sample(const Vec3& p, const Vec2& u) const {
     hit.shading_normal = hit.geometric_normal;
     hit.object_id = m_object_id;
     if (!hit.material) hit.material = m_material;
-    const DVec3 offset = DVec3(hit.position) - origin;
+    const DVec3 target = lift_towards(DVec3(hit.position), DVec3(hit.geometric_normal), origin);
+    const DVec3 offset = target - origin;
     const double distance = glm::length(offset);
     if (!(distance > 0.0)) return s;
     s.radiance = radiance_at(hit);
     s.wi = Vec3(offset / distance);
     s.distance = float(distance);
-    s.point = hit.position;
+    s.point = Vec3(target);
     s.pdf = pdf;
     return s;
 }

@@ -76,6 +76,11 @@ struct ConeSample {
     DVec3 point, normal;
     double pdf = 0.0;  // solid angle
 };
+// `point` moved off its surface towards the side of p by more than its
+// float rounding, so a shadow ray from p to it cannot clip the surface the
+// point lies on (the segment stays in p's half-space of the tangent plane).
+DVec3 lift_towards(const DVec3& point, const DVec3& normal, const DVec3& p);
+
 bool sample_sphere_cone(const DVec3& center, double radius, const DVec3& p, const Vec2& u, ConeSample& out);
 double sphere_cone_pdf(const DVec3& center, double radius, const DVec3& p);
 
