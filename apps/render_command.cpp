@@ -246,6 +246,12 @@ int run_render(const RenderArguments& arguments) {
         integrator->prepare(*scene);
         Film film(options.width, options.height);
         const RenderStats stats = render_image(*scene, *integrator, options, film);
+        // What the host actually took: a deterministic integrator gets one
+        // sample per pixel whatever --spp asks.
+        const std::uint64_t pixels = options.crop ? std::uint64_t(options.crop->x1 - options.crop->x0) *
+                                                        std::uint64_t(options.crop->y1 - options.crop->y0)
+                                                  : std::uint64_t(options.width) * std::uint64_t(options.height);
+        const std::uint64_t spp_taken = pixels > 0 ? stats.samples / pixels : 0;
 
         ImageWriteOptions write_options;
         write_options.metadata = {
@@ -253,7 +259,7 @@ int run_render(const RenderArguments& arguments) {
             {"lancer:scene", arguments.scene},
             {"lancer:integrator", integrator_name},
             {"lancer:parameters", join_parameters(parameters)},
-            {"lancer:spp", std::to_string(options.samples_per_pixel)},
+            {"lancer:spp", std::to_string(spp_taken)},
             {"lancer:seed", std::to_string(options.seed)},
             {"lancer:seconds", std::to_string(stats.seconds)},
         };
@@ -264,8 +270,9 @@ int run_render(const RenderArguments& arguments) {
                          static_cast<unsigned long long>(stats.nonfinite_samples));
         }
         if (!arguments.quiet) {
-            std::printf("lancer: %dx%d, %d spp, %s, %.2f s -> %s\n", options.width, options.height,
-                        options.samples_per_pixel, integrator_name.c_str(), stats.seconds, output.c_str());
+            std::printf("lancer: %dx%d, %llu spp, %s, %.2f s -> %s\n", options.width, options.height,
+                        static_cast<unsigned long long>(spp_taken), integrator_name.c_str(), stats.seconds,
+                        output.c_str());
         }
     } catch (const SceneError& error) {
         print_scene_error(error);

@@ -5,6 +5,9 @@
 //
 //   build/bin/lancer_bench --benchmark_filter=Raycast
 //
+// BM_HostIntersectOnlyPrimaryRays runs the host with an integrator that only
+// intersects, to tell the host's and RenderScene's share from raycast's.
+//
 // Counters: Mrays/s for each, `ratio` = raycast / bare (BM_RaycastOverBareEmbree),
 // and the render scene's memory per triangle (resident set growth while
 // compiling, and the process peak).
@@ -71,6 +74,18 @@ std::shared_ptr<sg::TriangleMesh> make_height_field() {
     }
     return mesh;
 }
+
+// The host's loop with the cheapest possible integrator: one scene.intersect
+// per ray and nothing else. Separates the host's and RenderScene's own cost
+// from raycast's shading.
+class IntersectOnly final : public Integrator {
+public:
+    Color radiance(const Ray& ray, const RenderScene& scene, Sampler&) const override {
+        Hit hit;
+        return scene.intersect(ray, hit) ? Color(1.0f) : Color(0.0f);
+    }
+    bool is_deterministic() const override { return true; }
+};
 
 struct BenchScene {
     std::shared_ptr<sg::TriangleMesh> mesh;
@@ -157,8 +172,8 @@ struct BenchScene {
         if (device) rtcReleaseDevice(device);
     }
 
-    // Seconds for one frame through the host with raycast.
-    double render_raycast() const {
+    // Seconds for one frame through the host with `integrator` (raycast by default).
+    double render_raycast(const Integrator* integrator = nullptr) const {
         RenderOptions options;
         options.width = kWidth;
         options.height = kHeight;
@@ -166,7 +181,7 @@ struct BenchScene {
         options.progress = ProgressMode::Quiet;
         Film film(kWidth, kHeight);
         const auto start = std::chrono::steady_clock::now();
-        render_image(*scene, *raycast, options, film);
+        render_image(*scene, integrator ? *integrator : *raycast, options, film);
         benchmark::DoNotOptimize(film.mean(kWidth / 2, kHeight / 2));
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
@@ -253,6 +268,19 @@ void BM_BareEmbreePrimaryRays(benchmark::State& state) {
     set_common_counters(state, bench);
 }
 
+void BM_HostIntersectOnlyPrimaryRays(benchmark::State& state) {
+    BenchScene& bench = bench_scene();
+    const IntersectOnly intersect_only;
+    double seconds = 0.0;
+    for (auto _ : state) {
+        const double frame = bench.render_raycast(&intersect_only);
+        state.SetIterationTime(frame);
+        seconds += frame;
+    }
+    state.counters["Mrays/s"] = kRaysPerFrame * double(state.iterations()) / seconds / 1e6;
+    set_common_counters(state, bench);
+}
+
 // Both in alternation, so drift in machine load hits both alike.
 void BM_RaycastOverBareEmbree(benchmark::State& state) {
     BenchScene& bench = bench_scene();
@@ -273,6 +301,7 @@ void BM_RaycastOverBareEmbree(benchmark::State& state) {
 
 BENCHMARK(BM_RaycastPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_BareEmbreePrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_HostIntersectOnlyPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_RaycastOverBareEmbree)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(4.0);
 
 }  // namespace
