@@ -1,0 +1,240 @@
+// Light units and sampling: inverse-square point lights, POV fade, pdfs
+// that integrate to one and agree with sample(), area lights matching a
+// point light of the same colour far away, degenerate lights.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "lancer/render_scene.h"
+#include "scene_test_helpers.h"
+
+namespace lancer {
+namespace {
+
+using namespace lancer::testing;
+
+sg::Light point_light(const glm::dvec3& position, const glm::dvec3& color) {
+    sg::Light l;
+    l.kind = sg::Light::Kind::Point;
+    l.position = position;
+    l.color = color;
+    return l;
+}
+
+std::unique_ptr<RenderScene> compile_lights(std::vector<sg::Light> lights, std::vector<sg::Object> objects = {}) {
+    sg::SceneGraph graph;
+    graph.lights = std::move(lights);
+    graph.objects = std::move(objects);
+    return RenderScene::compile(graph);
+}
+
+TEST(Lights, PointLightIsInverseSquareWithIntensityPiC) {
+    auto scene = compile_lights({point_light({0, 10, 0}, {1, 0.5, 0.25})});
+    ASSERT_EQ(scene->lights().size(), 1u);
+    const Light& light = *scene->lights()[0];
+    EXPECT_TRUE(light.is_delta());
+    const LightSample at1 = light.sample(Vec3(0, 9, 0), Vec2(0.5f));
+    const LightSample at4 = light.sample(Vec3(0, 6, 0), Vec2(0.5f));
+    EXPECT_NEAR(at1.radiance.r, kPi, 1e-5f);
+    EXPECT_NEAR(at1.radiance.g, 0.5f * kPi, 1e-5f);
+    EXPECT_NEAR(at4.radiance.r / at1.radiance.r, 1.0f / 16.0f, 1e-6f);
+    EXPECT_EQ(at1.wi, Vec3(0, 1, 0));
+    EXPECT_FLOAT_EQ(at4.distance, 4.0f);
+    EXPECT_EQ(at1.pdf, 1.0f);
+    EXPECT_NEAR(light.power().r, 4.0f * kPi * kPi, 1e-4f);
+    // At the light's position: no sample, no NaN.
+    const LightSample at0 = light.sample(Vec3(0, 10, 0), Vec2(0.5f));
+    EXPECT_EQ(at0.pdf, 0.0f);
+}
+
+TEST(Lights, PovFadeReplacesInverseSquare) {
+    sg::Light l = point_light({0, 0, 0}, {1, 1, 1});
+    l.fade_distance = 2.0;
+    l.fade_power = 2.0;
+    auto scene = compile_lights({l});
+    const LightSample s = scene->lights()[0]->sample(Vec3(4, 0, 0), Vec2(0.5f));
+    EXPECT_NEAR(s.radiance.r, kPi * 2.0f / (1.0f + 4.0f), 1e-5f);
+}
+
+TEST(Lights, DirectionalLightTravelsFromPositionToPointAt) {
+    sg::Light l;
+    l.kind = sg::Light::Kind::Directional;
+    l.position = {0, 10, 0};
+    l.point_at = {0, 0, 0};
+    auto scene = compile_lights({l}, {sphere_object({0, 0, 0}, 1.0)});
+    const LightSample s = scene->lights()[0]->sample(Vec3(0, 1, 0), Vec2(0.5f));
+    EXPECT_EQ(s.wi, Vec3(0, 1, 0));
+    EXPECT_NEAR(s.radiance.r, kPi, 1e-6f);
+    EXPECT_GT(s.point.y, 2.0f);  // beyond every object
+    EXPECT_TRUE(std::isinf(s.distance));
+}
+
+// Monte Carlo estimate of the integral of pdf() over all directions from p
+// (uniform directions, each traced to the light): should be 1.
+double integrate_pdf(const RenderScene& scene, const Light& light, const Vec3& p) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const int n = 400000;
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const float z = 1.0f - 2.0f * u(rng);
+        const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+        const float phi = 2.0f * kPi * u(rng);
+        const Vec3 wi(r * std::cos(phi), z, r * std::sin(phi));
+        Hit hit;
+        if (!scene.intersect(make_ray(p, wi), hit) || hit.emitter != &light) continue;
+        sum += light.pdf(p, wi, hit);
+    }
+    return sum * 4.0 * kPi / n;
+}
+
+// sample() reports the same density pdf() gives for the point it returns
+// (when that point is visible from p: area sampling of a closed shape also
+// picks points on its far side).
+void expect_consistent_samples(const RenderScene& scene, const Light& light, const Vec3& p,
+                               int minimum_visible = 150) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    int checked = 0, mismatched = 0;
+    for (int i = 0; i < 200; ++i) {
+        const LightSample s = light.sample(p, Vec2(u(rng), u(rng)));
+        if (!(s.pdf > 0.0f)) continue;
+        Hit hit;
+        ASSERT_TRUE(scene.intersect(make_ray(p, s.wi), hit));
+        if (hit.emitter != &light || std::fabs(hit.t - s.distance) > 1e-4f * s.distance) continue;
+        // A ray aimed at a box edge may find the neighbouring face.
+        if (std::fabs(light.pdf(p, s.wi, hit) / s.pdf - 1.0f) > 2e-3f) ++mismatched;
+        ++checked;
+    }
+    EXPECT_GT(checked, minimum_visible);
+    EXPECT_LE(mismatched, checked / 50);
+}
+
+// Fraction of samples whose point is visible from p: for area-sampled
+// closed shapes it must equal the integral of pdf() over visible directions.
+double visible_fraction(const RenderScene& scene, const Light& light, const Vec3& p) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const int n = 100000;
+    int visible = 0;
+    Hit origin;
+    origin.position = p;
+    for (int i = 0; i < n; ++i) {
+        const LightSample s = light.sample(p, Vec2(u(rng), u(rng)));
+        if (s.pdf > 0.0f && !scene.occluded(origin.spawn_ray_to(s.point))) ++visible;
+    }
+    return double(visible) / n;
+}
+
+TEST(Lights, RectangleLightPdfIntegratesToOne) {
+    sg::Light l;
+    l.kind = sg::Light::Kind::AreaRectangle;
+    l.position = {0, 2, 0};
+    l.axis1 = {2, 0, 0};
+    l.axis2 = {0, 0.5, 1};
+    auto scene = compile_lights({l});
+    const Light& light = *scene->lights()[0];
+    EXPECT_NEAR(integrate_pdf(*scene, light, Vec3(0.3f, 0, 0.2f)), 1.0, 0.02);
+    expect_consistent_samples(*scene, light, Vec3(0.3f, 0, 0.2f));
+}
+
+TEST(Lights, SphereLightPdfIntegratesToOne) {
+    sg::Light l;
+    l.kind = sg::Light::Kind::AreaSphere;
+    l.position = {0, 3, 0};
+    l.radius = 1.5;
+    auto scene = compile_lights({l});
+    const Light& light = *scene->lights()[0];
+    EXPECT_NEAR(integrate_pdf(*scene, light, Vec3(0, 0, 0)), 1.0, 0.02);
+    expect_consistent_samples(*scene, light, Vec3(0, 0, 0));
+}
+
+TEST(Lights, EmissiveBoxAndEllipsoidPdfIntegrateToOne) {
+    auto glow = solid_material({1, 1, 1}, 0.0, {1, 1, 1});
+    sg::Object ellipsoid = sphere_object({0, 0, 0}, 1.0, glow);
+    ellipsoid.parent_from_object =
+        glm::translate(glm::dmat4(1.0), glm::dvec3(0, 3, 0)) * glm::scale(glm::dmat4(1.0), glm::dvec3(2, 0.5, 1));
+    sg::Object box = box_object({-1, -1, 2}, {1, 0.5, 3}, glow);
+    auto scene = compile_lights({}, {ellipsoid, box});
+    ASSERT_EQ(scene->lights().size(), 2u);
+    for (const Light* light : scene->lights()) {
+        const double visible = visible_fraction(*scene, *light, Vec3(0, 0, 0));
+        EXPECT_GT(visible, 0.2);
+        EXPECT_NEAR(integrate_pdf(*scene, *light, Vec3(0, 0, 0)), visible, 0.02);
+        expect_consistent_samples(*scene, *light, Vec3(0, 0, 0), 40);
+    }
+    // Seen from outside, a sphere under a similarity is sampled by its cone:
+    // every sample visible, pdf integrating to one.
+    sg::Object ball = sphere_object({0, 3, 0}, 1.5, glow);
+    auto round = compile_lights({}, {ball});
+    EXPECT_NEAR(integrate_pdf(*round, *round->lights()[0], Vec3(0, 0, 0)), 1.0, 0.02);
+    EXPECT_NEAR(visible_fraction(*round, *round->lights()[0], Vec3(0, 0, 0)), 1.0, 1e-9);
+}
+
+// Far along its axis a rectangle light of colour C gives the irradiance of
+// a point light of colour C; a sphere light does so in every direction.
+TEST(Lights, AreaLightsMatchPointLightFarAway) {
+    sg::Light rectangle;
+    rectangle.kind = sg::Light::Kind::AreaRectangle;
+    rectangle.position = {0, 0, 0};
+    rectangle.axis1 = {0.2, 0, 0};
+    rectangle.axis2 = {0, 0, 0.2};
+    sg::Light sphere;
+    sphere.kind = sg::Light::Kind::AreaSphere;
+    sphere.position = {0, 0, 0};
+    sphere.radius = 0.1;
+    for (const sg::Light& l : {rectangle, sphere}) {
+        auto scene = compile_lights({l});
+        const Light& light = *scene->lights()[0];
+        const Vec3 p(0, 20, 0);
+        // Irradiance on a surface facing the light, by Monte Carlo.
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<float> u(0.0f, 1.0f);
+        double irradiance = 0.0;
+        const int n = 20000;
+        for (int i = 0; i < n; ++i) {
+            const LightSample s = light.sample(p, Vec2(u(rng), u(rng)));
+            if (s.pdf > 0.0f) irradiance += s.radiance.r * std::fabs(s.wi.y) / s.pdf;
+        }
+        irradiance /= n;
+        EXPECT_NEAR(irradiance, kPi / 400.0, 0.01 * kPi / 400.0);
+        // The proxy is a point light with the same on-axis intensity.
+        const LightSample proxy = light.proxy().sample(p, Vec2(0.5f));
+        EXPECT_NEAR(proxy.radiance.r, kPi / 400.0f, 1e-6f);
+        EXPECT_TRUE(light.proxy().is_delta());
+    }
+}
+
+TEST(Lights, ZeroSizeAreaLightsDegradeToPointLights) {
+    sg::Light rectangle;
+    rectangle.kind = sg::Light::Kind::AreaRectangle;
+    rectangle.position = {0, 1, 0};
+    sg::Light sphere;
+    sphere.kind = sg::Light::Kind::AreaSphere;
+    sphere.position = {0, 1, 0};
+    sphere.radius = 0.0;
+    auto scene = compile_lights({rectangle, sphere});
+    ASSERT_EQ(scene->lights().size(), 2u);
+    for (const Light* light : scene->lights()) {
+        EXPECT_EQ(light->kind(), Light::Kind::Point);
+        const LightSample s = light->sample(Vec3(0, 0, 0), Vec2(0.3f, 0.7f));
+        EXPECT_TRUE(std::isfinite(s.radiance.r));
+        EXPECT_NEAR(s.radiance.r, kPi, 1e-5f);
+    }
+}
+
+TEST(Lights, FlatEmitterProxyHasCosinePattern) {
+    auto glow = solid_material({1, 1, 1}, 0.0, {2, 2, 2});
+    auto scene = compile_lights({}, {mesh_object(triangle_mesh({0, 0, 0}, {2, 0, 0}, {0, 0, 2}), glow)});
+    ASSERT_EQ(scene->local_lights().size(), 1u);
+    const Light& proxy = *scene->local_lights()[0];
+    const Vec3 centre(2.0f / 3.0f, 0.0f, 2.0f / 3.0f);
+    // Intensity along the normal: Le * area = 2 * 2.
+    EXPECT_NEAR(proxy.sample(centre + Vec3(0, 10, 0), Vec2(0.5f)).radiance.r, 4.0f / 100.0f, 1e-5f);
+    EXPECT_NEAR(proxy.sample(centre + Vec3(10, 0, 0), Vec2(0.5f)).radiance.r, 0.0f, 1e-6f);
+    EXPECT_NEAR(scene->lights()[0]->power().r, proxy.power().r, 1e-3f * proxy.power().r);
+}
+
+}  // namespace
+}  // namespace lancer
