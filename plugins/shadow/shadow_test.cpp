@@ -115,6 +115,22 @@ TEST(ShadowIntegrator, AreaSamplesSoftenTheShadowEdge) {
     EXPECT_NEAR(mean_radiance(*soft, *unoccluded, at_edge, 64).g, proxy_lit, 0.03f * proxy_lit);
 }
 
+// With area_samples, the lamp's direct light is estimated without bias: on
+// a floor that sees only the lamp it converges to rho * Le * F (F the view
+// factor from the floor point to the square, Le = pi C / area).
+TEST(ShadowIntegrator, AreaSamplesConvergeToTheLampsDirectLight) {
+    sg::SceneGraph graph;
+    graph.objects.push_back(plane({0.0, 1.0, 0.0}, 0.0, default_material()));
+    graph.lights.push_back(square_light({0.0, 1.0, 0.0}, 1.0, sg::Vec3(10.0)));
+    const auto scene = RenderScene::compile(graph);
+    const auto soft = load_integrator("shadow", *scene, {{"area_samples", "16"}});
+    const double x = 0.5 / 1.0;  // half side over height
+    const double corner = 2.0 * x / std::sqrt(1.0 + x * x) * std::atan(x / std::sqrt(1.0 + x * x)) / (2.0 * M_PI);
+    const double expected = 0.1 + 0.6 * (M_PI * 10.0) * 4.0 * corner;
+    const Ray to_floor_centre = ray_towards(Vec3(0.0f, 0.3f, -3.0f), Vec3(0.0f));
+    EXPECT_NEAR(mean_radiance(*soft, *scene, to_floor_centre, 256).g, expected, 0.01 * expected);
+}
+
 TEST(ShadowIntegrator, RejectsNegativeAreaSamples) {
     const Plugin plugin = load_plugin("shadow");
     const ParameterSet parameters = resolve_parameters(*plugin.descriptor, {}, {"area_samples=-1"});
