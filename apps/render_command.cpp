@@ -55,7 +55,16 @@ void print_error(const std::string& message) {
     std::fprintf(stderr, "lancer: error: %s\n", message.c_str());
 }
 
+// Located diagnostics in the parser's format; one without a file (a setting
+// that came from no scene text) as a plain "lancer: error:" line.
 void print_diagnostic(const Diagnostic& diagnostic) {
+    if (!diagnostic.location.file) {
+        const char* severity = diagnostic.severity == Diagnostic::Severity::Error     ? "error"
+                               : diagnostic.severity == Diagnostic::Severity::Warning ? "warning"
+                                                                                      : "note";
+        std::fprintf(stderr, "lancer: %s: %s\n", severity, diagnostic.message.c_str());
+        return;
+    }
     std::string text = format_diagnostic(diagnostic);
     if (text.empty() || text.back() != '\n') text += '\n';
     std::fputs(text.c_str(), stderr);
@@ -63,10 +72,6 @@ void print_diagnostic(const Diagnostic& diagnostic) {
 
 // A SceneError from any stage after parsing, shown like a parser diagnostic.
 void print_scene_error(const SceneError& error) {
-    if (!error.location().file) {
-        print_error(error.what());
-        return;
-    }
     Diagnostic diagnostic;
     diagnostic.severity = Diagnostic::Severity::Error;
     diagnostic.location = error.location();
@@ -203,11 +208,7 @@ int run_render(const RenderArguments& arguments) {
         warning.location = settings.location;
         warning.message = "render_settings parameters are for integrator '" + *settings.integrator +
                           "'; ignored because -i chose '" + integrator_name + "'";
-        if (warning.location.file) {
-            print_diagnostic(warning);
-        } else {
-            std::fprintf(stderr, "lancer: warning: %s\n", warning.message.c_str());
-        }
+        print_diagnostic(warning);
         scene_parameters.clear();
     }
     // `plugin` must outlive `integrator`: its code lives in the plugin's library.
