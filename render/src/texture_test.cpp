@@ -1,0 +1,105 @@
+// Checker and image_map lookups through the compiled scene.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <OpenImageIO/imageio.h>
+
+#include "lancer/render_scene.h"
+#include "lancer/scene_error.h"
+#include "scene_test_helpers.h"
+
+namespace lancer {
+namespace {
+
+using namespace lancer::testing;
+namespace fs = std::filesystem;
+
+Color pigment_at(const RenderScene& scene, const Ray& ray) {
+    Hit hit;
+    EXPECT_TRUE(scene.intersect(ray, hit));
+    return hit.material->sample_surface(hit).pigment;
+}
+
+TEST(Textures, CheckerAlternatesUnitCellsInPatternSpace) {
+    auto m = std::make_shared<sg::Material>();
+    m->pigment.kind = sg::Pigment::Kind::Checker;
+    m->pigment.checker[0].rgb = {1, 1, 1};
+    m->pigment.checker[1].rgb = {0, 1, 0};
+    sg::SceneGraph graph;
+    graph.objects.push_back(plane_object({0, 1, 0}, 0.0, m));
+    auto scene = RenderScene::compile(graph);
+    const Vec3 down(0, -1, 0);
+    EXPECT_EQ(pigment_at(*scene, make_ray(Vec3(0.5f, 1, 0.5f), down)), Color(1, 1, 1));
+    EXPECT_EQ(pigment_at(*scene, make_ray(Vec3(1.5f, 1, 0.5f), down)), Color(0, 1, 0));
+    EXPECT_EQ(pigment_at(*scene, make_ray(Vec3(1.5f, 1, 1.5f), down)), Color(1, 1, 1));
+    EXPECT_EQ(pigment_at(*scene, make_ray(Vec3(-0.5f, 1, 0.5f), down)), Color(0, 1, 0));
+
+    // Scaled by 2 in the pigment, and moved with the object by +1 x.
+    auto scaled = std::make_shared<sg::Material>(*m);
+    scaled->pigment.pattern_from_object = glm::scale(glm::dmat4(1.0), glm::dvec3(0.5));
+    sg::Object plane = plane_object({0, 1, 0}, 0.0, scaled);
+    plane.parent_from_object = glm::translate(glm::dmat4(1.0), glm::dvec3(1, 0, 0));
+    sg::SceneGraph moved;
+    moved.objects.push_back(plane);
+    scene = RenderScene::compile(moved);
+    EXPECT_EQ(pigment_at(*scene, make_ray(Vec3(2.5f, 1, 0.5f), down)), Color(1, 1, 1));
+    EXPECT_EQ(pigment_at(*scene, make_ray(Vec3(3.5f, 1, 0.5f), down)), Color(0, 1, 0));
+}
+
+// A 2x2 PNG: red, green / blue, sRGB grey 188 (linear ~0.5).
+std::string write_test_png(const fs::path& dir) {
+    const std::string path = (dir / "tex.png").string();
+    const unsigned char pixels[] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 188, 188, 188};
+    auto out = OIIO::ImageOutput::create(path);
+    OIIO::ImageSpec spec(2, 2, 3, OIIO::TypeDesc::UINT8);
+    EXPECT_TRUE(out->open(path, spec));
+    EXPECT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
+    out->close();
+    return path;
+}
+
+TEST(Textures, ImageMapThroughUvDecodesSrgb) {
+    const fs::path dir = fs::temp_directory_path() / ("lancer_texture_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    auto m = std::make_shared<sg::Material>();
+    m->pigment.kind = sg::Pigment::Kind::Image;
+    m->pigment.image.path = write_test_png(dir);
+    m->pigment.image.interpolate = 0;  // nearest texel: exact values
+    sg::SceneGraph graph;
+    // Box face -z at z = 0 maps (x, y) in [0,1]^2; v = 1 is the image's top.
+    graph.objects.push_back(box_object({0, 0, 0}, {1, 1, 1}, m));
+    auto scene = RenderScene::compile(graph);
+    const Vec3 forward(0, 0, 1);
+    const Color top_left = pigment_at(*scene, make_ray(Vec3(0.25f, 0.75f, -1), forward));
+    const Color top_right = pigment_at(*scene, make_ray(Vec3(0.75f, 0.75f, -1), forward));
+    const Color bottom_left = pigment_at(*scene, make_ray(Vec3(0.25f, 0.25f, -1), forward));
+    const Color bottom_right = pigment_at(*scene, make_ray(Vec3(0.75f, 0.25f, -1), forward));
+    EXPECT_NEAR(top_left.r, 1.0f, 1e-3f);
+    EXPECT_NEAR(top_left.g, 0.0f, 1e-3f);
+    EXPECT_NEAR(top_right.g, 1.0f, 1e-3f);
+    EXPECT_NEAR(bottom_left.b, 1.0f, 1e-3f);
+    EXPECT_NEAR(bottom_right.r, 0.5029f, 2e-3f);  // sRGB 188 decoded to linear
+    fs::remove_all(dir);
+}
+
+TEST(Textures, MissingImageIsASceneErrorAtTheImageMap) {
+    auto m = std::make_shared<sg::Material>();
+    m->pigment.kind = sg::Pigment::Kind::Image;
+    m->pigment.image.path = "/nonexistent/lancer/image.png";
+    m->pigment.image.location.line = 42;
+    m->pigment.image.location.column = 7;
+    sg::SceneGraph graph;
+    graph.objects.push_back(sphere_object({0, 0, 0}, 1.0, m));
+    try {
+        RenderScene::compile(graph);
+        FAIL() << "expected a SceneError";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.location().line, 42);
+        EXPECT_EQ(e.location().column, 7);
+        EXPECT_NE(std::string(e.what()).find("image.png"), std::string::npos);
+    }
+}
+
+}  // namespace
+}  // namespace lancer
