@@ -45,7 +45,7 @@
 // |-----------------------|-------|---------|------------------------------------------------------|
 // | `n`                   | int   | 64      | points on the sphere: gathered rays per diffuse hit |
 // | `jitter`              | float | 1       | in [0, 1]: how far each hit moves the points (1: exact cosine distribution, 0: fixed lattice) |
-// | `max_depth`           | int   | 0       | deepest mirror/refraction level (camera ray = 1); 0: the scene's max_trace_level |
+// | `max_depth`           | int   | 0       | deepest mirror/refraction level (camera ray = 1); 0: the scene's max_trace_level; at most 256 |
 // | `fresnel`             | bool  | false   | Fresnel split of transparent surfaces, as whitted   |
 // | `additive_reflection` | bool  | false   | POV-Ray's sum: reflection does not remove the diffuse term |
 //
@@ -53,6 +53,7 @@
 //     lancer render scenes/cornell_box.pov -i gather -p n=100 -s 16 -o cornell_gather.png
 // or in the scene:
 //     render_settings { integrator "gather" { n 100 jitter 1 } samples 16 }
+#include <algorithm>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -66,6 +67,9 @@ namespace {
 
 using namespace lancer;
 
+// POV-Ray's own limit on max_trace_level; also bounds the recursion's stack.
+constexpr std::int64_t kMaxDepth = 256;
+
 class GatherIntegrator final : public Integrator {
 public:
     GatherIntegrator(int point_count, float jitter, int max_depth, bool fresnel, bool additive_reflection)
@@ -77,7 +81,8 @@ public:
 
     void prepare(const RenderScene& scene) override {
         m_lattice = SphereLattice(m_point_count);
-        m_options.max_depth = m_requested_depth > 0 ? m_requested_depth : scene.options().max_trace_level;
+        const int depth = m_requested_depth > 0 ? m_requested_depth : scene.options().max_trace_level;
+        m_options.max_depth = int(std::clamp<std::int64_t>(depth, 1, kMaxDepth));
         m_options.min_weight = scene.options().adc_bailout;
     }
 
@@ -167,8 +172,12 @@ std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
     const double jitter = parameters.get_float("jitter", 1.0);
     if (!(jitter >= 0.0 && jitter <= 1.0))
         throw std::invalid_argument("gather: jitter must lie in [0, 1], got " + std::to_string(jitter));
+    const std::int64_t max_depth = parameters.get_int("max_depth", 0);
+    if (max_depth < 0 || max_depth > kMaxDepth)
+        throw std::invalid_argument("gather: max_depth must lie in [0, " + std::to_string(kMaxDepth) + "], got " +
+                                    std::to_string(max_depth));
     return std::make_unique<GatherIntegrator>(static_cast<int>(point_count), static_cast<float>(jitter),
-                                              static_cast<int>(parameters.get_int("max_depth", 0)),
+                                              static_cast<int>(max_depth),
                                               parameters.get_bool("fresnel", false),
                                               parameters.get_bool("additive_reflection", false));
 }

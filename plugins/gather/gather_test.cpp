@@ -149,7 +149,7 @@ TEST(GatherIntegrator, ExtremeLatticeSizesGiveFiniteImages) {
 
 TEST(GatherIntegrator, RejectsOutOfRangeParameters) {
     const Plugin plugin = load_plugin("gather");
-    for (const char* bad : {"n=0", "jitter=1.5", "jitter=-0.1"})
+    for (const char* bad : {"n=0", "jitter=1.5", "jitter=-0.1", "max_depth=-1"})
         EXPECT_THROW(plugin.descriptor->create(resolve_parameters(*plugin.descriptor, {}, {bad})), std::invalid_argument)
             << bad;
 }

@@ -27,7 +27,7 @@
 //
 // | parameter             | type  | default | meaning                                              |
 // |-----------------------|-------|---------|------------------------------------------------------|
-// | `max_depth`           | int   | 0       | deepest ray level (camera ray = 1); 0: the scene's max_trace_level |
+// | `max_depth`           | int   | 0       | deepest ray level (camera ray = 1); 0: the scene's max_trace_level; at most 256 |
 // | `fresnel`             | bool  | false   | Fresnel split of transparent surfaces (reflect F, transmit 1 - F); false: the material's fixed coefficients |
 // | `additive_reflection` | bool  | false   | POV-Ray's sum: reflection does not remove the diffuse term |
 //
@@ -37,7 +37,10 @@
 //     lancer render scenes/glass.pov -i whitted -p fresnel=true -o glass.png
 // or in the scene:
 //     render_settings { integrator "whitted" { fresnel true max_depth 8 } }
+#include <algorithm>
 #include <iterator>
+#include <stdexcept>
+#include <string>
 
 #include <lancer/integrator.h>
 #include <lancer/specular_tracing.h>
@@ -45,6 +48,9 @@
 namespace {
 
 using namespace lancer;
+
+// POV-Ray's own limit on max_trace_level; also bounds the recursion's stack.
+constexpr std::int64_t kMaxDepth = 256;
 
 class WhittedIntegrator final : public Integrator {
 public:
@@ -55,13 +61,16 @@ public:
     }
 
     void prepare(const RenderScene& scene) override {
-        m_options.max_depth = m_requested_depth > 0 ? m_requested_depth : scene.options().max_trace_level;
+        const int depth = m_requested_depth > 0 ? m_requested_depth : scene.options().max_trace_level;
+        m_options.max_depth = int(std::clamp<std::int64_t>(depth, 1, kMaxDepth));
         m_options.min_weight = scene.options().adc_bailout;
     }
 
     Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const override {
         const auto lights_with_shadows = [&scene](const ShadingContext& at, const Color& diffuse_scale,
                                                   Sampler&) {
+            // A perfect mirror without highlights needs no shadow rays.
+            if (is_black(diffuse_scale) && !at.material.has_glossy()) return LobeRadiance{};
             LobeRadiance local = simple_direct_light(scene, at, Shadows::Hard);
             local.diffuse += opaque_ambient(scene, at);
             return local;
@@ -86,7 +95,11 @@ const ParameterDecl kParameters[] = {
 };
 
 std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
-    return std::make_unique<WhittedIntegrator>(static_cast<int>(parameters.get_int("max_depth", 0)),
+    const std::int64_t max_depth = parameters.get_int("max_depth", 0);
+    if (max_depth < 0 || max_depth > kMaxDepth)
+        throw std::invalid_argument("whitted: max_depth must lie in [0, " + std::to_string(kMaxDepth) + "], got " +
+                                    std::to_string(max_depth));
+    return std::make_unique<WhittedIntegrator>(static_cast<int>(max_depth),
                                                parameters.get_bool("fresnel", false),
                                                parameters.get_bool("additive_reflection", false));
 }

@@ -161,5 +161,11 @@ TEST(WhittedIntegrator, StopsWhenPathWeightFallsUnderAdcBailout) {
     EXPECT_NEAR(mean_radiance(*load_integrator("whitted", *scene), *scene, kAlongZ).g, 0.875f, 1e-5f);
 }
 
+TEST(WhittedIntegrator, RejectsNegativeDepth) {
+    const Plugin plugin = load_plugin("whitted");
+    EXPECT_THROW(plugin.descriptor->create(resolve_parameters(*plugin.descriptor, {}, {"max_depth=-1"})),
+                 std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace lancer
