@@ -211,7 +211,7 @@ void EmbreeScene::build() {
     m_scene = rtcNewScene(m_device);
     rtcSetSceneFlags(m_scene, RTCSceneFlags(RTC_SCENE_FLAG_ROBUST |
                                             (any_no_shadow_mesh ? RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION : 0)));
-    rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_MEDIUM);
 
     // Analytic kinds present in the scene, one user geometry each.
     std::map<ShapeKind, AnalyticGroup*> groups;
@@ -262,7 +262,7 @@ void EmbreeScene::build() {
         if (!shared) {
             shared = rtcNewScene(m_device);
             rtcSetSceneFlags(shared, RTC_SCENE_FLAG_ROBUST);
-            rtcSetSceneBuildQuality(shared, RTC_BUILD_QUALITY_HIGH);
+            rtcSetSceneBuildQuality(shared, RTC_BUILD_QUALITY_MEDIUM);
             RTCGeometry triangles = make_triangles(mesh, mesh.object_positions);
             rtcAttachGeometry(shared, triangles);
             rtcReleaseGeometry(triangles);
