@@ -302,10 +302,16 @@ Command add_render_command(CLI::App& app) {
     arguments->seed_option = render->add_option("--seed", arguments->seed, "Random seed (default: the scene's, else 0)");
     render->add_option("--threads", arguments->threads, "Worker threads (default 0: every core)");
     render->add_option("--crop", arguments->crop, "Render only pixels x0 <= x < x1, y0 <= y < y1");
-    render->add_option("-p,--parameter", arguments->parameters,
+    CLI::Option* parameter_option = render->add_option("-p,--parameter", arguments->parameters,
                        "Integrator parameter key=value (repeatable); overrides the scene's")
         ->allow_extra_args(false);
     render->add_flag("-q,--quiet", arguments->quiet, "No progress and no summary line");
+    // A repeated option takes its last value, so a script can append overrides.
+    for (CLI::Option* option : render->get_options()) {
+        if (option->get_expected_max() == 1 && option != parameter_option) {
+            option->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+        }
+    }
 
     Command command;
     command.cli = render;
