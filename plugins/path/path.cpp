@@ -42,6 +42,7 @@
 #include <iterator>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <lancer/bsdf_sampling.h>
@@ -80,6 +81,8 @@ public:
         const std::vector<const Light*>& lights = scene.lights();
         m_prepared_for = &scene;
         m_light_probability.assign(lights.size(), 0.0f);
+        m_light_cdf.clear();
+        m_light_index.clear();
         if (lights.empty()) return;
         const float uniform = 1.0f / float(lights.size());
         std::vector<double> power(lights.size(), 0.0);
@@ -96,6 +99,8 @@ public:
             else
                 m_light_probability[i] = float(0.9 * power[i] / total + 0.1 * uniform);
         }
+        m_light_index.clear();
+        for (std::size_t i = 0; i < lights.size(); ++i) m_light_index[lights[i]] = i;
         m_light_cdf.assign(lights.size(), 0.0f);
         float running = 0.0f;
         for (std::size_t i = 0; i < lights.size(); ++i) m_light_cdf[i] = running += m_light_probability[i];
@@ -211,9 +216,9 @@ private:
         const std::vector<const Light*>& lights = scene.lights();
         if (&scene != m_prepared_for || m_light_probability.size() != lights.size())
             return lights.empty() ? 0.0f : 1.0f / float(lights.size());
-        for (std::size_t i = 0; i < lights.size(); ++i)
-            if (lights[i] == light) return m_light_probability[i];
-        return 0.0f;  // not a light NEE knows: BSDF sampling takes full weight
+        const auto found = m_light_index.find(light);
+        // Not a light NEE knows: BSDF sampling takes full weight.
+        return found == m_light_index.end() ? 0.0f : m_light_probability[found->second];
     }
 
     // Light reaching `hit` straight from the lights, through the smooth
@@ -267,6 +272,7 @@ private:
     const RenderScene* m_prepared_for = nullptr;
     std::vector<float> m_light_probability;
     std::vector<float> m_light_cdf;
+    std::unordered_map<const Light*, std::size_t> m_light_index;
 };
 
 const ParameterDecl kParameters[] = {
