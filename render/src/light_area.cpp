@@ -80,10 +80,21 @@ DVec3 lift_towards(const DVec3& point, const DVec3& normal, const DVec3& p) {
     return glm::dot(normal, p - point) >= 0.0 ? point + lift * normal : point - lift * normal;
 }
 
+// True if p, at squared distance d2 from the centre, is clearly outside the
+// sphere. A point on the surface itself (a hit on an emissive sphere, whose
+// float position may round to just outside) must take the area branch: the
+// cone seen from there degenerates to the point's own neighbourhood, losing
+// most samples (the furnace test read 0.94 instead of 1). Area sampling is
+// valid from anywhere, and sample() and pdf() share this predicate, so the
+// margin costs nothing in bias.
+static bool outside_sphere(double d2, double radius) {
+    return d2 > radius * radius * (1.0 + 1e-4);
+}
+
 bool sample_sphere_cone(const DVec3& center, double radius, const DVec3& p, const Vec2& u, ConeSample& out) {
     const DVec3 to_center = center - p;
     const double d2 = glm::dot(to_center, to_center);
-    if (!(d2 > radius * radius)) return false;
+    if (!outside_sphere(d2, radius)) return false;
     const double sin2_max = radius * radius / d2;
     const double sin_max = std::sqrt(sin2_max);
     const double cos_max = std::sqrt(std::max(0.0, 1.0 - sin2_max));
@@ -115,7 +126,7 @@ bool sample_sphere_cone(const DVec3& center, double radius, const DVec3& p, cons
 double sphere_cone_pdf(const DVec3& center, double radius, const DVec3& p) {
     const DVec3 to_center = center - p;
     const double d2 = glm::dot(to_center, to_center);
-    if (!(d2 > radius * radius)) return 0.0;
+    if (!outside_sphere(d2, radius)) return 0.0;
     const double sin2_max = radius * radius / d2;
     const double one_minus_cos_max =
         sin2_max < 1e-4 ? 0.5 * sin2_max * (1.0 + 0.25 * sin2_max) : 1.0 - std::sqrt(1.0 - sin2_max);
