@@ -285,11 +285,11 @@ std::vector<Plugin> discover_plugins(std::vector<std::string>* problems) {
         std::sort(files.begin(), files.end());
         for (const auto& file : files) {
             const std::string name = file.stem().string();
-            // An earlier folder shadows a later one, as load_plugin does.
-            if (seen.count(name)) continue;
+            // An earlier folder shadows a later one, broken or not, exactly
+            // as load_plugin would pick it.
+            if (!seen.insert(name).second) continue;
             try {
                 plugins.push_back(open_plugin_file(file.string(), name));
-                seen.insert(name);
             } catch (const PluginError& failure) {
                 if (problems) problems->push_back(failure.what());
             }
