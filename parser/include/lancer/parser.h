@@ -18,6 +18,9 @@ struct Diagnostic {
     std::string message;
     // Where the file holding `location` was included from, innermost first.
     std::vector<sg::SourceLocation> include_chain;
+    // The text of location.line (without its newline), for the caret display;
+    // empty when unknown (format_diagnostic then reads the file).
+    std::string source_line;
 };
 
 struct ParseOptions {

@@ -1,0 +1,257 @@
+// Built-in functions: POV-Ray's float, vector and string functions. Domain
+// errors (sqrt(-1), log(0), ...) are located errors, never NaN or infinity.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <unordered_map>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "evaluator.h"
+
+namespace lancer::parse {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Call {
+    Evaluator& ev;
+    const std::string& name;
+    const std::vector<Value>& args;
+    const SourceRange& where;
+
+    double f(size_t i) { return ev.to_float(args[i], where, "a float argument " + std::to_string(i + 1) + " of " + name + "()"); }
+    sg::Vec3 vec(size_t i) { return ev.to_vec3(args[i], where); }
+    std::string s(size_t i) { return ev.to_string(args[i], where); }
+    void domain(const std::string& problem) { ev.error(where.begin, name + "(): " + problem); }
+};
+
+std::string format_number(double value, int width, int precision) {
+    char buffer[128];
+    std::snprintf(buffer, sizeof buffer, "%*.*f", std::clamp(width, 0, 60), std::clamp(precision, 0, 30), value);
+    return buffer;
+}
+
+sg::Vec3 rotate_degrees(const sg::Vec3& p, const sg::Vec3& degrees) {
+    sg::Mat4 m(1.0);
+    m = glm::rotate(sg::Mat4(1.0), glm::radians(degrees.x), sg::Vec3(1, 0, 0));
+    m = glm::rotate(sg::Mat4(1.0), glm::radians(degrees.y), sg::Vec3(0, 1, 0)) * m;
+    m = glm::rotate(sg::Mat4(1.0), glm::radians(degrees.z), sg::Vec3(0, 0, 1)) * m;
+    return sg::Vec3(m * glm::dvec4(p, 0.0));
+}
+
+}  // namespace
+
+Value builtin_seed(Evaluator& ev, const std::vector<Value>& args, const SourceRange& where) {
+    double s = ev.to_float(args[0], where, "a float seed");
+    long id = static_cast<long>(ev.m_random_streams.size()) + 1;
+    ev.m_random_streams.emplace(id, std::mt19937(static_cast<unsigned>(static_cast<long long>(s))));
+    return Value::number(static_cast<double>(id));
+}
+
+Value builtin_rand(Evaluator& ev, const std::vector<Value>& args, const SourceRange& where) {
+    long id = static_cast<long>(ev.to_float(args[0], where, "a random stream from seed()"));
+    auto stream = ev.m_random_streams.find(id);
+    if (stream == ev.m_random_streams.end()) {
+        ev.error(where.begin, "rand() needs a stream made by seed(), e.g. #declare S = seed(42); rand(S)");
+        return Value::number(0.0);
+    }
+    return Value::number(std::uniform_real_distribution<double>(0.0, 1.0)(stream->second));
+}
+
+Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>& args, const SourceRange& where) {
+    static const std::unordered_map<std::string, std::pair<int, int>> arity = {
+        {"abs", {1, 1}}, {"sqrt", {1, 1}}, {"sqr", {1, 1}}, {"pow", {2, 2}}, {"exp", {1, 1}}, {"log", {1, 1}},
+        {"ln", {1, 1}}, {"sin", {1, 1}}, {"cos", {1, 1}}, {"tan", {1, 1}}, {"asin", {1, 1}}, {"acos", {1, 1}},
+        {"atan", {1, 1}}, {"atan2", {2, 2}}, {"sinh", {1, 1}}, {"cosh", {1, 1}}, {"tanh", {1, 1}},
+        {"asinh", {1, 1}}, {"acosh", {1, 1}}, {"atanh", {1, 1}}, {"min", {1, 99}}, {"max", {1, 99}},
+        {"floor", {1, 1}}, {"ceil", {1, 1}}, {"mod", {2, 2}}, {"int", {1, 1}}, {"div", {2, 2}},
+        {"radians", {1, 1}}, {"degrees", {1, 1}}, {"vlength", {1, 1}}, {"vnormalize", {1, 1}},
+        {"vcross", {2, 2}}, {"vdot", {2, 2}}, {"vrotate", {2, 2}}, {"vaxis_rotate", {3, 3}}, {"seed", {1, 1}},
+        {"rand", {1, 1}}, {"select", {3, 4}}, {"concat", {1, 99}}, {"str", {3, 3}}, {"strlen", {1, 1}},
+        {"substr", {3, 3}}, {"chr", {1, 1}}, {"val", {1, 1}}, {"strupr", {1, 1}}, {"strlwr", {1, 1}},
+        {"vstr", {5, 5}}, {"asc", {1, 1}}, {"bitwise_and", {2, 99}}, {"bitwise_or", {2, 99}},
+        {"file_exists", {1, 1}}};
+    auto expected = arity.find(name);
+    if (expected == arity.end()) {
+        error(where.begin, "unknown function '" + name + "'");
+        return Value::number(0.0);
+    }
+    int count = static_cast<int>(args.size());
+    if (count < expected->second.first || count > expected->second.second) {
+        std::string wanted = expected->second.first == expected->second.second
+                                 ? std::to_string(expected->second.first)
+                                 : std::to_string(expected->second.first) + " or more";
+        error(where.begin, name + "() takes " + wanted + " argument(s), " + std::to_string(count) + " given");
+        return Value::number(0.0);
+    }
+    Call c{*this, name, args, where};
+    auto number = [&](double x) { return checked(Value::number(x), where, "the result of " + name + "()"); };
+
+    // Float functions.
+    if (name == "abs") return number(std::fabs(c.f(0)));
+    if (name == "sqrt") {
+        double x = c.f(0);
+        if (x < 0) {
+            c.domain("square root of a negative number (" + std::to_string(x) + ")");
+            return Value::number(0.0);
+        }
+        return number(std::sqrt(x));
+    }
+    if (name == "sqr") return number(c.f(0) * c.f(0));
+    if (name == "pow") {
+        double base = c.f(0), exponent = c.f(1);
+        if (base == 0.0 && exponent < 0.0) {
+            c.domain("zero to a negative power");
+            return Value::number(0.0);
+        }
+        if (base < 0.0 && exponent != std::floor(exponent)) {
+            c.domain("negative base to a fractional power");
+            return Value::number(0.0);
+        }
+        return number(std::pow(base, exponent));
+    }
+    if (name == "exp") return number(std::exp(c.f(0)));
+    if (name == "log" || name == "ln") {
+        double x = c.f(0);
+        if (x <= 0) {
+            c.domain("logarithm of a non-positive number (" + std::to_string(x) + ")");
+            return Value::number(0.0);
+        }
+        return number(name == "log" ? std::log10(x) : std::log(x));
+    }
+    if (name == "sin") return number(std::sin(c.f(0)));
+    if (name == "cos") return number(std::cos(c.f(0)));
+    if (name == "tan") return number(std::tan(c.f(0)));
+    if (name == "asin" || name == "acos") {
+        double x = c.f(0);
+        if (x < -1.0 || x > 1.0) {
+            c.domain("argument " + std::to_string(x) + " outside [-1, 1]");
+            return Value::number(0.0);
+        }
+        return number(name == "asin" ? std::asin(x) : std::acos(x));
+    }
+    if (name == "atan") return number(std::atan(c.f(0)));
+    if (name == "atan2") return number(std::atan2(c.f(0), c.f(1)));
+    if (name == "sinh") return number(std::sinh(c.f(0)));
+    if (name == "cosh") return number(std::cosh(c.f(0)));
+    if (name == "tanh") return number(std::tanh(c.f(0)));
+    if (name == "asinh") return number(std::asinh(c.f(0)));
+    if (name == "acosh") return number(std::acosh(c.f(0)));
+    if (name == "atanh") return number(std::atanh(c.f(0)));
+    if (name == "min" || name == "max") {
+        double r = c.f(0);
+        for (size_t i = 1; i < args.size(); ++i) r = name == "min" ? std::min(r, c.f(i)) : std::max(r, c.f(i));
+        return number(r);
+    }
+    if (name == "floor") return number(std::floor(c.f(0)));
+    if (name == "ceil") return number(std::ceil(c.f(0)));
+    if (name == "int") return number(std::trunc(c.f(0)));
+    if (name == "mod" || name == "div") {
+        double a = c.f(0), b = c.f(1);
+        if (b == 0.0) {
+            c.domain("division by zero");
+            return Value::number(0.0);
+        }
+        return number(name == "mod" ? std::fmod(a, b) : std::trunc(a / b));
+    }
+    if (name == "radians") return number(c.f(0) * kPi / 180.0);
+    if (name == "degrees") return number(c.f(0) * 180.0 / kPi);
+    if (name == "select") {
+        double s = c.f(0);
+        if (args.size() == 3) return s < 0 ? args[1] : args[2];
+        return s < 0 ? args[1] : s == 0 ? args[2] : args[3];
+    }
+    if (name == "bitwise_and" || name == "bitwise_or") {
+        long r = static_cast<long>(c.f(0));
+        for (size_t i = 1; i < args.size(); ++i) r = name == "bitwise_and" ? r & static_cast<long>(c.f(i)) : r | static_cast<long>(c.f(i));
+        return number(static_cast<double>(r));
+    }
+    if (name == "seed") return builtin_seed(*this, args, where);
+    if (name == "rand") return builtin_rand(*this, args, where);
+
+    // Vector functions.
+    if (name == "vlength") return number(glm::length(c.vec(0)));
+    if (name == "vnormalize") {
+        sg::Vec3 v = c.vec(0);
+        if (glm::length(v) == 0.0) {
+            c.domain("cannot normalize a zero vector");
+            return Value::vec3(sg::Vec3(0.0));
+        }
+        return Value::vec3(glm::normalize(v));
+    }
+    if (name == "vcross") return checked(Value::vec3(glm::cross(c.vec(0), c.vec(1))), where, "vcross()");
+    if (name == "vdot") return number(glm::dot(c.vec(0), c.vec(1)));
+    if (name == "vrotate") return checked(Value::vec3(rotate_degrees(c.vec(0), c.vec(1))), where, "vrotate()");
+    if (name == "vaxis_rotate") {
+        sg::Vec3 axis = c.vec(1);
+        if (glm::length(axis) == 0.0) {
+            c.domain("zero rotation axis");
+            return args[0];
+        }
+        sg::Mat4 m = glm::rotate(sg::Mat4(1.0), glm::radians(c.f(2)), glm::normalize(axis));
+        return checked(Value::vec3(sg::Vec3(m * glm::dvec4(c.vec(0), 0.0))), where, "vaxis_rotate()");
+    }
+
+    // String functions.
+    if (name == "concat") {
+        std::string r;
+        for (size_t i = 0; i < args.size(); ++i) r += c.s(i);
+        return Value::string(r);
+    }
+    if (name == "str") return Value::string(format_number(c.f(0), static_cast<int>(c.f(1)), c.f(2) < 0 ? 6 : static_cast<int>(c.f(2))));
+    if (name == "vstr") {
+        int dims = static_cast<int>(c.f(0));
+        const Value& v = args[1];
+        std::string sep = c.s(2), r;
+        for (int i = 0; i < dims && i < 5; ++i) {
+            if (i) r += sep;
+            r += format_number(v.v[std::min(i, v.size - 1)], static_cast<int>(c.f(3)), static_cast<int>(c.f(4)));
+        }
+        return Value::string(r);
+    }
+    if (name == "strlen") return number(static_cast<double>(c.s(0).size()));
+    if (name == "substr") {
+        std::string s = c.s(0);
+        long start = static_cast<long>(c.f(1)), length = static_cast<long>(c.f(2));
+        if (start < 1 || length < 0 || start - 1 + length > static_cast<long>(s.size())) {
+            c.domain("range outside the string");
+            return Value::string("");
+        }
+        return Value::string(s.substr(start - 1, length));
+    }
+    if (name == "chr") {
+        long code = static_cast<long>(c.f(0));
+        if (code < 1 || code > 127) {
+            c.domain("only ASCII codes 1..127 are supported");
+            return Value::string("");
+        }
+        return Value::string(std::string(1, static_cast<char>(code)));
+    }
+    if (name == "asc") {
+        std::string s = c.s(0);
+        return number(s.empty() ? 0.0 : static_cast<unsigned char>(s[0]));
+    }
+    if (name == "val") {
+        std::string s = c.s(0);
+        char* end = nullptr;
+        double x = std::strtod(s.c_str(), &end);
+        return number(end == s.c_str() ? 0.0 : x);
+    }
+    if (name == "strupr" || name == "strlwr") {
+        std::string s = c.s(0);
+        for (auto& ch : s) ch = name == "strupr" ? std::toupper(ch) : std::tolower(ch);
+        return Value::string(s);
+    }
+    if (name == "file_exists") {
+        std::error_code ec;
+        return number(std::filesystem::exists(c.s(0), ec) ? 1.0 : 0.0);
+    }
+    error(where.begin, "unknown function '" + name + "'");
+    return Value::number(0.0);
+}
+
+}  // namespace lancer::parse

@@ -1,0 +1,173 @@
+// Diagnostics: located errors and warnings with the source line, a caret,
+// the include chain, and "did you mean" suggestions.
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "evaluator.h"
+
+namespace lancer {
+
+namespace {
+
+const char* severity_name(Diagnostic::Severity severity) {
+    switch (severity) {
+    case Diagnostic::Severity::Error: return "error";
+    case Diagnostic::Severity::Warning: return "warning";
+    case Diagnostic::Severity::Note: return "note";
+    }
+    return "error";
+}
+
+std::string location_text(const sg::SourceLocation& where) {
+    std::string text = where.file ? *where.file : std::string("<unknown>");
+    if (where.line > 0) text += ":" + std::to_string(where.line);
+    if (where.column > 0) text += ":" + std::to_string(where.column);
+    return text;
+}
+
+std::string read_line(const sg::SourceLocation& where) {
+    if (!where.file || where.line <= 0) return "";
+    std::ifstream in(*where.file);
+    std::string line;
+    for (int i = 0; i < where.line && std::getline(in, line); ++i) {
+    }
+    return in ? line : "";
+}
+
+}  // namespace
+
+std::string format_diagnostic(const Diagnostic& diagnostic) {
+    std::ostringstream out;
+    out << location_text(diagnostic.location) << ": " << severity_name(diagnostic.severity) << ": "
+        << diagnostic.message << "\n";
+    std::string line = diagnostic.source_line.empty() ? read_line(diagnostic.location) : diagnostic.source_line;
+    if (!line.empty() && diagnostic.location.column > 0) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        out << "  " << line << "\n  ";
+        // The caret goes under the column-th code point; tabs are kept so it lines up.
+        int column = 1;
+        for (size_t i = 0; i < line.size() && column < diagnostic.location.column; ++i) {
+            unsigned char c = static_cast<unsigned char>(line[i]);
+            if ((c & 0xC0) == 0x80) continue;
+            out << (c == '\t' ? '\t' : ' ');
+            ++column;
+        }
+        out << "^\n";
+    }
+    for (const auto& from : diagnostic.include_chain) {
+        out << location_text(from) << ": note: included from here\n";
+    }
+    return out.str();
+}
+
+namespace parse {
+
+namespace {
+
+size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<size_t> previous(b.size() + 1), current(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        current[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            size_t substitution = previous[j - 1] + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1);
+            current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
+        }
+        std::swap(previous, current);
+    }
+    return previous[b.size()];
+}
+
+}  // namespace
+
+std::string Evaluator::suggestion(const std::string& name) const {
+    std::vector<std::string> candidates;
+    for (const auto& scope : m_scopes)
+        for (const auto& [declared, value] : scope) candidates.push_back(declared);
+    for (const auto& [macro, definition] : m_macros) candidates.push_back(macro);
+    for (int k = Parser::symbol_kind::S_SPHERE; k < Parser::symbol_kind::YYNTOKENS; ++k)
+        candidates.push_back(Parser::symbol_name(static_cast<Parser::symbol_kind_type>(k)));
+    std::string best;
+    size_t best_distance = std::max<size_t>(2, name.size() / 3) + 1;
+    for (const auto& candidate : candidates) {
+        if (candidate == name) continue;
+        size_t distance = edit_distance(name, candidate);
+        if (distance < best_distance) {
+            best_distance = distance;
+            best = candidate;
+        }
+    }
+    return best;
+}
+
+void Evaluator::error(const sg::SourceLocation& where, const std::string& message) {
+    Diagnostic diagnostic;
+    diagnostic.severity = Diagnostic::Severity::Error;
+    diagnostic.location = where;
+    diagnostic.message = message;
+    if (where.file) {
+        auto chain = m_include_chains.find(where.file.get());
+        if (chain != m_include_chains.end()) diagnostic.include_chain = chain->second;
+        auto buffer = m_buffers.find(where.file.get());
+        if (buffer != m_buffers.end() && where.line >= 1 && where.line <= static_cast<int>(buffer->second->lines.size()))
+            diagnostic.source_line = buffer->second->lines[where.line - 1];
+    }
+    m_diagnostics.push_back(std::move(diagnostic));
+    if (++m_error_count >= 30) {
+        if (m_error_count == 30) note(where, "too many errors; stopping");
+        abort_parse();
+    }
+}
+
+void Evaluator::warning(const sg::SourceLocation& where, const std::string& message) {
+    error(where, message);
+    --m_error_count;
+    m_diagnostics.back().severity = Diagnostic::Severity::Warning;
+}
+
+void Evaluator::note(const sg::SourceLocation& where, const std::string& message) {
+    warning(where, message);
+    m_diagnostics.back().severity = Diagnostic::Severity::Note;
+}
+
+void Evaluator::ignored(const sg::SourceLocation& where, const std::string& what) {
+    warning(where, what + " is accepted but ignored by lancer");
+}
+
+void Evaluator::hint(const sg::SourceLocation& where, const std::string& what) {
+    warning(where, what + " is recorded but has no effect: lancer samples area lights physically");
+}
+
+void Evaluator::unknown_identifier(const std::string& name, const sg::SourceLocation& where, const std::string& expected) {
+    std::string near = suggestion(name);
+    error(where, "unknown identifier '" + name + "' (expected " + expected + ")" +
+                     (near.empty() ? "" : "; did you mean '" + near + "'?"));
+}
+
+void Evaluator::syntax_error(const SourceRange& where, const std::string& message) {
+    if (m_aborted || m_suppress_syntax_errors) {
+        abort_parse();
+        return;
+    }
+    // Bison says "syntax error, unexpected X, expecting A or B".
+    std::string text = message;
+    const std::string prefix = "syntax error, ";
+    if (text.rfind(prefix, 0) == 0) text = text.substr(prefix.size());
+    size_t expecting = text.find(", expecting ");
+    std::string unexpected = expecting == std::string::npos ? text : text.substr(0, expecting);
+    std::string expected = expecting == std::string::npos ? "" : text.substr(expecting + 12);
+    if (unexpected == "unexpected undeclared identifier" && !m_last_undeclared.empty()) {
+        std::string near = suggestion(m_last_undeclared);
+        unexpected = "unknown identifier '" + m_last_undeclared + "'";
+        if (!near.empty()) unexpected += "; did you mean '" + near + "'?";
+    }
+    text = unexpected + (expected.empty() ? "" : " (expected " + expected + ")");
+    sg::SourceLocation at = where.begin;
+    if (!at.file) at = m_last_location;
+    error(at, text);
+    abort_parse();
+}
+
+}  // namespace parse
+}  // namespace lancer

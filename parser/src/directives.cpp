@@ -1,0 +1,563 @@
+// Directives, executed by the token stream as it meets them: #declare,
+// #local, #undef, conditionals, loops, #switch, #macro, #include, #version,
+// #default and the message directives.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "evaluator.h"
+
+namespace lancer::parse {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* control_name(Evaluator::Control::Kind kind) {
+    switch (kind) {
+    case Evaluator::Control::Kind::If: return "#if";
+    case Evaluator::Control::Kind::While: return "#while";
+    case Evaluator::Control::Kind::For: return "#for";
+    case Evaluator::Control::Kind::Switch: return "#switch";
+    case Evaluator::Control::Kind::Macro: return "#macro";
+    }
+    return "#if";
+}
+
+bool opens_block(const std::string& name) {
+    return name == "if" || name == "ifdef" || name == "ifndef" || name == "while" || name == "for" ||
+           name == "switch" || name == "macro";
+}
+
+}  // namespace
+
+void Evaluator::run_directive(const RawToken& d) {
+    const std::string& n = d.text;
+    if (n == "declare") return directive_declare(d, false);
+    if (n == "local") return directive_declare(d, true);
+    if (n == "if") return directive_if(d, false, false);
+    if (n == "ifdef") return directive_if(d, true, false);
+    if (n == "ifndef") return directive_if(d, true, true);
+    if (n == "else") return directive_else(d, false);
+    if (n == "elseif") return directive_else(d, true);
+    if (n == "while") return directive_while(d);
+    if (n == "for") return directive_for(d);
+    if (n == "switch") return directive_switch(d);
+    if (n == "case") return directive_case(d, false);
+    if (n == "range") return directive_case(d, true);
+    if (n == "break") return directive_break(d);
+    if (n == "end") return directive_end(d);
+    if (n == "macro") return directive_macro(d);
+    if (n == "include") return directive_include(d);
+    if (n == "debug" || n == "warning" || n == "error") return directive_message(d);
+    if (n == "undef") return directive_undef(d);
+    if (n == "version") return directive_version(d);
+    if (n == "default") return directive_default(d);
+    if (n == "fopen" || n == "fclose" || n == "read" || n == "write" || n == "render") {
+        error(d.location, "#" + n + " is a POV-Ray directive that lancer does not support");
+    } else {
+        static const std::vector<std::string> known = {"declare", "local", "undef", "include", "if", "ifdef",
+                                                       "ifndef", "elseif", "else", "end", "while", "for",
+                                                       "switch", "case", "range", "break", "macro", "version",
+                                                       "debug", "warning", "error", "default"};
+        std::string best;
+        size_t best_distance = 3;
+        for (const auto& k : known) {
+            // cheap prefix-insensitive closeness: reuse the identifier suggester's metric
+            size_t distance = 0;
+            size_t common = 0;
+            while (common < k.size() && common < n.size() && k[common] == n[common]) ++common;
+            distance = std::max(k.size(), n.size()) - common;
+            if (distance < best_distance) best_distance = distance, best = k;
+        }
+        error(d.location, "unknown directive '#" + n + "'" + (best.empty() ? "" : "; did you mean '#" + best + "'?"));
+    }
+    abort_parse();
+}
+
+// #declare Name = value [;]   /   #local Name = value [;]
+void Evaluator::directive_declare(const RawToken& d, bool local) {
+    sg::SourceLocation where = d.location;
+    std::string name = expect_raw_identifier("after #" + d.text, &where);
+    if (name.empty()) {
+        const RawToken* next = peek_raw();
+        error(next ? next->location : d.location, "expected an identifier after #" + d.text);
+        return abort_parse();
+    }
+    if (is_reserved_word(name)) {
+        error(where, "cannot #" + d.text + " '" + name + "': it is a reserved word of the scene language");
+        return abort_parse();
+    }
+    if (m_aborted) return;
+    if (take_punct("[")) {
+        error(where, "arrays are not supported by lancer ('" + name + "[...]')");
+        return abort_parse();
+    }
+    if (!expect_raw_punct("=", "after '#" + d.text + " " + name + "'")) return;
+    Value value = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
+    if (m_aborted) return;
+    bool terminated = take_punct(";");
+    if (!terminated && value.is_numeric() || !terminated && value.kind == Value::Kind::String) {
+        warning(where, "missing ';' after the value of #" + d.text + " " + name +
+                           " (POV-Ray 3.5+ requires it for floats, vectors, colours and strings)");
+    }
+    if (value.kind == Value::Kind::Texture && value.texture && value.texture->name.empty()) {
+        auto named = std::make_shared<sg::Material>(*value.texture);
+        named->name = name;
+        value.texture = named;
+    }
+    store(name, std::move(value), local, where);
+}
+
+void Evaluator::directive_undef(const RawToken& d) {
+    std::string name = expect_raw_identifier("after #undef");
+    if (name.empty()) {
+        error(d.location, "expected an identifier after #undef");
+        return abort_parse();
+    }
+    m_macros.erase(name);
+    for (auto scope = m_scopes.rbegin(); scope != m_scopes.rend(); ++scope) {
+        if (scope->erase(name)) return;
+    }
+}
+
+bool Evaluator::evaluate_condition(const RawToken& d, const std::string& what) {
+    Value value = parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+    rewind_lookahead();
+    if (m_aborted) return false;
+    SourceRange where{d.location, d.location};
+    return to_float(value, where, "a float condition for " + what) != 0.0;
+}
+
+const RawToken* Evaluator::skip_block(const sg::SourceLocation& opened_at, const std::string& opener, SkipStop stop) {
+    rewind_lookahead();
+    m_pending.clear();
+    Frame& frame = *m_frames.back();
+    int depth = 0;
+    while (frame.position < frame.end) {
+        const RawToken& token = frame.buffer->tokens[frame.position++];
+        if (token.kind != RawKind::Directive) continue;
+        if (opens_block(token.text)) {
+            ++depth;
+        } else if (token.text == "end") {
+            if (depth == 0) return &token;
+            --depth;
+        } else if (depth == 0) {
+            if (stop == SkipStop::ElseOrEnd && (token.text == "else" || token.text == "elseif")) return &token;
+            if (stop == SkipStop::CaseOrEnd && (token.text == "case" || token.text == "range" || token.text == "else"))
+                return &token;
+        }
+    }
+    error(opened_at, opener + " has no matching #end" + (frame.is_macro ? " inside macro '" + frame.name + "'" : ""));
+    abort_parse();
+    return nullptr;
+}
+
+// #if (cond) / #ifdef (Name) / #ifndef (Name)
+void Evaluator::directive_if(const RawToken& d, bool ifdef, bool negate) {
+    bool taken;
+    if (ifdef) {
+        sg::SourceLocation where = d.location;
+        if (!expect_raw_punct("(", "after #" + d.text)) return;
+        std::string name = expect_raw_identifier("in #" + d.text, &where);
+        if (name.empty()) {
+            error(d.location, "expected an identifier in #" + d.text + " (Name)");
+            return abort_parse();
+        }
+        if (!expect_raw_punct(")", "after the identifier of #" + d.text)) return;
+        taken = (lookup(name) != nullptr || m_macros.count(name) > 0) != negate;
+    } else {
+        taken = evaluate_condition(d, "#if");
+    }
+    if (m_aborted) return;
+    Control control;
+    control.kind = Control::Kind::If;
+    control.opened_at = d.location;
+    m_frames.back()->controls.push_back(control);
+    while (!taken) {
+        const RawToken* stop = skip_block(d.location, "#" + d.text, SkipStop::ElseOrEnd);
+        if (!stop) return;
+        if (stop->text == "end") {
+            m_frames.back()->controls.pop_back();
+            return;
+        }
+        if (stop->text == "else") return;
+        taken = evaluate_condition(*stop, "#elseif");  // #elseif
+        if (m_aborted) return;
+    }
+}
+
+// Reached #else/#elseif while running a taken branch: skip to the #end.
+void Evaluator::directive_else(const RawToken& d, bool elseif) {
+    auto& controls = m_frames.back()->controls;
+    if (controls.empty() || (controls.back().kind != Control::Kind::If && controls.back().kind != Control::Kind::Switch)) {
+        error(d.location, "#" + d.text + " without a matching #if");
+        return abort_parse();
+    }
+    if (controls.back().kind == Control::Kind::Switch) {
+        if (elseif) {
+            error(d.location, "#elseif inside #switch; use #case");
+            return abort_parse();
+        }
+        return;  // falling through from a #case into #else: keep going
+    }
+    if (!skip_block(controls.back().opened_at, "#if", SkipStop::End)) return;
+    controls.pop_back();
+}
+
+void Evaluator::directive_while(const RawToken& d) {
+    Frame& frame = *m_frames.back();
+    size_t condition_at = frame.position;
+    if (!evaluate_condition(d, "#while")) {
+        if (!m_aborted) skip_block(d.location, "#while", SkipStop::End);
+        return;
+    }
+    Control control;
+    control.kind = Control::Kind::While;
+    control.opened_at = d.location;
+    control.loop_position = condition_at;
+    control.iterations = 1;
+    m_frames.back()->controls.push_back(control);
+}
+
+// #for (Name, Start, End [, Step])
+void Evaluator::directive_for(const RawToken& d) {
+    if (!expect_raw_punct("(", "after #for")) return;
+    sg::SourceLocation where = d.location;
+    std::string name = expect_raw_identifier("in #for", &where);
+    if (name.empty()) {
+        error(d.location, "expected #for (Identifier, Start, End [, Step])");
+        return abort_parse();
+    }
+    if (!expect_raw_punct(",", "after the #for variable")) return;
+    SourceRange range{d.location, d.location};
+    double start = to_float(parse_nested(Parser::token::TOK_START_EXPR, d.location, true), range, "a float start for #for");
+    if (m_aborted || !expect_raw_punct(",", "after the start value of #for")) return;
+    double end = to_float(parse_nested(Parser::token::TOK_START_EXPR, d.location, true), range, "a float end for #for");
+    if (m_aborted) return;
+    double step = 1.0;
+    if (take_punct(",")) {
+        step = to_float(parse_nested(Parser::token::TOK_START_EXPR, d.location, true), range, "a float step for #for");
+        if (m_aborted) return;
+    }
+    if (!expect_raw_punct(")", "to close #for (...)")) return;
+    if (step == 0.0) {
+        error(d.location, "#for step is 0: the loop would never end");
+        return abort_parse();
+    }
+    store(name, Value::number(start), true, where);
+    if (step > 0 ? start > end : start < end) {
+        skip_block(d.location, "#for", SkipStop::End);
+        return;
+    }
+    Control control;
+    control.kind = Control::Kind::For;
+    control.opened_at = d.location;
+    control.loop_position = m_frames.back()->position;
+    control.variable = name;
+    control.end = end;
+    control.step = step;
+    control.iterations = 1;
+    m_frames.back()->controls.push_back(control);
+}
+
+void Evaluator::directive_switch(const RawToken& d) {
+    Value value = parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+    rewind_lookahead();
+    if (m_aborted) return;
+    Control control;
+    control.kind = Control::Kind::Switch;
+    control.opened_at = d.location;
+    control.switch_value = to_float(value, SourceRange{d.location, d.location}, "a float for #switch");
+    m_frames.back()->controls.push_back(control);
+    // Find the first clause that matches.
+    while (true) {
+        const RawToken* stop = skip_block(d.location, "#switch", SkipStop::CaseOrEnd);
+        if (!stop) return;
+        if (stop->text == "end") {
+            m_frames.back()->controls.pop_back();
+            return;
+        }
+        if (stop->text == "else") {
+            m_frames.back()->controls.back().case_matched = true;
+            return;
+        }
+        bool range = stop->text == "range";
+        SourceRange where{stop->location, stop->location};
+        bool matched;
+        if (range) {
+            // #range (low, high)
+            RawToken at = *stop;
+            if (!expect_raw_punct("(", "after #range")) return;
+            double low = to_float(parse_nested(Parser::token::TOK_START_EXPR, at.location, true), where, "a float for #range");
+            if (m_aborted || !expect_raw_punct(",", "between the bounds of #range")) return;
+            double high = to_float(parse_nested(Parser::token::TOK_START_EXPR, at.location, true), where, "a float for #range");
+            if (m_aborted || !expect_raw_punct(")", "to close #range (low, high)")) return;
+            matched = control.switch_value >= low && control.switch_value <= high;
+        } else {
+            Value value = parse_nested(Parser::token::TOK_START_EXPR, stop->location, true);
+            if (m_aborted) return;
+            matched = control.switch_value == to_float(value, where, "a float for #case");
+        }
+        rewind_lookahead();
+        if (matched) {
+            m_frames.back()->controls.back().case_matched = true;
+            return;
+        }
+    }
+}
+
+// A #case/#range reached while running a matched clause: POV-Ray falls through.
+void Evaluator::directive_case(const RawToken& d, bool range) {
+    auto& controls = m_frames.back()->controls;
+    if (controls.empty() || controls.back().kind != Control::Kind::Switch) {
+        error(d.location, "#" + d.text + " outside #switch");
+        return abort_parse();
+    }
+    if (range) {
+        if (!expect_raw_punct("(", "after #range")) return;
+        parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+        if (m_aborted || !expect_raw_punct(",", "between the bounds of #range")) return;
+        parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+        if (!m_aborted) expect_raw_punct(")", "to close #range (low, high)");
+        return;
+    }
+    parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+    rewind_lookahead();
+}
+
+void Evaluator::directive_break(const RawToken& d) {
+    auto& controls = m_frames.back()->controls;
+    size_t target = controls.size();
+    while (target > 0 && controls[target - 1].kind == Control::Kind::If) --target;
+    if (target == 0) {
+        error(d.location, "#break outside #switch, #while or #for");
+        return abort_parse();
+    }
+    while (controls.size() >= target) {
+        if (!skip_block(controls.back().opened_at, control_name(controls.back().kind), SkipStop::End)) return;
+        controls.pop_back();
+    }
+}
+
+void Evaluator::directive_end(const RawToken& d) {
+    Frame& frame = *m_frames.back();
+    auto& controls = frame.controls;
+    if (controls.empty()) {
+        error(d.location, "#end without an open #if, #while, #for, #switch or #macro");
+        return abort_parse();
+    }
+    Control& control = controls.back();
+    if (control.kind == Control::Kind::While) {
+        if (++control.iterations > m_options.max_loop_iterations) {
+            error(control.opened_at, "#while loop exceeded " + std::to_string(m_options.max_loop_iterations) +
+                                         " iterations (runaway loop?)");
+            return abort_parse();
+        }
+        frame.position = control.loop_position;
+        RawToken at;
+        at.location = control.opened_at;
+        at.text = "while";
+        if (!evaluate_condition(at, "#while")) {
+            if (m_aborted) return;
+            sg::SourceLocation opened = controls.back().opened_at;
+            controls.pop_back();
+            skip_block(opened, "#while", SkipStop::End);
+        }
+        return;
+    }
+    if (control.kind == Control::Kind::For) {
+        if (++control.iterations > m_options.max_loop_iterations) {
+            error(control.opened_at, "#for loop exceeded " + std::to_string(m_options.max_loop_iterations) + " iterations");
+            return abort_parse();
+        }
+        const Value* current = lookup(control.variable);
+        double value = (current && current->kind == Value::Kind::Float ? current->v[0] : control.end) + control.step;
+        store(control.variable, Value::number(value), false, control.opened_at);
+        double slack = 1e-9 * std::max(1.0, std::abs(control.end));
+        if (control.step > 0 ? value <= control.end + slack : value >= control.end - slack) {
+            frame.position = control.loop_position;
+        } else {
+            controls.pop_back();
+        }
+        return;
+    }
+    controls.pop_back();
+}
+
+// #macro Name(P1, P2, ...) body #end
+void Evaluator::directive_macro(const RawToken& d) {
+    sg::SourceLocation where = d.location;
+    std::string name = expect_raw_identifier("after #macro", &where);
+    if (name.empty()) {
+        error(d.location, "expected a macro name after #macro");
+        return abort_parse();
+    }
+    auto macro = std::make_shared<Macro>();
+    macro->name = name;
+    macro->defined_at = where;
+    if (!expect_raw_punct("(", "after the macro name '" + name + "'")) return;
+    if (!take_punct(")")) {
+        while (true) {
+            sg::SourceLocation at;
+            std::string parameter = expect_raw_identifier("in #macro parameters", &at);
+            if (parameter.empty()) {
+                error(where, "expected a parameter name in #macro " + name + "(...)");
+                return abort_parse();
+            }
+            macro->parameters.push_back(parameter);
+            if (take_punct(")")) break;
+            if (!expect_raw_punct(",", "between macro parameters")) return;
+        }
+    }
+    Frame& frame = *m_frames.back();
+    macro->buffer = frame.buffer;
+    macro->body_begin = frame.position;
+    const RawToken* end = skip_block(d.location, "#macro " + name, SkipStop::End);
+    if (!end) return;
+    macro->body_end = frame.position - 1;
+    for (auto& scope : m_scopes) scope.erase(name);
+    m_macros[name] = macro;
+}
+
+void Evaluator::expand_macro(const RawToken& name, const Macro& macro) {
+    if (m_macro_depth >= m_options.max_macro_depth) {
+        error(name.location, "macro recursion too deep: more than " + std::to_string(m_options.max_macro_depth) +
+                                 " nested calls of '" + macro.name + "'");
+        return abort_parse();
+    }
+    const RawToken* next = m_pending.empty() ? peek_raw() : nullptr;
+    if (!next || next->kind != RawKind::Punct || next->text != "(") {
+        error(name.location, "expected '(' after the macro name '" + macro.name + "'");
+        return abort_parse();
+    }
+    m_nested_arguments.reset();
+    parse_nested(Parser::token::TOK_START_ARGS, name.location, true);
+    if (m_aborted || !m_nested_arguments) return;
+    std::vector<Value> arguments = std::move(*m_nested_arguments);
+    m_nested_arguments.reset();
+    if (arguments.size() != macro.parameters.size()) {
+        error(name.location, "macro '" + macro.name + "' takes " + std::to_string(macro.parameters.size()) +
+                                 " argument(s), but " + std::to_string(arguments.size()) + " were given");
+        note(macro.defined_at, "'" + macro.name + "' is defined here");
+        return abort_parse();
+    }
+    auto frame = std::make_shared<Frame>();
+    frame->buffer = macro.buffer;
+    frame->position = macro.body_begin;
+    frame->end = macro.body_end;
+    frame->is_macro = true;
+    frame->owns_scope = true;
+    frame->name = macro.name;
+    frame->called_from = name.location;
+    m_frames.push_back(frame);
+    m_scopes.emplace_back();
+    for (size_t i = 0; i < arguments.size(); ++i) m_scopes.back()[macro.parameters[i]] = std::move(arguments[i]);
+    ++m_macro_depth;
+}
+
+void Evaluator::directive_include(const RawToken& d) {
+    Value name_value = parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+    rewind_lookahead();
+    if (m_aborted) return;
+    if (name_value.kind != Value::Kind::String) {
+        error(d.location, "expected a file name string after #include, found " + describe(name_value));
+        return abort_parse();
+    }
+    const std::string& name = name_value.text;
+    // Search: the including file's folder, then the include path.
+    std::vector<std::string> folders;
+    folders.push_back(m_frames.back()->buffer->folder);
+    for (const auto& dir : m_options.include_path) folders.push_back(dir);
+    fs::path found;
+    std::error_code ec;
+    if (fs::path(name).is_absolute()) {
+        if (fs::is_regular_file(name, ec)) found = name;
+    } else {
+        for (const auto& folder : folders) {
+            fs::path candidate = folder.empty() ? fs::path(name) : fs::path(folder) / name;
+            if (fs::is_regular_file(candidate, ec)) {
+                found = candidate;
+                break;
+            }
+        }
+    }
+    if (found.empty()) {
+        std::string searched;
+        for (const auto& folder : folders) searched += (searched.empty() ? "" : ", ") + (folder.empty() ? std::string(".") : folder);
+        error(d.location, "cannot find include file \"" + name + "\" (searched: " + searched + ")");
+        return abort_parse();
+    }
+    std::string canonical = fs::weakly_canonical(found, ec).string();
+    int file_depth = 0;
+    for (const auto& frame : m_frames) {
+        if (frame->is_macro) continue;
+        ++file_depth;
+        if (!frame->buffer->path.empty() && fs::weakly_canonical(frame->buffer->path, ec).string() == canonical) {
+            error(d.location, "include cycle: \"" + name + "\" is already being read (included from " +
+                                  *frame->buffer->label + ")");
+            return abort_parse();
+        }
+    }
+    if (file_depth >= m_options.max_include_depth) {
+        error(d.location, "#include nested too deeply (more than " + std::to_string(m_options.max_include_depth) + " files)");
+        return abort_parse();
+    }
+    std::ifstream in(found, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in && !in.eof()) {
+        error(d.location, "cannot read include file \"" + found.string() + "\"");
+        return abort_parse();
+    }
+    if (!push_file(text.str(), found.lexically_normal().string(), found.string(), found.parent_path().string(), d.location)) {
+        abort_parse();
+    }
+}
+
+void Evaluator::directive_message(const RawToken& d) {
+    Value message = parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+    rewind_lookahead();
+    if (m_aborted) return;
+    std::string text = message.kind == Value::Kind::String ? message.text : describe(message);
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    if (d.text == "debug") {
+        note(d.location, "#debug: " + text);
+    } else if (d.text == "warning") {
+        warning(d.location, text);
+    } else {
+        error(d.location, "#error: " + text);
+        abort_parse();
+    }
+}
+
+void Evaluator::directive_version(const RawToken& d) {
+    Value version = parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+    rewind_lookahead();
+    if (m_aborted) return;
+    to_float(version, SourceRange{d.location, d.location}, "a version number");
+    take_punct(";");
+    m_saw_version = true;
+}
+
+// #default { texture {...} | pigment {...} | finish {...} }
+void Evaluator::directive_default(const RawToken& d) {
+    if (!expect_raw_punct("{", "after #default")) return;
+    Value value = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
+    if (m_aborted) return;
+    take_punct(";");
+    if (!expect_raw_punct("}", "to close #default { ... }")) return;
+    auto texture = std::make_shared<sg::Material>(m_default_texture ? *m_default_texture : sg::Material{});
+    switch (value.kind) {
+    case Value::Kind::Texture: *texture = *value.texture; break;
+    case Value::Kind::Pigment: texture->pigment = *value.pigment; break;
+    case Value::Kind::Finish: texture->finish = *value.finish; break;
+    default:
+        error(d.location, "#default expects a texture, pigment or finish, found " + describe(value));
+        return;
+    }
+    texture->name = "#default";
+    m_default_texture = texture;
+}
+
+}  // namespace lancer::parse

@@ -1,0 +1,286 @@
+// The evaluator: runs a scene from tokens to a scene graph.
+//
+// Design. POV-Ray's language is not context free in the useful sense: a
+// directive can appear between any two tokens (inside a finish, between the
+// items of a union), a #macro expands to whatever tokens its body holds (an
+// object, a vector, half a texture), and a #while body is re-read every
+// iteration. So lancer does what POV-Ray itself does, with a real grammar on
+// top:
+//
+//   1. lexer.l scans each file once into raw tokens (raw_token.h);
+//   2. the token stream (token_stream.cpp, directives.cpp) walks those tokens
+//      with a stack of frames (files, macro bodies), executes directives as
+//      it meets them (#declare, #if, #while by jumping back to the loop's
+//      condition, #macro by pushing the body as a frame, #include by pushing
+//      another file), and looks every identifier up, so the parser receives
+//      typed tokens (VALUE_ID, OBJECT_ID, ...) that already carry their
+//      values;
+//   3. grammar.y (bison, LALR(1)) parses what remains and its actions
+//      evaluate as they reduce: expressions fold to Values, blocks become
+//      ordered lists of edits applied to a scene-graph node.
+//
+// Directives that need a value (#declare X = ..., #if (...), macro
+// arguments) run a nested parser over the same token stream from a
+// dedicated start token. Because identifiers are resolved when they are
+// read, a value never depends on when bison decides to reduce.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "grammar.tab.hpp"
+#include "lancer/parser.h"
+#include "raw_token.h"
+#include "value.h"
+
+namespace lancer::parse {
+
+// Pattern and light transforms, shared by grammar actions and objects.cpp.
+void transform_pattern(sg::Pigment& pigment, const sg::Mat4& world_from_local);
+void transform_light(sg::Light& light, const sg::Mat4& world_from_local);
+sg::Camera resolve_camera(const CameraSpec& spec);
+bool is_reserved_word(const std::string& name);
+
+class Evaluator {
+public:
+    using Symbol = Parser::symbol_type;
+    using Kind = Parser::token_kind_type;
+
+    explicit Evaluator(const ParseOptions& options);
+    ParseResult run(const std::string& text, const std::string& label, const std::string& path,
+                    const std::string& folder);
+
+    sg::SceneGraph& scene() { return m_scene; }
+    const ParseOptions& options() const { return m_options; }
+
+    // ---- token stream (token_stream.cpp)
+    Symbol next_token();
+    void finish_nested(Value value, const SourceRange& where, bool had_lookahead);
+    void finish_arguments(std::vector<Value> arguments);
+    void begin_value_barrier();
+    void end_value_barrier();
+
+    // ---- diagnostics (diagnostics.cpp)
+    void error(const sg::SourceLocation& where, const std::string& message);
+    void warning(const sg::SourceLocation& where, const std::string& message);
+    void note(const sg::SourceLocation& where, const std::string& message);
+    void ignored(const sg::SourceLocation& where, const std::string& what);
+    void hint(const sg::SourceLocation& where, const std::string& what);
+    void unknown_identifier(const std::string& name, const sg::SourceLocation& where, const std::string& expected);
+    void syntax_error(const SourceRange& where, const std::string& message);
+    std::string suggestion(const std::string& name) const;
+    bool failed() const { return m_error_count > 0; }
+
+    // ---- conversions and operators (expressions.cpp)
+    double to_float(const Value& value, const SourceRange& where, const std::string& what = "a float");
+    int to_int(const Value& value, const SourceRange& where);
+    double positive(const Value& value, const SourceRange& where, const std::string& what);
+    sg::Vec3 to_vec3(const Value& value, const SourceRange& where);
+    sg::Vec3 nonzero_vec3(const Value& value, const SourceRange& where, const std::string& what);
+    sg::Color to_color(const Value& value, const SourceRange& where);
+    std::string to_string(const Value& value, const SourceRange& where);
+    Value arithmetic(char op, const Value& a, const Value& b, const SourceRange& where);
+    Value compare(const std::string& op, const Value& a, const SourceRange& wa, const Value& b, const SourceRange& wb);
+    Value logical(char op, const Value& a, const SourceRange& wa, const Value& b, const SourceRange& wb);
+    Value negate(const Value& a, const SourceRange& where);
+    Value component(const Value& a, const SourceRange& wa, const std::string& name, const SourceRange& wn);
+    Value make_vector(const std::vector<Value>& items, const SourceRange& where);
+    Value colour_keyword(const std::string& keyword, const Value& operand, const SourceRange& where);
+    Value colour_from(const Value& operand, const SourceRange& where);
+    Value colour_component(const Value& colour, const SourceRange& wc, int channel, const Value& v, const SourceRange& wv);
+    Value checked(Value value, const SourceRange& where, const std::string& what);
+    void remember_location(Value& value, const SourceRange& where) { value.location = where.begin; }
+
+    // ---- built-in functions (builtins.cpp)
+    Value call_builtin(const std::string& name, const std::vector<Value>& args, const SourceRange& where);
+
+    // ---- objects and materials (objects.cpp, meshes.cpp)
+    ShapePtr make_sphere(const Value& c, const SourceRange& wc, const Value& r, const SourceRange& wr, const sg::SourceLocation& at);
+    ShapePtr make_plane(const Value& n, const SourceRange& wn, const Value& d, const SourceRange& wd, const sg::SourceLocation& at);
+    ShapePtr make_box(const Value& a, const SourceRange& wa, const Value& b, const SourceRange& wb, const sg::SourceLocation& at);
+    ShapePtr make_triangle(const std::vector<Value>& points, const std::vector<SourceRange>& where, const sg::SourceLocation& at);
+    ShapePtr make_mesh(const sg::SourceLocation& at);
+    void finish_mesh(ShapeValue& shape, const sg::SourceLocation& at);
+    ShapePtr make_mesh2(const Edits<sg::TriangleMesh>& sections, const sg::SourceLocation& at);
+    ShapePtr make_obj_mesh(const Value& file, const SourceRange& where, const sg::SourceLocation& at);
+    ShapePtr make_union(const sg::SourceLocation& at);
+    void apply(ShapePtr& shape, const Edits<ShapeValue>& edits);
+    Value object_value(const ShapePtr& shape);
+
+    std::function<void(ShapeValue&)> transform_edit(const sg::Mat4& transform);
+    std::function<void(ShapeValue&)> texture_edit(std::shared_ptr<sg::Material> texture);
+    std::function<void(ShapeValue&)> material_edit(std::shared_ptr<sg::Material> material);
+    std::function<void(ShapeValue&)> pigment_edit(std::shared_ptr<sg::Pigment> pigment);
+    std::function<void(ShapeValue&)> finish_edit(std::shared_ptr<sg::Finish> finish);
+    std::function<void(ShapeValue&)> interior_edit(std::shared_ptr<sg::Interior> interior);
+    std::function<void(ShapeValue&)> child_edit(ShapePtr child);
+    std::function<void(ShapeValue&)> mesh_triangle_edit(const std::vector<Value>& points, const std::vector<SourceRange>& where,
+                                                        const std::vector<std::shared_ptr<sg::Material>>& textures,
+                                                        const sg::SourceLocation& at);
+    std::function<void(sg::TriangleMesh&)> mesh2_vectors(const std::string& section, const Value& count, const SourceRange& wc,
+                                                         const std::vector<Value>& items, const SourceRange& wi,
+                                                         const sg::SourceLocation& at);
+    std::function<void(sg::TriangleMesh&)> mesh2_indices(const std::string& section, const Value& count, const SourceRange& wc,
+                                                         const std::vector<Value>& items, const SourceRange& wi,
+                                                         const sg::SourceLocation& at);
+    std::function<void(sg::TriangleMesh&)> mesh2_textures(const Value& count, const SourceRange& wc,
+                                                          const std::vector<std::shared_ptr<sg::Material>>& textures,
+                                                          const sg::SourceLocation& at);
+
+    sg::Mat4 translation(const Value& v, const SourceRange& where);
+    sg::Mat4 rotation(const Value& v, const SourceRange& where);
+    sg::Mat4 scaling(const Value& v, const SourceRange& where);
+    sg::Mat4 matrix(const std::vector<Value>& items, const SourceRange& where);
+    sg::Mat4 inverse(const sg::Mat4& m, const SourceRange& where);
+
+    std::shared_ptr<sg::Material> build_texture(const Edits<sg::Material>& edits, const sg::SourceLocation& at);
+    std::shared_ptr<sg::Pigment> build_pigment(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);
+    std::shared_ptr<sg::Finish> build_finish(const Edits<sg::Finish>& edits, const sg::SourceLocation& at);
+    std::shared_ptr<sg::Interior> build_interior(const Edits<sg::Interior>& edits, const sg::SourceLocation& at);
+    void finish_image_map(sg::ImageMap& image, const sg::SourceLocation& at);
+    sg::MapType map_type(const Value& v, const SourceRange& where);
+    std::function<void(sg::Finish&)> finish_scalar(const std::string& name, bool albedo, const Value& v, const SourceRange& where);
+
+    // ---- lights, camera, settings (lights_camera.cpp)
+    sg::Light make_light(const Value& position, const SourceRange& wp, const Value& colour, const SourceRange& wc,
+                         const sg::SourceLocation& at);
+    void apply_light(sg::Light& light, const Edits<sg::Light>& edits);
+    std::function<void(sg::Light&)> area_light(const Value& a1, const SourceRange& w1, const Value& a2, const SourceRange& w2,
+                                               const Value& n1, const SourceRange& wn1, const Value& n2, const SourceRange& wn2);
+    double camera_angle(const Value& v, const SourceRange& where);
+    void add_object(const ShapePtr& shape);
+    void add_light(const sg::Light& light, const sg::Mat4& world_from_local);
+    void set_camera(const CameraSpec& spec);
+    void render_setting(const std::string& name, const SourceRange& wn, const Value& v, const SourceRange& wv,
+                        const Edits<ParameterList>& parameters);
+    std::function<void(ParameterList&)> parameter_edit(const std::string& name, const Value& v, const SourceRange& where);
+
+    // ---- for directives.cpp and token_stream.cpp
+    struct Frame;
+    struct Macro;
+    struct Control;
+
+private:
+    friend struct TokenStreamAccess;
+    // token stream internals (token_stream.cpp)
+    struct Pending {
+        bool raw = false;
+        RawToken raw_token;   // re-read through directive processing
+        std::shared_ptr<const Symbol> symbol;
+        const void* frame = nullptr;  // where it was read, so it can be put back
+        size_t index = 0;
+    };
+    void rewind_lookahead();
+    bool take_punct(const char* punct);
+    bool push_file(const std::string& text, const std::string& label, const std::string& path,
+                   const std::string& folder, const sg::SourceLocation& included_from);
+    Symbol classify(const RawToken& raw);
+    Symbol symbol_for_identifier(const RawToken& raw);
+    Symbol make_symbol(Kind kind, const RawToken& raw, Value value = {});
+    const RawToken* peek_raw();
+    const RawToken* take_raw();
+    bool directives_blocked() const;
+    bool skip_ignored_block(const RawToken& keyword);
+    void pop_frame();
+    Value parse_nested(Kind start, const sg::SourceLocation& at, bool barrier);
+    std::vector<Value> parse_arguments(const sg::SourceLocation& at);
+    void abort_parse();
+
+    // directives (directives.cpp)
+    void run_directive(const RawToken& directive);
+    void directive_declare(const RawToken& directive, bool local);
+    void directive_if(const RawToken& directive, bool ifdef, bool negate);
+    void directive_else(const RawToken& directive, bool elseif);
+    void directive_while(const RawToken& directive);
+    void directive_for(const RawToken& directive);
+    void directive_switch(const RawToken& directive);
+    void directive_case(const RawToken& directive, bool range);
+    void directive_break(const RawToken& directive);
+    void directive_end(const RawToken& directive);
+    void directive_macro(const RawToken& directive);
+    void directive_include(const RawToken& directive);
+    void directive_message(const RawToken& directive);
+    void directive_undef(const RawToken& directive);
+    void directive_version(const RawToken& directive);
+    void directive_default(const RawToken& directive);
+    void expand_macro(const RawToken& name, const Macro& macro);
+    enum class SkipStop { End, ElseOrEnd, CaseOrEnd };
+    const RawToken* skip_block(const sg::SourceLocation& opened_at, const std::string& opener, SkipStop stop);
+    bool expect_raw_punct(const char* punct, const std::string& context);
+    std::string expect_raw_identifier(const std::string& context, sg::SourceLocation* where = nullptr);
+    bool evaluate_condition(const RawToken& directive, const std::string& what);
+    void store(const std::string& name, Value value, bool local, const sg::SourceLocation& where);
+    const Value* lookup(const std::string& name) const;
+
+    ParseOptions m_options;
+    sg::SceneGraph m_scene;
+    std::vector<Diagnostic> m_diagnostics;
+    int m_error_count = 0;
+    bool m_aborted = false;
+    bool m_suppress_syntax_errors = false;
+
+    std::vector<std::shared_ptr<Frame>> m_frames;
+    std::vector<Pending> m_pending;
+    std::optional<Pending> m_last_returned;
+    std::vector<std::map<std::string, Value>> m_scopes;
+    std::map<std::string, std::shared_ptr<const Macro>> m_macros;
+    // Every inclusion gets its own label pointer; its include chain is kept here.
+    std::map<const std::string*, std::vector<sg::SourceLocation>> m_include_chains;
+    std::map<const std::string*, std::shared_ptr<const TokenBuffer>> m_buffers;
+    int m_barrier_depth = -1;    // directives in frames at or below this depth wait
+    int m_nested_base_depth = 0;
+    int m_nesting = 0;           // open ( { [ in the token stream
+    long m_tokens_read = 0;
+    int m_macro_depth = 0;
+    std::optional<Value> m_nested_result;
+    std::optional<std::vector<Value>> m_nested_arguments;
+    bool m_nested_had_lookahead = false;
+    std::string m_last_undeclared;
+    sg::SourceLocation m_last_location;  // end of the last token read, for end-of-file errors
+    std::shared_ptr<sg::Material> m_default_texture;
+    bool m_saw_version = false;
+    bool m_saw_camera = false;
+    std::map<long, std::mt19937> m_random_streams;
+
+    friend class Parser;
+    friend Value builtin_rand(Evaluator& ev, const std::vector<Value>& args, const SourceRange& where);
+    friend Value builtin_seed(Evaluator& ev, const std::vector<Value>& args, const SourceRange& where);
+};
+
+// Frames of the token stream: a file or a macro body being read.
+struct Evaluator::Control {
+    enum class Kind { If, While, For, Switch, Macro };
+    Kind kind = Kind::If;
+    sg::SourceLocation opened_at;
+    size_t loop_position = 0;   // While: the token after #while; For: first body token
+    long iterations = 0;
+    std::string variable;       // For
+    double end = 0.0, step = 1.0;
+    double switch_value = 0.0;  // Switch
+    bool case_matched = false;  // Switch: a #case ran, later ones are skipped
+};
+
+struct Evaluator::Frame {
+    std::shared_ptr<const TokenBuffer> buffer;
+    size_t position = 0;
+    size_t end = 0;
+    bool is_macro = false;
+    bool owns_scope = false;
+    std::string name;             // file label or macro name
+    sg::SourceLocation called_from;
+    std::vector<Control> controls;
+};
+
+struct Evaluator::Macro {
+    std::string name;
+    std::vector<std::string> parameters;
+    std::shared_ptr<const TokenBuffer> buffer;
+    size_t body_begin = 0, body_end = 0;
+    sg::SourceLocation defined_at;
+};
+
+}  // namespace lancer::parse

@@ -1,0 +1,738 @@
+/* The scene grammar (POV-Ray 3.7 subset plus lancer's extensions).
+ *
+ * The parser never sees a directive: the token stream (token_stream.cpp)
+ * runs #declare/#if/#while/#macro/#include ... itself and hands over the
+ * tokens that remain, with every identifier already looked up and typed
+ * (OBJECT_ID, TEXTURE_ID, VALUE_ID ...). Actions therefore evaluate as they
+ * reduce: an expression folds to a Value, a block folds to a list of edits
+ * applied in the order written (evaluator.h explains the design).
+ *
+ * Several entry points share the grammar: a whole scene, the value of a
+ * #declare, a directive's expression, a macro's arguments. The token stream
+ * selects one by sending a START_* token first.
+ */
+%skeleton "lalr1.cc"
+%require "3.8"
+%header
+%define api.namespace {lancer::parse}
+%define api.parser.class {Parser}
+%define api.token.constructor
+%define api.token.raw
+%define api.value.type variant
+%define api.token.prefix {TOK_}
+%define api.location.type {lancer::parse::SourceRange}
+%define parse.error detailed
+%define parse.lac none  // nested parses end on a default reduction, which LAC would refuse
+%locations
+%param {Evaluator& ev}
+
+%code requires {
+#include "value.h"
+namespace lancer::parse { class Evaluator; }
+}
+
+%code {
+#include "evaluator.h"
+namespace lancer::parse {
+Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
+}
+#define LOC(range) (range).begin
+}
+
+%token END 0 "end of file"
+%token START_SCENE "start of scene" START_VALUE "start of value" START_EXPR "start of expression"
+       START_ARGS "start of arguments"
+%token LBRACE "{" RBRACE "}" LPAREN "(" RPAREN ")" LBRACKET "[" RBRACKET "]"
+       LT "<" GT ">" LE "<=" GE ">=" EQ "=" NE "!=" PLUS "+" MINUS "-" STAR "*" SLASH "/"
+       COMMA "," SEMI ";" DOT "." QUESTION "?" COLON ":" AND "&" OR "|" NOT "!"
+%token <TokenValue> NUMBER "number" STRING "string" CONSTANT "constant" BUILTIN "function"
+       VALUE_ID "identifier" OBJECT_ID "object identifier" TEXTURE_ID "texture identifier"
+       PIGMENT_ID "pigment identifier" FINISH_ID "finish identifier"
+       INTERIOR_ID "interior identifier" CAMERA_ID "camera identifier"
+       LIGHT_ID "light_source identifier" TRANSFORM_ID "transform identifier"
+       UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" UNSUPPORTED "unsupported keyword"
+
+/* Keywords: the alias is the spelling; keywords.cpp builds its table from these. */
+%token SPHERE "sphere" PLANE "plane" BOX "box" TRIANGLE "triangle" SMOOTH_TRIANGLE "smooth_triangle"
+       MESH "mesh" MESH2 "mesh2" UNION "union" MERGE "merge" DIFFERENCE "difference"
+       INTERSECTION "intersection" OBJECT "object" OBJ_MESH "obj_mesh"
+       LIGHT_SOURCE "light_source" CAMERA "camera" BACKGROUND "background"
+       GLOBAL_SETTINGS "global_settings" RENDER_SETTINGS "render_settings"
+       TRANSLATE "translate" ROTATE "rotate" SCALE "scale" MATRIX "matrix" TRANSFORM "transform"
+       INVERSE "inverse" TEXTURE "texture" PIGMENT "pigment" FINISH "finish" INTERIOR "interior"
+       MATERIAL "material" NO_SHADOW "no_shadow" HOLLOW "hollow" DOUBLE_ILLUMINATE "double_illuminate"
+       NO_IMAGE "no_image" NO_REFLECTION "no_reflection" INSIDE_VECTOR "inside_vector"
+       COLOR "color" COLOUR "colour" RGB "rgb" RGBF "rgbf" RGBT "rgbt" RGBFT "rgbft"
+       SRGB "srgb" SRGBF "srgbf" SRGBT "srgbt" SRGBFT "srgbft"
+       RED "red" GREEN "green" BLUE "blue" FILTER "filter" TRANSMIT "transmit" GRAY "gray" GREY "grey"
+       CHECKER "checker" IMAGE_MAP "image_map" PNG "png" JPEG "jpeg" EXR "exr" HDR "hdr" TGA "tga"
+       TIFF "tiff" MAP_TYPE "map_type" INTERPOLATE "interpolate" ONCE "once" ALL "all" GAMMA "gamma"
+       QUICK_COLOR "quick_color"
+       AMBIENT "ambient" EMISSION "emission" DIFFUSE "diffuse" BRILLIANCE "brilliance"
+       SPECULAR "specular" ROUGHNESS "roughness" PHONG "phong" PHONG_SIZE "phong_size"
+       METALLIC "metallic" REFLECTION "reflection" FRESNEL "fresnel" FALLOFF "falloff"
+       EXPONENT "exponent" ALBEDO "albedo" CONSERVE_ENERGY "conserve_energy" CRAND "crand"
+       IOR "ior" CAUSTICS "caustics" DISPERSION "dispersion"
+       VERTEX_VECTORS "vertex_vectors" NORMAL_VECTORS "normal_vectors" UV_VECTORS "uv_vectors"
+       FACE_INDICES "face_indices" NORMAL_INDICES "normal_indices" UV_INDICES "uv_indices"
+       TEXTURE_LIST "texture_list"
+       LOCATION "location" LOOK_AT "look_at" ANGLE "angle" UP "up" RIGHT "right" SKY "sky"
+       DIRECTION "direction" PERSPECTIVE "perspective" ORTHOGRAPHIC "orthographic"
+       APERTURE "aperture" BLUR_SAMPLES "blur_samples" FOCAL_POINT "focal_point"
+       PARALLEL "parallel" POINT_AT "point_at" AREA_LIGHT "area_light" JITTER "jitter"
+       ADAPTIVE "adaptive" CIRCULAR "circular" ORIENT "orient" AREA_SPHERE "area_sphere"
+       FADE_DISTANCE "fade_distance" FADE_POWER "fade_power" SHADOWLESS "shadowless"
+       AREA_ILLUMINATION "area_illumination" LOOKS_LIKE "looks_like" SPOTLIGHT "spotlight"
+       RADIUS "radius" TIGHTNESS "tightness" MEDIA_INTERACTION "media_interaction"
+       MEDIA_ATTENUATION "media_attenuation"
+       ASSUMED_GAMMA "assumed_gamma" MAX_TRACE_LEVEL "max_trace_level" AMBIENT_LIGHT "ambient_light"
+       ADC_BAILOUT "adc_bailout" CHARSET "charset" NUMBER_OF_WAVES "number_of_waves"
+       NOISE_GENERATOR "noise_generator" MAX_INTERSECTIONS "max_intersections"
+
+%nterm <Value> expr postfix primary colour colour_base declared_value
+%nterm <std::vector<Value>> expr_list opt_args vector_items expr_seq macro_args macro_arg_list
+%nterm <Value> macro_arg vector_item
+%nterm <std::string> component param_name
+%nterm <ShapePtr> object object_ref
+%nterm <Edits<ShapeValue>> object_mods union_items mesh_items
+%nterm <std::function<void(ShapeValue&)>> object_mod union_item mesh_item
+%nterm <sg::Mat4> transform_item transform_block transform_items
+%nterm <std::shared_ptr<sg::Material>> texture material
+%nterm <Edits<sg::Material>> texture_items material_items
+%nterm <std::shared_ptr<sg::Pigment>> pigment
+%nterm <Edits<sg::Pigment>> pigment_mods
+%nterm <std::function<void(sg::Pigment&)>> pigment_start
+%nterm <sg::ImageMap> image_map image_items
+%nterm <std::shared_ptr<sg::Finish>> finish
+%nterm <Edits<sg::Finish>> finish_items reflection_items reflection_opts
+%nterm <std::function<void(sg::Finish&)>> finish_item reflection_item
+%nterm <std::shared_ptr<sg::Interior>> interior
+%nterm <Edits<sg::Interior>> interior_items
+%nterm <sg::Light> light
+%nterm <Edits<sg::Light>> light_items
+%nterm <std::function<void(sg::Light&)>> light_item
+%nterm <CameraSpec> camera
+%nterm <Edits<CameraSpec>> camera_items
+%nterm <std::function<void(CameraSpec&)>> camera_item
+%nterm <Edits<ParameterList>> param_items
+%nterm <bool> opt_bool opt_albedo
+%nterm <int> colour_channel
+%nterm <Edits<sg::TriangleMesh>> mesh2_sections
+%nterm <std::function<void(sg::TriangleMesh&)>> mesh2_section
+%nterm <std::vector<std::shared_ptr<sg::Material>>> texture_seq
+
+%precedence OPT_EMPTY
+%right "?" ":"
+%left "|"
+%left "&"
+%left "=" "!=" "<" "<=" ">" ">="
+%left "+" "-"
+%left "*" "/"
+%precedence UNARY
+%precedence VECTOR_ITEM
+
+%start start
+
+%%
+
+start
+  : START_SCENE scene_items "end of file"
+  | START_VALUE declared_value { ev.finish_nested(std::move($2), @2, !yyla.empty()); YYACCEPT; }
+  | START_EXPR expr            { ev.finish_nested(std::move($2), @2, !yyla.empty()); YYACCEPT; }
+  | START_ARGS "(" macro_args ")" { ev.finish_arguments(std::move($3)); YYACCEPT; }
+  ;
+
+/* ------------------------------------------------------------ scene level */
+
+scene_items
+  : %empty
+  | scene_items scene_item
+  ;
+
+scene_item
+  : object             { ev.add_object($1); }
+  | light              { ev.add_light($1, sg::Mat4(1.0)); }
+  | camera             { ev.set_camera($1); }
+  | "background" "{" colour "}"   { ev.scene().background = ev.to_color($3, @3).rgb; }
+  | "global_settings" "{" global_items "}"
+  | "render_settings" "{" render_items "}" { ev.scene().render.location = LOC(@1); }
+  | ";"                { ev.warning(LOC(@1), "stray ';' ignored"); }
+  ;
+
+declared_value
+  : begin_value colour end_value { $$ = $2; }
+  | object             { $$ = ev.object_value($1); }
+  | texture            { $$.kind = Value::Kind::Texture; $$.texture = $1; }
+  | pigment            { $$.kind = Value::Kind::Pigment; $$.pigment = $1; }
+  | finish             { $$.kind = Value::Kind::Finish; $$.finish = $1; }
+  | interior           { $$.kind = Value::Kind::Interior; $$.interior = $1; }
+  | material           { $$.kind = Value::Kind::Texture; $$.texture = $1; }
+  | camera             { $$.kind = Value::Kind::Camera; $$.camera = std::make_shared<CameraSpec>($1); }
+  | light              { $$.kind = Value::Kind::Light; $$.light = std::make_shared<sg::Light>($1); }
+  | transform_block    { $$.kind = Value::Kind::Transform; $$.transform = $1; }
+  | OBJECT_ID          { $$ = $1.value; }
+  | TEXTURE_ID         { $$ = $1.value; }
+  | PIGMENT_ID         { $$ = $1.value; }
+  | FINISH_ID          { $$ = $1.value; }
+  | INTERIOR_ID        { $$ = $1.value; }
+  | CAMERA_ID          { $$ = $1.value; }
+  | LIGHT_ID           { $$ = $1.value; }
+  | TRANSFORM_ID       { $$ = $1.value; }
+  ;
+
+/* The value of `#declare X = <expression>` ends where the expression ends;
+ * directives after it must wait until the declaration is stored. */
+begin_value: %empty { ev.begin_value_barrier(); } ;
+end_value: %empty { ev.end_value_barrier(); } ;
+
+opt_comma
+  : %empty %prec OPT_EMPTY
+  | ","
+  ;
+
+opt_bool
+  : %empty %prec OPT_EMPTY { $$ = true; }
+  | expr               { $$ = ev.to_float($1, @1, "an on/off value") != 0.0; }
+  ;
+
+/* ---------------------------------------------------------------- objects */
+
+object
+  : "sphere" "{" expr opt_comma expr object_mods "}"
+      { $$ = ev.make_sphere($3, @3, $5, @5, LOC(@1)); ev.apply($$, $6); }
+  | "plane" "{" expr opt_comma expr object_mods "}"
+      { $$ = ev.make_plane($3, @3, $5, @5, LOC(@1)); ev.apply($$, $6); }
+  | "box" "{" expr opt_comma expr object_mods "}"
+      { $$ = ev.make_box($3, @3, $5, @5, LOC(@1)); ev.apply($$, $6); }
+  | "triangle" "{" expr opt_comma expr opt_comma expr object_mods "}"
+      { $$ = ev.make_triangle({$3, $5, $7}, {@3, @5, @7}, LOC(@1)); ev.apply($$, $8); }
+  | "smooth_triangle" "{" expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr object_mods "}"
+      { $$ = ev.make_triangle({$3, $5, $7, $9, $11, $13}, {@3, @5, @7, @9, @11, @13}, LOC(@1));
+        ev.apply($$, $14); }
+  | "mesh" "{" mesh_items "}"
+      { $$ = ev.make_mesh(LOC(@1)); ev.apply($$, $3); ev.finish_mesh(*$$, LOC(@1)); }
+  | "mesh2" "{" mesh2_sections object_mods "}"
+      { $$ = ev.make_mesh2($3, LOC(@1)); ev.apply($$, $4); }
+  | "obj_mesh" "{" expr object_mods "}"
+      { $$ = ev.make_obj_mesh($3, @3, LOC(@1)); ev.apply($$, $4); }
+  | "union" "{" union_items "}"
+      { $$ = ev.make_union(LOC(@1)); ev.apply($$, $3); }
+  | "merge" "{" union_items "}"
+      { ev.warning(LOC(@1), "merge is treated as union (lancer has no CSG merge)");
+        $$ = ev.make_union(LOC(@1)); ev.apply($$, $3); }
+  | "difference" "{" union_items "}"
+      { ev.error(LOC(@1), "CSG difference is not supported by lancer (supported: union)");
+        $$ = ev.make_union(LOC(@1)); }
+  | "intersection" "{" union_items "}"
+      { ev.error(LOC(@1), "CSG intersection is not supported by lancer (supported: union)");
+        $$ = ev.make_union(LOC(@1)); }
+  | "object" "{" object_ref object_mods "}"
+      { $$ = $3; $$->object.location = LOC(@1); ev.apply($$, $4); }
+  ;
+
+object_ref
+  : OBJECT_ID          { $$ = std::make_shared<ShapeValue>(*$1.value.shape); $$->object.name = $1.text; }
+  | object             { $$ = $1; }
+  | LIGHT_ID           { $$ = ev.make_union(LOC(@1)); $$->lights.push_back(*$1.value.light); }
+  | UNDECLARED_ID      { ev.unknown_identifier($1.text, LOC(@1), "an object"); $$ = ev.make_union(LOC(@1)); }
+  ;
+
+object_mods
+  : %empty             {}
+  | object_mods object_mod { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+object_mod
+  : transform_item     { $$ = ev.transform_edit($1); }
+  | texture            { $$ = ev.texture_edit($1); }
+  | pigment            { $$ = ev.pigment_edit($1); }
+  | finish             { $$ = ev.finish_edit($1); }
+  | interior           { $$ = ev.interior_edit($1); }
+  | material           { $$ = ev.material_edit($1); }
+  | "no_shadow"        { $$ = [](ShapeValue& s) { s.object.no_shadow = true; }; }
+  | "hollow" opt_bool  { bool on = $2; $$ = [on](ShapeValue& s) { s.object.hollow = on; };
+                         ev.warning(LOC(@1), "hollow is recorded but has no effect (lancer has no media)"); }
+  | "double_illuminate" { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "double_illuminate"); }
+  | "no_image"         { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_image"); }
+  | "no_reflection"    { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_reflection"); }
+  | "inverse"          { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "inverse (it only matters for CSG)"); }
+  ;
+
+union_items
+  : %empty             {}
+  | union_items union_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+union_item
+  : object             { $$ = ev.child_edit($1); }
+  | light              { sg::Light light = $1; $$ = [light](ShapeValue& s) { s.lights.push_back(light); }; }
+  | object_mod         { $$ = $1; }
+  ;
+
+/* mesh { triangle { a, b, c [texture { T }] } ... modifiers } */
+mesh_items
+  : %empty             {}
+  | mesh_items mesh_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+mesh_item
+  : "triangle" "{" expr opt_comma expr opt_comma expr texture_seq "}"
+      { $$ = ev.mesh_triangle_edit({$3, $5, $7}, {@3, @5, @7}, $8, LOC(@1)); }
+  | "smooth_triangle" "{" expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr texture_seq "}"
+      { $$ = ev.mesh_triangle_edit({$3, $5, $7, $9, $11, $13}, {@3, @5, @7, @9, @11, @13}, $14, LOC(@1)); }
+  | "inside_vector" expr { $$ = [](ShapeValue&) {}; }
+  | object_mod         { $$ = $1; }
+  ;
+
+texture_seq
+  : %empty             {}
+  | texture_seq texture { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+mesh2_sections
+  : %empty             {}
+  | mesh2_sections mesh2_section { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+mesh2_section
+  : "vertex_vectors" "{" expr expr_seq opt_comma "}" { $$ = ev.mesh2_vectors("vertex_vectors", $3, @3, $4, @4, LOC(@1)); }
+  | "normal_vectors" "{" expr expr_seq opt_comma "}" { $$ = ev.mesh2_vectors("normal_vectors", $3, @3, $4, @4, LOC(@1)); }
+  | "uv_vectors" "{" expr expr_seq opt_comma "}"     { $$ = ev.mesh2_vectors("uv_vectors", $3, @3, $4, @4, LOC(@1)); }
+  | "face_indices" "{" expr expr_seq opt_comma "}"   { $$ = ev.mesh2_indices("face_indices", $3, @3, $4, @4, LOC(@1)); }
+  | "normal_indices" "{" expr expr_seq opt_comma "}" { $$ = ev.mesh2_indices("normal_indices", $3, @3, $4, @4, LOC(@1)); }
+  | "uv_indices" "{" expr expr_seq opt_comma "}"     { $$ = ev.mesh2_indices("uv_indices", $3, @3, $4, @4, LOC(@1)); }
+  | "texture_list" "{" expr texture_seq "}"          { $$ = ev.mesh2_textures($3, @3, $4, LOC(@1)); }
+  | "inside_vector" expr { $$ = [](sg::TriangleMesh&) {}; }
+  ;
+
+/* "," separated, each item located for index errors. */
+expr_seq
+  : %empty             {}
+  | expr_seq "," expr  { $$ = std::move($1); $3.boolean_literal = false; ev.remember_location($3, @3); $$.push_back($3); }
+  ;
+
+/* ------------------------------------------------------------- transforms */
+
+transform_item
+  : "translate" expr %prec OPT_EMPTY { $$ = ev.translation($2, @2); }
+  | "rotate" expr %prec OPT_EMPTY { $$ = ev.rotation($2, @2); }
+  | "scale" expr %prec OPT_EMPTY  { $$ = ev.scaling($2, @2); }
+  | "matrix" "<" vector_items ">" { $$ = ev.matrix($3, @3); }
+  | transform_block    { $$ = $1; }
+  ;
+
+transform_block
+  : "transform" TRANSFORM_ID { $$ = $2.value.transform; }
+  | "transform" "{" transform_items "}" { $$ = $3; }
+  ;
+
+transform_items
+  : %empty             { $$ = sg::Mat4(1.0); }
+  | transform_items transform_item { $$ = $2 * $1; }
+  | transform_items TRANSFORM_ID   { $$ = $2.value.transform * $1; }
+  | transform_items "inverse"      { $$ = ev.inverse($1, @2); }
+  ;
+
+/* --------------------------------------------------------------- textures */
+
+texture
+  : "texture" "{" texture_items "}" { $$ = ev.build_texture($3, LOC(@1)); }
+  ;
+
+texture_items
+  : %empty             {}
+  | texture_items TEXTURE_ID { $$ = std::move($1); auto t = $2.value.texture;
+                               $$.push_back([t](sg::Material& m) { m = *t; }); }
+  | texture_items UNDECLARED_ID { $$ = std::move($1); ev.unknown_identifier($2.text, LOC(@2), "a texture"); }
+  | texture_items pigment { $$ = std::move($1); auto p = $2; $$.push_back([p](sg::Material& m) { m.pigment = *p; }); }
+  | texture_items finish  { $$ = std::move($1); auto f = $2; $$.push_back([f](sg::Material& m) { m.finish = *f; }); }
+  | texture_items transform_item { $$ = std::move($1); sg::Mat4 t = $2;
+                               $$.push_back([t](sg::Material& m) { transform_pattern(m.pigment, t); }); }
+  ;
+
+material
+  : "material" "{" material_items "}" { $$ = ev.build_texture($3, LOC(@1)); }
+  ;
+
+material_items
+  : %empty             {}
+  | material_items texture  { $$ = std::move($1); auto t = $2;
+                              $$.push_back([t](sg::Material& m) { sg::Interior keep = m.interior; m = *t; m.interior = keep; }); }
+  | material_items interior { $$ = std::move($1); auto i = $2; $$.push_back([i](sg::Material& m) { m.interior = *i; }); }
+  | material_items transform_item { $$ = std::move($1); sg::Mat4 t = $2;
+                              $$.push_back([t](sg::Material& m) { transform_pattern(m.pigment, t); }); }
+  ;
+
+/* POV's order: the colour or pattern first, then modifiers. */
+pigment
+  : "pigment" "{" pigment_start pigment_mods "}"
+      { $4.insert($4.begin(), $3); $$ = ev.build_pigment($4, LOC(@1)); }
+  ;
+
+pigment_start
+  : %empty             { $$ = [](sg::Pigment&) {}; }
+  | PIGMENT_ID         { auto p = $1.value.pigment; $$ = [p](sg::Pigment& target) { target = *p; }; }
+  | colour             { sg::Color c = ev.to_color($1, @1);
+                         $$ = [c](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Solid; p.color = c; }; }
+  | "checker"          { $$ = [](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Checker; }; }
+  | "checker" colour opt_comma colour
+      { sg::Color a = ev.to_color($2, @2), b = ev.to_color($4, @4);
+        $$ = [a, b](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Checker; p.checker[0] = a; p.checker[1] = b; }; }
+  | image_map          { sg::ImageMap image = $1;
+                         $$ = [image](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Image; p.image = image; }; }
+  ;
+
+pigment_mods
+  : %empty             {}
+  | pigment_mods transform_item { $$ = std::move($1); sg::Mat4 t = $2;
+                                  $$.push_back([t](sg::Pigment& p) { transform_pattern(p, t); }); }
+  | pigment_mods "quick_color" colour { $$ = std::move($1); ev.ignored(LOC(@2), "quick_color"); }
+  ;
+
+image_map
+  : "image_map" "{" image_items "}" { $$ = $3; ev.finish_image_map($$, LOC(@1)); }
+  ;
+
+image_items
+  : %empty             { $$ = sg::ImageMap{}; }
+  | image_items "png"  { $$ = $1; $$.format = sg::ImageFormat::Png; }
+  | image_items "jpeg" { $$ = $1; $$.format = sg::ImageFormat::Jpeg; }
+  | image_items "exr"  { $$ = $1; $$.format = sg::ImageFormat::Exr; }
+  | image_items "hdr"  { $$ = $1; $$.format = sg::ImageFormat::Hdr; }
+  | image_items "tga"  { $$ = $1; $$.format = sg::ImageFormat::Tga; }
+  | image_items "tiff" { $$ = $1; $$.format = sg::ImageFormat::Tiff; }
+  | image_items STRING { $$ = $1; $$.path = $2.text; $$.location = LOC(@2); }
+  | image_items VALUE_ID { $$ = $1; $$.path = ev.to_string($2.value, @2); $$.location = LOC(@2); }
+  | image_items "map_type" expr { $$ = $1; $$.map_type = ev.map_type($3, @3); }
+  | image_items "interpolate" expr { $$ = $1; $$.interpolate = ev.to_int($3, @3); }
+  | image_items "once" { $$ = $1; $$.once = true; }
+  | image_items "filter" "all" expr { $$ = $1; $$.filter_all = ev.to_float($4, @4); }
+  | image_items "transmit" "all" expr { $$ = $1; $$.transmit_all = ev.to_float($4, @4); }
+  | image_items "gamma" expr { $$ = $1; $$.srgb = ev.to_float($3, @3) != 1.0; }
+  ;
+
+finish
+  : "finish" "{" finish_items "}" { $$ = ev.build_finish($3, LOC(@1)); }
+  ;
+
+finish_items
+  : %empty             {}
+  | finish_items finish_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+opt_albedo
+  : %empty             { $$ = false; }
+  | "albedo"           { $$ = true; }
+  ;
+
+finish_item
+  : FINISH_ID          { auto f = $1.value.finish; $$ = [f](sg::Finish& target) { target = *f; }; }
+  | "ambient" colour   { sg::Vec3 c = ev.to_color($2, @2).rgb; $$ = [c](sg::Finish& f) { f.ambient = c; }; }
+  | "emission" colour  { sg::Vec3 c = ev.to_color($2, @2).rgb; $$ = [c](sg::Finish& f) { f.emission = c; }; }
+  | "diffuse" opt_albedo expr { $$ = ev.finish_scalar("diffuse", $2, $3, @3); }
+  | "brilliance" expr  { $$ = ev.finish_scalar("brilliance", false, $2, @2); }
+  | "specular" opt_albedo expr { $$ = ev.finish_scalar("specular", $2, $3, @3); }
+  | "roughness" expr   { $$ = ev.finish_scalar("roughness", false, $2, @2); }
+  | "phong" opt_albedo expr { $$ = ev.finish_scalar("phong", $2, $3, @3); }
+  | "phong_size" expr  { $$ = ev.finish_scalar("phong_size", false, $2, @2); }
+  | "metallic"         { $$ = [](sg::Finish& f) { f.metallic = 1.0; }; }
+  | "metallic" expr    { $$ = ev.finish_scalar("metallic", false, $2, @2); }
+  | "reflection" colour { sg::Vec3 c = ev.to_color($2, @2).rgb;
+                          $$ = [c](sg::Finish& f) { f.reflection.min = c; f.reflection.max = c; }; }
+  | "reflection" "{" reflection_items "}"
+      { auto edits = $3; $$ = [edits](sg::Finish& f) { f.reflection = sg::Reflection{}; for (auto& e : edits) e(f); }; }
+  | "conserve_energy"  { $$ = [](sg::Finish&) {}; ev.ignored(LOC(@1), "conserve_energy"); }
+  | "crand" expr       { $$ = [](sg::Finish&) {}; ev.ignored(LOC(@1), "crand"); }
+  ;
+
+/* reflection { [min,] max [fresnel on] [falloff F] [exponent E] [metallic M] } */
+reflection_items
+  : colour reflection_opts
+      { $$ = std::move($2); sg::Vec3 c = ev.to_color($1, @1).rgb; bool fresnel_min_zero = true;
+        $$.insert($$.begin(), [c](sg::Finish& f) { f.reflection.min = c; f.reflection.max = c; });
+        $$.push_back([fresnel_min_zero](sg::Finish& f) { if (f.reflection.fresnel && fresnel_min_zero) f.reflection.min = sg::Vec3(0.0); }); }
+  | colour opt_comma colour reflection_opts
+      { $$ = std::move($4); sg::Vec3 lo = ev.to_color($1, @1).rgb, hi = ev.to_color($3, @3).rgb;
+        $$.insert($$.begin(), [lo, hi](sg::Finish& f) { f.reflection.min = lo; f.reflection.max = hi; }); }
+  ;
+
+reflection_opts
+  : %empty             {}
+  | reflection_opts reflection_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+reflection_item
+  : "fresnel" opt_bool { bool on = $2; $$ = [on](sg::Finish& f) { f.reflection.fresnel = on; }; }
+  | "falloff" expr     { double v = ev.to_float($2, @2); $$ = [v](sg::Finish& f) { f.reflection.falloff = v; }; }
+  | "exponent" expr    { double v = ev.to_float($2, @2); $$ = [v](sg::Finish& f) { f.reflection.exponent = v; }; }
+  | "metallic"         { $$ = [](sg::Finish& f) { f.reflection.metallic = 1.0; }; }
+  | "metallic" expr    { double v = ev.to_float($2, @2); $$ = [v](sg::Finish& f) { f.reflection.metallic = v; }; }
+  ;
+
+interior
+  : "interior" "{" interior_items "}" { $$ = ev.build_interior($3, LOC(@1)); }
+  ;
+
+interior_items
+  : %empty             {}
+  | interior_items INTERIOR_ID { $$ = std::move($1); auto i = $2.value.interior;
+                                 $$.push_back([i](sg::Interior& target) { target = *i; }); }
+  | interior_items "ior" expr { $$ = std::move($1); double v = ev.positive($3, @3, "ior");
+                                $$.push_back([v](sg::Interior& i) { i.ior = v; }); }
+  | interior_items "caustics" expr   { $$ = std::move($1); ev.ignored(LOC(@2), "caustics"); }
+  | interior_items "dispersion" expr { $$ = std::move($1); ev.ignored(LOC(@2), "dispersion"); }
+  | interior_items "fade_distance" expr { $$ = std::move($1); ev.ignored(LOC(@2), "interior fade_distance"); }
+  | interior_items "fade_power" expr { $$ = std::move($1); ev.ignored(LOC(@2), "interior fade_power"); }
+  ;
+
+/* ----------------------------------------------------------------- colours */
+
+/* A colour: an expression (a colour, or a float/vector promoted to one),
+ * optionally after `color`, optionally followed by component overrides
+ * (`color red 1 green .5`, `color Gray filter .3`). */
+colour
+  : colour_base        { $$ = $1; }
+  | colour colour_channel expr %prec OPT_EMPTY { $$ = ev.colour_component($1, @1, $2, $3, @3); }
+  ;
+
+colour_base
+  : expr %prec OPT_EMPTY { $$ = $1; }
+  | colour_keyword expr %prec OPT_EMPTY { $$ = ev.colour_from($2, @2); }
+  | colour_keyword colour_channel expr %prec OPT_EMPTY
+      { $$ = ev.colour_component(Value::color(sg::Color{}), @1, $2, $3, @3); }
+  ;
+
+colour_channel
+  : "red"              { $$ = 0; }
+  | "green"            { $$ = 1; }
+  | "blue"             { $$ = 2; }
+  | "filter"           { $$ = 3; }
+  | "transmit"         { $$ = 4; }
+  ;
+
+colour_keyword: "color" | "colour" ;
+
+/* ------------------------------------------------------------- expressions */
+
+expr
+  : postfix            { $$ = $1; }
+  | expr "+" expr      { $$ = ev.arithmetic('+', $1, $3, @2); }
+  | expr "-" expr      { $$ = ev.arithmetic('-', $1, $3, @2); }
+  | expr "*" expr      { $$ = ev.arithmetic('*', $1, $3, @2); }
+  | expr "/" expr      { $$ = ev.arithmetic('/', $1, $3, @2); }
+  | expr "<" expr      { $$ = ev.compare("<", $1, @1, $3, @3); }
+  | expr "<=" expr     { $$ = ev.compare("<=", $1, @1, $3, @3); }
+  | expr ">" expr      { $$ = ev.compare(">", $1, @1, $3, @3); }
+  | expr ">=" expr     { $$ = ev.compare(">=", $1, @1, $3, @3); }
+  | expr "=" expr      { $$ = ev.compare("=", $1, @1, $3, @3); }
+  | expr "!=" expr     { $$ = ev.compare("!=", $1, @1, $3, @3); }
+  | expr "&" expr      { $$ = ev.logical('&', $1, @1, $3, @3); }
+  | expr "|" expr      { $$ = ev.logical('|', $1, @1, $3, @3); }
+  | expr "?" expr ":" expr { $$ = ev.to_float($1, @1, "a condition") != 0.0 ? $3 : $5; }
+  | "-" expr %prec UNARY { $$ = ev.negate($2, @2); }
+  | "+" expr %prec UNARY { $$ = $2; }
+  | "!" expr %prec UNARY { $$ = Value::number(ev.to_float($2, @2, "an operand of '!'") == 0.0 ? 1.0 : 0.0); }
+  | "rgb" expr %prec UNARY    { $$ = ev.colour_keyword("rgb", $2, @2); }
+  | "rgbf" expr %prec UNARY   { $$ = ev.colour_keyword("rgbf", $2, @2); }
+  | "rgbt" expr %prec UNARY   { $$ = ev.colour_keyword("rgbt", $2, @2); }
+  | "rgbft" expr %prec UNARY  { $$ = ev.colour_keyword("rgbft", $2, @2); }
+  | "srgb" expr %prec UNARY   { $$ = ev.colour_keyword("srgb", $2, @2); }
+  | "srgbf" expr %prec UNARY  { $$ = ev.colour_keyword("srgbf", $2, @2); }
+  | "srgbt" expr %prec UNARY  { $$ = ev.colour_keyword("srgbt", $2, @2); }
+  | "srgbft" expr %prec UNARY { $$ = ev.colour_keyword("srgbft", $2, @2); }
+  ;
+
+postfix
+  : primary            { $$ = $1; }
+  | postfix "." component { $$ = ev.component($1, @1, $3, @3); }
+  ;
+
+component
+  : CONSTANT           { $$ = $1.text; }
+  | UNDECLARED_ID      { $$ = $1.text; }
+  | "red"              { $$ = "red"; }
+  | "green"            { $$ = "green"; }
+  | "blue"             { $$ = "blue"; }
+  | "filter"           { $$ = "filter"; }
+  | "transmit"         { $$ = "transmit"; }
+  | "gray"             { $$ = "gray"; }
+  | "grey"             { $$ = "gray"; }
+  ;
+
+primary
+  : NUMBER             { $$ = $1.value; }
+  | STRING             { $$ = $1.value; }
+  | CONSTANT           { $$ = $1.value; }
+  | VALUE_ID           { $$ = $1.value; }
+  | UNDECLARED_ID      { ev.unknown_identifier($1.text, LOC(@1), "a value"); $$ = Value::number(0.0); }
+  | "(" expr ")"       { $$ = $2; $$.boolean_literal = false; }
+  | "<" vector_items ">" { $$ = ev.make_vector($2, @$); }
+  | BUILTIN "(" opt_args ")" { $$ = ev.call_builtin($1.text, $3, @$); }
+  ;
+
+vector_items
+  : vector_item        { $$.push_back($1); }
+  | vector_items "," vector_item { $$ = std::move($1); $$.push_back($3); }
+  ;
+
+/* Inside < >, a '>' closes the vector (write (a > b) to compare). */
+vector_item
+  : expr %prec VECTOR_ITEM { $$ = $1; }
+  ;
+
+opt_args
+  : %empty             {}
+  | expr_list          { $$ = std::move($1); }
+  ;
+
+expr_list
+  : expr               { $$.push_back($1); }
+  | expr_list "," expr { $$ = std::move($1); $$.push_back($3); }
+  ;
+
+macro_args
+  : %empty             {}
+  | macro_arg_list     { $$ = std::move($1); }
+  ;
+
+macro_arg_list
+  : macro_arg          { $$.push_back($1); }
+  | macro_arg_list "," macro_arg { $$ = std::move($1); $$.push_back($3); }
+  ;
+
+macro_arg
+  : colour             { $$ = $1; }
+  | OBJECT_ID          { $$ = $1.value; }
+  | TEXTURE_ID         { $$ = $1.value; }
+  | PIGMENT_ID         { $$ = $1.value; }
+  | FINISH_ID          { $$ = $1.value; }
+  | INTERIOR_ID        { $$ = $1.value; }
+  | CAMERA_ID          { $$ = $1.value; }
+  | LIGHT_ID           { $$ = $1.value; }
+  | TRANSFORM_ID       { $$ = $1.value; }
+  | object             { $$ = ev.object_value($1); }
+  | texture            { $$.kind = Value::Kind::Texture; $$.texture = $1; }
+  | pigment            { $$.kind = Value::Kind::Pigment; $$.pigment = $1; }
+  | finish             { $$.kind = Value::Kind::Finish; $$.finish = $1; }
+  ;
+
+/* ------------------------------------------------------------------ lights */
+
+light
+  : "light_source" "{" expr opt_comma colour light_items "}"
+      { $$ = ev.make_light($3, @3, $5, @5, LOC(@1)); ev.apply_light($$, $6); }
+  | "light_source" "{" LIGHT_ID light_items "}"
+      { $$ = *$3.value.light; ev.apply_light($$, $4); }
+  ;
+
+light_items
+  : %empty             {}
+  | light_items light_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+light_item
+  : "parallel"         { $$ = [](sg::Light& l) { l.parallel = true; }; }
+  | "point_at" expr    { sg::Vec3 p = ev.to_vec3($2, @2); $$ = [p](sg::Light& l) { l.point_at = p; }; }
+  | "area_light" expr opt_comma expr opt_comma expr opt_comma expr
+      { $$ = ev.area_light($2, @2, $4, @4, $6, @6, $8, @8); }
+  | "jitter"           { $$ = [](sg::Light& l) { l.jitter = true; }; ev.hint(LOC(@1), "jitter"); }
+  | "adaptive" expr    { int a = ev.to_int($2, @2); $$ = [a](sg::Light& l) { l.adaptive = a; }; ev.hint(LOC(@1), "adaptive"); }
+  | "circular"         { $$ = [](sg::Light& l) { l.circular = true; }; ev.hint(LOC(@1), "circular"); }
+  | "orient"           { $$ = [](sg::Light& l) { l.orient = true; }; ev.hint(LOC(@1), "orient"); }
+  | "area_sphere" expr { double r = ev.positive($2, @2, "area_sphere radius");
+                         $$ = [r](sg::Light& l) { l.kind = sg::Light::Kind::AreaSphere; l.radius = r; }; }
+  | "fade_distance" expr { double d = ev.to_float($2, @2); $$ = [d](sg::Light& l) { l.fade_distance = d; }; }
+  | "fade_power" expr  { double p = ev.to_float($2, @2); $$ = [p](sg::Light& l) { l.fade_power = p; }; }
+  | "shadowless"       { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "shadowless"); }
+  | "area_illumination" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "area_illumination"); }
+  | "media_interaction" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "media_interaction"); }
+  | "media_attenuation" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "media_attenuation"); }
+  | "looks_like" "{" object_ref object_mods "}" { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "looks_like"); }
+  | "spotlight"        { $$ = [](sg::Light&) {}; ev.error(LOC(@1), "spotlight is not supported by lancer (supported: point, parallel, area_light, area_sphere)"); }
+  | "radius" expr      { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "radius"); }
+  | "falloff" expr     { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "falloff"); }
+  | "tightness" expr   { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "tightness"); }
+  | transform_item     { sg::Mat4 t = $1; $$ = [t](sg::Light& l) { transform_light(l, t); }; }
+  ;
+
+/* ------------------------------------------------------------------ camera */
+
+camera
+  : "camera" "{" camera_items "}"
+      { $$.location_in_source = LOC(@1); for (auto& edit : $3) edit($$); }
+  ;
+
+camera_items
+  : %empty             {}
+  | camera_items camera_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+camera_item
+  : CAMERA_ID          { CameraSpec c = *$1.value.camera; $$ = [c](CameraSpec& target) { target = c; }; }
+  | "perspective"      { $$ = [](CameraSpec& c) { c.projection = sg::Camera::Projection::Perspective; }; }
+  | "orthographic"     { $$ = [](CameraSpec& c) { c.projection = sg::Camera::Projection::Orthographic; }; }
+  | "location" expr    { auto v = ev.to_vec3($2, @2); $$ = [v](CameraSpec& c) { c.location = v; }; }
+  | "look_at" expr     { auto v = ev.to_vec3($2, @2); $$ = [v](CameraSpec& c) { c.look_at = v; }; }
+  | "direction" expr   { auto v = ev.nonzero_vec3($2, @2, "direction"); $$ = [v](CameraSpec& c) { c.direction = v; }; }
+  | "right" expr       { auto v = ev.nonzero_vec3($2, @2, "right"); $$ = [v](CameraSpec& c) { c.right = v; }; }
+  | "up" expr          { auto v = ev.nonzero_vec3($2, @2, "up"); $$ = [v](CameraSpec& c) { c.up = v; }; }
+  | "sky" expr         { auto v = ev.nonzero_vec3($2, @2, "sky"); $$ = [v](CameraSpec& c) { c.sky = v; }; }
+  | "angle" expr       { double a = ev.camera_angle($2, @2); $$ = [a](CameraSpec& c) { c.angle = a; }; }
+  | "aperture" expr    { $$ = [](CameraSpec&) {}; ev.ignored(LOC(@1), "aperture (no focal blur)"); }
+  | "blur_samples" expr { $$ = [](CameraSpec&) {}; ev.ignored(LOC(@1), "blur_samples"); }
+  | "focal_point" expr { $$ = [](CameraSpec&) {}; ev.ignored(LOC(@1), "focal_point"); }
+  | transform_item     { sg::Mat4 t = $1; $$ = [t](CameraSpec& c) { c.world_from_camera = t * c.world_from_camera; }; }
+  ;
+
+/* ------------------------------------------------------ settings, extension */
+
+global_items
+  : %empty
+  | global_items global_item
+  ;
+
+global_item
+  : "assumed_gamma" expr { ev.scene().global.assumed_gamma = ev.positive($2, @2, "assumed_gamma"); }
+  | "max_trace_level" expr { ev.scene().global.max_trace_level = ev.to_int($2, @2); }
+  | "ambient_light" colour { ev.scene().global.ambient_light = ev.to_color($2, @2).rgb; }
+  | "adc_bailout" expr { ev.scene().global.adc_bailout = ev.to_float($2, @2); }
+  | "charset" UNDECLARED_ID { ev.ignored(LOC(@1), "charset"); }
+  | "number_of_waves" expr { ev.ignored(LOC(@1), "number_of_waves"); }
+  | "noise_generator" expr { ev.ignored(LOC(@1), "noise_generator"); }
+  | "max_intersections" expr { ev.ignored(LOC(@1), "max_intersections"); }
+  ;
+
+/* lancer extension: render_settings { integrator "path" { depth 8 } width 640
+ * height 480 samples 64 seed 1 } */
+render_items
+  : %empty
+  | render_items param_name expr { ev.render_setting($2, @2, $3, @3, {}); }
+  | render_items param_name expr "{" param_items "}" { ev.render_setting($2, @2, $3, @3, $5); }
+  ;
+
+param_items
+  : %empty             {}
+  | param_items param_name expr { $$ = std::move($1); $$.push_back(ev.parameter_edit($2, $3, @3)); }
+  ;
+
+/* Parameter names are free words; a few common ones are POV keywords. */
+param_name
+  : UNDECLARED_ID      { $$ = $1.text; }
+  | VALUE_ID           { $$ = $1.text; }
+  | BUILTIN            { $$ = $1.text; }
+  | "ambient"          { $$ = "ambient"; }
+  | "jitter"           { $$ = "jitter"; }
+  | "adaptive"         { $$ = "adaptive"; }
+  | "exponent"         { $$ = "exponent"; }
+  | "radius"           { $$ = "radius"; }
+  | "falloff"          { $$ = "falloff"; }
+  | "gamma"            { $$ = "gamma"; }
+  | "max_trace_level"  { $$ = "max_trace_level"; }
+  | "adc_bailout"      { $$ = "adc_bailout"; }
+  ;
+
+%%
+
+void lancer::parse::Parser::error(const location_type& where, const std::string& message) {
+    ev.syntax_error(where, message);
+}

@@ -1,0 +1,171 @@
+// Lights, the camera (resolved exactly as POV-Ray 3.7 does) and the
+// scene-level settings, including lancer's render_settings extension.
+#include <cmath>
+
+#include "evaluator.h"
+
+namespace lancer::parse {
+
+// POV-Ray 3.7 camera (pov-3.7-semantics.md section 1): vectors are applied in
+// the fixed order right, direction, angle, up, sky, location, look_at,
+// whatever order the block lists them in; transforms come last.
+sg::Camera resolve_camera(const CameraSpec& spec) {
+    sg::Camera camera;
+    camera.projection = spec.projection;
+    camera.location_in_source = spec.location_in_source;
+    sg::Vec3 right = spec.right.value_or(sg::Vec3(1.33, 0.0, 0.0));
+    sg::Vec3 direction = spec.direction.value_or(sg::Vec3(0.0, 0.0, 1.0));
+    sg::Vec3 up = spec.up.value_or(sg::Vec3(0.0, 1.0, 0.0));
+    sg::Vec3 sky = spec.sky.value_or(sg::Vec3(0.0, 1.0, 0.0));
+    sg::Vec3 location = spec.location.value_or(sg::Vec3(0.0));
+    if (spec.angle) {
+        // angle is the horizontal field of view: |direction| = |right| / 2 / tan(angle / 2).
+        double length = 0.5 * glm::length(right) / std::tan(glm::radians(*spec.angle) / 2.0);
+        direction = glm::normalize(direction) * length;
+    }
+    if (spec.look_at) {
+        sg::Vec3 target = *spec.look_at;
+        if (glm::length(target - location) > 0.0) {
+            double handedness = glm::dot(glm::cross(up, direction), right) < 0.0 ? -1.0 : 1.0;
+            sg::Vec3 d = glm::normalize(target - location);
+            sg::Vec3 new_right = glm::cross(sky, d);
+            if (glm::length(new_right) > 0.0) {
+                right = glm::normalize(new_right) * glm::length(right) * handedness;
+                up = glm::normalize(glm::cross(d, right)) * glm::length(up);
+                // Keep up's sense when right was flipped (left-handed frame).
+                if (handedness < 0.0) up = -up;
+            }
+            direction = d * glm::length(direction);
+        }
+    }
+    const sg::Mat4& m = spec.world_from_camera;
+    camera.location = sg::Vec3(m * glm::dvec4(location, 1.0));
+    camera.direction = sg::Vec3(m * glm::dvec4(direction, 0.0));
+    camera.right = sg::Vec3(m * glm::dvec4(right, 0.0));
+    camera.up = sg::Vec3(m * glm::dvec4(up, 0.0));
+    return camera;
+}
+
+double Evaluator::camera_angle(const Value& v, const SourceRange& where) {
+    double angle = to_float(v, where, "a float angle in degrees");
+    if (v.kind == Value::Kind::Float && (angle <= 0.0 || angle >= 180.0)) {
+        error(where.begin, "camera angle must be between 0 and 180 degrees (exclusive), got " + std::to_string(angle));
+        return 67.38;
+    }
+    return angle;
+}
+
+void Evaluator::set_camera(const CameraSpec& spec) {
+    if (m_saw_camera) warning(spec.location_in_source, "a second camera replaces the first (POV-Ray uses the last one)");
+    m_saw_camera = true;
+    m_scene.camera = resolve_camera(spec);
+}
+
+sg::Light Evaluator::make_light(const Value& position, const SourceRange& wp, const Value& colour, const SourceRange& wc,
+                                const sg::SourceLocation& at) {
+    sg::Light light;
+    light.location = at;
+    light.position = to_vec3(position, wp);
+    light.color = to_color(colour, wc).rgb;
+    return light;
+}
+
+void Evaluator::apply_light(sg::Light& light, const Edits<sg::Light>& edits) {
+    for (const auto& edit : edits) edit(light);
+}
+
+std::function<void(sg::Light&)> Evaluator::area_light(const Value& a1, const SourceRange& w1, const Value& a2,
+                                                      const SourceRange& w2, const Value& n1, const SourceRange& wn1,
+                                                      const Value& n2, const SourceRange& wn2) {
+    sg::Vec3 axis1 = to_vec3(a1, w1), axis2 = to_vec3(a2, w2);
+    int size1 = to_int(n1, wn1), size2 = to_int(n2, wn2);
+    if (size1 < 1 || size2 < 1) {
+        error((size1 < 1 ? wn1 : wn2).begin, "area_light sample counts must be at least 1");
+        size1 = std::max(size1, 1);
+        size2 = std::max(size2, 1);
+    }
+    if (glm::length(glm::cross(axis1, axis2)) == 0.0) {
+        error(w1.begin, "area_light axes must be non-zero and not parallel (they span the emitting rectangle)");
+    }
+    return [=](sg::Light& l) {
+        l.kind = sg::Light::Kind::AreaRectangle;
+        l.axis1 = axis1;
+        l.axis2 = axis2;
+        l.samples1 = size1;
+        l.samples2 = size2;
+    };
+}
+
+void Evaluator::add_light(const sg::Light& local, const sg::Mat4& world_from_local) {
+    sg::Light light = local;
+    transform_light(light, world_from_local);
+    if (light.parallel && light.kind == sg::Light::Kind::Point) {
+        light.kind = sg::Light::Kind::Directional;
+        if (glm::length(light.point_at - light.position) == 0.0) {
+            error(light.location, "parallel light: point_at must differ from the light's position");
+        }
+    }
+    if (light.fade_distance < 0.0 || light.fade_power < 0.0) error(light.location, "fade_distance and fade_power must not be negative");
+    m_scene.lights.push_back(light);
+}
+
+// ---------------------------------------------------------- render_settings
+
+void Evaluator::render_setting(const std::string& name, const SourceRange& wn, const Value& v, const SourceRange& wv,
+                               const Edits<ParameterList>& parameters) {
+    auto& render = m_scene.render;
+    if (name == "integrator") {
+        render.integrator = to_string(v, wv);
+        for (const auto& edit : parameters) edit(render.parameters);
+        return;
+    }
+    if (!parameters.empty()) error(wn.begin, "only integrator takes a { parameter } block");
+    if (name == "width" || name == "height" || name == "samples") {
+        int n = to_int(v, wv);
+        if (n < 1) {
+            error(wv.begin, name + " must be at least 1, got " + std::to_string(n));
+            return;
+        }
+        if (n > 1'000'000) {
+            error(wv.begin, name + " is unreasonably large: " + std::to_string(n));
+            return;
+        }
+        (name == "width" ? render.width : name == "height" ? render.height : render.samples) = n;
+        return;
+    }
+    if (name == "seed") {
+        double s = to_float(v, wv, "a float seed");
+        if (s < 0.0 || s != std::floor(s)) {
+            error(wv.begin, "seed must be a non-negative whole number");
+            return;
+        }
+        render.seed = static_cast<std::uint64_t>(s);
+        return;
+    }
+    std::string near;
+    for (const char* known : {"integrator", "width", "height", "samples", "seed"}) {
+        if (name.size() > 1 && (std::string(known).find(name) == 0 || name.find(known) == 0)) near = known;
+    }
+    error(wn.begin, "unknown render_settings item '" + name + "' (expected integrator, width, height, samples or seed)" +
+                        (near.empty() ? "" : "; did you mean '" + near + "'?"));
+}
+
+std::function<void(ParameterList&)> Evaluator::parameter_edit(const std::string& name, const Value& v, const SourceRange& where) {
+    sg::ParameterValue parameter;
+    parameter.location = where.begin;
+    switch (v.kind) {
+    case Value::Kind::Float:
+        if (v.boolean_literal) parameter.value = v.v[0] != 0.0;
+        else parameter.value = v.v[0];
+        break;
+    case Value::Kind::Vector:
+    case Value::Kind::Color:
+        parameter.value = to_vec3(v.kind == Value::Kind::Color ? Value::vector({v.v[0], v.v[1], v.v[2]}) : v, where);
+        break;
+    case Value::Kind::String: parameter.value = v.text; break;
+    default: error(where.begin, "an integrator parameter must be a number, vector, string or on/off, found " + describe(v));
+    }
+    return [name, parameter](ParameterList& list) { list[name] = parameter; };
+}
+
+}  // namespace lancer::parse

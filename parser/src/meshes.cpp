@@ -1,0 +1,362 @@
+// Triangle meshes: triangle, smooth_triangle, mesh, mesh2 (with index
+// validation) and the obj_mesh extension (Wavefront OBJ via tinyobjloader).
+#include <filesystem>
+
+#include <tiny_obj_loader.h>
+
+#include "evaluator.h"
+
+namespace lancer::parse {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+sg::TriangleMesh& mutable_mesh(ShapeValue& shape) {
+    return const_cast<sg::TriangleMesh&>(*std::get<sg::MeshRef>(shape.object.shape));
+}
+
+bool degenerate(const sg::Vec3& a, const sg::Vec3& b, const sg::Vec3& c) {
+    return glm::length(glm::cross(b - a, c - a)) == 0.0;
+}
+
+}  // namespace
+
+ShapePtr Evaluator::make_triangle(const std::vector<Value>& points, const std::vector<SourceRange>& where,
+                                  const sg::SourceLocation& at) {
+    auto shape = std::make_shared<ShapeValue>();
+    bool smooth = points.size() == 6;
+    shape->object.kind = smooth ? sg::Object::Kind::SmoothTriangle : sg::Object::Kind::Triangle;
+    shape->object.location = at;
+    auto mesh = std::make_shared<sg::TriangleMesh>();
+    shape->object.shape = sg::MeshRef(mesh);
+    mesh_triangle_edit(points, where, {}, at)(*shape);
+    return shape;
+}
+
+ShapePtr Evaluator::make_mesh(const sg::SourceLocation& at) {
+    auto shape = std::make_shared<ShapeValue>();
+    shape->object.kind = sg::Object::Kind::Mesh;
+    shape->object.location = at;
+    shape->object.shape = sg::MeshRef(std::make_shared<sg::TriangleMesh>());
+    return shape;
+}
+
+void Evaluator::finish_mesh(ShapeValue& shape, const sg::SourceLocation& at) {
+    if (mutable_mesh(shape).faces.empty()) error(at, "mesh has no triangles");
+}
+
+// One triangle (3 points) or smooth triangle (point, normal) x 3, with an
+// optional per-triangle texture.
+std::function<void(ShapeValue&)> Evaluator::mesh_triangle_edit(const std::vector<Value>& points,
+                                                               const std::vector<SourceRange>& where,
+                                                               const std::vector<std::shared_ptr<sg::Material>>& textures,
+                                                               const sg::SourceLocation& at) {
+    bool smooth = points.size() == 6;
+    std::vector<sg::Vec3> p, n;
+    for (size_t i = 0; i < points.size(); ++i) {
+        sg::Vec3 v = to_vec3(points[i], where[i]);
+        (smooth && i % 2 == 1 ? n : p).push_back(v);
+    }
+    if (degenerate(p[0], p[1], p[2])) warning(at, "degenerate triangle (its corners are collinear)");
+    if (smooth)
+        for (size_t i = 0; i < 3; ++i)
+            if (glm::length(n[i]) == 0.0) error(where[2 * i + 1].begin, "smooth_triangle normal must not be zero");
+    if (textures.size() > 1) warning(at, "only the first texture of a mesh triangle is used");
+    std::shared_ptr<sg::Material> texture = textures.empty() ? nullptr : textures.front();
+    return [p, n, texture](ShapeValue& shape) {
+        sg::TriangleMesh& mesh = mutable_mesh(shape);
+        sg::TriangleMesh::Face face;
+        int base = static_cast<int>(mesh.positions.size());
+        for (int i = 0; i < 3; ++i) {
+            mesh.positions.push_back(p[i]);
+            face.position[i] = base + i;
+        }
+        if (!n.empty()) {
+            int normal_base = static_cast<int>(mesh.normals.size());
+            for (int i = 0; i < 3; ++i) {
+                mesh.normals.push_back(glm::normalize(n[i]));
+                face.normal[i] = normal_base + i;
+            }
+        }
+        if (texture) {
+            face.material = static_cast<int>(mesh.materials.size());
+            mesh.materials.push_back(texture);
+        }
+        mesh.faces.push_back(face);
+    };
+}
+
+// ----------------------------------------------------------------- mesh2
+
+ShapePtr Evaluator::make_mesh2(const Edits<sg::TriangleMesh>& sections, const sg::SourceLocation& at) {
+    auto shape = std::make_shared<ShapeValue>();
+    shape->object.kind = sg::Object::Kind::Mesh2;
+    shape->object.location = at;
+    auto mesh = std::make_shared<sg::TriangleMesh>();
+    for (const auto& section : sections) section(*mesh);
+    if (mesh->positions.empty()) error(at, "mesh2 needs vertex_vectors");
+    if (mesh->faces.empty()) error(at, "mesh2 needs face_indices");
+    // Without normal_indices (uv_indices), POV pairs normals (uvs) with vertices.
+    bool has_normal_indices = !mesh->faces.empty() && mesh->faces.front().normal[0] >= 0;
+    if (!mesh->normals.empty() && !has_normal_indices) {
+        if (mesh->normals.size() != mesh->positions.size()) {
+            error(at, "mesh2 has " + std::to_string(mesh->normals.size()) + " normal_vectors but " +
+                          std::to_string(mesh->positions.size()) + " vertex_vectors and no normal_indices");
+        } else {
+            for (auto& face : mesh->faces)
+                for (int i = 0; i < 3; ++i) face.normal[i] = face.position[i];
+        }
+    }
+    bool has_uv_indices = !mesh->faces.empty() && mesh->faces.front().uv[0] >= 0;
+    if (!mesh->uvs.empty() && !has_uv_indices) {
+        if (mesh->uvs.size() != mesh->positions.size()) {
+            error(at, "mesh2 has " + std::to_string(mesh->uvs.size()) + " uv_vectors but " +
+                          std::to_string(mesh->positions.size()) + " vertex_vectors and no uv_indices");
+        } else {
+            for (auto& face : mesh->faces)
+                for (int i = 0; i < 3; ++i) face.uv[i] = face.position[i];
+        }
+    }
+    shape->object.shape = sg::MeshRef(mesh);
+    return shape;
+}
+
+std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_vectors(const std::string& section, const Value& count,
+                                                                const SourceRange& wc, const std::vector<Value>& items,
+                                                                const SourceRange& wi, const sg::SourceLocation& at) {
+    int declared = to_int(count, wc);
+    if (declared != static_cast<int>(items.size())) {
+        error(at, section + " declares " + std::to_string(declared) + " entries but lists " + std::to_string(items.size()));
+    }
+    bool uv = section == "uv_vectors";
+    std::vector<sg::Vec3> vectors;
+    for (const auto& item : items) {
+        SourceRange here{item.location.file ? item.location : wi.begin, item.location};
+        if (uv && !(item.kind == Value::Kind::Vector && item.size == 2)) {
+            error(here.begin, "uv_vectors entries must be 2-component vectors <u, v>, found " + describe(item));
+            vectors.emplace_back(0.0);
+            continue;
+        }
+        vectors.push_back(to_vec3(item, here));
+    }
+    return [section, vectors](sg::TriangleMesh& mesh) {
+        for (const auto& v : vectors) {
+            if (section == "vertex_vectors") mesh.positions.push_back(v);
+            else if (section == "normal_vectors") mesh.normals.push_back(glm::length(v) > 0 ? glm::normalize(v) : v);
+            else mesh.uvs.emplace_back(v.x, v.y);
+        }
+    };
+}
+
+std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_indices(const std::string& section, const Value& count,
+                                                                const SourceRange& wc, const std::vector<Value>& items,
+                                                                const SourceRange& wi, const sg::SourceLocation& at) {
+    // Each entry is <a, b, c>; face_indices may follow one with 1 or 3 texture indices.
+    struct Entry {
+        int index[3];
+        int texture = -1;
+        sg::SourceLocation where;
+    };
+    std::vector<Entry> entries;
+    bool ok = true;
+    for (const auto& item : items) {
+        sg::SourceLocation here = item.location.file ? item.location : wi.begin;
+        if (item.kind == Value::Kind::Vector && item.size == 3) {
+            Entry entry;
+            for (int i = 0; i < 3; ++i) {
+                double x = item.v[i];
+                entry.index[i] = static_cast<int>(x);
+                if (x != std::floor(x)) {
+                    error(here, section + " entries must be whole numbers, found " + std::to_string(x));
+                    ok = false;
+                }
+            }
+            entry.where = here;
+            entries.push_back(entry);
+        } else if (item.kind == Value::Kind::Float && section == "face_indices" && !entries.empty()) {
+            if (entries.back().texture < 0) entries.back().texture = static_cast<int>(item.v[0]);
+        } else {
+            error(here, section + " entries must be <a, b, c> index vectors, found " + describe(item));
+            ok = false;
+        }
+    }
+    int declared = to_int(count, wc);
+    if (declared != static_cast<int>(entries.size())) {
+        error(at, section + " declares " + std::to_string(declared) + " entries but lists " + std::to_string(entries.size()));
+    }
+    Evaluator* ev = this;
+    return [ev, section, entries, ok, at](sg::TriangleMesh& mesh) {
+        if (!ok) return;
+        auto check = [&](int index, size_t size, const char* what, const sg::SourceLocation& where) {
+            if (index >= 0 && static_cast<size_t>(index) < size) return true;
+            ev->error(where, section + " index " + std::to_string(index) + " is out of range: " + what + " has " +
+                                 std::to_string(size) + " entries" +
+                                 (size ? " (valid 0.." + std::to_string(size - 1) + ")" : ""));
+            return false;
+        };
+        if (section == "face_indices") {
+            for (const auto& entry : entries) {
+                sg::TriangleMesh::Face face;
+                for (int i = 0; i < 3; ++i) {
+                    face.position[i] = check(entry.index[i], mesh.positions.size(), "vertex_vectors", entry.where) ? entry.index[i] : 0;
+                }
+                if (entry.texture >= 0 && check(entry.texture, mesh.materials.size(), "texture_list", entry.where)) {
+                    face.material = entry.texture;
+                }
+                mesh.faces.push_back(face);
+            }
+            return;
+        }
+        bool normals = section == "normal_indices";
+        if (entries.size() != mesh.faces.size()) {
+            ev->error(at, section + " lists " + std::to_string(entries.size()) + " entries but face_indices has " +
+                              std::to_string(mesh.faces.size()) + " (it must come after face_indices, one per face)");
+            return;
+        }
+        for (size_t f = 0; f < entries.size(); ++f) {
+            for (int i = 0; i < 3; ++i) {
+                int index = entries[f].index[i];
+                if (!check(index, normals ? mesh.normals.size() : mesh.uvs.size(), normals ? "normal_vectors" : "uv_vectors",
+                           entries[f].where))
+                    index = -1;
+                (normals ? mesh.faces[f].normal : mesh.faces[f].uv)[i] = index;
+            }
+        }
+    };
+}
+
+std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_textures(const Value& count, const SourceRange& wc,
+                                                                 const std::vector<std::shared_ptr<sg::Material>>& textures,
+                                                                 const sg::SourceLocation& at) {
+    int declared = to_int(count, wc);
+    if (declared != static_cast<int>(textures.size())) {
+        error(at, "texture_list declares " + std::to_string(declared) + " textures but lists " + std::to_string(textures.size()));
+    }
+    return [textures](sg::TriangleMesh& mesh) {
+        for (const auto& t : textures) mesh.materials.push_back(t);
+    };
+}
+
+// -------------------------------------------------------------- obj_mesh
+
+ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, const sg::SourceLocation& at) {
+    auto shape = std::make_shared<ShapeValue>();
+    shape->object.kind = sg::Object::Kind::ObjMesh;
+    shape->object.location = at;
+    auto mesh = std::make_shared<sg::TriangleMesh>();
+    shape->object.shape = sg::MeshRef(mesh);
+    std::string name = to_string(file, where);
+    if (name.empty()) return shape;
+
+    // Relative to the file that names it, then the include path.
+    std::vector<std::string> folders;
+    auto buffer = m_buffers.find(where.begin.file.get());
+    if (buffer != m_buffers.end()) folders.push_back(buffer->second->folder);
+    for (const auto& dir : m_options.include_path) folders.push_back(dir);
+    std::error_code ec;
+    fs::path found;
+    if (fs::path(name).is_absolute()) {
+        if (fs::is_regular_file(name, ec)) found = name;
+    } else {
+        for (const auto& folder : folders) {
+            fs::path candidate = folder.empty() ? fs::path(name) : fs::path(folder) / name;
+            if (fs::is_regular_file(candidate, ec)) {
+                found = candidate;
+                break;
+            }
+        }
+    }
+    if (found.empty()) {
+        error(where.begin, "cannot find OBJ file \"" + name + "\"");
+        return shape;
+    }
+    mesh->source = found.string();
+
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    config.mtl_search_path = found.parent_path().string();
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromFile(found.string(), config)) {
+        std::string message = reader.Error();
+        while (!message.empty() && message.back() == '\n') message.pop_back();
+        error(where.begin, "cannot read OBJ file \"" + name + "\": " + (message.empty() ? "parse error" : message));
+        return shape;
+    }
+    if (!reader.Warning().empty()) {
+        std::string message = reader.Warning();
+        while (!message.empty() && message.back() == '\n') message.pop_back();
+        warning(where.begin, "OBJ \"" + name + "\": " + message);
+    }
+    const auto& attrib = reader.GetAttrib();
+    for (size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
+        mesh->positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]);
+    for (size_t i = 0; i + 2 < attrib.normals.size(); i += 3)
+        mesh->normals.emplace_back(attrib.normals[i], attrib.normals[i + 1], attrib.normals[i + 2]);
+    for (size_t i = 0; i + 1 < attrib.texcoords.size(); i += 2)
+        mesh->uvs.emplace_back(attrib.texcoords[i], attrib.texcoords[i + 1]);
+
+    // MTL materials, mapped onto POV's model (documented in docs/scene-language.md).
+    for (const auto& m : reader.GetMaterials()) {
+        auto material = std::make_shared<sg::Material>();
+        material->name = m.name;
+        material->location = where.begin;
+        sg::Vec3 kd(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
+        material->pigment.color.rgb = kd;
+        material->pigment.color.transmit = 1.0 - std::clamp<double>(m.dissolve, 0.0, 1.0);
+        if (!m.diffuse_texname.empty()) {
+            // map_Kd is relative to the OBJ's folder.
+            fs::path texture = found.parent_path() / m.diffuse_texname;
+            if (fs::is_regular_file(texture, ec)) {
+                material->pigment.kind = sg::Pigment::Kind::Image;
+                material->pigment.image.path = texture.string();
+                material->pigment.image.location = where.begin;
+                finish_image_map(material->pigment.image, where.begin);
+            } else {
+                warning(where.begin, "OBJ material '" + m.name + "': texture \"" + m.diffuse_texname + "\" not found; using Kd");
+            }
+        }
+        material->finish.ambient = sg::Vec3(m.ambient[0], m.ambient[1], m.ambient[2]);
+        material->finish.diffuse = 1.0;
+        material->finish.specular = (m.specular[0] + m.specular[1] + m.specular[2]) / 3.0;
+        material->finish.roughness = 1.0 / std::max<double>(m.shininess, 1.0);
+        for (int c = 0; c < 3; ++c) material->finish.emission[c] = kd[c] > 0 ? m.emission[c] / kd[c] : m.emission[c];
+        if (m.illum == 3 || m.illum == 5 || m.illum == 7) {
+            material->finish.reflection.min = material->finish.reflection.max =
+                sg::Vec3(m.specular[0], m.specular[1], m.specular[2]);
+        }
+        material->interior.ior = m.ior > 0 ? m.ior : 1.0;
+        mesh->materials.push_back(material);
+    }
+
+    for (const auto& obj_shape : reader.GetShapes()) {
+        const auto& indices = obj_shape.mesh.indices;
+        for (size_t f = 0; f + 2 < indices.size(); f += 3) {
+            sg::TriangleMesh::Face face;
+            bool valid = true;
+            for (int i = 0; i < 3; ++i) {
+                const auto& index = indices[f + i];
+                if (index.vertex_index < 0 || static_cast<size_t>(index.vertex_index) >= mesh->positions.size()) valid = false;
+                face.position[i] = index.vertex_index;
+                face.normal[i] = index.normal_index >= 0 && static_cast<size_t>(index.normal_index) < mesh->normals.size() ? index.normal_index : -1;
+                face.uv[i] = index.texcoord_index >= 0 && static_cast<size_t>(index.texcoord_index) < mesh->uvs.size() ? index.texcoord_index : -1;
+            }
+            if (!valid) {
+                error(where.begin, "OBJ \"" + name + "\": face " + std::to_string(f / 3 + 1) + " of '" + obj_shape.name +
+                                       "' refers to a vertex that does not exist");
+                return shape;
+            }
+            // All three normals or none, all three uvs or none.
+            if (face.normal[0] < 0 || face.normal[1] < 0 || face.normal[2] < 0) face.normal[0] = face.normal[1] = face.normal[2] = -1;
+            if (face.uv[0] < 0 || face.uv[1] < 0 || face.uv[2] < 0) face.uv[0] = face.uv[1] = face.uv[2] = -1;
+            int material_id = f / 3 < obj_shape.mesh.material_ids.size() ? obj_shape.mesh.material_ids[f / 3] : -1;
+            face.material = material_id >= 0 && static_cast<size_t>(material_id) < mesh->materials.size() ? material_id : -1;
+            mesh->faces.push_back(face);
+        }
+    }
+    if (mesh->faces.empty()) error(where.begin, "OBJ file \"" + name + "\" has no faces");
+    return shape;
+}
+
+}  // namespace lancer::parse

@@ -1,0 +1,367 @@
+// Objects and materials: primitives, unions, modifiers, textures.
+//
+// Transforms: every object keeps its geometry in its own space and
+// parent_from_object maps it into its parent's (union's or world's) space.
+// A transform modifier left-multiplies parent_from_object, so `scale 2
+// translate x` scales first. A texture is attached in the space it was
+// written in; its pattern transform is then re-expressed in object space
+// (pattern_from_object = pattern_from_parent * parent_from_object) so the
+// pattern follows later transforms of the object, as in POV-Ray.
+#include <cmath>
+#include <filesystem>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "evaluator.h"
+
+namespace lancer::parse {
+
+namespace {
+
+using MaterialPtr = std::shared_ptr<const sg::Material>;
+
+// Re-expresses a material given in the parent's space in a child's space.
+MaterialPtr in_child_space(const MaterialPtr& material, const sg::Mat4& parent_from_child) {
+    if (material->pigment.kind == sg::Pigment::Kind::Solid) return material;  // no pattern to move
+    auto moved = std::make_shared<sg::Material>(*material);
+    moved->pigment.pattern_from_object = moved->pigment.pattern_from_object * parent_from_child;
+    return moved;
+}
+
+// POV: a texture on a union reaches every descendant that has none.
+void give_material(sg::Object& object, const MaterialPtr& material) {
+    object.material = material;
+    if (auto* group = std::get_if<sg::Group>(&object.shape)) {
+        for (auto& child : group->children) {
+            if (!child.material) give_material(child, in_child_space(material, child.parent_from_object));
+        }
+    }
+}
+
+// An OBJ's MTL materials give way to a texture written on the object.
+void drop_face_materials(sg::Object& object) {
+    auto* mesh = std::get_if<sg::MeshRef>(&object.shape);
+    if (object.kind != sg::Object::Kind::ObjMesh || !mesh || !*mesh || (*mesh)->materials.empty()) return;
+    auto plain = std::make_shared<sg::TriangleMesh>(**mesh);
+    plain->materials.clear();
+    for (auto& face : plain->faces) face.material = -1;
+    *mesh = plain;
+}
+
+// Attaches a material written in the space parent_from_object maps into.
+void attach_in_parent_space(ShapeValue& shape, const sg::Material& material) {
+    auto in_object = std::make_shared<sg::Material>(material);
+    in_object->pigment.pattern_from_object = in_object->pigment.pattern_from_object * shape.object.parent_from_object;
+    drop_face_materials(shape.object);
+    give_material(shape.object, in_object);
+}
+
+// The material an object-level pigment/finish/interior modifies, expressed
+// in the parent's space (POV starts from the default texture).
+sg::Material current_in_parent_space(const ShapeValue& shape) {
+    if (!shape.object.material) return sg::Material{};
+    sg::Material material = *shape.object.material;
+    material.pigment.pattern_from_object = material.pigment.pattern_from_object * glm::inverse(shape.object.parent_from_object);
+    return material;
+}
+
+void apply_default_material(sg::Object& object, const MaterialPtr& fallback) {
+    if (!object.material) {
+        give_material(object, fallback);
+        return;
+    }
+    if (auto* group = std::get_if<sg::Group>(&object.shape)) {
+        for (auto& child : group->children) apply_default_material(child, in_child_space(fallback, child.parent_from_object));
+    }
+}
+
+}  // namespace
+
+void transform_pattern(sg::Pigment& pigment, const sg::Mat4& world_from_local) {
+    pigment.pattern_from_object = pigment.pattern_from_object * glm::inverse(world_from_local);
+}
+
+void transform_light(sg::Light& light, const sg::Mat4& m) {
+    light.position = sg::Vec3(m * glm::dvec4(light.position, 1.0));
+    light.point_at = sg::Vec3(m * glm::dvec4(light.point_at, 1.0));
+    light.axis1 = sg::Vec3(m * glm::dvec4(light.axis1, 0.0));
+    light.axis2 = sg::Vec3(m * glm::dvec4(light.axis2, 0.0));
+    light.radius *= std::cbrt(std::fabs(glm::determinant(glm::dmat3(m))));
+}
+
+// ------------------------------------------------------------ primitives
+
+ShapePtr Evaluator::make_sphere(const Value& c, const SourceRange& wc, const Value& r, const SourceRange& wr,
+                                const sg::SourceLocation& at) {
+    auto shape = std::make_shared<ShapeValue>();
+    shape->object.kind = sg::Object::Kind::Sphere;
+    shape->object.location = at;
+    sg::Sphere sphere;
+    sphere.center = to_vec3(c, wc);
+    sphere.radius = to_float(r, wr, "a float radius");
+    if (sphere.radius <= 0.0 && r.kind == Value::Kind::Float) error(wr.begin, "sphere radius must be positive, got " + std::to_string(sphere.radius));
+    shape->object.shape = sphere;
+    return shape;
+}
+
+ShapePtr Evaluator::make_plane(const Value& n, const SourceRange& wn, const Value& d, const SourceRange& wd,
+                               const sg::SourceLocation& at) {
+    auto shape = std::make_shared<ShapeValue>();
+    shape->object.kind = sg::Object::Kind::Plane;
+    shape->object.location = at;
+    sg::Vec3 normal = nonzero_vec3(n, wn, "the plane normal");
+    double length = glm::length(normal);
+    // plane { N, D } is the set N.p = D; stored with a unit normal.
+    shape->object.shape = sg::Plane{normal / length, to_float(d, wd, "a float distance") / length};
+    return shape;
+}
+
+ShapePtr Evaluator::make_box(const Value& a, const SourceRange& wa, const Value& b, const SourceRange& wb,
+                             const sg::SourceLocation& at) {
+    auto shape = std::make_shared<ShapeValue>();
+    shape->object.kind = sg::Object::Kind::Box;
+    shape->object.location = at;
+    sg::Vec3 p = to_vec3(a, wa), q = to_vec3(b, wb);
+    if (p.x == q.x || p.y == q.y || p.z == q.z) warning(at, "box has zero thickness along an axis");
+    shape->object.shape = sg::Box{glm::min(p, q), glm::max(p, q)};
+    return shape;
+}
+
+ShapePtr Evaluator::make_union(const sg::SourceLocation& at) {
+    auto shape = std::make_shared<ShapeValue>();
+    shape->object.kind = sg::Object::Kind::Union;
+    shape->object.location = at;
+    shape->object.shape = sg::Group{};
+    return shape;
+}
+
+void Evaluator::apply(ShapePtr& shape, const Edits<ShapeValue>& edits) {
+    for (const auto& edit : edits) edit(*shape);
+}
+
+Value Evaluator::object_value(const ShapePtr& shape) {
+    Value value;
+    value.kind = Value::Kind::Object;
+    value.shape = shape;
+    return value;
+}
+
+// ------------------------------------------------------------- modifiers
+
+std::function<void(ShapeValue&)> Evaluator::transform_edit(const sg::Mat4& transform) {
+    return [transform](ShapeValue& s) { s.object.parent_from_object = transform * s.object.parent_from_object; };
+}
+
+std::function<void(ShapeValue&)> Evaluator::texture_edit(std::shared_ptr<sg::Material> texture) {
+    return [texture](ShapeValue& s) {
+        sg::Material material = *texture;
+        if (s.object.material) material.interior = s.object.material->interior;  // a texture has no interior
+        attach_in_parent_space(s, material);
+    };
+}
+
+std::function<void(ShapeValue&)> Evaluator::material_edit(std::shared_ptr<sg::Material> material) {
+    return [material](ShapeValue& s) { attach_in_parent_space(s, *material); };
+}
+
+std::function<void(ShapeValue&)> Evaluator::pigment_edit(std::shared_ptr<sg::Pigment> pigment) {
+    return [pigment](ShapeValue& s) {
+        sg::Material material = current_in_parent_space(s);
+        material.pigment = *pigment;
+        attach_in_parent_space(s, material);
+    };
+}
+
+std::function<void(ShapeValue&)> Evaluator::finish_edit(std::shared_ptr<sg::Finish> finish) {
+    return [finish](ShapeValue& s) {
+        sg::Material material = current_in_parent_space(s);
+        material.finish = *finish;
+        attach_in_parent_space(s, material);
+    };
+}
+
+std::function<void(ShapeValue&)> Evaluator::interior_edit(std::shared_ptr<sg::Interior> interior) {
+    return [interior](ShapeValue& s) {
+        sg::Material material = current_in_parent_space(s);
+        material.interior = *interior;
+        attach_in_parent_space(s, material);
+    };
+}
+
+std::function<void(ShapeValue&)> Evaluator::child_edit(ShapePtr child) {
+    return [child](ShapeValue& s) {
+        sg::Object object = child->object;
+        for (sg::Light light : child->lights) {
+            transform_light(light, object.parent_from_object);
+            s.lights.push_back(light);
+        }
+        if (!object.material && s.object.material) {
+            give_material(object, in_child_space(s.object.material, object.parent_from_object));
+        }
+        std::get<sg::Group>(s.object.shape).children.push_back(std::move(object));
+    };
+}
+
+// ------------------------------------------------------------ transforms
+
+sg::Mat4 Evaluator::translation(const Value& v, const SourceRange& where) {
+    return glm::translate(sg::Mat4(1.0), to_vec3(v, where));
+}
+
+// Degrees about x, then y, then z (POV-Ray's order and sense).
+sg::Mat4 Evaluator::rotation(const Value& v, const SourceRange& where) {
+    sg::Vec3 degrees = to_vec3(v, where);
+    sg::Mat4 m = glm::rotate(sg::Mat4(1.0), glm::radians(degrees.x), sg::Vec3(1, 0, 0));
+    m = glm::rotate(sg::Mat4(1.0), glm::radians(degrees.y), sg::Vec3(0, 1, 0)) * m;
+    return glm::rotate(sg::Mat4(1.0), glm::radians(degrees.z), sg::Vec3(0, 0, 1)) * m;
+}
+
+sg::Mat4 Evaluator::scaling(const Value& v, const SourceRange& where) {
+    sg::Vec3 s = to_vec3(v, where);
+    for (int i = 0; i < 3; ++i) {
+        if (s[i] == 0.0) {
+            warning(where.begin, "scale by 0 along an axis; using 1 there (as POV-Ray does)");
+            s[i] = 1.0;
+        }
+    }
+    return glm::scale(sg::Mat4(1.0), s);
+}
+
+// matrix <m00, m01, m02, m10, ..., m32>: POV's rows act on row vectors,
+// so row j of POV's matrix is column j of GLM's.
+sg::Mat4 Evaluator::matrix(const std::vector<Value>& items, const SourceRange& where) {
+    if (items.size() != 12) {
+        error(where.begin, "matrix needs 12 values, got " + std::to_string(items.size()));
+        return sg::Mat4(1.0);
+    }
+    sg::Mat4 m(1.0);
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 3; ++col) m[row][col] = to_float(items[row * 3 + col], where, "a float matrix entry");
+    if (glm::determinant(m) == 0.0) {
+        error(where.begin, "matrix is singular (determinant 0)");
+        return sg::Mat4(1.0);
+    }
+    return m;
+}
+
+sg::Mat4 Evaluator::inverse(const sg::Mat4& m, const SourceRange& where) {
+    if (glm::determinant(m) == 0.0) {
+        error(where.begin, "cannot invert a singular transform");
+        return m;
+    }
+    return glm::inverse(m);
+}
+
+// ------------------------------------------------------------- materials
+
+std::shared_ptr<sg::Material> Evaluator::build_texture(const Edits<sg::Material>& edits, const sg::SourceLocation& at) {
+    auto material = std::make_shared<sg::Material>();
+    for (const auto& edit : edits) edit(*material);
+    material->location = at;
+    return material;
+}
+
+std::shared_ptr<sg::Pigment> Evaluator::build_pigment(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at) {
+    auto pigment = std::make_shared<sg::Pigment>();
+    for (const auto& edit : edits) edit(*pigment);
+    pigment->location = at;
+    return pigment;
+}
+
+std::shared_ptr<sg::Finish> Evaluator::build_finish(const Edits<sg::Finish>& edits, const sg::SourceLocation& at) {
+    auto finish = std::make_shared<sg::Finish>();
+    for (const auto& edit : edits) edit(*finish);
+    finish->location = at;
+    return finish;
+}
+
+std::shared_ptr<sg::Interior> Evaluator::build_interior(const Edits<sg::Interior>& edits, const sg::SourceLocation& at) {
+    auto interior = std::make_shared<sg::Interior>();
+    for (const auto& edit : edits) edit(*interior);
+    interior->location = at;
+    return interior;
+}
+
+std::function<void(sg::Finish&)> Evaluator::finish_scalar(const std::string& name, bool albedo, const Value& v,
+                                                          const SourceRange& where) {
+    double x = to_float(v, where, "a float for " + name);
+    if (x < 0.0) error(where.begin, name + " must not be negative, got " + std::to_string(x));
+    if (name == "roughness" && x == 0.0) warning(where.begin, "roughness 0 gives an infinitely sharp highlight");
+    if (name == "diffuse") return [x](sg::Finish& f) { f.diffuse = x; };
+    if (name == "brilliance") return [x](sg::Finish& f) { f.brilliance = x; };
+    if (name == "specular") return [x](sg::Finish& f) { f.specular = x; };
+    if (name == "roughness") return [x](sg::Finish& f) { f.roughness = x; };
+    if (name == "phong") return [x](sg::Finish& f) { f.phong = x; };
+    if (name == "phong_size") return [x](sg::Finish& f) { f.phong_size = x; };
+    return [x](sg::Finish& f) { f.metallic = x; };
+}
+
+sg::MapType Evaluator::map_type(const Value& v, const SourceRange& where) {
+    int type = to_int(v, where);
+    switch (type) {
+    case 0: return sg::MapType::Planar;
+    case 1: return sg::MapType::Spherical;
+    case 2: return sg::MapType::Cylindrical;
+    case 5: return sg::MapType::Torus;
+    default:
+        error(where.begin, "unsupported map_type " + std::to_string(type) + " (use 0 planar, 1 spherical, 2 cylindrical, 5 torus)");
+        return sg::MapType::UV;
+    }
+}
+
+void Evaluator::finish_image_map(sg::ImageMap& image, const sg::SourceLocation& at) {
+    namespace fs = std::filesystem;
+    if (image.path.empty()) {
+        error(at, "image_map needs a file name, e.g. image_map { png \"wood.png\" }");
+        return;
+    }
+    if (!image.location.file) image.location = at;
+    // Relative to the file that names the image, then the include path.
+    std::vector<std::string> folders;
+    auto buffer = m_buffers.find(image.location.file.get());
+    if (buffer != m_buffers.end()) folders.push_back(buffer->second->folder);
+    for (const auto& dir : m_options.include_path) folders.push_back(dir);
+    std::error_code ec;
+    std::string found;
+    if (fs::path(image.path).is_absolute()) {
+        if (fs::is_regular_file(image.path, ec)) found = image.path;
+    } else {
+        for (const auto& folder : folders) {
+            fs::path candidate = folder.empty() ? fs::path(image.path) : fs::path(folder) / image.path;
+            if (fs::is_regular_file(candidate, ec)) {
+                found = candidate.string();
+                break;
+            }
+        }
+    }
+    if (found.empty() && fs::is_regular_file(image.path, ec)) found = image.path;
+    if (found.empty()) {
+        error(image.location, "cannot find image file \"" + image.path + "\"");
+        return;
+    }
+    image.path = found;
+    if (image.format == sg::ImageFormat::Unknown) {
+        std::string ext = fs::path(found).extension().string();
+        for (auto& c : ext) c = static_cast<char>(std::tolower(c));
+        if (ext == ".png") image.format = sg::ImageFormat::Png;
+        else if (ext == ".jpg" || ext == ".jpeg") image.format = sg::ImageFormat::Jpeg;
+        else if (ext == ".exr") image.format = sg::ImageFormat::Exr;
+        else if (ext == ".hdr") image.format = sg::ImageFormat::Hdr;
+        else if (ext == ".tga") image.format = sg::ImageFormat::Tga;
+        else if (ext == ".tif" || ext == ".tiff") image.format = sg::ImageFormat::Tiff;
+    }
+    if (image.format == sg::ImageFormat::Exr || image.format == sg::ImageFormat::Hdr) image.srgb = false;
+}
+
+// ----------------------------------------------------------------- scene
+
+void Evaluator::add_object(const ShapePtr& shape) {
+    for (const auto& light : shape->lights) add_light(light, shape->object.parent_from_object);
+    const auto* group = std::get_if<sg::Group>(&shape->object.shape);
+    if (group && group->children.empty() && !shape->lights.empty()) return;  // object { Light }
+    sg::Object object = shape->object;
+    if (m_default_texture) apply_default_material(object, in_child_space(m_default_texture, object.parent_from_object));
+    m_scene.objects.push_back(std::move(object));
+}
+
+}  // namespace lancer::parse

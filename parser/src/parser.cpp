@@ -1,0 +1,89 @@
+// The public entry points (lancer/parser.h).
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "evaluator.h"
+
+namespace lancer {
+
+namespace fs = std::filesystem;
+
+namespace parse {
+
+ParseResult Evaluator::run(const std::string& text, const std::string& label, const std::string& path,
+                           const std::string& folder) {
+    m_scene.main_file = path.empty() ? label : path;
+    if (m_options.image_size_from_command_line) {
+        m_scene.render.width = m_options.image_width;
+        m_scene.render.height = m_options.image_height;
+    }
+    if (push_file(text, label, path, folder, {})) {
+        m_pending.push_back(Pending{false, {}, std::make_shared<const Symbol>(Parser::token::TOK_START_SCENE, SourceRange{}), nullptr, 0});
+        Parser parser(*this);
+        parser.parse();
+        while (!m_frames.empty() && !m_aborted) pop_frame();
+    }
+    if (m_options.image_size_from_command_line) {
+        m_scene.render.width = m_options.image_width;
+        m_scene.render.height = m_options.image_height;
+    }
+    ParseResult result;
+    result.diagnostics = std::move(m_diagnostics);
+    if (m_error_count == 0 && !m_aborted) result.scene = std::move(m_scene);
+    if (m_error_count == 0 && m_aborted) {
+        // Every abort reports an error first; guard the contract anyway.
+        Diagnostic diagnostic;
+        diagnostic.location.file = std::make_shared<const std::string>(label);
+        diagnostic.message = "parsing stopped";
+        result.diagnostics.push_back(diagnostic);
+    }
+    return result;
+}
+
+}  // namespace parse
+
+ParseResult parse_scene_file(const std::string& path, const ParseOptions& options) {
+    std::error_code ec;
+    std::ifstream in(path, std::ios::binary);
+    if (!in || fs::is_directory(path, ec)) {
+        ParseResult result;
+        Diagnostic diagnostic;
+        diagnostic.location.file = std::make_shared<const std::string>(path);
+        diagnostic.message = fs::exists(path, ec) ? "cannot read the scene file" : "scene file not found";
+        result.diagnostics.push_back(diagnostic);
+        return result;
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    parse::Evaluator evaluator(options);
+    std::string folder = fs::path(path).parent_path().string();
+    return evaluator.run(text.str(), path, path, folder);
+}
+
+ParseResult parse_scene_string(std::string_view text, const std::string& name, const ParseOptions& options) {
+    parse::Evaluator evaluator(options);
+    return evaluator.run(std::string(text), name, "", "");
+}
+
+std::vector<std::string> default_include_path() {
+    std::vector<std::string> path;
+    if (const char* env = std::getenv("LANCER_INCLUDE_PATH")) {
+        std::string list = env;
+        size_t start = 0;
+        while (start <= list.size()) {
+            size_t end = list.find(':', start);
+            if (end == std::string::npos) end = list.size();
+            if (end > start) path.push_back(list.substr(start, end - start));
+            start = end + 1;
+        }
+    }
+    // lancer's own include/: the source tree when running from a build, else the install.
+    std::error_code ec;
+    if (fs::is_directory(LANCER_SOURCE_INCLUDE_DIR, ec)) path.push_back(LANCER_SOURCE_INCLUDE_DIR);
+    else path.push_back(LANCER_INSTALL_INCLUDE_DIR);
+    return path;
+}
+
+}  // namespace lancer

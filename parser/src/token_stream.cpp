@@ -1,0 +1,487 @@
+// The token stream: frames of raw tokens (files, macro bodies) read in
+// order, directives executed on the way, identifiers resolved to typed
+// tokens. See evaluator.h for why the directive layer sits here.
+#include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "evaluator.h"
+
+namespace lancer::parse {
+
+namespace {
+
+using Kind = Parser::token_kind_type;
+using SymbolKind = Parser::symbol_kind_type;
+
+// Keywords are exactly the grammar's token aliases from "sphere" onwards.
+const std::unordered_map<std::string, Kind>& keyword_table() {
+    static const auto table = [] {
+        std::unordered_map<std::string, Kind> map;
+        for (int k = Parser::symbol_kind::S_SPHERE; k < Parser::symbol_kind::YYNTOKENS; ++k) {
+            map.emplace(Parser::symbol_name(static_cast<SymbolKind>(k)), static_cast<Kind>(k));
+        }
+        return map;
+    }();
+    return table;
+}
+
+const std::unordered_map<std::string, Kind>& punct_table() {
+    static const std::unordered_map<std::string, Kind> table = {
+        {"{", Parser::token::TOK_LBRACE}, {"}", Parser::token::TOK_RBRACE}, {"(", Parser::token::TOK_LPAREN},
+        {")", Parser::token::TOK_RPAREN}, {"[", Parser::token::TOK_LBRACKET}, {"]", Parser::token::TOK_RBRACKET},
+        {"<", Parser::token::TOK_LT}, {">", Parser::token::TOK_GT}, {"<=", Parser::token::TOK_LE},
+        {">=", Parser::token::TOK_GE}, {"=", Parser::token::TOK_EQ}, {"!=", Parser::token::TOK_NE},
+        {"+", Parser::token::TOK_PLUS}, {"-", Parser::token::TOK_MINUS}, {"*", Parser::token::TOK_STAR},
+        {"/", Parser::token::TOK_SLASH}, {",", Parser::token::TOK_COMMA}, {";", Parser::token::TOK_SEMI},
+        {".", Parser::token::TOK_DOT}, {"?", Parser::token::TOK_QUESTION}, {":", Parser::token::TOK_COLON},
+        {"&", Parser::token::TOK_AND}, {"|", Parser::token::TOK_OR}, {"!", Parser::token::TOK_NOT},
+    };
+    return table;
+}
+
+const std::unordered_set<std::string>& builtin_names() {
+    static const std::unordered_set<std::string> names = {
+        "abs", "sqrt", "pow", "exp", "log", "ln", "sin", "cos", "tan", "asin", "acos", "atan", "atan2",
+        "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "min", "max", "floor", "ceil", "mod", "int",
+        "div", "radians", "degrees", "vlength", "vnormalize", "vcross", "vdot", "vrotate", "vaxis_rotate",
+        "seed", "rand", "select", "concat", "str", "strlen", "substr", "chr", "val", "strupr", "strlwr",
+        "vstr", "asc", "sqr", "bitwise_and", "bitwise_or", "file_exists"};
+    return names;
+}
+
+// Ignored POV blocks: swallowed with a warning so nothing is dropped silently.
+const std::unordered_set<std::string>& ignored_blocks() {
+    static const std::unordered_set<std::string> names = {
+        "normal", "photons", "radiosity", "media", "fog", "sky_sphere", "rainbow", "bounded_by",
+        "clipped_by", "irid", "interior_texture", "subsurface", "mm_per_unit"};
+    return names;
+}
+
+// POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
+const std::unordered_set<std::string>& unsupported_words() {
+    static const std::unordered_set<std::string> names = {
+        "cylinder", "cone", "torus", "disc", "blob", "lathe", "prism", "sor", "superellipsoid", "text",
+        "height_field", "isosurface", "parametric", "julia_fractal", "bicubic_patch", "polygon", "quadric",
+        "quartic", "cubic", "poly", "sphere_sweep", "ovus", "lemon", "array", "spline", "function",
+        "color_map", "colour_map", "pigment_map", "texture_map", "normal_map", "slope_map", "gradient",
+        "bozo", "agate", "marble", "granite", "wood", "leopard", "onion", "radial", "spotted", "wrinkles",
+        "ripples", "waves", "hexagon", "brick", "bumps", "dents", "crackle", "spiral1", "spiral2",
+        "fisheye", "panoramic", "cylindrical", "spherical", "ultra_wide_angle", "omnimax", "layered",
+        "material_map", "uv_mapping", "pattern", "tiles", "cells", "boxed", "planar", "average",
+        "interior_texture", "isosurface", "dictionary"};
+    return names;
+}
+
+bool is_valued(Kind kind) {
+    return kind >= Parser::token::TOK_NUMBER && kind <= Parser::token::TOK_UNSUPPORTED;
+}
+
+const std::unordered_set<std::string>& constant_names() {
+    static const std::unordered_set<std::string> names = {
+        "x", "y", "z", "t", "u", "v", "pi", "tau", "true", "yes", "on", "false", "no", "off", "clock",
+        "clock_delta", "frame_number", "clock_on", "initial_clock", "final_clock", "initial_frame",
+        "final_frame", "version", "image_width", "image_height", "defined"};
+    return names;
+}
+
+}  // namespace
+
+bool is_reserved_word(const std::string& name) {
+    return keyword_table().count(name) || builtin_names().count(name) || constant_names().count(name) ||
+           unsupported_words().count(name);
+}
+
+Evaluator::Evaluator(const ParseOptions& options) : m_options(options) {
+    m_scopes.emplace_back();  // the global scope
+    // LANCER_INCLUDE_PATH and lancer's include/ are always searched last.
+    for (const auto& dir : default_include_path()) {
+        if (std::find(m_options.include_path.begin(), m_options.include_path.end(), dir) == m_options.include_path.end())
+            m_options.include_path.push_back(dir);
+    }
+}
+
+Evaluator::Symbol Evaluator::make_symbol(Kind kind, const RawToken& raw, Value value) {
+    SourceRange range{raw.location, raw.location};
+    range.end.column += static_cast<int>(std::max<size_t>(raw.text.size(), 1)) - 1;
+    if (is_valued(kind)) return Symbol(kind, TokenValue{raw.text, std::move(value)}, range);
+    return Symbol(kind, range);
+}
+
+bool Evaluator::push_file(const std::string& text, const std::string& label, const std::string& path,
+                          const std::string& folder, const sg::SourceLocation& included_from) {
+    auto buffer = std::make_shared<TokenBuffer>();
+    buffer->label = std::make_shared<const std::string>(label);
+    buffer->path = path;
+    buffer->folder = folder;
+    // The include chain of this inclusion: where it was included, then that file's chain.
+    std::vector<sg::SourceLocation> chain;
+    if (included_from.file) {
+        chain.push_back(included_from);
+        auto outer = m_include_chains.find(included_from.file.get());
+        if (outer != m_include_chains.end()) chain.insert(chain.end(), outer->second.begin(), outer->second.end());
+    }
+    m_include_chains[buffer->label.get()] = chain;
+    size_t first_new = m_diagnostics.size();
+    bool scanned = scan_text(text, *buffer, m_diagnostics);
+    for (size_t i = first_new; i < m_diagnostics.size(); ++i) {
+        m_diagnostics[i].include_chain = chain;
+        if (m_diagnostics[i].severity == Diagnostic::Severity::Error) ++m_error_count;
+    }
+    m_buffers[buffer->label.get()] = buffer;
+    if (!scanned) return false;
+    auto frame = std::make_shared<Frame>();
+    frame->buffer = buffer;
+    frame->end = buffer->tokens.size();
+    frame->owns_scope = true;
+    frame->name = label;
+    frame->called_from = included_from;
+    m_frames.push_back(frame);
+    m_scopes.emplace_back();
+    return true;
+}
+
+void Evaluator::pop_frame() {
+    Frame& frame = *m_frames.back();
+    if (!frame.controls.empty() && !m_aborted) {
+        const Control& open = frame.controls.back();
+        static const char* names[] = {"#if", "#while", "#for", "#switch", "#macro"};
+        error(open.opened_at, std::string(names[static_cast<int>(open.kind)]) + " has no matching #end" +
+                                  (frame.is_macro ? " inside macro '" + frame.name + "'" : " before the end of the file"));
+        abort_parse();
+    }
+    if (frame.owns_scope && m_scopes.size() > 1) m_scopes.pop_back();
+    if (frame.is_macro) --m_macro_depth;
+    m_frames.pop_back();
+}
+
+const RawToken* Evaluator::peek_raw() {
+    if (m_frames.empty()) return nullptr;
+    Frame& frame = *m_frames.back();
+    return frame.position < frame.end ? &frame.buffer->tokens[frame.position] : nullptr;
+}
+
+const RawToken* Evaluator::take_raw() {
+    while (!m_frames.empty()) {
+        Frame& frame = *m_frames.back();
+        if (frame.position < frame.end) return &frame.buffer->tokens[frame.position++];
+        pop_frame();
+    }
+    return nullptr;
+}
+
+bool Evaluator::directives_blocked() const {
+    return m_barrier_depth >= 0 && static_cast<int>(m_frames.size()) <= m_barrier_depth;
+}
+
+void Evaluator::abort_parse() { m_aborted = true; }
+
+Evaluator::Symbol Evaluator::next_token() {
+    while (true) {
+        if (m_aborted) {
+            return Symbol(Parser::token::TOK_END, SourceRange{});
+        }
+        RawToken raw;
+        const void* frame = nullptr;
+        size_t index = 0;
+        if (!m_pending.empty()) {
+            Pending pending = std::move(m_pending.back());
+            m_pending.pop_back();
+            if (!pending.raw) {
+                Symbol symbol = *pending.symbol;
+                m_last_returned = std::move(pending);
+                return symbol;
+            }
+            raw = pending.raw_token;
+            frame = pending.frame;
+            index = pending.index;
+        } else {
+            const RawToken* next = take_raw();
+            if (!next) {
+                m_last_returned.reset();
+                return Symbol(Parser::token::TOK_END, SourceRange{});
+            }
+            raw = *next;
+            frame = m_frames.back().get();
+            index = m_frames.back()->position - 1;
+        }
+        m_last_location = raw.location;
+        m_last_location.column += static_cast<int>(raw.text.size());
+        if (++m_tokens_read > m_options.max_loop_iterations * 20 + 100'000'000L) {
+            error(raw.location, "the scene produces too many tokens (runaway loop or recursion?)");
+            abort_parse();
+            continue;
+        }
+        if (raw.kind == RawKind::Directive) {
+            if (directives_blocked()) {
+                Pending held{true, raw, nullptr, frame, index};
+                m_last_returned = held;
+                return make_symbol(Parser::token::TOK_DIRECTIVE, raw, Value::string("#" + raw.text));
+            }
+            run_directive(raw);
+            continue;
+        }
+        if (raw.kind == RawKind::Identifier) {
+            if (skip_ignored_block(raw)) continue;
+            auto macro = m_macros.find(raw.text);
+            if (macro != m_macros.end() && !lookup(raw.text)) {
+                auto keep = macro->second;
+                expand_macro(raw, *keep);
+                continue;
+            }
+        }
+        Symbol symbol = classify(raw);
+        m_last_returned = Pending{false, raw, std::make_shared<const Symbol>(symbol), frame, index};
+        return symbol;
+    }
+}
+
+Evaluator::Symbol Evaluator::classify(const RawToken& raw) {
+    switch (raw.kind) {
+    case RawKind::Number:
+        return make_symbol(Parser::token::TOK_NUMBER, raw, Value::number(raw.number));
+    case RawKind::String:
+        return make_symbol(Parser::token::TOK_STRING, raw, Value::string(raw.text));
+    case RawKind::Punct: {
+        if (raw.text == "{" || raw.text == "(" || raw.text == "[") {
+            if (++m_nesting > m_options.max_nesting_depth) {
+                error(raw.location, "nesting too deep: more than " + std::to_string(m_options.max_nesting_depth) +
+                                        " open brackets");
+                abort_parse();
+            }
+        } else if (raw.text == "}" || raw.text == ")" || raw.text == "]") {
+            --m_nesting;
+        }
+        return make_symbol(punct_table().at(raw.text), raw);
+    }
+    case RawKind::Identifier:
+        return symbol_for_identifier(raw);
+    case RawKind::Directive:
+        break;
+    }
+    return make_symbol(Parser::token::TOK_DIRECTIVE, raw);
+}
+
+Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
+    const std::string& name = raw.text;
+    auto keyword = keyword_table().find(name);
+    if (keyword != keyword_table().end()) return make_symbol(keyword->second, raw);
+    if (builtin_names().count(name)) return make_symbol(Parser::token::TOK_BUILTIN, raw);
+
+    // Constants and read-only built-in identifiers.
+    auto constant = [&](Value v) { return make_symbol(Parser::token::TOK_CONSTANT, raw, std::move(v)); };
+    auto boolean = [&](bool on) {
+        Value v = Value::number(on ? 1.0 : 0.0);
+        v.boolean_literal = true;
+        return constant(v);
+    };
+    if (name == "x") return constant(Value::vector({1, 0, 0}));
+    if (name == "y") return constant(Value::vector({0, 1, 0}));
+    if (name == "z") return constant(Value::vector({0, 0, 1}));
+    if (name == "t") return constant(Value::vector({0, 0, 0, 1}));
+    if (name == "u") return constant(Value::vector({1, 0}));
+    if (name == "v") return constant(Value::vector({0, 1}));
+    if (name == "pi") return constant(Value::number(3.14159265358979323846));
+    if (name == "tau") return constant(Value::number(2.0 * 3.14159265358979323846));
+    if (name == "true" || name == "yes" || name == "on") return boolean(true);
+    if (name == "false" || name == "no" || name == "off") return boolean(false);
+    if (name == "clock" || name == "clock_delta" || name == "frame_number" || name == "clock_on" ||
+        name == "initial_clock" || name == "final_clock" || name == "initial_frame" || name == "final_frame") {
+        return constant(Value::number(name == "clock_delta" ? 1.0 : 0.0));
+    }
+    if (name == "version") return constant(Value::number(3.7));
+    if (name == "image_width" || name == "image_height") {
+        bool width = name == "image_width";
+        int size = width ? m_options.image_width : m_options.image_height;
+        const auto& chosen = width ? m_scene.render.width : m_scene.render.height;
+        if (!m_options.image_size_from_command_line && chosen) size = *chosen;
+        return constant(Value::number(size));
+    }
+    if (name == "defined") {
+        // defined(Name) must not resolve Name: read the raw tokens.
+        bool ok = take_punct("(");
+        sg::SourceLocation where;
+        std::string target = ok ? expect_raw_identifier("in defined()", &where) : "";
+        ok = ok && !target.empty() && take_punct(")");
+        if (!ok) {
+            error(raw.location, "expected defined(identifier)");
+            return boolean(false);
+        }
+        return boolean(lookup(target) != nullptr || m_macros.count(target) > 0);
+    }
+    if (const Value* value = lookup(name)) {
+        using VK = Value::Kind;
+        Kind kind = Parser::token::TOK_VALUE_ID;
+        switch (value->kind) {
+        case VK::Object: kind = Parser::token::TOK_OBJECT_ID; break;
+        case VK::Texture: kind = Parser::token::TOK_TEXTURE_ID; break;
+        case VK::Pigment: kind = Parser::token::TOK_PIGMENT_ID; break;
+        case VK::Finish: kind = Parser::token::TOK_FINISH_ID; break;
+        case VK::Interior: kind = Parser::token::TOK_INTERIOR_ID; break;
+        case VK::Camera: kind = Parser::token::TOK_CAMERA_ID; break;
+        case VK::Light: kind = Parser::token::TOK_LIGHT_ID; break;
+        case VK::Transform: kind = Parser::token::TOK_TRANSFORM_ID; break;
+        default: break;
+        }
+        Value copy = *value;
+        copy.boolean_literal = false;
+        return make_symbol(kind, raw, std::move(copy));
+    }
+    if (unsupported_words().count(name)) {
+        error(raw.location, "'" + name + "' is a POV-Ray feature that lancer does not support");
+        m_suppress_syntax_errors = true;
+        abort_parse();
+        return make_symbol(Parser::token::TOK_UNSUPPORTED, raw);
+    }
+    m_last_undeclared = name;
+    return make_symbol(Parser::token::TOK_UNDECLARED_ID, raw);
+}
+
+bool Evaluator::skip_ignored_block(const RawToken& keyword) {
+    if (!ignored_blocks().count(keyword.text) || lookup(keyword.text)) return false;
+    const RawToken* next = peek_raw();
+    if (!next || next->kind != RawKind::Punct || next->text != "{") return false;
+    Frame& frame = *m_frames.back();
+    int depth = 0;
+    while (frame.position < frame.end) {
+        const RawToken& token = frame.buffer->tokens[frame.position++];
+        if (token.kind != RawKind::Punct) continue;
+        if (token.text == "{") ++depth;
+        if (token.text == "}" && --depth == 0) {
+            warning(keyword.location, keyword.text + " { ... } is accepted but ignored by lancer");
+            return true;
+        }
+    }
+    error(next->location, "'{' after " + keyword.text + " has no matching '}'");
+    abort_parse();
+    return true;
+}
+
+const Value* Evaluator::lookup(const std::string& name) const {
+    for (auto scope = m_scopes.rbegin(); scope != m_scopes.rend(); ++scope) {
+        auto found = scope->find(name);
+        if (found != scope->end()) return &found->second;
+    }
+    return nullptr;
+}
+
+void Evaluator::store(const std::string& name, Value value, bool local, const sg::SourceLocation& where) {
+    m_macros.erase(name);
+    if (local) {
+        m_scopes.back()[name] = std::move(value);
+        return;
+    }
+    // #declare updates the innermost existing local of that name (so a loop
+    // counter made with #local can be advanced with #declare), else the global.
+    for (size_t i = m_scopes.size(); i-- > 1;) {
+        auto found = m_scopes[i].find(name);
+        if (found != m_scopes[i].end()) {
+            found->second = std::move(value);
+            return;
+        }
+    }
+    m_scopes.front()[name] = std::move(value);
+}
+
+// ---------------------------------------------------------------- nesting
+
+Value Evaluator::parse_nested(Kind start, const sg::SourceLocation& at, bool barrier) {
+    int saved_barrier = m_barrier_depth;
+    int saved_base = m_nested_base_depth;
+    m_nested_base_depth = static_cast<int>(m_frames.size());
+    if (barrier) m_barrier_depth = m_nested_base_depth;
+    m_nested_result.reset();
+    m_nested_had_lookahead = false;
+    m_pending.push_back(Pending{false, {}, std::make_shared<const Symbol>(start, SourceRange{at, at}), nullptr, 0});
+    Parser parser(*this);
+    parser.parse();
+    m_barrier_depth = saved_barrier;
+    m_nested_base_depth = saved_base;
+    if (m_nested_result) {
+        Value value = std::move(*m_nested_result);
+        m_nested_result.reset();
+        return value;
+    }
+    abort_parse();
+    return Value::number(0.0);
+}
+
+void Evaluator::finish_nested(Value value, const SourceRange& where, bool had_lookahead) {
+    m_nested_result = std::move(value);
+    m_nested_had_lookahead = had_lookahead;
+    if (had_lookahead && m_last_returned) {
+        m_pending.push_back(*m_last_returned);
+        m_last_returned.reset();
+        rewind_lookahead();
+    }
+}
+
+void Evaluator::finish_arguments(std::vector<Value> arguments) {
+    m_nested_arguments = std::move(arguments);
+    m_nested_result = Value::number(0.0);
+}
+
+void Evaluator::begin_value_barrier() { m_barrier_depth = m_nested_base_depth; }
+void Evaluator::end_value_barrier() { m_barrier_depth = -1; }
+
+// Puts an unread lookahead back into its frame when it was the last token
+// read there, so frame changes (includes, skipped branches) see it in order.
+void Evaluator::rewind_lookahead() {
+    if (m_pending.empty() || m_frames.empty()) return;
+    const Pending& top = m_pending.back();
+    Frame& frame = *m_frames.back();
+    if (top.frame != &frame || top.index + 1 != frame.position) return;
+    if (!top.raw && top.raw_token.kind == RawKind::Punct) {
+        const std::string& p = top.raw_token.text;
+        if (p == "{" || p == "(" || p == "[") --m_nesting;
+        if (p == "}" || p == ")" || p == "]") ++m_nesting;
+    }
+    frame.position = top.index;
+    m_pending.pop_back();
+}
+
+bool Evaluator::take_punct(const char* punct) {
+    if (!m_pending.empty()) {
+        const Pending& top = m_pending.back();
+        if (top.raw_token.kind == RawKind::Punct && top.raw_token.text == punct) {
+            rewind_lookahead();
+            if (!m_pending.empty()) {
+                m_pending.pop_back();
+                return true;
+            }
+        } else {
+            return false;
+        }
+    }
+    const RawToken* next = peek_raw();
+    if (next && next->kind == RawKind::Punct && next->text == punct) {
+        ++m_frames.back()->position;
+        return true;
+    }
+    return false;
+}
+
+std::string Evaluator::expect_raw_identifier(const std::string& context, sg::SourceLocation* where) {
+    rewind_lookahead();
+    const RawToken* next = m_pending.empty() ? peek_raw() : nullptr;
+    if (!next || next->kind != RawKind::Identifier) {
+        return "";
+    }
+    ++m_frames.back()->position;
+    if (where) *where = next->location;
+    return next->text;
+}
+
+bool Evaluator::expect_raw_punct(const char* punct, const std::string& context) {
+    if (take_punct(punct)) return true;
+    sg::SourceLocation where;
+    const RawToken* next = m_pending.empty() ? peek_raw() : &m_pending.back().raw_token;
+    if (next) where = next->location;
+    else if (!m_frames.empty() && !m_frames.back()->buffer->tokens.empty()) where = m_frames.back()->buffer->tokens.back().location;
+    error(where, std::string("expected '") + punct + "' " + context +
+                     (next ? ", found '" + (next->kind == RawKind::String ? "\"" + next->text + "\"" : (next->kind == RawKind::Directive ? "#" : "") + next->text) + "'" : ", found the end of the file"));
+    abort_parse();
+    return false;
+}
+
+}  // namespace lancer::parse

@@ -1,0 +1,53 @@
+#include "value.h"
+
+namespace lancer::parse {
+
+Value Value::vector(std::initializer_list<double> components) {
+    Value result;
+    result.kind = Kind::Vector;
+    result.size = 0;
+    for (double c : components) {
+        if (result.size < 5) result.v[result.size++] = c;
+    }
+    return result;
+}
+
+Value Value::color(const sg::Color& c) {
+    Value result;
+    result.kind = Kind::Color;
+    result.size = 5;
+    result.v = {c.rgb.r, c.rgb.g, c.rgb.b, c.filter, c.transmit};
+    return result;
+}
+
+Value Value::string(std::string s) {
+    Value result;
+    result.kind = Kind::String;
+    result.text = std::move(s);
+    return result;
+}
+
+std::string describe(Value::Kind kind) {
+    switch (kind) {
+    case Value::Kind::Float: return "a float";
+    case Value::Kind::Vector: return "a vector";
+    case Value::Kind::Color: return "a colour";
+    case Value::Kind::String: return "a string";
+    case Value::Kind::Object: return "an object";
+    case Value::Kind::Texture: return "a texture";
+    case Value::Kind::Pigment: return "a pigment";
+    case Value::Kind::Finish: return "a finish";
+    case Value::Kind::Interior: return "an interior";
+    case Value::Kind::Camera: return "a camera";
+    case Value::Kind::Light: return "a light_source";
+    case Value::Kind::Transform: return "a transform";
+    }
+    return "a value";
+}
+
+std::string describe(const Value& value) {
+    if (value.kind == Value::Kind::Vector) return "a " + std::to_string(value.size) + "-component vector";
+    return describe(value.kind);
+}
+
+}  // namespace lancer::parse

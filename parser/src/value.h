@@ -1,0 +1,97 @@
+// Values the evaluator computes: what an expression folds to and what a
+// #declare'd identifier holds. Numbers, vectors and colours share one
+// representation (POV-Ray promotes floats to vectors and colours); scene
+// items (objects, textures, ...) are shared immutable payloads.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lancer/scene_graph.h"
+
+namespace lancer::parse {
+
+// An object as the evaluator carries it: the scene-graph node plus the
+// light sources written inside it (POV allows lights in unions), kept in
+// the object's own space so they follow its transforms.
+struct ShapeValue {
+    sg::Object object;
+    std::vector<sg::Light> lights;
+};
+
+// A camera block's settings as written; resolved in POV's fixed order
+// (right, direction, angle, up, sky, location, look_at) by resolve_camera.
+struct CameraSpec {
+    sg::Camera::Projection projection = sg::Camera::Projection::Perspective;
+    std::optional<sg::Vec3> location, look_at, direction, right, up, sky;
+    std::optional<double> angle;
+    sg::Mat4 world_from_camera{1.0};  // transforms written in the block
+    sg::SourceLocation location_in_source;
+};
+
+struct Value {
+    enum class Kind { Float, Vector, Color, String, Object, Texture, Pigment, Finish, Interior, Camera, Light, Transform };
+    Kind kind = Kind::Float;
+    // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
+    std::array<double, 5> v{0.0, 0.0, 0.0, 0.0, 0.0};
+    int size = 1;
+    bool boolean_literal = false;  // written as on/off/true/false/yes/no
+    std::string text;              // String
+    std::shared_ptr<const ShapeValue> shape;
+    std::shared_ptr<const sg::Material> texture;  // Texture
+    std::shared_ptr<const sg::Pigment> pigment;
+    std::shared_ptr<const sg::Finish> finish;
+    std::shared_ptr<const sg::Interior> interior;
+    std::shared_ptr<const CameraSpec> camera;
+    std::shared_ptr<const sg::Light> light;
+    sg::Mat4 transform{1.0};
+    sg::SourceLocation location;  // where it was written, when a check needs it later
+
+    static Value number(double x) { return Value{}.with_float(x); }
+    static Value vector(std::initializer_list<double> components);
+    static Value vec3(const sg::Vec3& p) { return vector({p.x, p.y, p.z}); }
+    static Value color(const sg::Color& c);
+    static Value string(std::string s);
+
+    bool is_numeric() const { return kind == Kind::Float || kind == Kind::Vector || kind == Kind::Color; }
+    Value with_float(double x) const {
+        Value result;
+        result.v[0] = x;
+        return result;
+    }
+};
+
+// "a float", "a 3-vector", "a colour", "an object" ... for messages.
+std::string describe(const Value& value);
+std::string describe(Value::Kind kind);
+
+}  // namespace lancer::parse
+
+#include <functional>
+
+namespace lancer::parse {
+
+// A span of source text; bison's location type.
+struct SourceRange {
+    sg::SourceLocation begin;
+    sg::SourceLocation end;
+};
+
+// The semantic value every terminal carries: its spelling and, for
+// literals, constants and declared identifiers, the value it stands for.
+struct TokenValue {
+    std::string text;
+    Value value;
+};
+
+// Items of a block (camera, finish, object modifiers ...) are edits applied
+// in the order written, which is what POV-Ray's order rules need.
+template <class T>
+using Edits = std::vector<std::function<void(T&)>>;
+
+using ShapePtr = std::shared_ptr<ShapeValue>;
+using ParameterList = std::map<std::string, sg::ParameterValue>;
+
+}  // namespace lancer::parse
