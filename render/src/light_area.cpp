@@ -55,22 +55,31 @@ RectangleLight::RectangleLight(const AnalyticRectangle& rectangle, const Color& 
     m_normal = cross / m_area;
     // On-axis intensity Le * area equals a point light's pi * C.
     m_radiance = Color(kPiD * glm::dvec3(color) / m_area);
-    m_proxy = std::make_unique<PointLight>(Vec3(rectangle.center), kPi * color, 0.0f, 0.0f, Vec3(m_normal));
+    m_proxy = std::make_unique<PointLight>(Vec3(rectangle.center), kPi * color, 0.0f, 0.0f, Vec3(m_normal),
+                                           /*one_sided=*/true);
 }
 
 LightSample RectangleLight::sample(const Vec3& p, const Vec2& u) const {
     const DVec3 point = m_rectangle.center + (double(u.x) - 0.5) * m_rectangle.axis1 +
                         (double(u.y) - 0.5) * m_rectangle.axis2;
     const DVec3 origin(p);
+    // Behind the emitting side nothing arrives: no sample, and pdf() agrees.
+    if (!emits_towards(origin - point)) return LightSample{};
     return make_sample(origin, point, m_normal, m_radiance,
                        area_to_solid_angle(1.0 / m_area, origin, point, m_normal));
 }
 
 float RectangleLight::pdf(const Vec3& p, const Vec3&, const Hit& light_hit) const {
-    return area_to_solid_angle(1.0 / m_area, DVec3(p), DVec3(light_hit.position), m_normal);
+    const DVec3 point(light_hit.position);
+    if (!emits_towards(DVec3(p) - point)) return 0.0f;
+    return area_to_solid_angle(1.0 / m_area, DVec3(p), point, m_normal);
 }
 
-Color RectangleLight::power() const { return float(2.0 * kPiD * m_area) * m_radiance; }
+Color RectangleLight::emitted(const Hit&, const Vec3& wo) const {
+    return emits_towards(glm::dvec3(wo)) ? m_radiance : Color(0.0f);
+}
+
+Color RectangleLight::power() const { return float(kPiD * m_area) * m_radiance; }
 
 // -------------------------------------------------------------------- cone
 

@@ -1,4 +1,5 @@
 // Point and directional lights.
+#include <algorithm>
 #include <cmath>
 
 #include "lights.h"
@@ -6,9 +7,9 @@
 namespace lancer {
 
 PointLight::PointLight(const Vec3& position, const Color& intensity, float fade_distance, float fade_power,
-                       const Vec3& pattern_axis)
+                       const Vec3& pattern_axis, bool one_sided)
     : m_position(position), m_intensity(intensity), m_fade_distance(fade_distance), m_fade_power(fade_power),
-      m_pattern_axis(pattern_axis) {}
+      m_pattern_axis(pattern_axis), m_one_sided(one_sided) {}
 
 LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     LightSample s;
@@ -24,7 +25,10 @@ LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     else
         attenuation = 1.0 / (distance * distance);
     double pattern = 1.0;
-    if (m_pattern_axis != Vec3(0.0f)) pattern = std::fabs(glm::dot(glm::dvec3(m_pattern_axis), wi));
+    if (m_pattern_axis != Vec3(0.0f)) {
+        const double cos_emitted = -glm::dot(glm::dvec3(m_pattern_axis), wi);  // light -> p
+        pattern = m_one_sided ? std::max(0.0, cos_emitted) : std::fabs(cos_emitted);
+    }
     const glm::dvec3 radiance = glm::dvec3(m_intensity) * (attenuation * pattern);
     s.radiance = Color(radiance);
     if (!std::isfinite(max_component(s.radiance))) s.radiance = Color(std::numeric_limits<float>::max());
@@ -37,8 +41,9 @@ LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
 }
 
 Color PointLight::power() const {
-    // Integral of the pattern over the sphere: 4 pi isotropic, 2 pi for |cos|.
-    const float solid_angle = m_pattern_axis != Vec3(0.0f) ? 2.0f * kPi : 4.0f * kPi;
+    // Integral of the pattern over the sphere: 4 pi isotropic, 2 pi for
+    // |cos|, pi for max(0, cos).
+    const float solid_angle = m_pattern_axis == Vec3(0.0f) ? 4.0f * kPi : m_one_sided ? kPi : 2.0f * kPi;
     return solid_angle * m_intensity;
 }
 

@@ -172,8 +172,9 @@ TEST(Lights, EmissiveBoxAndEllipsoidPdfIntegrateToOne) {
     EXPECT_NEAR(visible_fraction(*round, *round->lights()[0], Vec3(0, 0, 0)), 1.0, 1e-9);
 }
 
-// Far along its axis a rectangle light of colour C gives the irradiance of
-// a point light of colour C; a sphere light does so in every direction.
+// Far along its axis (on its emitting side) a rectangle light of colour C
+// gives the irradiance of a point light of colour C; a sphere light does so
+// in every direction.
 TEST(Lights, AreaLightsMatchPointLightFarAway) {
     sg::Light rectangle;
     rectangle.kind = sg::Light::Kind::AreaRectangle;
@@ -187,7 +188,7 @@ TEST(Lights, AreaLightsMatchPointLightFarAway) {
     for (const sg::Light& l : {rectangle, sphere}) {
         auto scene = compile_lights({l});
         const Light& light = *scene->lights()[0];
-        const Vec3 p(0, 20, 0);
+        const Vec3 p(0, -20, 0);  // axis1 x axis2 = x cross z points down
         // Irradiance on a surface facing the light, by Monte Carlo.
         std::mt19937 rng(3);
         std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -204,6 +205,33 @@ TEST(Lights, AreaLightsMatchPointLightFarAway) {
         EXPECT_NEAR(proxy.radiance.r, kPi / 400.0f, 1e-6f);
         EXPECT_TRUE(light.proxy().is_delta());
     }
+}
+
+// A rectangle light emits on the side of axis1 x axis2 only: behind it
+// neither the light, its proxy nor a camera ray sees any emission.
+TEST(Lights, RectangleLightIsOneSided) {
+    sg::Light l;
+    l.kind = sg::Light::Kind::AreaRectangle;
+    l.position = {0, 2, 0};
+    l.axis1 = {1, 0, 0};
+    l.axis2 = {0, 0, 1};
+    l.color = {1, 1, 1};
+    auto scene = compile_lights({l});
+    const Light& light = *scene->lights()[0];
+    const Vec3 above(0.1f, 5.0f, 0.2f), below(0.1f, -1.0f, 0.2f);
+    EXPECT_EQ(light.sample(above, Vec2(0.3f, 0.6f)).pdf, 0.0f);
+    EXPECT_GT(light.sample(below, Vec2(0.3f, 0.6f)).pdf, 0.0f);
+    EXPECT_EQ(light.proxy().sample(above, Vec2(0.5f)).radiance.r, 0.0f);
+    EXPECT_NEAR(light.proxy().sample(Vec3(0, -1, 0), Vec2(0.5f)).radiance.r, kPi / 9.0f, 1e-5f);
+    // Power: pi * area * Le over the one emitting side, = pi^2 * C.
+    EXPECT_NEAR(light.power().r, kPi * kPi, 1e-4f);
+    EXPECT_NEAR(light.proxy().power().r, kPi * kPi, 1e-4f);
+    Hit from_below, from_above;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0, 0, 0), Vec3(0, 1, 0)), from_below));
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0, 4, 0), Vec3(0, -1, 0)), from_above));
+    ASSERT_NE(from_below.emitter, nullptr);
+    EXPECT_GT(from_below.emitter->emitted(from_below, Vec3(0, -1, 0)).r, 0.0f);
+    EXPECT_EQ(from_above.emitter->emitted(from_above, Vec3(0, 1, 0)).r, 0.0f);
 }
 
 TEST(Lights, ZeroSizeAreaLightsDegradeToPointLights) {

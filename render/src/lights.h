@@ -11,14 +11,15 @@
 
 namespace lancer {
 
-// Isotropic, or with a |cos| pattern about `pattern_axis` when it is not
-// zero (the proxy of a flat two-sided emitter).
+// Isotropic, or with a cosine pattern about `pattern_axis` when it is not
+// zero: |cos| for the proxy of a flat two-sided emitter, max(0, cos) for a
+// one-sided one (a rectangle light).
 class PointLight final : public Light {
 public:
     // intensity in radiance units times area (W/sr); fade as POV's when
     // fade_distance > 0, else inverse-square.
     PointLight(const Vec3& position, const Color& intensity, float fade_distance = 0.0f,
-               float fade_power = 0.0f, const Vec3& pattern_axis = Vec3(0.0f));
+               float fade_power = 0.0f, const Vec3& pattern_axis = Vec3(0.0f), bool one_sided = false);
     Kind kind() const override { return Kind::Point; }
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     Color power() const override;
@@ -31,6 +32,7 @@ private:
     float m_fade_distance;
     float m_fade_power;
     Vec3 m_pattern_axis;
+    bool m_one_sided;
 };
 
 class DirectionalLight final : public Light {
@@ -49,18 +51,22 @@ private:
     float m_scene_radius;
 };
 
-// Two-sided Lambertian parallelogram, radiance pi*C/area.
+// One-sided Lambertian parallelogram, radiance pi*C/area, emitting on the
+// side of normalize(axis1 x axis2) (docs/scene-language.md: a ceiling light
+// `area_light <a,0,0>, <0,0,b>` faces down). One-sided because a physical
+// panel lights the room, not the ceiling it hangs from.
 class RectangleLight final : public Light {
 public:
     RectangleLight(const AnalyticRectangle& rectangle, const Color& color);
     Kind kind() const override { return Kind::Rectangle; }
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     float pdf(const Vec3& p, const Vec3& wi, const Hit& light_hit) const override;
-    Color emitted(const Hit& light_hit, const Vec3& wo) const override { return m_radiance; }
+    Color emitted(const Hit& light_hit, const Vec3& wo) const override;
     Color power() const override;
     const Light& proxy() const override { return *m_proxy; }
     const Color& radiance() const { return m_radiance; }
     const AnalyticRectangle& rectangle() const { return m_rectangle; }
+    bool emits_towards(const glm::dvec3& from_surface) const { return glm::dot(m_normal, from_surface) > 0.0; }
 
 private:
     AnalyticRectangle m_rectangle;
