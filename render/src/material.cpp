@@ -59,6 +59,21 @@ Color Material::diffuse_brdf(const SurfaceSample& surface, const Vec3& n, const 
     return m_params.diffuse * opacity * kInvPi * shape * surface.pigment;
 }
 
+// With wo = N, N.H = cos(theta_i / 2); substituting x = cos(theta_i / 2)
+// turns the albedo integral 2 pi * int x^k cos(theta) sin(theta) dtheta into
+// 8 pi * int_{1/sqrt 2}^{1} (2 x^(k+3) - x^(k+1)) dx, integrated exactly here.
+// (The usual (k+8)/(8 pi) approximation overshoots by up to 7.5%.)
+float blinn_normalization(float exponent) {
+    const double k = exponent;
+    auto antiderivative = [k](double x) { return 2.0 * std::pow(x, k + 4.0) / (k + 4.0) - std::pow(x, k + 2.0) / (k + 2.0); };
+    const double integral = antiderivative(1.0) - antiderivative(std::sqrt(0.5));
+    return float(1.0 / (8.0 * 3.14159265358979323846 * integral));
+}
+
+Material::Material(const MaterialParameters& parameters)
+    : m_params(parameters),
+      m_blinn_normalization(blinn_normalization(blinn_exponent(parameters.roughness))) {}
+
 Color Material::glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo,
                             const Vec3& wi) const {
     const float cos_i = glm::dot(n, wi);
@@ -74,14 +89,14 @@ Color Material::glossy_brdf(const SurfaceSample& surface, const Vec3& n, const V
         }
     }
     if (m_params.specular > 0.0f) {
-        // Blinn: half-vector lobe, normalised with (k+8)/(8 pi).
+        // Blinn: half-vector lobe, albedo `specular` at normal incidence.
         const Vec3 half_sum = wo + wi;
         const float length = glm::length(half_sum);
         if (length > 0.0f) {
             const float c = glm::dot(n, half_sum / length);
             if (c > 0.0f) {
                 const float k = blinn_exponent(m_params.roughness);
-                lobe += m_params.specular * (k + 8.0f) / (8.0f * kPi) * std::pow(c, k);
+                lobe += m_params.specular * m_blinn_normalization * std::pow(c, k);
             }
         }
     }

@@ -4,7 +4,8 @@
 // the finish and the pigment at the hit:
 //   - a diffuse lobe            f = diffuse * pigment / pi * cos^(brilliance-1)
 //   - a Phong lobe              f = phong * (n+2)/(2 pi) * max(0, R.wi)^n, n = phong_size
-//   - a Blinn specular lobe     f = specular * (k+8)/(8 pi) * max(0, N.H)^k, k = 1/roughness
+//   - a Blinn specular lobe     f = specular * c(k) * max(0, N.H)^k, k = 1/roughness, with
+//                               c(k) making the lobe's albedo exactly 1 at normal incidence
 //   - a perfect mirror          weight reflectance(cos) (POV's reflection{min max falloff})
 //   - a smooth dielectric       weight transmittance (pigment filter/transmit), Snell with ior
 // plus emission (radiance = emission * pigment) and POV's ambient term
@@ -52,7 +53,7 @@ struct MaterialParameters {
 
 class Material {
 public:
-    explicit Material(const MaterialParameters& parameters) : m_params(parameters) {}
+    explicit Material(const MaterialParameters& parameters);
 
     const MaterialParameters& parameters() const { return m_params; }
 
@@ -91,7 +92,12 @@ public:
 
 private:
     MaterialParameters m_params;
+    float m_blinn_normalization;  // c(k) of the Blinn lobe, see above
 };
+
+// The Blinn lobe's normalisation c(k) for exponent k: 1 over the integral of
+// max(0, N.H)^k cos(theta_i) over the hemisphere with wo = N.
+float blinn_normalization(float exponent);
 
 // Reflect `d` (pointing at the surface) about unit normal n.
 inline Vec3 reflect(const Vec3& d, const Vec3& n) { return d - 2.0f * glm::dot(d, n) * n; }
