@@ -349,11 +349,6 @@ void Evaluator::directive_end(const RawToken& d) {
     }
     Control& control = controls.back();
     if (control.kind == Control::Kind::While) {
-        if (++control.iterations > m_options.max_loop_iterations) {
-            error(control.opened_at, "#while loop exceeded " + std::to_string(m_options.max_loop_iterations) +
-                                         " iterations (runaway loop?)");
-            return abort_parse();
-        }
         frame.position = control.loop_position;
         RawToken at;
         at.location = control.opened_at;
@@ -363,6 +358,10 @@ void Evaluator::directive_end(const RawToken& d) {
             sg::SourceLocation opened = controls.back().opened_at;
             controls.pop_back();
             skip_block(opened, "#while", SkipStop::End);
+        } else if (++controls.back().iterations > m_options.max_loop_iterations) {
+            error(controls.back().opened_at, "#while loop exceeded " + std::to_string(m_options.max_loop_iterations) +
+                                                 " iterations (runaway loop?)");
+            abort_parse();
         }
         return;
     }
@@ -523,6 +522,7 @@ void Evaluator::directive_message(const RawToken& d) {
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
     if (d.text == "debug") {
         note(d.location, "#debug: " + text);
+        m_diagnostics.back().location.column = 0;  // a message, not a place to point at
     } else if (d.text == "warning") {
         warning(d.location, text);
     } else {

@@ -167,12 +167,14 @@ public:
 private:
     friend struct TokenStreamAccess;
     // token stream internals (token_stream.cpp)
+    // A token to read again: a start symbol, or a raw token put back (it is
+    // classified again, so it sees declarations made meanwhile).
     struct Pending {
-        bool raw = false;
-        RawToken raw_token;   // re-read through directive processing
-        std::shared_ptr<const Symbol> symbol;
-        const void* frame = nullptr;  // where it was read, so it can be put back
+        const RawToken* raw = nullptr;          // points into a buffer kept in m_buffers
+        std::shared_ptr<const Symbol> symbol;   // start symbols only
+        const void* frame = nullptr;            // where raw was read, so it can be put back
         size_t index = 0;
+        bool classified = false;                // its bracket was counted in m_nesting
     };
     void rewind_lookahead();
     bool take_punct(const char* punct);
@@ -245,6 +247,8 @@ private:
     bool m_saw_version = false;
     bool m_saw_camera = false;
     std::map<long, std::mt19937> m_random_streams;
+    std::vector<std::unique_ptr<Parser>> m_parsers;  // reused by nested parses, one per level
+    size_t m_parser_depth = 0;
 
     friend class Parser;
     friend Value builtin_rand(Evaluator& ev, const std::vector<Value>& args, const SourceRange& where);

@@ -160,7 +160,7 @@ scene_item
   ;
 
 declared_value
-  : begin_value colour end_value { $$ = $2; }
+  : begin_value colour end_value { $$ = std::move($2); }
   | object             { $$ = ev.object_value($1); }
   | texture            { $$.kind = Value::Kind::Texture; $$.texture = $1; }
   | pigment            { $$.kind = Value::Kind::Pigment; $$.pigment = $1; }
@@ -170,14 +170,14 @@ declared_value
   | camera             { $$.kind = Value::Kind::Camera; $$.camera = std::make_shared<CameraSpec>($1); }
   | light              { $$.kind = Value::Kind::Light; $$.light = std::make_shared<sg::Light>($1); }
   | transform_block    { $$.kind = Value::Kind::Transform; $$.transform = $1; }
-  | OBJECT_ID          { $$ = $1.value; }
-  | TEXTURE_ID         { $$ = $1.value; }
-  | PIGMENT_ID         { $$ = $1.value; }
-  | FINISH_ID          { $$ = $1.value; }
-  | INTERIOR_ID        { $$ = $1.value; }
-  | CAMERA_ID          { $$ = $1.value; }
-  | LIGHT_ID           { $$ = $1.value; }
-  | TRANSFORM_ID       { $$ = $1.value; }
+  | OBJECT_ID          { $$ = std::move($1.value); }
+  | TEXTURE_ID         { $$ = std::move($1.value); }
+  | PIGMENT_ID         { $$ = std::move($1.value); }
+  | FINISH_ID          { $$ = std::move($1.value); }
+  | INTERIOR_ID        { $$ = std::move($1.value); }
+  | CAMERA_ID          { $$ = std::move($1.value); }
+  | LIGHT_ID           { $$ = std::move($1.value); }
+  | TRANSFORM_ID       { $$ = std::move($1.value); }
   ;
 
 /* The value of `#declare X = <expression>` ends where the expression ends;
@@ -232,7 +232,7 @@ object
 
 object_ref
   : OBJECT_ID          { $$ = std::make_shared<ShapeValue>(*$1.value.shape); $$->object.name = $1.text; }
-  | object             { $$ = $1; }
+  | object             { $$ = std::move($1); }
   | LIGHT_ID           { $$ = ev.make_union(LOC(@1)); $$->lights.push_back(*$1.value.light); }
   | UNDECLARED_ID      { ev.unknown_identifier($1.text, LOC(@1), "an object"); $$ = ev.make_union(LOC(@1)); }
   ;
@@ -266,7 +266,7 @@ union_items
 union_item
   : object             { $$ = ev.child_edit($1); }
   | light              { sg::Light light = $1; $$ = [light](ShapeValue& s) { s.lights.push_back(light); }; }
-  | object_mod         { $$ = $1; }
+  | object_mod         { $$ = std::move($1); }
   ;
 
 /* mesh { triangle { a, b, c [texture { T }] } ... modifiers } */
@@ -281,7 +281,7 @@ mesh_item
   | "smooth_triangle" "{" expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr texture_seq "}"
       { $$ = ev.mesh_triangle_edit({$3, $5, $7, $9, $11, $13}, {@3, @5, @7, @9, @11, @13}, $14, LOC(@1)); }
   | "inside_vector" expr { $$ = [](ShapeValue&) {}; }
-  | object_mod         { $$ = $1; }
+  | object_mod         { $$ = std::move($1); }
   ;
 
 texture_seq
@@ -318,12 +318,12 @@ transform_item
   | "rotate" expr %prec OPT_EMPTY { $$ = ev.rotation($2, @2); }
   | "scale" expr %prec OPT_EMPTY  { $$ = ev.scaling($2, @2); }
   | "matrix" "<" vector_items ">" { $$ = ev.matrix($3, @3); }
-  | transform_block    { $$ = $1; }
+  | transform_block    { $$ = std::move($1); }
   ;
 
 transform_block
   : "transform" TRANSFORM_ID { $$ = $2.value.transform; }
-  | "transform" "{" transform_items "}" { $$ = $3; }
+  | "transform" "{" transform_items "}" { $$ = std::move($3); }
   ;
 
 transform_items
@@ -491,12 +491,12 @@ interior_items
  * optionally after `color`, optionally followed by component overrides
  * (`color red 1 green .5`, `color Gray filter .3`). */
 colour
-  : colour_base        { $$ = $1; }
+  : colour_base        { $$ = std::move($1); }
   | colour colour_channel expr %prec OPT_EMPTY { $$ = ev.colour_component($1, @1, $2, $3, @3); }
   ;
 
 colour_base
-  : expr %prec OPT_EMPTY { $$ = $1; }
+  : expr %prec OPT_EMPTY { $$ = std::move($1); }
   | colour_keyword expr %prec OPT_EMPTY { $$ = ev.colour_from($2, @2); }
   | colour_keyword colour_channel expr %prec OPT_EMPTY
       { $$ = ev.colour_component(Value::color(sg::Color{}), @1, $2, $3, @3); }
@@ -515,7 +515,7 @@ colour_keyword: "color" | "colour" ;
 /* ------------------------------------------------------------- expressions */
 
 expr
-  : postfix            { $$ = $1; }
+  : postfix            { $$ = std::move($1); }
   | expr "+" expr      { $$ = ev.arithmetic('+', $1, $3, @2); }
   | expr "-" expr      { $$ = ev.arithmetic('-', $1, $3, @2); }
   | expr "*" expr      { $$ = ev.arithmetic('*', $1, $3, @2); }
@@ -530,7 +530,7 @@ expr
   | expr "|" expr      { $$ = ev.logical('|', $1, @1, $3, @3); }
   | expr "?" expr ":" expr { $$ = ev.to_float($1, @1, "a condition") != 0.0 ? $3 : $5; }
   | "-" expr %prec UNARY { $$ = ev.negate($2, @2); }
-  | "+" expr %prec UNARY { $$ = $2; }
+  | "+" expr %prec UNARY { $$ = std::move($2); }
   | "!" expr %prec UNARY { $$ = Value::number(ev.to_float($2, @2, "an operand of '!'") == 0.0 ? 1.0 : 0.0); }
   | "rgb" expr %prec UNARY    { $$ = ev.colour_keyword("rgb", $2, @2); }
   | "rgbf" expr %prec UNARY   { $$ = ev.colour_keyword("rgbf", $2, @2); }
@@ -543,7 +543,7 @@ expr
   ;
 
 postfix
-  : primary            { $$ = $1; }
+  : primary            { $$ = std::move($1); }
   | postfix "." component { $$ = ev.component($1, @1, $3, @3); }
   ;
 
@@ -560,12 +560,12 @@ component
   ;
 
 primary
-  : NUMBER             { $$ = $1.value; }
-  | STRING             { $$ = $1.value; }
-  | CONSTANT           { $$ = $1.value; }
-  | VALUE_ID           { $$ = $1.value; }
+  : NUMBER             { $$ = std::move($1.value); }
+  | STRING             { $$ = std::move($1.value); }
+  | CONSTANT           { $$ = std::move($1.value); }
+  | VALUE_ID           { $$ = std::move($1.value); }
   | UNDECLARED_ID      { ev.unknown_identifier($1.text, LOC(@1), "a value"); $$ = Value::number(0.0); }
-  | "(" expr ")"       { $$ = $2; $$.boolean_literal = false; }
+  | "(" expr ")"       { $$ = std::move($2); $$.boolean_literal = false; }
   | "<" vector_items ">" { $$ = ev.make_vector($2, @$); }
   | BUILTIN "(" opt_args ")" { $$ = ev.call_builtin($1.text, $3, @$); }
   ;
@@ -577,7 +577,7 @@ vector_items
 
 /* Inside < >, a '>' closes the vector (write (a > b) to compare). */
 vector_item
-  : expr %prec VECTOR_ITEM { $$ = $1; }
+  : expr %prec VECTOR_ITEM { $$ = std::move($1); }
   ;
 
 opt_args
@@ -601,15 +601,15 @@ macro_arg_list
   ;
 
 macro_arg
-  : colour             { $$ = $1; }
-  | OBJECT_ID          { $$ = $1.value; }
-  | TEXTURE_ID         { $$ = $1.value; }
-  | PIGMENT_ID         { $$ = $1.value; }
-  | FINISH_ID          { $$ = $1.value; }
-  | INTERIOR_ID        { $$ = $1.value; }
-  | CAMERA_ID          { $$ = $1.value; }
-  | LIGHT_ID           { $$ = $1.value; }
-  | TRANSFORM_ID       { $$ = $1.value; }
+  : colour             { $$ = std::move($1); }
+  | OBJECT_ID          { $$ = std::move($1.value); }
+  | TEXTURE_ID         { $$ = std::move($1.value); }
+  | PIGMENT_ID         { $$ = std::move($1.value); }
+  | FINISH_ID          { $$ = std::move($1.value); }
+  | INTERIOR_ID        { $$ = std::move($1.value); }
+  | CAMERA_ID          { $$ = std::move($1.value); }
+  | LIGHT_ID           { $$ = std::move($1.value); }
+  | TRANSFORM_ID       { $$ = std::move($1.value); }
   | object             { $$ = ev.object_value($1); }
   | texture            { $$.kind = Value::Kind::Texture; $$.texture = $1; }
   | pigment            { $$.kind = Value::Kind::Pigment; $$.pigment = $1; }

@@ -179,60 +179,56 @@ void Evaluator::abort_parse() { m_aborted = true; }
 Evaluator::Symbol Evaluator::next_token() {
     while (true) {
         if (m_aborted) {
-            return Symbol(Parser::token::TOK_END, SourceRange{});
+            return Symbol(Parser::token::TOK_END, SourceRange{m_last_location, m_last_location});
         }
-        RawToken raw;
+        const RawToken* raw = nullptr;
         const void* frame = nullptr;
         size_t index = 0;
         if (!m_pending.empty()) {
             Pending pending = std::move(m_pending.back());
             m_pending.pop_back();
             if (!pending.raw) {
-                Symbol symbol = *pending.symbol;
-                m_last_returned = std::move(pending);
-                return symbol;
+                m_last_returned.reset();
+                return *pending.symbol;
             }
-            raw = pending.raw_token;
+            raw = pending.raw;
             frame = pending.frame;
             index = pending.index;
         } else {
-            const RawToken* next = take_raw();
-            if (!next) {
+            raw = take_raw();
+            if (!raw) {
                 m_last_returned.reset();
-                return Symbol(Parser::token::TOK_END, SourceRange{});
+                return Symbol(Parser::token::TOK_END, SourceRange{m_last_location, m_last_location});
             }
-            raw = *next;
             frame = m_frames.back().get();
             index = m_frames.back()->position - 1;
         }
-        m_last_location = raw.location;
-        m_last_location.column += static_cast<int>(raw.text.size());
-        if (++m_tokens_read > m_options.max_loop_iterations * 20 + 100'000'000L) {
-            error(raw.location, "the scene produces too many tokens (runaway loop or recursion?)");
+        m_last_location = raw->location;
+        m_last_location.column += static_cast<int>(raw->text.size());
+        if (++m_tokens_read > 50'000'000L + 20 * m_options.max_loop_iterations) {
+            error(raw->location, "the scene produces too many tokens (runaway loop or recursion?)");
             abort_parse();
             continue;
         }
-        if (raw.kind == RawKind::Directive) {
+        if (raw->kind == RawKind::Directive) {
             if (directives_blocked()) {
-                Pending held{true, raw, nullptr, frame, index};
-                m_last_returned = held;
-                return make_symbol(Parser::token::TOK_DIRECTIVE, raw, Value::string("#" + raw.text));
+                m_last_returned = Pending{raw, nullptr, frame, index, false};
+                return make_symbol(Parser::token::TOK_DIRECTIVE, *raw, Value::string("#" + raw->text));
             }
-            run_directive(raw);
+            run_directive(*raw);
             continue;
         }
-        if (raw.kind == RawKind::Identifier) {
-            if (skip_ignored_block(raw)) continue;
-            auto macro = m_macros.find(raw.text);
-            if (macro != m_macros.end() && !lookup(raw.text)) {
+        if (raw->kind == RawKind::Identifier) {
+            if (skip_ignored_block(*raw)) continue;
+            auto macro = m_macros.find(raw->text);
+            if (macro != m_macros.end() && !lookup(raw->text)) {
                 auto keep = macro->second;
-                expand_macro(raw, *keep);
+                expand_macro(*raw, *keep);
                 continue;
             }
         }
-        Symbol symbol = classify(raw);
-        m_last_returned = Pending{false, raw, std::make_shared<const Symbol>(symbol), frame, index};
-        return symbol;
+        m_last_returned = Pending{raw, nullptr, frame, index, raw->kind == RawKind::Punct};
+        return classify(*raw);
     }
 }
 
@@ -392,9 +388,12 @@ Value Evaluator::parse_nested(Kind start, const sg::SourceLocation& at, bool bar
     if (barrier) m_barrier_depth = m_nested_base_depth;
     m_nested_result.reset();
     m_nested_had_lookahead = false;
-    m_pending.push_back(Pending{false, {}, std::make_shared<const Symbol>(start, SourceRange{at, at}), nullptr, 0});
-    Parser parser(*this);
-    parser.parse();
+    m_pending.push_back(Pending{nullptr, std::make_shared<const Symbol>(start, SourceRange{at, at}), nullptr, 0, false});
+    // Parsers are reused per nesting level: building one reserves its stack.
+    size_t level = m_parser_depth++;
+    if (m_parsers.size() <= level) m_parsers.push_back(std::make_unique<Parser>(*this));
+    m_parsers[level]->parse();
+    --m_parser_depth;
     m_barrier_depth = saved_barrier;
     m_nested_base_depth = saved_base;
     if (m_nested_result) {
@@ -430,9 +429,9 @@ void Evaluator::rewind_lookahead() {
     if (m_pending.empty() || m_frames.empty()) return;
     const Pending& top = m_pending.back();
     Frame& frame = *m_frames.back();
-    if (top.frame != &frame || top.index + 1 != frame.position) return;
-    if (!top.raw && top.raw_token.kind == RawKind::Punct) {
-        const std::string& p = top.raw_token.text;
+    if (!top.raw || top.frame != &frame || top.index + 1 != frame.position) return;
+    if (top.classified) {
+        const std::string& p = top.raw->text;
         if (p == "{" || p == "(" || p == "[") --m_nesting;
         if (p == "}" || p == ")" || p == "]") ++m_nesting;
     }
@@ -441,17 +440,14 @@ void Evaluator::rewind_lookahead() {
 }
 
 bool Evaluator::take_punct(const char* punct) {
+    rewind_lookahead();
     if (!m_pending.empty()) {
         const Pending& top = m_pending.back();
-        if (top.raw_token.kind == RawKind::Punct && top.raw_token.text == punct) {
-            rewind_lookahead();
-            if (!m_pending.empty()) {
-                m_pending.pop_back();
-                return true;
-            }
-        } else {
-            return false;
+        if (top.raw && top.raw->kind == RawKind::Punct && top.raw->text == punct) {
+            m_pending.pop_back();
+            return true;
         }
+        return false;
     }
     const RawToken* next = peek_raw();
     if (next && next->kind == RawKind::Punct && next->text == punct) {
@@ -475,7 +471,7 @@ std::string Evaluator::expect_raw_identifier(const std::string& context, sg::Sou
 bool Evaluator::expect_raw_punct(const char* punct, const std::string& context) {
     if (take_punct(punct)) return true;
     sg::SourceLocation where;
-    const RawToken* next = m_pending.empty() ? peek_raw() : &m_pending.back().raw_token;
+    const RawToken* next = m_pending.empty() ? peek_raw() : m_pending.back().raw;
     if (next) where = next->location;
     else if (!m_frames.empty() && !m_frames.back()->buffer->tokens.empty()) where = m_frames.back()->buffer->tokens.back().location;
     error(where, std::string("expected '") + punct + "' " + context +

@@ -33,7 +33,9 @@ struct ParseOptions {
     int image_height = 480;
     bool image_size_from_command_line = false;
     // Resource limits: exceeding one is a located error, never a hang.
-    long max_loop_iterations = 10'000'000;
+    // One #while/#for loop may run this many times (an iteration costs a few
+    // microseconds, so a runaway loop is reported within seconds).
+    long max_loop_iterations = 1'000'000;
     int max_include_depth = 64;
     int max_macro_depth = 200;
     int max_nesting_depth = 256;
