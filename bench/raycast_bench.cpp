@@ -5,6 +5,8 @@
 //
 //   build/bin/lancer_bench --benchmark_filter=Raycast
 //
+// BM_BareEmbreeRobustPrimaryRays is the bare loop with RTC_SCENE_FLAG_ROBUST,
+// which lancer's scene sets (watertight traversal): the flag's own cost.
 // BM_HostIntersectOnlyPrimaryRays runs the host with an integrator that only
 // intersects, to tell the host's and RenderScene's share from raycast's.
 //
@@ -98,6 +100,7 @@ struct BenchScene {
 
     RTCDevice device = nullptr;
     RTCScene bare_scene = nullptr;
+    RTCScene bare_robust_scene = nullptr;  // same, with RTC_SCENE_FLAG_ROBUST as lancer's scene
     std::vector<float> vertices;         // xyz per vertex, padded for Embree's 16-byte loads
     std::vector<unsigned> indices;       // three per triangle
 
@@ -155,21 +158,29 @@ struct BenchScene {
             for (int k = 0; k < 3; ++k) indices.push_back(unsigned(face.position[k]));
         }
         device = rtcNewDevice(nullptr);
-        bare_scene = rtcNewScene(device);
+        bare_scene = make_bare_scene(RTC_SCENE_FLAG_NONE);
+        bare_robust_scene = make_bare_scene(RTC_SCENE_FLAG_ROBUST);
+    }
+
+    RTCScene make_bare_scene(RTCSceneFlags flags) {
+        RTCScene bare = rtcNewScene(device);
+        rtcSetSceneFlags(bare, flags);
         RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
         rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertices.data(), 0,
                                    3 * sizeof(float), mesh->positions.size());
         rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices.data(), 0,
                                    3 * sizeof(unsigned), mesh->faces.size());
         rtcCommitGeometry(geometry);
-        rtcAttachGeometry(bare_scene, geometry);
+        rtcAttachGeometry(bare, geometry);
         rtcReleaseGeometry(geometry);
-        rtcCommitScene(bare_scene);
+        rtcCommitScene(bare);
+        return bare;
     }
 
     ~BenchScene() {
         raycast.reset();  // before its plugin's code is unloaded
         if (bare_scene) rtcReleaseScene(bare_scene);
+        if (bare_robust_scene) rtcReleaseScene(bare_robust_scene);
         if (device) rtcReleaseDevice(device);
     }
 
@@ -189,7 +200,8 @@ struct BenchScene {
     }
 
     // Seconds for the same rays through rtcIntersect1 alone, same tiles and threads.
-    double trace_bare() const {
+    double trace_bare(bool robust = false) const {
+        const RTCScene target = robust ? bare_robust_scene : bare_scene;
         tbb::task_arena arena(kThreads);
         std::vector<unsigned> hits(kHeight, 0);
         const auto start = std::chrono::steady_clock::now();
@@ -217,7 +229,7 @@ struct BenchScene {
                                           query.ray.flags = 0;
                                           query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
                                           query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-                                          rtcIntersect1(bare_scene, &context, &query);
+                                          rtcIntersect1(target, &context, &query);
                                           row_hits += query.hit.geomID != RTC_INVALID_GEOMETRY_ID;
                                       }
                                       // Rows are split across tiles; relaxed accumulation is fine
@@ -270,6 +282,18 @@ void BM_BareEmbreePrimaryRays(benchmark::State& state) {
     set_common_counters(state, bench);
 }
 
+void BM_BareEmbreeRobustPrimaryRays(benchmark::State& state) {
+    BenchScene& bench = bench_scene();
+    double seconds = 0.0;
+    for (auto _ : state) {
+        const double frame = bench.trace_bare(true);
+        state.SetIterationTime(frame);
+        seconds += frame;
+    }
+    state.counters["Mrays/s"] = kRaysPerFrame * double(state.iterations()) / seconds / 1e6;
+    set_common_counters(state, bench);
+}
+
 void BM_HostIntersectOnlyPrimaryRays(benchmark::State& state) {
     BenchScene& bench = bench_scene();
     const IntersectOnly intersect_only;
@@ -303,6 +327,7 @@ void BM_RaycastOverBareEmbree(benchmark::State& state) {
 
 BENCHMARK(BM_RaycastPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_BareEmbreePrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_BareEmbreeRobustPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_HostIntersectOnlyPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_RaycastOverBareEmbree)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(4.0);
 
