@@ -255,14 +255,14 @@ int run_render(const RenderArguments& arguments) {
         const std::uint64_t spp_taken = pixels > 0 ? stats.samples / pixels : 0;
 
         ImageWriteOptions write_options;
+        // write_image stores each key as "lancer:<key>".
         write_options.metadata = {
-            {"Software", "lancer 0.1.0"},
-            {"lancer:scene", arguments.scene},
-            {"lancer:integrator", integrator_name},
-            {"lancer:parameters", join_parameters(parameters)},
-            {"lancer:spp", std::to_string(spp_taken)},
-            {"lancer:seed", std::to_string(options.seed)},
-            {"lancer:seconds", std::to_string(stats.seconds)},
+            {"scene", arguments.scene},
+            {"integrator", integrator_name},
+            {"parameters", join_parameters(parameters)},
+            {"spp", std::to_string(spp_taken)},
+            {"seed", std::to_string(options.seed)},
+            {"seconds", std::to_string(stats.seconds)},
         };
         write_image(film, output, write_options);
 
