@@ -160,9 +160,9 @@ TEST(RaycastIntegrator, OneAndTwoThreadsGiveTheSameImageBitForBit) {
     EXPECT_EQ(differing, 0);
 }
 
-// raycast is deterministic, so the host gives it one sample through each
-// pixel centre; this wrapper draws from the sampler too, so jittered camera
-// rays and per-sample streams are covered by the same bit-exact check.
+// raycast itself draws no random numbers; this wrapper does, so jittered
+// camera rays and the per-sample sampler streams are covered by the same
+// bit-exact check.
 class JitteredRaycast final : public Integrator {
 public:
     explicit JitteredRaycast(const Integrator& raycast) : m_raycast(raycast) {}
