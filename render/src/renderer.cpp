@@ -81,9 +81,11 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
     const int tiles_x = (window.x1 - window.x0 + tile - 1) / tile;
     const int tiles_y = (window.y1 - window.y0 + tile - 1) / tile;
     const int tiles = tiles_x * tiles_y;
-    // A deterministic integrator gets one sample through the pixel centre.
-    const bool deterministic = integrator.is_deterministic();
-    const int samples = deterministic ? 1 : std::max(options.samples_per_pixel, 1);
+    // One sample of a deterministic integrator goes through the pixel centre
+    // (POV-Ray's picture without antialiasing); more samples, of any
+    // integrator, spread over the pixel and antialias.
+    const int samples = std::max(options.samples_per_pixel, 1);
+    const bool pixel_centre = samples == 1 && integrator.is_deterministic();
     const Camera& camera = scene.camera();
 
     const std::unique_ptr<Sampler> prototype = integrator.make_sampler(options.seed);
@@ -100,7 +102,7 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
             for (int x = x_begin; x < x_end; ++x)
                 for (int s = 0; s < samples; ++s) {
                     sampler.start_sample(x, y, std::uint32_t(s));
-                    const Vec2 jitter = deterministic ? Vec2(0.5f) : sampler.next_2d();
+                    const Vec2 jitter = pixel_centre ? Vec2(0.5f) : sampler.next_2d();
                     const Ray ray = camera.generate_ray(float(x) + jitter.x, float(y) + jitter.y, width, height);
                     film.add_sample(x, y, integrator.radiance(ray, scene, sampler));
                 }

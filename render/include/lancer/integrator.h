@@ -29,7 +29,8 @@ public:
     // many threads: must not mutate the integrator. Use only `sampler` for
     // randomness.
     virtual Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const = 0;
-    // True if one sample per pixel gives the exact answer (no randomness).
+    // True if radiance() uses no randomness: at one sample per pixel the host
+    // then traces the pixel centre; more samples antialias.
     virtual bool is_deterministic() const { return false; }
     // The sampler the host gives radiance(); one per thread, cloned.
     virtual std::unique_ptr<Sampler> make_sampler(std::uint64_t seed) const {
