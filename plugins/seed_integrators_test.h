@@ -127,12 +127,13 @@ inline Ray ray_towards(const Vec3& origin, const Vec3& target) {
 }
 
 inline Film render_small(const RenderScene& scene, const Integrator& integrator, int width, int height,
-                         int samples = 1) {
+                         int samples = 1, int threads = 1) {
     RenderOptions options;
     options.width = width;
     options.height = height;
     options.samples_per_pixel = samples;
-    options.threads = 1;
+    options.threads = threads;
+    options.tile_size = 4;  // several tiles even on tiny images, so threads interleave
     options.progress = ProgressMode::Quiet;
     Film film(width, height);
     render_image(scene, integrator, options, film);
