@@ -12,7 +12,7 @@ render_settings {
     integrator "whitted" { }
     width 640
     height 480
-    samples 4
+    samples 16
 }
 
 camera {
