@@ -104,14 +104,9 @@ private:
     // each behind a shadow ray. Area lights' diffuse light is gathered.
     static LobeRadiance direct_light(const RenderScene& scene, const ShadingContext& at) {
         LobeRadiance total;
-        for (const Light* light : scene.lights()) {
-            const LightSample sample = simple_model_light(*light).sample(at.hit.position, Vec2(0.5f));
-            LobeRadiance reflected = reflect_light_sample(at, sample);
-            if (!light->is_delta()) reflected.diffuse = Color(0.0f);
-            if (reflected.is_black()) continue;
-            reflected *= transmittance_to(scene, at.hit, sample.point, light);
-            total += reflected;
-        }
+        for (const Light* light : scene.lights())
+            total += reflect_simple_light(scene, at, *light, Shadows::Hard,
+                                          light->is_delta() ? Lobes::All : Lobes::GlossyOnly);
         return total;
     }
 

@@ -111,13 +111,20 @@ inline const Light& simple_model_light(const Light& light) {
     return light.is_delta() ? light : light.proxy();
 }
 
+enum class Lobes {
+    All,
+    GlossyOnly,  // the caller accounts for the diffuse light otherwise (gather)
+};
+
 // Reflected light from one light of the simple model (see simple_model_light).
+// No shadow ray is cast for light the requested lobes do not reflect.
 inline LobeRadiance reflect_simple_light(const RenderScene& scene, const ShadingContext& at,
-                                         const Light& light, Shadows shadows) {
+                                         const Light& light, Shadows shadows, Lobes lobes = Lobes::All) {
     const Light& stand_in = simple_model_light(light);
     // Point and directional lights ignore u: one sample is exact.
     const LightSample sample = stand_in.sample(at.hit.position, Vec2(0.5f));
     LobeRadiance reflected = reflect_light_sample(at, sample);
+    if (lobes == Lobes::GlossyOnly) reflected.diffuse = Color(0.0f);
     if (shadows == Shadows::Hard && !reflected.is_black())
         reflected *= transmittance_to(scene, at.hit, sample.point, &light);
     return reflected;
