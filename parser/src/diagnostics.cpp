@@ -63,8 +63,6 @@ std::string format_diagnostic(const Diagnostic& diagnostic) {
 
 namespace parse {
 
-namespace {
-
 size_t edit_distance(const std::string& a, const std::string& b) {
     std::vector<size_t> previous(b.size() + 1), current(b.size() + 1);
     for (size_t j = 0; j <= b.size(); ++j) previous[j] = j;
@@ -78,8 +76,6 @@ size_t edit_distance(const std::string& a, const std::string& b) {
     }
     return previous[b.size()];
 }
-
-}  // namespace
 
 std::string Evaluator::suggestion(const std::string& name) const {
     std::vector<std::string> candidates;
@@ -161,6 +157,16 @@ void Evaluator::syntax_error(const SourceRange& where, const std::string& messag
         std::string near = suggestion(m_last_undeclared);
         unexpected = "unknown identifier '" + m_last_undeclared + "'";
         if (!near.empty()) unexpected += "; did you mean '" + near + "'?";
+    }
+    if (expected.empty()) {
+        // Bison lists expectations only when there are few; say where we are instead.
+        if (unexpected == "unexpected }" && !m_last_closed_block.empty()) {
+            unexpected += " closing " + m_last_closed_block + " { }: a value or item is missing before it";
+        } else if (m_block_names.empty()) {
+            expected = "an object, light_source, camera, background, global_settings, render_settings or a directive";
+        } else if (!m_block_names.back().empty()) {
+            unexpected += " inside " + m_block_names.back() + " { }";
+        }
     }
     text = unexpected + (expected.empty() ? "" : " (expected " + expected + ")");
     sg::SourceLocation at = where.begin;

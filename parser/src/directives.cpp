@@ -63,11 +63,7 @@ void Evaluator::run_directive(const RawToken& d) {
         std::string best;
         size_t best_distance = 3;
         for (const auto& k : known) {
-            // cheap prefix-insensitive closeness: reuse the identifier suggester's metric
-            size_t distance = 0;
-            size_t common = 0;
-            while (common < k.size() && common < n.size() && k[common] == n[common]) ++common;
-            distance = std::max(k.size(), n.size()) - common;
+            size_t distance = edit_distance(k, n);
             if (distance < best_distance) best_distance = distance, best = k;
         }
         error(d.location, "unknown directive '#" + n + "'" + (best.empty() ? "" : "; did you mean '#" + best + "'?"));
@@ -122,7 +118,7 @@ void Evaluator::directive_undef(const RawToken& d) {
 }
 
 bool Evaluator::evaluate_condition(const RawToken& d, const std::string& what) {
-    Value value = parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+    Value value = parse_nested(Parser::token::TOK_START_COND, d.location, true);
     rewind_lookahead();
     if (m_aborted) return false;
     SourceRange where{d.location, d.location};
@@ -262,7 +258,7 @@ void Evaluator::directive_for(const RawToken& d) {
 }
 
 void Evaluator::directive_switch(const RawToken& d) {
-    Value value = parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+    Value value = parse_nested(Parser::token::TOK_START_COND, d.location, true);
     rewind_lookahead();
     if (m_aborted) return;
     Control control;
@@ -295,7 +291,7 @@ void Evaluator::directive_switch(const RawToken& d) {
             if (m_aborted || !expect_raw_punct(")", "to close #range (low, high)")) return;
             matched = control.switch_value >= low && control.switch_value <= high;
         } else {
-            Value value = parse_nested(Parser::token::TOK_START_EXPR, stop->location, true);
+            Value value = parse_nested(Parser::token::TOK_START_COND, stop->location, true);
             if (m_aborted) return;
             matched = control.switch_value == to_float(value, where, "a float for #case");
         }
@@ -322,7 +318,7 @@ void Evaluator::directive_case(const RawToken& d, bool range) {
         if (!m_aborted) expect_raw_punct(")", "to close #range (low, high)");
         return;
     }
-    parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+    parse_nested(Parser::token::TOK_START_COND, d.location, true);
     rewind_lookahead();
 }
 
@@ -456,7 +452,7 @@ void Evaluator::expand_macro(const RawToken& name, const Macro& macro) {
 }
 
 void Evaluator::directive_include(const RawToken& d) {
-    Value name_value = parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+    Value name_value = parse_nested(Parser::token::TOK_START_STRING, d.location, true);
     rewind_lookahead();
     if (m_aborted) return;
     if (name_value.kind != Value::Kind::String) {
@@ -515,7 +511,7 @@ void Evaluator::directive_include(const RawToken& d) {
 }
 
 void Evaluator::directive_message(const RawToken& d) {
-    Value message = parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
+    Value message = parse_nested(Parser::token::TOK_START_STRING, d.location, true);
     rewind_lookahead();
     if (m_aborted) return;
     std::string text = message.kind == Value::Kind::String ? message.text : describe(message);

@@ -44,6 +44,8 @@ void transform_pattern(sg::Pigment& pigment, const sg::Mat4& world_from_local);
 void transform_light(sg::Light& light, const sg::Mat4& world_from_local);
 sg::Camera resolve_camera(const CameraSpec& spec);
 bool is_reserved_word(const std::string& name);
+// Levenshtein distance, case-insensitive: how far a typo is from a name.
+size_t edit_distance(const std::string& a, const std::string& b);
 
 class Evaluator {
 public:
@@ -249,6 +251,9 @@ private:
     std::map<long, std::mt19937> m_random_streams;
     std::vector<std::unique_ptr<Parser>> m_parsers;  // reused by nested parses, one per level
     size_t m_parser_depth = 0;
+    std::string m_previous_word;             // the last word read, names the block a '{' opens
+    std::vector<std::string> m_block_names;  // open { } blocks, for syntax error hints
+    std::string m_last_closed_block;
 
     friend class Parser;
     friend Value builtin_rand(Evaluator& ev, const std::vector<Value>& args, const SourceRange& where);

@@ -41,7 +41,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 
 %token END 0 "end of file"
 %token START_SCENE "start of scene" START_VALUE "start of value" START_EXPR "start of expression"
-       START_ARGS "start of arguments"
+       START_ARGS "start of arguments" START_COND "start of condition" START_STRING "start of file name"
 %token LBRACE "{" RBRACE "}" LPAREN "(" RPAREN ")" LBRACKET "[" RBRACKET "]"
        LT "<" GT ">" LE "<=" GE ">=" EQ "=" NE "!=" PLUS "+" MINUS "-" STAR "*" SLASH "/"
        COMMA "," SEMI ";" DOT "." QUESTION "?" COLON ":" AND "&" OR "|" NOT "!"
@@ -89,7 +89,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        ADC_BAILOUT "adc_bailout" CHARSET "charset" NUMBER_OF_WAVES "number_of_waves"
        NOISE_GENERATOR "noise_generator" MAX_INTERSECTIONS "max_intersections"
 
-%nterm <Value> expr postfix primary colour colour_base declared_value
+%nterm <Value> expr postfix primary colour colour_base declared_value string_value
 %nterm <std::vector<Value>> expr_list opt_args vector_items expr_seq macro_args macro_arg_list
 %nterm <Value> macro_arg vector_item
 %nterm <std::string> component param_name
@@ -119,7 +119,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <int> colour_channel
 %nterm <Edits<sg::TriangleMesh>> mesh2_sections
 %nterm <std::function<void(sg::TriangleMesh&)>> mesh2_section
-%nterm <std::vector<std::shared_ptr<sg::Material>>> texture_seq
+%nterm <std::vector<std::shared_ptr<sg::Material>>> texture_seq texture_list
 
 %precedence OPT_EMPTY
 %right "?" ":"
@@ -140,6 +140,16 @@ start
   | START_VALUE declared_value { ev.finish_nested(std::move($2), @2, !yyla.empty()); YYACCEPT; }
   | START_EXPR expr            { ev.finish_nested(std::move($2), @2, !yyla.empty()); YYACCEPT; }
   | START_ARGS "(" macro_args ")" { ev.finish_arguments(std::move($3)); YYACCEPT; }
+  /* Directive arguments end at a token that needs no lookahead, so the
+   * token after them is read only once the directive has run. */
+  | START_COND "(" expr ")"  { ev.finish_nested(std::move($3), @3, !yyla.empty()); YYACCEPT; }
+  | START_STRING string_value { ev.finish_nested(std::move($2), @2, !yyla.empty()); YYACCEPT; }
+  ;
+
+string_value
+  : STRING             { $$ = std::move($1.value); }
+  | VALUE_ID           { $$ = std::move($1.value); }
+  | BUILTIN "(" opt_args ")" { $$ = ev.call_builtin($1.text, $3, @$); }
   ;
 
 /* ------------------------------------------------------------ scene level */
@@ -284,6 +294,12 @@ mesh_item
   | object_mod         { $$ = std::move($1); }
   ;
 
+/* texture_list { N, texture {...}, texture {...} } */
+texture_list
+  : %empty             {}
+  | texture_list texture opt_comma { $$ = std::move($1); $$.push_back($2); }
+  ;
+
 texture_seq
   : %empty             {}
   | texture_seq texture { $$ = std::move($1); $$.push_back($2); }
@@ -301,7 +317,7 @@ mesh2_section
   | "face_indices" "{" expr expr_seq opt_comma "}"   { $$ = ev.mesh2_indices("face_indices", $3, @3, $4, @4, LOC(@1)); }
   | "normal_indices" "{" expr expr_seq opt_comma "}" { $$ = ev.mesh2_indices("normal_indices", $3, @3, $4, @4, LOC(@1)); }
   | "uv_indices" "{" expr expr_seq opt_comma "}"     { $$ = ev.mesh2_indices("uv_indices", $3, @3, $4, @4, LOC(@1)); }
-  | "texture_list" "{" expr texture_seq "}"          { $$ = ev.mesh2_textures($3, @3, $4, LOC(@1)); }
+  | "texture_list" "{" expr opt_comma texture_list "}" { $$ = ev.mesh2_textures($3, @3, $5, LOC(@1)); }
   | "inside_vector" expr { $$ = [](sg::TriangleMesh&) {}; }
   ;
 

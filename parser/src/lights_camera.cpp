@@ -144,7 +144,7 @@ void Evaluator::render_setting(const std::string& name, const SourceRange& wn, c
     }
     std::string near;
     for (const char* known : {"integrator", "width", "height", "samples", "seed"}) {
-        if (name.size() > 1 && (std::string(known).find(name) == 0 || name.find(known) == 0)) near = known;
+        if (edit_distance(name, known) <= 2) near = known;
     }
     error(wn.begin, "unknown render_settings item '" + name + "' (expected integrator, width, height, samples or seed)" +
                         (near.empty() ? "" : "; did you mean '" + near + "'?"));

@@ -239,6 +239,11 @@ Evaluator::Symbol Evaluator::classify(const RawToken& raw) {
     case RawKind::String:
         return make_symbol(Parser::token::TOK_STRING, raw, Value::string(raw.text));
     case RawKind::Punct: {
+        if (raw.text == "{") m_block_names.push_back(m_previous_word);
+        if (raw.text == "}" && !m_block_names.empty()) {
+            m_last_closed_block = m_block_names.back();
+            m_block_names.pop_back();
+        }
         if (raw.text == "{" || raw.text == "(" || raw.text == "[") {
             if (++m_nesting > m_options.max_nesting_depth) {
                 error(raw.location, "nesting too deep: more than " + std::to_string(m_options.max_nesting_depth) +
@@ -251,6 +256,7 @@ Evaluator::Symbol Evaluator::classify(const RawToken& raw) {
         return make_symbol(punct_table().at(raw.text), raw);
     }
     case RawKind::Identifier:
+        m_previous_word = raw.text;
         return symbol_for_identifier(raw);
     case RawKind::Directive:
         break;

@@ -1,0 +1,125 @@
+// Malformed scenes: each must fail with a located error (message substring,
+// line and column), never a crash, a hang or an exception.
+#include <string>
+
+#include "parse_test_helpers.h"
+
+namespace lancer {
+namespace {
+
+struct BadScene {
+    const char* name;
+    std::string text;
+    const char* message;  // substring of the first error
+    int line;
+    int column;
+};
+
+class MalformedScene : public ::testing::TestWithParam<BadScene> {};
+
+TEST_P(MalformedScene, GivesALocatedError) {
+    const BadScene& bad = GetParam();
+    ParseOptions options;
+    options.max_loop_iterations = 10'000;
+    Diagnostic d = test::first_error(bad.text, options);
+    EXPECT_NE(d.message.find(bad.message), std::string::npos) << "message: " << d.message;
+    EXPECT_EQ(d.location.line, bad.line) << d.message;
+    EXPECT_EQ(d.location.column, bad.column) << d.message;
+    std::string shown = format_diagnostic(d);
+    EXPECT_EQ(shown.rfind("bad.pov:" + std::to_string(bad.line) + ":" + std::to_string(bad.column) + ": error: ", 0), 0u) << shown;
+}
+
+std::string with_nul() {
+    std::string text = "sphere { 0, 1 }\nab";
+    text += '\0';
+    return text;
+}
+
+const BadScene kBadScenes[] = {
+    {"DivisionByZero", "sphere { 0, 1/0 }", "division by zero", 1, 14},
+    {"HugeNumber", "#declare A = 1e999;", "too large", 1, 14},
+    {"SqrtOfNegative", "#declare A = sqrt(-1);", "square root of a negative", 1, 14},
+    {"LogOfZero", "#declare A = log(0);", "logarithm", 1, 14},
+    {"AcosOutOfDomain", "\n#declare A = acos(2);", "outside [-1, 1]", 2, 14},
+    {"ColourWhereVectorExpected", "box { 0, 1 translate rgb 1 }", "expected a vector, found a colour", 1, 22},
+    {"VectorWhereFloatExpected", "sphere { 0, <1, 2, 3> }", "expected a float radius, found a 3-component vector", 1, 13},
+    {"StringInArithmetic", "#declare A = \"a\" + 1;", "needs numbers", 1, 18},
+    {"UnknownIdentifierSuggests", "#declare Radius = 1;\nsphere { 0, Raduis }", "did you mean 'Radius'", 2, 13},
+    {"UnknownColourSuggests", "#include \"colors.inc\"\nsphere { 0, 1 pigment { color Whitte } }", "did you mean 'White'", 2, 31},
+    {"MisspelledKeyword", "sphre { 0, 1 }", "did you mean 'sphere'", 1, 1},
+    {"MissingClosingBrace", "sphere { 0, 1\n", "unexpected end of file", 1, 14},
+    {"ExtraValue", "sphere { 0 1 2 }", "unexpected number inside sphere", 1, 14},
+    {"StrayClosingBrace", "sphere { 0, 1 } }", "unexpected }", 1, 17},
+    {"TopLevelModifier", "\n\ntranslate x", "expected an object", 3, 1},
+    {"MissingValueInFinish", "sphere { 0, 1 finish { phong } }", "closing finish", 1, 30},
+    {"UnterminatedString", "#include \"colors.inc", "unterminated string", 1, 10},
+    {"UnterminatedComment", "sphere { 0, 1 }\n/* never closed", "unterminated comment", 2, 1},
+    {"StrayCharacter", "sphere { 0, 1 } @", "unexpected character '@'", 1, 17},
+    {"InvalidUtf8", "sphere { 0, 1 }\n// caf\xE9\n", "invalid UTF-8", 2, 7},
+    {"BinaryFile", with_nul(), "NUL byte", 2, 3},
+    {"RunawayWhile", "#while (1)\n#end", "exceeded 10000 iterations", 1, 1},
+    {"MacroRecursion", "#macro F(N) F(N + 1) #end\nF(0)", "macro recursion too deep", 1, 13},
+    {"MacroArgumentCount", "#macro F(A, B) sphere { A, B } #end\nF(1)", "takes 2 argument(s), but 1", 2, 1},
+    {"NestingTooDeep", "#declare A = " + std::string(300, '(') + "1" + std::string(300, ')') + ";", "nesting too deep", 1, 270},
+    {"IfWithoutEnd", "sphere { 0, 1 }\n#if (1)\nsphere { 0, 2 }", "#if has no matching #end", 2, 1},
+    {"EndWithoutIf", "#end", "#end without", 1, 1},
+    {"ElseWithoutIf", "\n  #else", "#else without a matching #if", 2, 3},
+    {"UnknownDirective", "#decalre A = 1;", "did you mean '#declare'", 1, 1},
+    {"DeclareKeyword", "#declare sphere = 1;", "reserved word", 1, 10},
+    {"DeclareWithoutEquals", "#declare A 1;", "expected '='", 1, 12},
+    {"ErrorDirective", "#error \"stop here\"", "stop here", 1, 1},
+    {"UnsupportedShape", "cylinder { 0, y, 1 }", "does not support", 1, 1},
+    {"UnsupportedCsg", "difference { sphere { 0, 1 } box { 0, 1 } }", "not supported", 1, 1},
+    {"NegativeRadius", "sphere { 0, -1 }", "radius must be positive", 1, 13},
+    {"ZeroPlaneNormal", "plane { <0, 0, 0>, 1 }", "must not be a zero vector", 1, 9},
+    {"VectorTooLong", "#declare V = <1, 2, 3, 4, 5, 6>;", "2 to 5 components", 1, 14},
+    {"BadComponent", "#declare V = <1, 2>.z;", "'.z' needs", 1, 21},
+    {"Mesh2IndexOutOfRange",
+     "mesh2 {\n vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1, <0, 1, 7> }\n}",
+     "index 7 is out of range", 3, 20},
+    {"Mesh2CountMismatch", "mesh2 {\n vertex_vectors { 4, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1, <0,1,2> } }",
+     "declares 4 entries but lists 3", 2, 2},
+    {"Mesh2NormalIndexRange",
+     "mesh2 { vertex_vectors { 3, 0, x, y } normal_vectors { 1, z }\n face_indices { 1, <0,1,2> }\n normal_indices { 1, <0,0,1> } }",
+     "index 1 is out of range: normal_vectors has 1", 3, 22},
+    {"EmptyMesh", "mesh { }", "mesh has no triangles", 1, 1},
+    {"CameraAngleTooWide", "camera { angle 180 }", "between 0 and 180", 1, 16},
+    {"AreaLightZeroSamples", "light_source { 0, 1 area_light x, z, 0, 2 }", "at least 1", 1, 38},
+    {"AreaLightParallelAxes", "light_source { 0, 1 area_light x, x*2, 2, 2 }", "not parallel", 1, 32},
+    {"ParallelAtSamePoint", "light_source { <1,1,1>, 1 parallel point_at <1,1,1> }", "point_at must differ", 1, 1},
+    {"UnknownRenderSetting", "render_settings { widht 640 }", "did you mean 'width'", 1, 19},
+    {"BadRenderSize", "render_settings { width 0 }", "at least 1", 1, 25},
+    {"MissingObjFile", "obj_mesh { \"no_such.obj\" }", "cannot find OBJ file", 1, 12},
+    {"RgbfNeedsFour", "#declare C = rgbf <1, 1, 1>;", "rgbf expects", 1, 19},
+    {"SingularMatrix", "sphere { 0, 1 matrix <0,0,0, 0,0,0, 0,0,0, 0,0,0> }", "singular", 1, 23},
+    {"ForStepZero", "#for (I, 0, 10, 0) #end", "step is 0", 1, 1},
+    {"ArraysUnsupported", "#declare A[3] = 1;", "arrays are not supported", 1, 10},
+    {"DirectiveInsideValue", "#declare A = 1 + #if (1) 2 #end;", "unexpected directive", 1, 18},
+};
+
+INSTANTIATE_TEST_SUITE_P(ParserDiagnostics, MalformedScene, ::testing::ValuesIn(kBadScenes),
+                         [](const ::testing::TestParamInfo<BadScene>& info) { return std::string(info.param.name); });
+
+TEST(ParserDiagnostics, SeveralSemanticErrorsAreCollected) {
+    ParseResult result = parse_scene_string("sphere { 0, -1 }\nsphere { 0, -2 }\nbox { 0, 1 translate rgb 1 }", "many.pov");
+    ASSERT_FALSE(result.ok());
+    int errors = 0;
+    for (const auto& d : result.diagnostics) errors += d.severity == Diagnostic::Severity::Error;
+    EXPECT_EQ(errors, 3);
+}
+
+TEST(ParserDiagnostics, FormatShowsLineAndCaret) {
+    ParseResult result = parse_scene_string("sphere {\n\t0, Nope }", "caret.pov");
+    ASSERT_FALSE(result.ok());
+    std::string text = format_diagnostic(result.diagnostics.front());
+    EXPECT_EQ(text, "caret.pov:2:5: error: unknown identifier 'Nope' (expected a value)\n  \t0, Nope }\n  \t   ^\n");
+}
+
+TEST(ParserDiagnostics, MissingFileIsAnErrorNotAnException) {
+    ParseResult result = parse_scene_file("/nonexistent/scene.pov");
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(result.diagnostics.front().message.find("not found"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace lancer

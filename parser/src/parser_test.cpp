@@ -1,0 +1,392 @@
+// Every construct of the scene language parsed from a string, with the
+// resulting scene graph asserted: values, composed transforms, defaults.
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "lancer/scene_summary.h"
+#include "parse_test_helpers.h"
+
+namespace lancer {
+namespace {
+
+using test::parse_ok;
+
+void expect_vec(const sg::Vec3& actual, const sg::Vec3& expected, double tolerance = 1e-9) {
+    EXPECT_NEAR(actual.x, expected.x, tolerance);
+    EXPECT_NEAR(actual.y, expected.y, tolerance);
+    EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+sg::Vec3 apply(const sg::Mat4& m, const sg::Vec3& p) { return sg::Vec3(m * glm::dvec4(p, 1.0)); }
+
+TEST(ParserObjects, SphereWithDefaults) {
+    auto scene = parse_ok("sphere { <1, 2, 3>, 0.5 }");
+    ASSERT_EQ(scene.objects.size(), 1u);
+    const auto& object = scene.objects[0];
+    EXPECT_EQ(object.kind, sg::Object::Kind::Sphere);
+    const auto& sphere = std::get<sg::Sphere>(object.shape);
+    expect_vec(sphere.center, {1, 2, 3});
+    EXPECT_DOUBLE_EQ(sphere.radius, 0.5);
+    EXPECT_EQ(object.material, nullptr);  // POV default texture applies
+    EXPECT_FALSE(object.no_shadow);
+    EXPECT_EQ(object.location.line, 1);
+    EXPECT_EQ(object.location.column, 1);
+    EXPECT_FALSE(scene.camera.has_value());
+    expect_vec(scene.background, {0, 0, 0});
+    EXPECT_EQ(scene.global.max_trace_level, 5);
+}
+
+TEST(ParserObjects, PlaneNormalisedAndBox) {
+    auto scene = parse_ok("plane { <0, 2, 0>, 1 } box { <1, 1, 1>, <-1, 0, -2> }");
+    const auto& plane = std::get<sg::Plane>(scene.objects[0].shape);
+    expect_vec(plane.normal, {0, 1, 0});
+    EXPECT_DOUBLE_EQ(plane.distance, 0.5);  // the set 2y = 1
+    const auto& box = std::get<sg::Box>(scene.objects[1].shape);
+    expect_vec(box.corner1, {-1, 0, -2});
+    expect_vec(box.corner2, {1, 1, 1});
+}
+
+TEST(ParserObjects, TriangleAndSmoothTriangle) {
+    auto scene = parse_ok("triangle { <0,0,0>, <1,0,0>, <0,1,0> }\n"
+                          "smooth_triangle { <0,0,0>, <0,0,-1>, <1,0,0>, <0,0,-2>, <0,1,0>, <0,1,-1> }");
+    ASSERT_EQ(scene.objects.size(), 2u);
+    EXPECT_EQ(scene.objects[0].kind, sg::Object::Kind::Triangle);
+    auto mesh = std::get<sg::MeshRef>(scene.objects[0].shape);
+    ASSERT_EQ(mesh->faces.size(), 1u);
+    expect_vec(mesh->positions[1], {1, 0, 0});
+    EXPECT_EQ(mesh->faces[0].normal[0], -1);
+    auto smooth = std::get<sg::MeshRef>(scene.objects[1].shape);
+    EXPECT_EQ(scene.objects[1].kind, sg::Object::Kind::SmoothTriangle);
+    ASSERT_EQ(smooth->normals.size(), 3u);
+    expect_vec(smooth->normals[1], {0, 0, -1});  // normalised
+}
+
+TEST(ParserObjects, MeshWithPerTriangleTexture) {
+    auto scene = parse_ok("#declare T = texture { pigment { rgb <1,0,0> } }\n"
+                          "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> texture { T } }\n"
+                          "       triangle { <0,0,1>, <1,0,1>, <0,1,1> } translate x }");
+    auto mesh = std::get<sg::MeshRef>(scene.objects[0].shape);
+    ASSERT_EQ(mesh->faces.size(), 2u);
+    EXPECT_EQ(mesh->faces[0].material, 0);
+    EXPECT_EQ(mesh->faces[1].material, -1);
+    expect_vec(mesh->materials[0]->pigment.color.rgb, {1, 0, 0});
+    expect_vec(apply(scene.objects[0].parent_from_object, {0, 0, 0}), {1, 0, 0});
+}
+
+TEST(ParserObjects, Mesh2WithNormalsAndUvs) {
+    auto scene = parse_ok(R"(mesh2 {
+        vertex_vectors { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> }
+        normal_vectors { 1, <0,0,-1> }
+        uv_vectors { 4, <0,0>, <1,0>, <1,1>, <0,1> }
+        texture_list { 2, texture { pigment { rgb 1 } } texture { pigment { rgb 0.5 } } }
+        face_indices { 2, <0,1,2>, 1, <0,2,3>, 0 }
+        normal_indices { 2, <0,0,0>, <0,0,0> }
+        uv_indices { 2, <0,1,2>, <0,2,3> }
+    })");
+    ASSERT_EQ(scene.objects.size(), 1u);
+    EXPECT_EQ(scene.objects[0].kind, sg::Object::Kind::Mesh2);
+    auto mesh = std::get<sg::MeshRef>(scene.objects[0].shape);
+    EXPECT_EQ(mesh->positions.size(), 4u);
+    ASSERT_EQ(mesh->faces.size(), 2u);
+    EXPECT_EQ(mesh->faces[1].position[2], 3);
+    EXPECT_EQ(mesh->faces[0].normal[0], 0);
+    EXPECT_EQ(mesh->faces[1].uv[2], 3);
+    EXPECT_EQ(mesh->faces[0].material, 1);
+    EXPECT_EQ(mesh->faces[1].material, 0);
+    EXPECT_EQ(mesh->materials.size(), 2u);
+}
+
+TEST(ParserObjects, Mesh2NormalsPairWithVerticesWithoutIndices) {
+    auto scene = parse_ok("mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }"
+                          " normal_vectors { 3, z, z, z } face_indices { 1, <0,1,2> } }");
+    auto mesh = std::get<sg::MeshRef>(scene.objects[0].shape);
+    EXPECT_EQ(mesh->faces[0].normal[2], 2);
+}
+
+TEST(ParserObjects, ObjectReuseComposesTransforms) {
+    auto scene = parse_ok("#declare S = sphere { 0, 1 translate <1, 0, 0> }\n"
+                          "object { S scale 2 }\n");
+    ASSERT_EQ(scene.objects.size(), 1u);
+    EXPECT_EQ(scene.objects[0].name, "S");
+    // translate then scale: the centre lands at x = 2
+    expect_vec(apply(scene.objects[0].parent_from_object, {0, 0, 0}), {2, 0, 0});
+}
+
+TEST(ParserTransforms, RotationOrderXThenYThenZ) {
+    auto scene = parse_ok("sphere { 0, 1 rotate <90, 0, 0> } sphere { 0, 1 rotate y*90 } sphere { 0, 1 rotate <90, 90, 0> }");
+    // POV: rotate x*90 takes +y to +z; rotate y*90 takes +x to -z.
+    expect_vec(apply(scene.objects[0].parent_from_object, {0, 1, 0}), {0, 0, 1}, 1e-12);
+    expect_vec(apply(scene.objects[1].parent_from_object, {1, 0, 0}), {0, 0, -1}, 1e-12);
+    // x first: +y -> +z, then y: +z -> +x
+    expect_vec(apply(scene.objects[2].parent_from_object, {0, 1, 0}), {1, 0, 0}, 1e-12);
+}
+
+TEST(ParserTransforms, MatrixAndTransformBlocks) {
+    auto scene = parse_ok("#declare T = transform { scale 2 translate y }\n"
+                          "sphere { 0, 1 transform T }\n"
+                          "sphere { 0, 1 transform { T inverse } }\n"
+                          "sphere { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, 3,4,5> }");
+    expect_vec(apply(scene.objects[0].parent_from_object, {1, 0, 0}), {2, 1, 0});
+    expect_vec(apply(scene.objects[1].parent_from_object, {2, 1, 0}), {1, 0, 0});
+    expect_vec(apply(scene.objects[2].parent_from_object, {0, 0, 0}), {3, 4, 5});
+}
+
+TEST(ParserTransforms, NestedUnionsComposeAndTexturesInherit) {
+    auto scene = parse_ok(R"(
+        union {
+            union { sphere { 0, 1 translate x } box { 0, 1 pigment { rgb <0,1,0> } } translate y }
+            sphere { 0, 1 }
+            pigment { rgb <1,0,0> }
+            translate z
+        })");
+    ASSERT_EQ(scene.objects.size(), 1u);
+    const auto& outer = scene.objects[0];
+    EXPECT_EQ(outer.kind, sg::Object::Kind::Union);
+    const auto& children = std::get<sg::Group>(outer.shape).children;
+    ASSERT_EQ(children.size(), 2u);
+    const auto& inner = std::get<sg::Group>(children[0].shape).children;
+    sg::Mat4 world_from_sphere = outer.parent_from_object * children[0].parent_from_object * inner[0].parent_from_object;
+    expect_vec(apply(world_from_sphere, {0, 0, 0}), {1, 1, 1});
+    // The union's pigment reaches the children without their own texture ...
+    ASSERT_TRUE(inner[0].material);
+    expect_vec(inner[0].material->pigment.color.rgb, {1, 0, 0});
+    ASSERT_TRUE(children[1].material);
+    // ... and not the box, which has its own.
+    expect_vec(inner[1].material->pigment.color.rgb, {0, 1, 0});
+    auto summary = summarize_scene(scene);
+    EXPECT_EQ(summary.objects_by_kind["union"], 2);
+    EXPECT_EQ(summary.objects_by_kind["sphere"], 2);
+}
+
+TEST(ParserMaterials, TextureFinishDefaultsAndValues) {
+    auto scene = parse_ok(R"(sphere { 0, 1 texture {
+        pigment { color rgbft <0.1, 0.2, 0.3, 0.4, 0.5> }
+        finish { ambient 0.2 diffuse 0.7 brilliance 2 specular 0.3 roughness 0.01 phong 0.4 phong_size 60
+                 metallic reflection { 0.1, 0.9 falloff 2 exponent 1.5 } emission rgb <1, 2, 3> }
+    } interior { ior 1.5 } })");
+    auto m = scene.objects[0].material;
+    ASSERT_TRUE(m);
+    expect_vec(m->pigment.color.rgb, {0.1, 0.2, 0.3});
+    EXPECT_DOUBLE_EQ(m->pigment.color.filter, 0.4);
+    EXPECT_DOUBLE_EQ(m->pigment.color.transmit, 0.5);
+    expect_vec(m->finish.ambient, {0.2, 0.2, 0.2});
+    EXPECT_DOUBLE_EQ(m->finish.diffuse, 0.7);
+    EXPECT_DOUBLE_EQ(m->finish.brilliance, 2);
+    EXPECT_DOUBLE_EQ(m->finish.specular, 0.3);
+    EXPECT_DOUBLE_EQ(m->finish.roughness, 0.01);
+    EXPECT_DOUBLE_EQ(m->finish.phong, 0.4);
+    EXPECT_DOUBLE_EQ(m->finish.phong_size, 60);
+    EXPECT_DOUBLE_EQ(m->finish.metallic, 1.0);
+    expect_vec(m->finish.reflection.min, {0.1, 0.1, 0.1});
+    expect_vec(m->finish.reflection.max, {0.9, 0.9, 0.9});
+    EXPECT_DOUBLE_EQ(m->finish.reflection.falloff, 2);
+    EXPECT_DOUBLE_EQ(m->finish.reflection.exponent, 1.5);
+    expect_vec(m->finish.emission, {1, 2, 3});
+    EXPECT_DOUBLE_EQ(m->interior.ior, 1.5);
+}
+
+TEST(ParserMaterials, FinishDefaultsArePovs) {
+    auto scene = parse_ok("sphere { 0, 1 finish { } }");
+    auto m = scene.objects[0].material;
+    ASSERT_TRUE(m);
+    expect_vec(m->finish.ambient, {0.1, 0.1, 0.1});
+    EXPECT_DOUBLE_EQ(m->finish.diffuse, 0.6);
+    EXPECT_DOUBLE_EQ(m->finish.phong_size, 40);
+    EXPECT_DOUBLE_EQ(m->finish.roughness, 0.05);
+    expect_vec(m->pigment.color.rgb, {0, 0, 0});  // POV's default pigment is black
+}
+
+TEST(ParserMaterials, ColourForms) {
+    auto scene = parse_ok(R"(#include "colors.inc"
+        #declare A = color red 1 green 0.5;
+        #declare B = rgbt <1, 1, 1, 0.25>;
+        #declare C = srgb <0.5, 1, 0>;
+        #declare D = Red * 0.5 + Blue;
+        sphere { 0, 1 pigment { A } }
+        sphere { 0, 1 pigment { B } }
+        sphere { 0, 1 pigment { C } }
+        sphere { 0, 1 pigment { color D filter 0.3 } }
+        sphere { 0, 1 pigment { Gray50 } })");
+    expect_vec(scene.objects[0].material->pigment.color.rgb, {1, 0.5, 0});
+    EXPECT_DOUBLE_EQ(scene.objects[1].material->pigment.color.transmit, 0.25);
+    EXPECT_DOUBLE_EQ(scene.objects[1].material->pigment.color.filter, 0.0);
+    EXPECT_NEAR(scene.objects[2].material->pigment.color.rgb.x, 0.21404, 1e-4);  // sRGB decoded
+    expect_vec(scene.objects[3].material->pigment.color.rgb, {0.5, 0, 1});
+    EXPECT_DOUBLE_EQ(scene.objects[3].material->pigment.color.filter, 0.3);
+    expect_vec(scene.objects[4].material->pigment.color.rgb, {0.5, 0.5, 0.5});
+}
+
+TEST(ParserMaterials, CheckerAndPatternTransformFollowsObject) {
+    auto scene = parse_ok("plane { y, 0 pigment { checker rgb 1, rgb 0 scale 2 } translate x }");
+    auto m = scene.objects[0].material;
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->pigment.kind, sg::Pigment::Kind::Checker);
+    expect_vec(m->pigment.checker[0].rgb, {1, 1, 1});
+    expect_vec(m->pigment.checker[1].rgb, {0, 0, 0});
+    // Object space point (2,0,0) is pattern point (1,0,0): the later translate moves the pattern too.
+    expect_vec(apply(m->pigment.pattern_from_object, {2, 0, 0}), {1, 0, 0});
+}
+
+TEST(ParserMaterials, DeclaredTexturesPigmentsFinishesReusable) {
+    auto scene = parse_ok(R"(
+        #declare P = pigment { rgb <0, 0, 1> }
+        #declare F = finish { phong 1 }
+        #declare T = texture { pigment { P } finish { F } }
+        sphere { 0, 1 texture { T } }
+        sphere { 0, 1 pigment { P } finish { F } })");
+    EXPECT_EQ(scene.objects[0].material->name, "T");
+    EXPECT_DOUBLE_EQ(scene.objects[0].material->finish.phong, 1);
+    expect_vec(scene.objects[1].material->pigment.color.rgb, {0, 0, 1});
+    EXPECT_DOUBLE_EQ(scene.objects[1].material->finish.phong, 1);
+}
+
+TEST(ParserLights, PointParallelAreaSphere) {
+    auto scene = parse_ok(R"(
+        light_source { <1, 2, 3> color rgb <1, 0.5, 0.25> fade_distance 2 fade_power 1 }
+        light_source { <0, 10, 0>, 1 parallel point_at <0, 0, 0> }
+        light_source { <0, 5, 0> rgb 1 area_light <2, 0, 0>, <0, 0, 1>, 5, 3 jitter adaptive 1 circular orient translate x }
+        light_source { <0, 1, 0> rgb 1 area_sphere 0.25 }
+        union { sphere { 0, 1 } light_source { <0, 1, 0> rgb 1 } translate y*2 })");
+    ASSERT_EQ(scene.lights.size(), 5u);
+    EXPECT_EQ(scene.lights[0].kind, sg::Light::Kind::Point);
+    expect_vec(scene.lights[0].color, {1, 0.5, 0.25});
+    EXPECT_DOUBLE_EQ(scene.lights[0].fade_distance, 2);
+    EXPECT_EQ(scene.lights[1].kind, sg::Light::Kind::Directional);
+    expect_vec(scene.lights[1].point_at, {0, 0, 0});
+    const auto& area = scene.lights[2];
+    EXPECT_EQ(area.kind, sg::Light::Kind::AreaRectangle);
+    expect_vec(area.position, {1, 5, 0});
+    expect_vec(area.axis1, {2, 0, 0});
+    EXPECT_EQ(area.samples1, 5);
+    EXPECT_EQ(area.samples2, 3);
+    EXPECT_TRUE(area.jitter && area.circular && area.orient);
+    EXPECT_EQ(area.adaptive, 1);
+    EXPECT_EQ(scene.lights[3].kind, sg::Light::Kind::AreaSphere);
+    EXPECT_DOUBLE_EQ(scene.lights[3].radius, 0.25);
+    expect_vec(scene.lights[4].position, {0, 3, 0});  // follows the union
+}
+
+TEST(ParserCamera, DefaultsAndAngleLookAt) {
+    auto scene = parse_ok("camera { location <0, 0, -5> look_at <0, 0, 0> angle 90 }");
+    ASSERT_TRUE(scene.camera);
+    const auto& c = *scene.camera;
+    expect_vec(c.location, {0, 0, -5});
+    expect_vec(c.right, {1.33, 0, 0});
+    expect_vec(c.up, {0, 1, 0});
+    // |direction| = |right| / 2 / tan(45 deg) = 0.665
+    expect_vec(c.direction, {0, 0, 0.665}, 1e-12);
+}
+
+TEST(ParserCamera, FixedOrderSkyRightAndOrthographic) {
+    // look_at written before location still uses it; right from image size.
+    auto scene = parse_ok("camera { look_at <1, 0, 0> right x*image_width/image_height location <0, 0, 0> }");
+    const auto& c = *scene.camera;
+    expect_vec(c.direction, {1, 0, 0});
+    // right = normalize(sky x d) * |right|: y x x = -z
+    expect_vec(c.right, {0, 0, -4.0 / 3.0});
+    expect_vec(c.up, {0, 1, 0});
+    auto ortho = parse_ok("camera { orthographic location <0,0,-1> look_at 0 }");
+    EXPECT_EQ(ortho.camera->projection, sg::Camera::Projection::Orthographic);
+}
+
+TEST(ParserCamera, ImageSizeFromOptionsAndRenderSettings) {
+    ParseOptions options;
+    options.image_width = 800;
+    options.image_height = 400;
+    auto scene = parse_ok("#declare W = image_width; #declare H = image_height; sphere { 0, W / H }", options);
+    EXPECT_DOUBLE_EQ(std::get<sg::Sphere>(scene.objects[0].shape).radius, 2.0);
+    auto with_settings = parse_ok("render_settings { width 300 height 100 } sphere { 0, image_width / image_height }");
+    EXPECT_DOUBLE_EQ(std::get<sg::Sphere>(with_settings.objects[0].shape).radius, 3.0);
+}
+
+TEST(ParserSettings, GlobalBackgroundAndRenderSettings) {
+    auto scene = parse_ok(R"(
+        global_settings { assumed_gamma 1.0 max_trace_level 7 ambient_light rgb 0.5 adc_bailout 0.01 }
+        background { color rgb <0.1, 0.2, 0.3> }
+        render_settings { integrator "path" { max_depth 8 russian_roulette on tint <1, 0.5, 0> label "x" }
+                          width 640 height 480 samples 16 seed 7 })");
+    EXPECT_EQ(scene.global.max_trace_level, 7);
+    expect_vec(scene.global.ambient_light, {0.5, 0.5, 0.5});
+    EXPECT_DOUBLE_EQ(scene.global.adc_bailout, 0.01);
+    expect_vec(scene.background, {0.1, 0.2, 0.3});
+    ASSERT_TRUE(scene.render.integrator);
+    EXPECT_EQ(*scene.render.integrator, "path");
+    EXPECT_EQ(std::get<double>(scene.render.parameters.at("max_depth").value), 8.0);
+    EXPECT_EQ(std::get<bool>(scene.render.parameters.at("russian_roulette").value), true);
+    expect_vec(std::get<sg::Vec3>(scene.render.parameters.at("tint").value), {1, 0.5, 0});
+    EXPECT_EQ(std::get<std::string>(scene.render.parameters.at("label").value), "x");
+    EXPECT_EQ(*scene.render.width, 640);
+    EXPECT_EQ(*scene.render.height, 480);
+    EXPECT_EQ(*scene.render.samples, 16);
+    EXPECT_EQ(*scene.render.seed, 7u);
+}
+
+TEST(ParserExpressions, OperatorsFunctionsAndComponents) {
+    auto scene = parse_ok(R"(
+        #declare V = <1, 2, 3>;
+        #declare A = V.y + vdot(V, x) * 2 - pow(2, 3) / 4;   // 2 + 2 - 2 = 2
+        #declare B = (A > 1 & A < 3) ? 10 : 20;
+        #declare C = vlength(vcross(x, y)) + abs(-1) + max(1, 5, 3) + mod(7, 4) + int(2.7) + floor(-0.5);
+        #declare D = vrotate(x, <0, 0, 90>);
+        #declare E = degrees(atan2(1, 1)) + radians(180) / pi;
+        #declare S = concat("a", str(1.5, 0, 1), chr(66));
+        sphere { D, A }
+        sphere { <B, C, E>, 1 }
+        #if (strlen(S) = 5 & !false & yes) sphere { 0, 1 } #end
+    )");
+    ASSERT_EQ(scene.objects.size(), 3u);
+    const auto& s0 = std::get<sg::Sphere>(scene.objects[0].shape);
+    EXPECT_DOUBLE_EQ(s0.radius, 2.0);
+    expect_vec(s0.center, {0, 1, 0}, 1e-12);
+    const auto& s1 = std::get<sg::Sphere>(scene.objects[1].shape);
+    expect_vec(s1.center, {10, 1 + 1 + 5 + 3 + 2 - 1, 46}, 1e-9);
+}
+
+TEST(ParserExpressions, RandIsReproducible) {
+    auto a = parse_ok("#declare R = seed(42); sphere { <rand(R), rand(R), 0>, 1 }");
+    auto b = parse_ok("#declare R = seed(42); sphere { <rand(R), rand(R), 0>, 1 }");
+    auto ca = std::get<sg::Sphere>(a.objects[0].shape).center, cb = std::get<sg::Sphere>(b.objects[0].shape).center;
+    EXPECT_EQ(ca, cb);
+    EXPECT_NE(ca.x, ca.y);
+    EXPECT_GE(ca.x, 0.0);
+    EXPECT_LT(ca.x, 1.0);
+}
+
+TEST(ParserObjects, NoShadowHollowAndIgnoredKeywordsWarn) {
+    ParseResult result = parse_scene_string(
+        "sphere { 0, 1 no_shadow hollow double_illuminate normal { bumps 0.5 } }", "w.pov");
+    ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
+    EXPECT_TRUE(result.scene->objects[0].no_shadow);
+    EXPECT_TRUE(result.scene->objects[0].hollow);
+    EXPECT_EQ(test::count_warnings(result), 3);  // hollow, double_illuminate, normal
+    for (const auto& d : result.diagnostics) EXPECT_EQ(d.location.line, 1);
+}
+
+TEST(ParserObjects, ImageMapResolvesNextToTheScene) {
+    ParseResult result = parse_scene_string("sphere { 0, 1 pigment { image_map { png \"missing.png\" } } }", "i.pov");
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(test::all_diagnostics(result).find("cannot find image file \"missing.png\""), std::string::npos);
+}
+
+TEST(SceneSummary, CountsAndBounds) {
+    auto scene = parse_ok(R"(
+        sphere { <0, 0, 0>, 1 }
+        box { <2, 2, 2>, <3, 3, 3> translate x }
+        plane { y, -1 }
+        mesh { triangle { 0, x, y } triangle { 0, y, z } }
+        light_source { <0, 5, 0> rgb 1 }
+        light_source { <0, 5, 0> rgb 1 parallel point_at 0 })");
+    auto summary = summarize_scene(scene);
+    EXPECT_EQ(summary.object_count, 4);
+    EXPECT_EQ(summary.triangles, 2);
+    EXPECT_EQ(summary.unbounded_objects, 1);
+    ASSERT_TRUE(summary.bounds);
+    expect_vec(summary.bounds->first, {-1, -1, -1});
+    expect_vec(summary.bounds->second, {4, 3, 3});
+    EXPECT_EQ(summary.lights_by_kind["point"], 1);
+    EXPECT_EQ(summary.lights_by_kind["directional"], 1);
+}
+
+}  // namespace
+}  // namespace lancer
