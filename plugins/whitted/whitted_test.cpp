@@ -128,6 +128,31 @@ TEST(WhittedIntegrator, SteepRayLeavesTheDenseMedium) {
     EXPECT_NEAR(mean_radiance(*fresnel, *scene, steep).r, 1.0f - fresnel_dielectric(cos_i, 1.5f), 1e-5f);
 }
 
+// Glass that already writes POV's `reflection {0, 1 fresnel on}`, under a
+// white sky over a black floor: with the fresnel parameter on, the surface
+// reflects F once (max(rho_r, T F)), not rho_r + T F.
+TEST(WhittedIntegrator, FresnelGlassWithFresnelReflectionReflectsOnce) {
+    sg::SceneGraph graph;
+    graph.background = {1.0, 1.0, 1.0};
+    graph.objects.push_back(box({-10.0, -1.0, -10.0}, {10.0, 0.0, 10.0}, material([](sg::Material& m) {
+        m.pigment.color.filter = 1.0;
+        m.finish.ambient = sg::Vec3(0.0);
+        m.finish.diffuse = 0.0;
+        m.finish.reflection.max = sg::Vec3(1.0);
+        m.finish.reflection.fresnel = true;
+        m.interior.ior = 1.5;
+    })));
+    graph.objects.push_back(plane({0.0, 1.0, 0.0}, -2.0, flat_colour({0.0, 0.0, 0.0})));
+    const auto scene = RenderScene::compile(graph);
+    const auto whitted = load_integrator("whitted", *scene, {{"fresnel", "true"}});
+    const Ray straight_down{Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, -1.0f, 0.0f)};
+    const float f = fresnel_dielectric(1.0f, 1.0f / 1.5f);  // 0.04
+    // The top face reflects F of the sky; the 1 - F that enters is reflected
+    // by F at the bottom face and leaves through the top by 1 - F (levels 2
+    // to 4); the next round trip would need level 6 (max_trace_level 5).
+    EXPECT_NEAR(mean_radiance(*whitted, *scene, straight_down).g, f + (1.0f - f) * f * (1.0f - f), 1e-5f);
+}
+
 // Two facing mirrors of reflectance 1/2 and ambient 1 (no diffuse): each
 // level adds (1 - 1/2) * 1 and passes half on, so a ray traced to level D
 // sees 1 - 2^-D.
