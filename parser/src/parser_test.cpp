@@ -304,7 +304,7 @@ TEST(ParserSettings, GlobalBackgroundAndRenderSettings) {
     auto scene = parse_ok(R"(
         global_settings { assumed_gamma 1.0 max_trace_level 7 ambient_light rgb 0.5 adc_bailout 0.01 }
         background { color rgb <0.1, 0.2, 0.3> }
-        render_settings { integrator "path" { max_depth 8 russian_roulette on tint <1, 0.5, 0> label "x" }
+        render_settings { integrator "path" { max_depth 8 russian_roulette on tint <1, 0.5, 0> label "x" fresnel true }
                           width 640 height 480 samples 16 seed 7 })");
     EXPECT_EQ(scene.global.max_trace_level, 7);
     expect_vec(scene.global.ambient_light, {0.5, 0.5, 0.5});
@@ -316,6 +316,7 @@ TEST(ParserSettings, GlobalBackgroundAndRenderSettings) {
     EXPECT_EQ(std::get<bool>(scene.render.parameters.at("russian_roulette").value), true);
     expect_vec(std::get<sg::Vec3>(scene.render.parameters.at("tint").value), {1, 0.5, 0});
     EXPECT_EQ(std::get<std::string>(scene.render.parameters.at("label").value), "x");
+    EXPECT_EQ(std::get<bool>(scene.render.parameters.at("fresnel").value), true);  // a keyword as a name
     EXPECT_EQ(*scene.render.width, 640);
     EXPECT_EQ(*scene.render.height, 480);
     EXPECT_EQ(*scene.render.samples, 16);

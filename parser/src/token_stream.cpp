@@ -267,6 +267,13 @@ Evaluator::Symbol Evaluator::classify(const RawToken& raw) {
 Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
     const std::string& name = raw.text;
     auto keyword = keyword_table().find(name);
+    // Integrator parameter names are free words, even when they spell a
+    // keyword (whitted { fresnel on }); colour keywords stay values.
+    if (keyword != keyword_table().end() && !m_block_names.empty() && m_block_names.back() == "integrator" &&
+        name.find("rgb") == std::string::npos && name != "color" && name != "colour") {
+        m_last_undeclared = name;
+        return make_symbol(Parser::token::TOK_UNDECLARED_ID, raw);
+    }
     if (keyword != keyword_table().end()) return make_symbol(keyword->second, raw);
     if (builtin_names().count(name)) return make_symbol(Parser::token::TOK_BUILTIN, raw);
 
