@@ -128,6 +128,14 @@ TEST_F(CliRender, ParametersAreCheckedAgainstThePlugin) {
     EXPECT_EQ(result.exit_code, 0) << result.output;
 }
 
+TEST_F(CliRender, IntegratorRejectingAValueWritesNothing) {
+    const CommandResult result = render("-i depth -p max_distance=-1");
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_CONTAINS(result.output, "error:");
+    EXPECT_CONTAINS(result.output, "max_distance");
+    EXPECT_TRUE(folder_holds_only_the_scene());
+}
+
 TEST_F(CliRender, SceneErrorIsLocatedAndWritesNothing) {
     std::ofstream(m_scene) << "camera { location <0, 0, -5> look_at <0, 0, 0> }\n"
                               "sphere { <0, 0, 0>, 1 pigment { color rgb <1, 0, 0> }\n";  // missing '}'
