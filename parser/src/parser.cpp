@@ -79,10 +79,22 @@ std::vector<std::string> default_include_path() {
             start = end + 1;
         }
     }
-    // lancer's own include/: the source tree when running from a build, else the install.
+    // lancer's own include/: beside the running binary in an installed tree
+    // (which may have been moved since it was configured), else the source
+    // tree when running from a build, else the configured install prefix.
     std::error_code ec;
-    if (fs::is_directory(LANCER_SOURCE_INCLUDE_DIR, ec)) path.push_back(LANCER_SOURCE_INCLUDE_DIR);
-    else path.push_back(LANCER_INSTALL_INCLUDE_DIR);
+    const fs::path executable = fs::read_symlink("/proc/self/exe", ec);
+    std::vector<fs::path> candidates;
+    if (!ec) candidates.push_back(executable.parent_path().parent_path() / "share" / "lancer" / "include");
+    candidates.emplace_back(LANCER_SOURCE_INCLUDE_DIR);
+    candidates.emplace_back(LANCER_INSTALL_INCLUDE_DIR);
+    for (const fs::path& folder : candidates) {
+        if (fs::is_regular_file(folder / "colors.inc", ec)) {
+            path.push_back(folder.string());
+            return path;
+        }
+    }
+    path.push_back(LANCER_INSTALL_INCLUDE_DIR);
     return path;
 }
 
