@@ -10,16 +10,6 @@ namespace {
 
 constexpr double kPiD = 3.141592653589793238463;
 
-// Solid-angle density of an area sample: pdf_area * d^2 / |cos at light|.
-float area_to_solid_angle(double pdf_area, const DVec3& p, const DVec3& point, const DVec3& light_normal) {
-    const DVec3 offset = point - p;
-    const double d2 = glm::dot(offset, offset);
-    if (!(d2 > 0.0)) return 0.0f;
-    const double cos_light = std::fabs(glm::dot(light_normal, offset)) / std::sqrt(d2);
-    if (!(cos_light > 0.0)) return 0.0f;
-    const double pdf = pdf_area * d2 / cos_light;
-    return std::isfinite(pdf) ? float(pdf) : 0.0f;
-}
 
 LightSample make_sample(const DVec3& p, const DVec3& surface_point, const DVec3& normal, const Color& radiance,
                         float pdf) {
@@ -46,6 +36,16 @@ void basis_about(const DVec3& w, DVec3& a, DVec3& b) {
 }
 
 }  // namespace
+
+float area_to_solid_angle(double pdf_area, const DVec3& p, const DVec3& point, const DVec3& light_normal) {
+    const DVec3 offset = point - p;
+    const double d2 = glm::dot(offset, offset);
+    if (!(d2 > 0.0)) return 0.0f;
+    const double cos_light = std::fabs(glm::dot(light_normal, offset)) / std::sqrt(d2);
+    if (!(cos_light > 0.0)) return 0.0f;
+    const double pdf = pdf_area * d2 / cos_light;
+    return std::isfinite(pdf) ? float(pdf) : 0.0f;
+}
 
 // ---------------------------------------------------------------- rectangle
 

@@ -10,15 +10,6 @@ namespace {
 
 constexpr double kPiD = 3.141592653589793238463;
 
-float area_to_solid_angle(double pdf_area, const DVec3& p, const DVec3& point, const DVec3& light_normal) {
-    const DVec3 offset = point - p;
-    const double d2 = glm::dot(offset, offset);
-    if (!(d2 > 0.0)) return 0.0f;
-    const double cos_light = std::fabs(glm::dot(light_normal, offset)) / std::sqrt(d2);
-    if (!(cos_light > 0.0)) return 0.0f;
-    const double pdf = pdf_area * d2 / cos_light;
-    return std::isfinite(pdf) ? float(pdf) : 0.0f;
-}
 
 }  // namespace
 

@@ -76,6 +76,11 @@ private:
     std::unique_ptr<PointLight> m_proxy;
 };
 
+// Solid-angle density of a point sampled on a surface with area density
+// pdf_area, seen from p: pdf_area * d^2 / |cos at the light|; 0 when
+// degenerate (p on the surface's plane or at the point).
+float area_to_solid_angle(double pdf_area, const DVec3& p, const DVec3& point, const DVec3& light_normal);
+
 // Solid-angle sampling of the cone a sphere subtends from p (outside), in
 // double precision. Returns false when p is inside or on the sphere.
 struct ConeSample {
