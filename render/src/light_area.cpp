@@ -10,7 +10,6 @@ namespace {
 
 constexpr double kPiD = 3.141592653589793238463;
 
-
 LightSample make_sample(const DVec3& p, const DVec3& surface_point, const DVec3& normal, const Color& radiance,
                         float pdf) {
     LightSample s;
