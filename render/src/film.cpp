@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace lancer {
 
@@ -13,7 +14,7 @@ Film::Film(int width, int height) : m_width(width), m_height(height) {
 }
 
 void Film::add_sample(int x, int y, const Color& radiance) {
-    Pixel& pixel = m_pixels[std::size_t(y) * m_width + x];
+    Accumulator& pixel = m_pixels[std::size_t(y) * m_width + x];
     if (!std::isfinite(radiance.r) || !std::isfinite(radiance.g) || !std::isfinite(radiance.b)) {
         ++pixel.nonfinite;
         return;
@@ -25,13 +26,13 @@ void Film::add_sample(int x, int y, const Color& radiance) {
 }
 
 Color Film::mean(int x, int y) const {
-    const Pixel& pixel = at(x, y);
+    const Accumulator& pixel = at(x, y);
     if (pixel.count == 0) return Color(0.0f);
     return Color(pixel.sum / double(pixel.count));
 }
 
 Color Film::variance_of_mean(int x, int y) const {
-    const Pixel& pixel = at(x, y);
+    const Accumulator& pixel = at(x, y);
     if (pixel.count < 2) return Color(0.0f);
     const double n = double(pixel.count);
     const glm::dvec3 mean = pixel.sum / n;
@@ -41,9 +42,21 @@ Color Film::variance_of_mean(int x, int y) const {
 
 std::uint32_t Film::sample_count(int x, int y) const { return at(x, y).count; }
 
+std::uint32_t Film::samples_taken(int x, int y) const {
+    const Accumulator& pixel = at(x, y);
+    return pixel.count + pixel.nonfinite;
+}
+
+void Film::restore(std::vector<Accumulator> accumulators) {
+    if (accumulators.size() != m_pixels.size())
+        throw std::invalid_argument("film restore: " + std::to_string(accumulators.size()) + " pixels for a " +
+                                    std::to_string(m_width) + "x" + std::to_string(m_height) + " film");
+    m_pixels = std::move(accumulators);
+}
+
 std::uint64_t Film::nonfinite_samples() const {
     std::uint64_t total = 0;
-    for (const Pixel& pixel : m_pixels) total += pixel.nonfinite;
+    for (const Accumulator& pixel : m_pixels) total += pixel.nonfinite;
     return total;
 }
 

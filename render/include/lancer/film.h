@@ -12,6 +12,15 @@ namespace lancer {
 
 class Film {
 public:
+    // One pixel's running totals, in double so sums stay exact enough for
+    // thousands of samples; also the checkpoint's on-disk record.
+    struct Accumulator {
+        glm::dvec3 sum{0.0};
+        glm::dvec3 sum_squares{0.0};
+        std::uint32_t count = 0;      // finite samples
+        std::uint32_t nonfinite = 0;  // dropped samples
+    };
+
     Film(int width, int height);
 
     int width() const { return m_width; }
@@ -22,20 +31,22 @@ public:
 
     Color mean(int x, int y) const;              // black if no samples
     Color variance_of_mean(int x, int y) const;  // sample variance / n
-    std::uint32_t sample_count(int x, int y) const;
+    std::uint32_t sample_count(int x, int y) const;  // finite samples
+    // Samples taken, finite or not: the index of the pixel's next sample.
+    std::uint32_t samples_taken(int x, int y) const;
     std::uint64_t nonfinite_samples() const;     // over the whole film
 
+    // Every pixel's totals, row-major; for checkpoints.
+    const std::vector<Accumulator>& accumulators() const { return m_pixels; }
+    // Replaces every pixel's totals; throws std::invalid_argument unless
+    // there are width x height of them.
+    void restore(std::vector<Accumulator> accumulators);
+
 private:
-    struct Pixel {
-        glm::dvec3 sum{0.0};
-        glm::dvec3 sum_squares{0.0};
-        std::uint32_t count = 0;
-        std::uint32_t nonfinite = 0;
-    };
-    const Pixel& at(int x, int y) const { return m_pixels[std::size_t(y) * m_width + x]; }
+    const Accumulator& at(int x, int y) const { return m_pixels[std::size_t(y) * m_width + x]; }
     int m_width;
     int m_height;
-    std::vector<Pixel> m_pixels;
+    std::vector<Accumulator> m_pixels;
 };
 
 }  // namespace lancer

@@ -1,0 +1,54 @@
+// A RenderScene that counts the ray queries (intersect, occluded) made
+// through it and forwards everything to the scene it wraps. Prepare the
+// integrator with the CountingScene and render with it, so integrators that
+// remember their prepared scene see the same object:
+//     CountingScene counted(*scene);
+//     integrator->prepare(counted);
+//     render_image(counted, *integrator, options, film);  // stats.rays set
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "lancer/render_scene.h"
+
+namespace lancer {
+
+class CountingScene final : public RenderScene {
+public:
+    explicit CountingScene(const RenderScene& inner);
+
+    bool intersect(const Ray& ray, Hit& hit) const override {
+        count();
+        return m_inner.intersect(ray, hit);
+    }
+    bool occluded(const Ray& ray) const override {
+        count();
+        return m_inner.occluded(ray);
+    }
+    const std::vector<const Light*>& lights() const override { return m_inner.lights(); }
+    const std::vector<const Light*>& local_lights() const override { return m_inner.local_lights(); }
+    const Camera& camera() const override { return m_inner.camera(); }
+    Color background(const Ray& ray) const override { return m_inner.background(ray); }
+    const SceneOptions& options() const override { return m_inner.options(); }
+    Bounds bounds() const override { return m_inner.bounds(); }
+
+    // Queries so far, over every thread. Exact once the threads are idle.
+    std::uint64_t rays() const;
+
+private:
+    // One counter per TBB thread slot, each on its own cache line; a slot is
+    // only written by the thread owning that index, so a relaxed load and
+    // store (no locked instruction) suffice.
+    struct alignas(64) Slot {
+        std::atomic<std::uint64_t> count{0};
+    };
+    void count() const;
+    const RenderScene& m_inner;
+    std::unique_ptr<Slot[]> m_slots;
+    int m_slot_count;
+};
+
+}  // namespace lancer
