@@ -18,6 +18,7 @@ struct CheckOptions {
     std::vector<std::string> include_path;
     int width = 0;
     int height = 0;
+    bool safe = false;
 };
 
 }  // namespace
@@ -33,8 +34,12 @@ Command add_check_command(CLI::App& app) {
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     command.cli->add_option("--width", options->width, "Image width seen as image_width")->check(CLI::PositiveNumber);
     command.cli->add_option("--height", options->height, "Image height seen as image_height")->check(CLI::PositiveNumber);
+    command.cli->add_flag("--safe", options->safe,
+                          "Untrusted scene: read includes, OBJ/MTL and image files only from the scene's folder "
+                          "and the include path");
     command.run = [options] {
         ParseOptions parse_options;
+        parse_options.safe = options->safe;
         parse_options.include_path = options->include_path;
         for (const auto& dir : default_include_path()) parse_options.include_path.push_back(dir);
         if (options->width > 0 || options->height > 0) {

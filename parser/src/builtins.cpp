@@ -248,7 +248,9 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
     }
     if (name == "file_exists") {
         std::error_code ec;
-        return number(std::filesystem::exists(c.s(0), ec) ? 1.0 : 0.0);
+        // Under --safe a path outside the allowed folders does not exist: the
+        // scene must not learn what is on the disk outside.
+        return number(allowed_file(c.s(0)) && std::filesystem::exists(c.s(0), ec) ? 1.0 : 0.0);
     }
     error(where.begin, "unknown function '" + name + "'");
     return Value::number(0.0);

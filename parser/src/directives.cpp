@@ -464,25 +464,17 @@ void Evaluator::directive_include(const RawToken& d) {
     std::vector<std::string> folders;
     folders.push_back(m_frames.back()->buffer->folder);
     for (const auto& dir : m_options.include_path) folders.push_back(dir);
-    fs::path found;
-    std::error_code ec;
-    if (fs::path(name).is_absolute()) {
-        if (fs::is_regular_file(name, ec)) found = name;
-    } else {
-        for (const auto& folder : folders) {
-            fs::path candidate = folder.empty() ? fs::path(name) : fs::path(folder) / name;
-            if (fs::is_regular_file(candidate, ec)) {
-                found = candidate;
-                break;
-            }
-        }
-    }
-    if (found.empty()) {
+    std::string found_name;
+    FileSearch search = find_file(name, folders, d.location, "include file", found_name);
+    if (search == FileSearch::Refused) return abort_parse();
+    if (search == FileSearch::Missing) {
         std::string searched;
         for (const auto& folder : folders) searched += (searched.empty() ? "" : ", ") + (folder.empty() ? std::string(".") : folder);
         error(d.location, "cannot find include file \"" + name + "\" (searched: " + searched + ")");
         return abort_parse();
     }
+    fs::path found = found_name;
+    std::error_code ec;
     std::string canonical = fs::weakly_canonical(found, ec).string();
     int file_depth = 0;
     for (const auto& frame : m_frames) {
@@ -498,14 +490,9 @@ void Evaluator::directive_include(const RawToken& d) {
         error(d.location, "#include nested too deeply (more than " + std::to_string(m_options.max_include_depth) + " files)");
         return abort_parse();
     }
-    std::ifstream in(found, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in && !in.eof()) {
-        error(d.location, "cannot read include file \"" + found.string() + "\"");
-        return abort_parse();
-    }
-    if (!push_file(text.str(), found.lexically_normal().string(), found.string(), found.parent_path().string(), d.location)) {
+    std::string text;
+    if (!read_file(found.string(), d.location, "include file", text)) return abort_parse();
+    if (!push_file(text, found.lexically_normal().string(), found.string(), found.parent_path().string(), d.location)) {
         abort_parse();
     }
 }

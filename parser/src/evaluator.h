@@ -161,10 +161,30 @@ public:
                         const Edits<ParameterList>& parameters);
     std::function<void(ParameterList&)> parameter_edit(const std::string& name, const Value& v, const SourceRange& where);
 
+    // ---- files the scene names (files.cpp)
+    enum class FileSearch { Found, Missing, Refused };
+    // Finds `name`: as is when absolute, else in each folder in turn ("" is
+    // the current folder). Refused (already reported at `where`) when safe
+    // mode forbids the path; a forbidden name is refused whether or not the
+    // file exists, so errors reveal nothing about the disk outside.
+    FileSearch find_file(const std::string& name, const std::vector<std::string>& folders,
+                         const sg::SourceLocation& where, const std::string& what, std::string& found);
+    // Safe mode's allowed folders: safe_root (else the scene's folder) and include_path.
+    void init_safe_roots(const std::string& scene_folder);
+    // False only in safe mode, for a path outside the allowed folders.
+    bool allowed_file(const std::string& path) const;
+    void refuse_file(const sg::SourceLocation& where, const std::string& what, const std::string& name);
+    // Reads a whole file after checking its size against max_file_bytes;
+    // false with a located error when it cannot.
+    bool read_file(const std::string& path, const sg::SourceLocation& where, const std::string& what, std::string& text);
+    // Counts triangles against max_triangles; false (error reported once) past it.
+    bool add_triangles(long count, const sg::SourceLocation& where);
+
     // ---- for directives.cpp and token_stream.cpp
     struct Frame;
     struct Macro;
     struct Control;
+    class ObjMaterialReader;
 
 private:
     friend struct TokenStreamAccess;
@@ -221,6 +241,9 @@ private:
     const Value* lookup(const std::string& name) const;
 
     ParseOptions m_options;
+    std::vector<std::string> m_safe_roots;  // canonical; set by run() in safe mode
+    long m_triangles = 0;
+    bool m_triangle_limit_reported = false;
     sg::SceneGraph m_scene;
     std::vector<Diagnostic> m_diagnostics;
     int m_error_count = 0;
@@ -256,6 +279,7 @@ private:
     std::string m_last_closed_block;
 
     friend class Parser;
+    friend class ObjMaterialReader;
     friend Value builtin_rand(Evaluator& ev, const std::vector<Value>& args, const SourceRange& where);
     friend Value builtin_seed(Evaluator& ev, const std::vector<Value>& args, const SourceRange& where);
 };

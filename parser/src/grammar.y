@@ -709,7 +709,12 @@ global_items
 
 global_item
   : "assumed_gamma" expr { ev.scene().global.assumed_gamma = ev.positive($2, @2, "assumed_gamma"); }
-  | "max_trace_level" expr { ev.scene().global.max_trace_level = ev.to_int($2, @2); }
+  | "max_trace_level" expr {
+      /* POV-Ray's own range; it also bounds the integrators' recursion. */
+      int level = ev.to_int($2, @2);
+      if (level < 1 || level > 256) ev.error(@2.begin, "max_trace_level must lie in 1..256, got " + std::to_string(level));
+      else ev.scene().global.max_trace_level = level;
+    }
   | "ambient_light" colour { ev.scene().global.ambient_light = ev.to_color($2, @2).rgb; }
   | "adc_bailout" expr { ev.scene().global.adc_bailout = ev.to_float($2, @2); }
   | "charset" UNDECLARED_ID { ev.ignored(LOC(@1), "charset"); }

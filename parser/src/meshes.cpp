@@ -1,6 +1,8 @@
 // Triangle meshes: triangle, smooth_triangle, mesh, mesh2 (with index
 // validation) and the obj_mesh extension (Wavefront OBJ via tinyobjloader).
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <tiny_obj_loader.h>
 
@@ -14,6 +16,37 @@ namespace fs = std::filesystem;
 
 sg::TriangleMesh& mutable_mesh(ShapeValue& shape) {
     return const_cast<sg::TriangleMesh&>(*std::get<sg::MeshRef>(shape.object.shape));
+}
+
+// Why `text` cannot be an OBJ/MTL file, or null when it may be one.
+const char* not_text(const std::string& text) {
+    if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF')))
+        return "is UTF-16 text; save it as UTF-8 or ASCII";
+    if (text.find('\0') != std::string::npos) {
+        if (text.compare(0, 4, "\x89PNG") == 0) return "is a PNG image, not an OBJ file";
+        return "is a binary file, not OBJ text (or UTF-16 without a byte order mark)";
+    }
+    return nullptr;
+}
+
+// The first few lines of tinyobjloader's messages: it reports per line, and
+// a broken file would otherwise print thousands.
+std::string first_lines(const std::string& message, int keep = 5) {
+    std::string out;
+    int lines = 0, dropped = 0;
+    size_t start = 0;
+    while (start < message.size()) {
+        size_t end = message.find('\n', start);
+        if (end == std::string::npos) end = message.size();
+        if (end > start) {
+            if (lines < keep) out += (lines ? "; " : "") + message.substr(start, std::min<size_t>(end - start, 200));
+            else ++dropped;
+            ++lines;
+        }
+        start = end + 1;
+    }
+    if (dropped) out += " (and " + std::to_string(dropped) + " more)";
+    return out;
 }
 
 bool degenerate(const sg::Vec3& a, const sg::Vec3& b, const sg::Vec3& c) {
@@ -52,6 +85,7 @@ std::function<void(ShapeValue&)> Evaluator::mesh_triangle_edit(const std::vector
                                                                const std::vector<SourceRange>& where,
                                                                const std::vector<std::shared_ptr<sg::Material>>& textures,
                                                                const sg::SourceLocation& at) {
+    add_triangles(1, at);
     bool smooth = points.size() == 6;
     std::vector<sg::Vec3> p, n;
     for (size_t i = 0; i < points.size(); ++i) {
@@ -181,6 +215,7 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_indices(const std::strin
             ok = false;
         }
     }
+    if (section == "face_indices") add_triangles(static_cast<long>(entries.size()), at);
     int declared = to_int(count, wc);
     if (declared != static_cast<int>(entries.size())) {
         error(at, section + " declares " + std::to_string(declared) + " entries but lists " + std::to_string(entries.size()));
@@ -240,6 +275,54 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_textures(const Value& co
 
 // -------------------------------------------------------------- obj_mesh
 
+// Reads the MTL files an OBJ names (mtllib), relative to the OBJ's folder:
+// through the evaluator, so safe mode, the size limit and the text checks
+// apply as for every other file. tinyobjloader's own reader would follow
+// "../" and absolute names anywhere.
+class Evaluator::ObjMaterialReader : public tinyobj::MaterialReader {
+public:
+    ObjMaterialReader(Evaluator& evaluator, fs::path folder) : m_evaluator(evaluator), m_folder(std::move(folder)) {}
+
+    bool operator()(const std::string& id, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* map,
+                    std::string* warn, std::string* err) override {
+        if (refused) return false;
+        fs::path path = fs::path(id).is_absolute() ? fs::path(id) : m_folder / id;
+        if (!m_evaluator.allowed_file(path.string())) {
+            refused = true;
+            refused_name = id;
+            return false;
+        }
+        std::error_code ec;
+        auto size = fs::file_size(path, ec);
+        std::ifstream in(path, std::ios::binary);
+        if (ec || !fs::is_regular_file(path, ec) || !in) {
+            missing.push_back(id);
+            return false;
+        }
+        if (size > static_cast<std::uintmax_t>(m_evaluator.m_options.max_file_bytes)) {
+            if (err) *err += "MTL file " + id + " is larger than the file size limit\n";
+            return false;
+        }
+        std::ostringstream text;
+        text << in.rdbuf();
+        if (const char* problem = not_text(text.str())) {
+            if (warn) *warn += "MTL file " + id + " " + problem + "\n";
+            return false;
+        }
+        std::istringstream stream(text.str());
+        tinyobj::LoadMtl(map, materials, &stream, warn, err);
+        return true;
+    }
+
+    bool refused = false;
+    std::string refused_name;
+    std::vector<std::string> missing;
+
+private:
+    Evaluator& m_evaluator;
+    fs::path m_folder;
+};
+
 ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, const sg::SourceLocation& at) {
     auto shape = std::make_shared<ShapeValue>();
     shape->object.kind = sg::Object::Kind::ObjMesh;
@@ -254,42 +337,51 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
     auto buffer = m_buffers.find(where.begin.file.get());
     if (buffer != m_buffers.end()) folders.push_back(buffer->second->folder);
     for (const auto& dir : m_options.include_path) folders.push_back(dir);
-    std::error_code ec;
-    fs::path found;
-    if (fs::path(name).is_absolute()) {
-        if (fs::is_regular_file(name, ec)) found = name;
-    } else {
-        for (const auto& folder : folders) {
-            fs::path candidate = folder.empty() ? fs::path(name) : fs::path(folder) / name;
-            if (fs::is_regular_file(candidate, ec)) {
-                found = candidate;
-                break;
-            }
-        }
-    }
-    if (found.empty()) {
+    std::string found_name;
+    FileSearch search = find_file(name, folders, where.begin, "OBJ file", found_name);
+    if (search == FileSearch::Refused) return shape;
+    if (search == FileSearch::Missing) {
         error(where.begin, "cannot find OBJ file \"" + name + "\"");
         return shape;
     }
+    fs::path found = found_name;
     mesh->source = found.string();
 
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    config.mtl_search_path = found.parent_path().string();
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(found.string(), config)) {
-        std::string message = reader.Error();
-        while (!message.empty() && message.back() == '\n') message.pop_back();
-        error(where.begin, "cannot read OBJ file \"" + name + "\": " + (message.empty() ? "parse error" : message));
+    // The text first: tinyobjloader reads anything as OBJ (a PNG gives a
+    // mesh with no faces), so say what the file really is.
+    std::string text;
+    if (!read_file(found.string(), where.begin, "OBJ file", text)) return shape;
+    if (const char* problem = not_text(text)) {
+        error(where.begin, "OBJ file \"" + name + "\" " + problem);
         return shape;
     }
-    if (!reader.Warning().empty()) {
-        std::string message = reader.Warning();
-        while (!message.empty() && message.back() == '\n') message.pop_back();
-        warning(where.begin, "OBJ \"" + name + "\": " + message);
+
+    ObjMaterialReader materials(*this, found.parent_path());
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> obj_shapes;
+    std::vector<tinyobj::material_t> obj_materials;
+    std::string obj_warning, obj_error;
+    std::istringstream stream(text);
+    bool loaded = tinyobj::LoadObj(&attrib, &obj_shapes, &obj_materials, &obj_warning, &obj_error, &stream, &materials,
+                                   /*triangulate=*/true, /*default_vcols_fallback=*/false);
+    if (materials.refused) {
+        refuse_file(where.begin, "MTL file", materials.refused_name);
+        return shape;
     }
-    const auto& attrib = reader.GetAttrib();
+    if (!loaded) {
+        error(where.begin, "cannot read OBJ file \"" + name + "\": " + (obj_error.empty() ? "parse error" : first_lines(obj_error)));
+        return shape;
+    }
+    for (const auto& missing : materials.missing)
+        warning(where.begin, "OBJ \"" + name + "\": MTL file \"" + missing + "\" not found; its faces get the default material");
+    if (!obj_error.empty()) warning(where.begin, "OBJ \"" + name + "\": " + first_lines(obj_error));
+    if (!obj_warning.empty() && materials.missing.empty()) warning(where.begin, "OBJ \"" + name + "\": " + first_lines(obj_warning));
+    for (float coordinate : attrib.vertices) {
+        if (!std::isfinite(coordinate)) {
+            error(where.begin, "OBJ \"" + name + "\" has a vertex coordinate that is not a finite number");
+            return shape;
+        }
+    }
     for (size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
         mesh->positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]);
     for (size_t i = 0; i + 2 < attrib.normals.size(); i += 3)
@@ -298,7 +390,7 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         mesh->uvs.emplace_back(attrib.texcoords[i], attrib.texcoords[i + 1]);
 
     // MTL materials, mapped onto POV's model (documented in docs/scene-language.md).
-    for (const auto& m : reader.GetMaterials()) {
+    for (const auto& m : obj_materials) {
         auto material = std::make_shared<sg::Material>();
         material->name = m.name;
         material->location = where.begin;
@@ -308,6 +400,11 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         if (!m.diffuse_texname.empty()) {
             // map_Kd is relative to the OBJ's folder.
             fs::path texture = found.parent_path() / m.diffuse_texname;
+            std::error_code ec;
+            if (!allowed_file(texture.string())) {
+                refuse_file(where.begin, "texture", m.diffuse_texname);
+                return shape;
+            }
             if (fs::is_regular_file(texture, ec)) {
                 material->pigment.kind = sg::Pigment::Kind::Image;
                 material->pigment.image.path = texture.string();
@@ -330,7 +427,7 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         mesh->materials.push_back(material);
     }
 
-    for (const auto& obj_shape : reader.GetShapes()) {
+    for (const auto& obj_shape : obj_shapes) {
         const auto& indices = obj_shape.mesh.indices;
         for (size_t f = 0; f + 2 < indices.size(); f += 3) {
             sg::TriangleMesh::Face face;
@@ -343,8 +440,9 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
                 face.uv[i] = index.texcoord_index >= 0 && static_cast<size_t>(index.texcoord_index) < mesh->uvs.size() ? index.texcoord_index : -1;
             }
             if (!valid) {
-                error(where.begin, "OBJ \"" + name + "\": face " + std::to_string(f / 3 + 1) + " of '" + obj_shape.name +
-                                       "' refers to a vertex that does not exist");
+                error(where.begin, "OBJ \"" + name + "\": face " + std::to_string(f / 3 + 1) +
+                                       (obj_shape.name.empty() ? "" : " of '" + obj_shape.name + "'") +
+                                       " refers to a vertex that does not exist");
                 return shape;
             }
             // All three normals or none, all three uvs or none.
@@ -355,7 +453,13 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
             mesh->faces.push_back(face);
         }
     }
-    if (mesh->faces.empty()) error(where.begin, "OBJ file \"" + name + "\" has no faces");
+    if (mesh->faces.empty()) {
+        error(where.begin, "OBJ file \"" + name + "\" has no faces" +
+                               (mesh->positions.empty() ? "" : " (" + std::to_string(mesh->positions.size()) +
+                                                                    " vertices only: a point cloud?)"));
+    } else {
+        add_triangles(static_cast<long>(mesh->faces.size()), where.begin);
+    }
     return shape;
 }
 

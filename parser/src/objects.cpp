@@ -321,21 +321,12 @@ void Evaluator::finish_image_map(sg::ImageMap& image, const sg::SourceLocation& 
     auto buffer = m_buffers.find(image.location.file.get());
     if (buffer != m_buffers.end()) folders.push_back(buffer->second->folder);
     for (const auto& dir : m_options.include_path) folders.push_back(dir);
-    std::error_code ec;
+    // Last, the current folder, as before the include path existed.
+    folders.push_back("");
     std::string found;
-    if (fs::path(image.path).is_absolute()) {
-        if (fs::is_regular_file(image.path, ec)) found = image.path;
-    } else {
-        for (const auto& folder : folders) {
-            fs::path candidate = folder.empty() ? fs::path(image.path) : fs::path(folder) / image.path;
-            if (fs::is_regular_file(candidate, ec)) {
-                found = candidate.string();
-                break;
-            }
-        }
-    }
-    if (found.empty() && fs::is_regular_file(image.path, ec)) found = image.path;
-    if (found.empty()) {
+    FileSearch search = find_file(image.path, folders, image.location, "image file", found);
+    if (search == FileSearch::Refused) return;
+    if (search == FileSearch::Missing) {
         error(image.location, "cannot find image file \"" + image.path + "\"");
         return;
     }

@@ -15,6 +15,7 @@ namespace parse {
 ParseResult Evaluator::run(const std::string& text, const std::string& label, const std::string& path,
                            const std::string& folder) {
     m_scene.main_file = path.empty() ? label : path;
+    init_safe_roots(folder);
     if (m_options.image_size_from_command_line) {
         m_scene.render.width = m_options.image_width;
         m_scene.render.height = m_options.image_height;

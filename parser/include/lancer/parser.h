@@ -32,6 +32,17 @@ struct ParseOptions {
     int image_width = 640;
     int image_height = 480;
     bool image_size_from_command_line = false;
+    // Safe mode (`--safe`) for scenes from untrusted sources: every file the
+    // scene names (#include, obj_mesh and the MTL files and textures its OBJ
+    // names, image_map) must lie, after following symlinks and "..", inside
+    // safe_root or a folder of include_path (lancer's include/ and
+    // LANCER_INCLUDE_PATH are appended to it). Anything else is a located
+    // error that names the path the scene wrote and never reads the file, so
+    // no diagnostic can echo its content.
+    bool safe = false;
+    // The folder safe mode allows; empty: the scene file's folder
+    // (parse_scene_file) or the current folder (parse_scene_string).
+    std::string safe_root;
     // Resource limits: exceeding one is a located error, never a hang.
     // One #while/#for loop may run this many times (an iteration costs a few
     // microseconds, so a runaway loop is reported within seconds).
@@ -39,6 +50,11 @@ struct ParseOptions {
     int max_include_depth = 64;
     int max_macro_depth = 200;
     int max_nesting_depth = 256;
+    // Triangles in the whole scene (mesh, mesh2, obj_mesh): ~100 bytes each
+    // once the renderer holds them, so the default stops at ~5 GiB.
+    long max_triangles = 50'000'000;
+    // Size of one scene, include or OBJ/MTL file; checked before reading.
+    long long max_file_bytes = 1LL << 30;
 };
 
 struct ParseResult {

@@ -1,0 +1,258 @@
+// Bad OBJ, MTL and image files, and the resource limits: each gets a located
+// error (or a warning and a sensible result), never a crash, a hang or a
+// partial image. The files are generated in a temporary folder.
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "lancer/parser.h"
+#include "run_command.h"
+#include "temp_folder.h"
+
+namespace lancer::test {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+// A PNG signature and the start of an IHDR chunk: what a .png renamed .obj begins with.
+const std::string kPngHead = std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x02\0\0\0", 33);
+
+std::string all_text(const ParseResult& result) {
+    std::string text;
+    for (const auto& d : result.diagnostics) text += format_diagnostic(d);
+    return text;
+}
+
+struct BadFiles : ::testing::Test {
+    TempFolder temp;
+
+    // Parses `scene` written as temp/scene.pov.
+    ParseResult parse(const std::string& scene, ParseOptions options = {}) {
+        return parse_scene_file(temp.write("scene.pov", scene), options);
+    }
+    // An obj_mesh of `obj_bytes`, at line 2 column 12 of the scene.
+    ParseResult parse_obj(const std::string& obj_bytes) {
+        temp.write("model.obj", obj_bytes);
+        return parse("sphere { 0, 1 }\nobj_mesh { \"model.obj\" }\n");
+    }
+    // The first error, which must sit on the obj_mesh's file name.
+    std::string obj_error(const std::string& obj_bytes) {
+        ParseResult result = parse_obj(obj_bytes);
+        EXPECT_FALSE(result.ok()) << "accepted: " << obj_bytes;
+        for (const auto& d : result.diagnostics) {
+            if (d.severity != Diagnostic::Severity::Error) continue;
+            EXPECT_EQ(d.location.line, 2) << all_text(result);
+            EXPECT_EQ(d.location.column, 12) << all_text(result);
+            return d.message;
+        }
+        return "";
+    }
+};
+
+const sg::TriangleMesh& only_mesh(const sg::SceneGraph& scene) {
+    return *std::get<sg::MeshRef>(scene.objects.back().shape);
+}
+
+}  // namespace
+
+
+
+TEST_F(BadFiles, MissingObjFileIsLocated) {
+    ParseResult result = parse("sphere { 0, 1 }\nobj_mesh { \"nowhere.obj\" }\n");
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(all_text(result).find("scene.pov:2:12: error: cannot find OBJ file \"nowhere.obj\""), std::string::npos)
+        << all_text(result);
+}
+
+TEST_F(BadFiles, EmptyObjHasNoFaces) { EXPECT_NE(obj_error("").find("has no faces"), std::string::npos); }
+
+TEST_F(BadFiles, PointCloudHasNoFaces) {
+    EXPECT_NE(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\n").find("4 vertices only: a point cloud?"), std::string::npos);
+}
+
+TEST_F(BadFiles, TruncatedObj) {
+    // Cut inside the third vertex: no face survives.
+    EXPECT_NE(obj_error("v 0 0 0\nv 1 0 0\nv 0 1").find("no faces"), std::string::npos);
+    // Cut inside the face: a face with two corners is no triangle.
+    std::string message = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2");
+    EXPECT_FALSE(message.empty());
+}
+
+TEST_F(BadFiles, PngRenamedObj) { EXPECT_NE(obj_error(kPngHead).find("is a PNG image"), std::string::npos); }
+
+TEST_F(BadFiles, Utf16Obj) {
+    std::string utf16 = "\xFF\xFE";
+    for (char c : kTriangle) utf16 += std::string{c, '\0'};
+    EXPECT_NE(obj_error(utf16).find("UTF-16"), std::string::npos);
+    // Without a byte order mark: NUL bytes every other byte.
+    EXPECT_NE(obj_error(utf16.substr(2)).find("UTF-16"), std::string::npos);
+}
+
+TEST_F(BadFiles, FaceIndexOutOfRange) {
+    EXPECT_NE(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n").find("does not exist"), std::string::npos);
+}
+
+TEST_F(BadFiles, FaceIndexZeroOrTooNegative) {
+    EXPECT_FALSE(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n").empty());
+    EXPECT_FALSE(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -9 1 2\n").empty());
+}
+
+TEST_F(BadFiles, NegativeIndicesCountFromTheEnd) {
+    ParseResult result = parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n");
+    ASSERT_TRUE(result.ok()) << all_text(result);
+    EXPECT_EQ(only_mesh(*result.scene).faces.size(), 1u);
+}
+
+TEST_F(BadFiles, NanCoordinatesNeverReachTheScene) {
+    // tinyobjloader may read "nan" as 0; either way no coordinate is non-finite.
+    ParseResult result = parse_obj("v nan 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n");
+    if (result.ok()) {
+        for (const auto& p : only_mesh(*result.scene).positions)
+            EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+    } else {
+        EXPECT_NE(all_text(result).find("scene.pov:2:12"), std::string::npos) << all_text(result);
+    }
+}
+
+TEST_F(BadFiles, MissingMtlWarnsAndUsesTheDefaultMaterial) {
+    ParseResult result = parse_obj("mtllib gone.mtl\nusemtl red\n" + kTriangle);
+    ASSERT_TRUE(result.ok()) << all_text(result);
+    EXPECT_NE(all_text(result).find("scene.pov:2:12: warning: OBJ \"model.obj\": MTL file \"gone.mtl\" not found"),
+              std::string::npos)
+        << all_text(result);
+    EXPECT_EQ(only_mesh(*result.scene).faces.at(0).material, -1);
+}
+
+TEST_F(BadFiles, BinaryMtlWarns) {
+    temp.write("bad.mtl", kPngHead);
+    ParseResult result = parse_obj("mtllib bad.mtl\nusemtl red\n" + kTriangle);
+    ASSERT_TRUE(result.ok()) << all_text(result);
+    EXPECT_NE(all_text(result).find("is a PNG image"), std::string::npos) << all_text(result);
+}
+
+TEST_F(BadFiles, GoodMtlStillMaps) {
+    temp.write("good.mtl", "newmtl red\nKd 1 0 0\n");
+    ParseResult result = parse_obj("mtllib good.mtl\nusemtl red\n" + kTriangle);
+    ASSERT_TRUE(result.ok()) << all_text(result);
+    const auto& mesh = only_mesh(*result.scene);
+    ASSERT_EQ(mesh.materials.size(), 1u);
+    EXPECT_EQ(mesh.faces.at(0).material, 0);
+    EXPECT_EQ(mesh.materials[0]->pigment.color.rgb, sg::Vec3(1, 0, 0));
+}
+
+TEST_F(BadFiles, ObjLargerThanTheLimit) {
+    temp.write("model.obj", kTriangle);
+    ParseOptions options;
+    options.max_file_bytes = 10;
+    ParseResult result = parse("obj_mesh { \"model.obj\" }\n", options);
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(all_text(result).find("too large"), std::string::npos) << all_text(result);
+}
+
+// ---------------------------------------------------- images, through render
+
+struct BadImages : BadFiles {
+    // Renders temp/scene.pov (a sphere textured with `image`) and returns the run.
+    CommandResult render_with_image(const std::string& image_bytes) {
+        temp.write("texture.png", image_bytes);
+        temp.write("scene.pov",
+                   "camera { location <0, 0, -3> look_at 0 }\nlight_source { <0, 5, -5>, 1 }\n"
+                   "sphere { 0, 1\n  pigment { image_map { png \"texture.png\" } } }\n");
+        return run_lancer("render " + (temp.path() / "scene.pov").string() + " -o " + output() +
+                          " --width 16 --height 16 --integrator raycast 2>&1");
+    }
+    std::string output() const { return (temp.path() / "out.png").string(); }
+};
+
+TEST_F(BadImages, CorruptPngIsALocatedErrorAndWritesNothing) {
+    CommandResult result = render_with_image("this is not a PNG at all");
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_NE(result.output.find("scene.pov:4:"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("cannot read image"), std::string::npos) << result.output;
+    EXPECT_FALSE(fs::exists(output()));
+}
+
+TEST_F(BadImages, TruncatedPngIsALocatedErrorAndWritesNothing) {
+    CommandResult result = render_with_image(kPngHead);
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_NE(result.output.find("scene.pov:4:"), std::string::npos) << result.output;
+    EXPECT_FALSE(fs::exists(output()));
+}
+
+// ---------------------------------------------------------- resource limits
+
+TEST(ResourceLimits, MaxTraceLevelOutOfRange) {
+    ParseResult result = parse_scene_string("global_settings { max_trace_level 1e9 }", "limits.pov");
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(all_text(result).find("limits.pov:1:35: error: integer out of range"), std::string::npos) << all_text(result);
+    result = parse_scene_string("global_settings { max_trace_level 1000 }", "limits.pov");
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(all_text(result).find("limits.pov:1:35: error: max_trace_level must lie in 1..256"), std::string::npos)
+        << all_text(result);
+}
+
+TEST(ResourceLimits, Mesh2HugeDeclaredCountIsCheckedAgainstTheEntries) {
+    // Nothing is reserved from the declared count; it only has to match.
+    ParseResult result = parse_scene_string(
+        "mesh2 { vertex_vectors { 2000000000, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 2000000000, <0,1,2> } }",
+        "limits.pov");
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(all_text(result).find("declares 2000000000 entries but lists 3"), std::string::npos) << all_text(result);
+}
+
+TEST(ResourceLimits, TriangleBudget) {
+    ParseOptions options;
+    options.max_triangles = 100;
+    ParseResult result = parse_scene_string(
+        "mesh {\n#for (I, 0, 1000)\n triangle { <I,0,0>, <I+1,0,0>, <I,1,0> }\n#end\n}", "limits.pov", options);
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(all_text(result).find("limits.pov:3:2: error: the scene has more than 100 triangles"), std::string::npos)
+        << all_text(result);
+}
+
+TEST(ResourceLimits, RenderSizeAndSamples) {
+    ParseResult result = parse_scene_string("render_settings { width 100000000 }", "limits.pov");
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(all_text(result).find("unreasonably large"), std::string::npos) << all_text(result);
+}
+
+TEST(ResourceLimits, NestedLoopsStopAtTheTokenBudget) {
+    ParseOptions options;
+    options.max_loop_iterations = 1000;
+    ParseResult result = parse_scene_string(
+        "#declare A = 0;\n#while (1)\n#declare A = A + 1;\n#end", "limits.pov", options);
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(all_text(result).find("limits.pov:2:1: error: #while loop exceeded 1000 iterations"), std::string::npos)
+        << all_text(result);
+}
+
+TEST(ResourceLimits, IncludeDepth) {
+    TempFolder temp;
+    temp.write("self.inc", "#declare N = N + 1;\n#include \"next.inc\"\n");
+    temp.write("next.inc", "#include \"self.inc\"\n");
+    std::string scene = temp.write("scene.pov", "#declare N = 0;\n#include \"self.inc\"\n");
+    ParseResult result = parse_scene_file(scene);
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(all_text(result).find("include cycle"), std::string::npos) << all_text(result);
+    // A chain of distinct files stops at max_include_depth.
+    for (int i = 0; i < 80; ++i)
+        temp.write("chain" + std::to_string(i) + ".inc", "#include \"chain" + std::to_string(i + 1) + ".inc\"\n");
+    scene = temp.write("chain.pov", "#include \"chain0.inc\"\n");
+    result = parse_scene_file(scene);
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(all_text(result).find("#include nested too deeply (more than 64 files)"), std::string::npos)
+        << all_text(result);
+}
+
+TEST(ResourceLimits, AbsurdResolutionIsRefusedBeforeAllocating) {
+    CommandResult result = run_lancer("render scenes/demo.pov -o /tmp/lancer-never-written.png --width 100000 --height 100000 2>&1");
+    EXPECT_NE(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("GiB"), std::string::npos) << result.output;
+    EXPECT_FALSE(fs::exists("/tmp/lancer-never-written.png"));
+}
+
+}  // namespace lancer::test
