@@ -6,6 +6,8 @@
 // the scene's render_settings, the command line. Every check that can fail
 // runs before the render starts, and the image is written atomically at the
 // end, so an error never leaves a file behind (nor a long render wasted).
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -44,6 +46,7 @@ struct RenderArguments {
     std::string crop;
     std::vector<std::string> parameters;
     bool quiet = false;
+    bool safe = false;  // --safe: files only from the scene's folder and the include path
     // Which options the user gave (CLI11 leaves the others untouched).
     CLI::Option* width_option = nullptr;
     CLI::Option* height_option = nullptr;
@@ -148,6 +151,7 @@ int run_render(const RenderArguments& arguments) {
     // Parse; the command line's size is what POV's image_width/height read.
     ParseOptions parse_options;
     parse_options.include_path = default_include_path();
+    parse_options.safe = arguments.safe;
     if (arguments.width_option->count() && arguments.height_option->count()) {
         parse_options.image_width = arguments.width;
         parse_options.image_height = arguments.height;
@@ -186,6 +190,26 @@ int run_render(const RenderArguments& arguments) {
             return kExitUsage;
         }
         options.crop = crop;
+    }
+
+    // Memory before anything is allocated: the film holds one Accumulator per
+    // pixel and writing the image needs a float RGBA copy. Refuse what the
+    // machine cannot hold; announce a big one (docs/robustness.md).
+    {
+        const double bytes = double(options.width) * double(options.height) *
+                             double(sizeof(Film::Accumulator) + 4 * sizeof(float));
+        const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+        const double gib = double(1ull << 30);
+        char estimate[160];
+        std::snprintf(estimate, sizeof estimate, "render needs ~%.1f GiB for the film (%dx%d pixels)", bytes / gib,
+                      options.width, options.height);
+        if (physical > 0 && bytes > 0.8 * physical) {
+            char machine[80];
+            std::snprintf(machine, sizeof machine, ", more than this machine's %.1f GiB of memory allows", physical / gib);
+            print_error(std::string(estimate) + machine);
+            return kExitBadInput;
+        }
+        if (bytes >= double(256ull << 20)) std::fprintf(stderr, "lancer: %s\n", estimate);
     }
 
     // Output: the scene's stem in the current folder unless named.
@@ -306,6 +330,9 @@ Command add_render_command(CLI::App& app) {
                        "Integrator parameter key=value (repeatable); overrides the scene's")
         ->allow_extra_args(false);
     render->add_flag("-q,--quiet", arguments->quiet, "No progress and no summary line");
+    render->add_flag("--safe", arguments->safe,
+                     "Untrusted scene: read includes, OBJ/MTL and image files only from the scene's folder and the "
+                     "include path");
     // A repeated option takes its last value, so a script can append overrides.
     for (CLI::Option* option : render->get_options()) {
         if (option->get_expected_max() == 1 && option != parameter_option) {
