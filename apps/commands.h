@@ -15,5 +15,6 @@ struct Command {
 Command add_check_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
 Command add_plugins_command(CLI::App& app);
+Command add_trade_command(CLI::App& app);
 
 }  // namespace lancer::app

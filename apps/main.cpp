@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
         lancer::app::add_check_command(app),
         lancer::app::add_render_command(app),
         lancer::app::add_plugins_command(app),
+        lancer::app::add_trade_command(app),
     };
     try {
         app.parse(argc, argv);

@@ -1,0 +1,58 @@
+// Reference renders kept between `lancer trade` runs. A reference is costly
+// (path at hundreds or thousands of samples per pixel) and depends only on
+// the scene and the settings, so it is stored under a hash of both and
+// reused while neither changes.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lancer/rgb_image.h"
+
+namespace lancer::app {
+
+// A hex digest (FNV-1a, 64 bits) of the scene's text, of every file it names
+// in quotes that exists (includes, meshes, textures; followed recursively
+// through .pov/.inc files), and of `settings` (size, integrator parameters,
+// seed, lancer's version: whatever else changes the image). Not
+// cryptographic: it only has to tell scene revisions apart.
+std::string reference_key(const std::filesystem::path& scene, const std::vector<std::string>& include_path,
+                          const std::string& settings);
+
+struct CachedReference {
+    RgbImage image;
+    int samples_per_pixel = 0;
+    // sqrt of the mean per-pixel variance of the reference's own mean: the
+    // RMSE below which no render can be measured against it.
+    double noise_rmse = 0.0;
+    std::filesystem::path file;
+};
+
+// One folder; each entry is "<key>-spp<N>.exr" with a "<key>-spp<N>.txt"
+// beside it holding its noise. Several sample counts may sit under one key.
+class ReferenceCache {
+public:
+    explicit ReferenceCache(std::filesystem::path folder) : m_folder(std::move(folder)) {}
+
+    const std::filesystem::path& folder() const { return m_folder; }
+
+    // The entry under `key` with the most samples, if it has at least
+    // `minimum_spp`; unreadable entries are skipped.
+    std::optional<CachedReference> find(const std::string& key, int minimum_spp) const;
+
+    // Writes the entry (creating the folder) and returns it. Throws on I/O failure.
+    CachedReference store(const std::string& key, const RgbImage& image, int samples_per_pixel,
+                          double noise_rmse) const;
+
+private:
+    std::filesystem::path m_folder;
+};
+
+// $XDG_CACHE_HOME/lancer/references, else ~/.cache/lancer/references, else
+// `fallback` (no home: a CI sandbox).
+std::filesystem::path default_reference_cache_folder(const std::filesystem::path& fallback);
+
+}  // namespace lancer::app

@@ -1,0 +1,443 @@
+// `lancer trade SCENE --out DIR [--budget SECONDS] [--quick] [--width W
+//  --height H] [--seed S] [--threads T] [--cache FOLDER]`
+//
+// What each integrator's settings buy on the user's own scene: a reference
+// rendered by `path` (cached by scene content and settings), then every
+// integrator at a ladder of settings, each timed and compared with the
+// reference (RMSE, relative MSE, SSIM). Writes results.csv, error-versus-
+// time plots and index.html into DIR.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "lancer/image_metrics.h"
+#include "lancer/parser.h"
+#include "lancer/plugin_host.h"
+#include "lancer/renderer.h"
+#include "lancer/rgb_image.h"
+#include "lancer/scene_error.h"
+#include "reference_cache.h"
+#include "trade_ladder.h"
+#include "trade_report.h"
+
+namespace lancer::app {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+constexpr const char* kLancerVersion = "0.1.0";  // as `lancer --version`; part of the cache key
+constexpr double kQuickBudgetSeconds = 40.0;
+constexpr double kDefaultBudgetSeconds = 120.0;
+constexpr int kQuickWidth = 160;
+constexpr int kMaxDefaultWidth = 320;
+// Shares of the budget: the reference, then the ladders (split per
+// integrator by ladder_budget_share).
+constexpr double kReferenceShare = 0.4;
+constexpr double kLadderShare = 0.6;
+// The reference gets at least this many samples per pixel whatever the budget...
+constexpr int kMinReferenceSpp = 64;
+constexpr int kMaxReferenceSpp = 16384;
+// ...and path's ladder stops this many times below it: measured against a
+// reference with 4× the samples, a render's RMSE reads at most ~12 % high.
+constexpr int kReferenceSppOverLadder = 4;
+// The reference's samples come from a stream no ladder render uses, so
+// their noise is independent.
+constexpr std::uint64_t kReferenceSeedOffset = 0x9e3779b97f4a7c15ull;
+
+constexpr int kExitBadInput = 1;
+constexpr int kExitUsage = 2;
+
+struct TradeArguments {
+    std::string scene;
+    std::string out;
+    double budget = 0.0;
+    bool quick = false;
+    int width = 0;
+    int height = 0;
+    std::uint64_t seed = 0;
+    int threads = 0;
+    std::string cache;
+    CLI::Option* budget_option = nullptr;
+    CLI::Option* width_option = nullptr;
+    CLI::Option* height_option = nullptr;
+    CLI::Option* seed_option = nullptr;
+};
+
+void print_error(const std::string& message) { std::fprintf(stderr, "lancer: error: %s\n", message.c_str()); }
+
+// One line per step when stdout is not a terminal (logs, CI), else a bar
+// redrawn in place that counts steps and shows the time spent.
+class TradeProgress {
+public:
+    explicit TradeProgress(int total_steps) : m_total(total_steps), m_terminal(::isatty(::fileno(stdout))) {}
+
+    // A step that was planned but will not run (over budget) still counts.
+    void skip(int steps) { m_done += steps; }
+
+    void starting(const std::string& what) {
+        if (!m_terminal) return;
+        draw(what);
+    }
+    void finished(const std::string& what, const std::string& outcome) {
+        ++m_done;
+        if (m_terminal) {
+            draw(what + ": " + outcome);
+        } else {
+            std::printf("trade: [%d/%d] %s: %s\n", m_done, m_total, what.c_str(), outcome.c_str());
+            std::fflush(stdout);
+        }
+    }
+    void note(const std::string& line) {
+        if (m_terminal) std::printf("\r\033[K");
+        std::printf("%s\n", line.c_str());
+        std::fflush(stdout);
+    }
+    void close() {
+        if (m_terminal) std::printf("\r\033[K");
+        std::fflush(stdout);
+    }
+
+private:
+    void draw(const std::string& what) {
+        constexpr int kWidth = 30;
+        const int filled = m_total > 0 ? std::min(kWidth, kWidth * m_done / m_total) : kWidth;
+        const double elapsed = std::chrono::duration<double>(Clock::now() - m_start).count();
+        std::printf("\r\033[K[%s%s] %d/%d %5.1f s  %s", std::string(filled, '#').c_str(),
+                    std::string(kWidth - filled, '.').c_str(), m_done, m_total, elapsed, what.c_str());
+        std::fflush(stdout);
+    }
+    int m_total;
+    int m_done = 0;
+    bool m_terminal;
+    Clock::time_point m_start = Clock::now();
+};
+
+std::string join(const std::vector<std::string>& parts, const char* separator) {
+    std::string joined;
+    for (const std::string& part : parts) joined += (joined.empty() ? "" : separator) + part;
+    return joined;
+}
+
+std::string join_parameters(const ParameterSet& parameters) {
+    std::vector<std::string> parts;
+    for (const auto& [name, value] : parameters.values()) parts.push_back(name + "=" + value);
+    return join(parts, " ");
+}
+
+std::string seconds_text(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, seconds < 10 ? "%.2f s" : "%.1f s", seconds);
+    return text;
+}
+
+// The largest power of two not above `value` (at least 1).
+int power_of_two_floor(double value) {
+    int result = 1;
+    while (result * 2.0 <= value && result < (1 << 30)) result *= 2;
+    return result;
+}
+
+// The scene parsed at the size trade renders, compiled once for every render.
+struct PreparedScene {
+    sg::SceneGraph graph;
+    std::unique_ptr<RenderScene> scene;
+    int width = 0;
+    int height = 0;
+};
+
+// Size: --width/--height, else the scene's aspect at 160 pixels wide for
+// --quick or at most 320 otherwise (trade renders dozens of images).
+bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
+    auto print_diagnostics = [](const ParseResult& parsed) {
+        for (const Diagnostic& diagnostic : parsed.diagnostics) {
+            std::string text = format_diagnostic(diagnostic);
+            if (text.empty() || text.back() != '\n') text += '\n';
+            std::fputs(text.c_str(), stderr);
+        }
+    };
+    ParseOptions options;
+    options.include_path = default_include_path();
+    ParseResult first = parse_scene_file(arguments.scene, options);
+    if (!first.ok()) {
+        print_diagnostics(first);
+        return false;
+    }
+    const int scene_width = first.scene->render.width.value_or(640);
+    const int scene_height = first.scene->render.height.value_or(480);
+    if (arguments.width_option->count()) {
+        prepared.width = arguments.width;
+        prepared.height = arguments.height;
+    } else {
+        prepared.width = arguments.quick ? kQuickWidth : std::min(scene_width, kMaxDefaultWidth);
+        prepared.height = std::max(1, int(std::lround(double(prepared.width) * scene_height / scene_width)));
+    }
+    // Again at the chosen size, which the scene may read as image_width.
+    options.image_width = prepared.width;
+    options.image_height = prepared.height;
+    options.image_size_from_command_line = true;
+    ParseResult parsed = parse_scene_file(arguments.scene, options);
+    print_diagnostics(parsed);
+    if (!parsed.ok()) return false;
+    prepared.graph = std::move(*parsed.scene);
+    prepared.scene = RenderScene::compile(prepared.graph);
+    return true;
+}
+
+// One render: the plugin's integrator with the scene's parameters for it
+// (when the scene names it) under the ladder's, timed from prepare() on.
+struct TimedRender {
+    RgbImage image;
+    double seconds = 0.0;
+    std::uint64_t rays = 0;
+    double noise_rmse = 0.0;  // sqrt of the mean variance of the pixel means
+    std::string parameters;   // as resolved
+};
+
+TimedRender render_setting(const PreparedScene& prepared, const Plugin& plugin,
+                           const std::vector<std::string>& parameters, int spp, std::uint64_t seed, int threads) {
+    const sg::RenderSettings& settings = prepared.graph.render;
+    std::map<std::string, sg::ParameterValue> scene_parameters;
+    if (settings.integrator && *settings.integrator == plugin.descriptor->name) scene_parameters = settings.parameters;
+    const ParameterSet resolved = resolve_parameters(*plugin.descriptor, scene_parameters, parameters);
+
+    const Clock::time_point start = Clock::now();
+    std::unique_ptr<Integrator> integrator = plugin.descriptor->create(resolved);
+    if (!integrator) throw PluginError("plugin '" + plugin.path + "' created no integrator");
+    integrator->prepare(*prepared.scene);
+    RenderOptions options;
+    options.width = prepared.width;
+    options.height = prepared.height;
+    options.samples_per_pixel = spp;
+    options.seed = seed;
+    options.threads = threads;
+    options.progress = ProgressMode::Quiet;
+    Film film(prepared.width, prepared.height);
+    const RenderStats stats = render_image(*prepared.scene, *integrator, options, film);
+
+    TimedRender render;
+    render.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    render.image = image_from_film(film);
+    render.parameters = join_parameters(resolved);
+    double variance = 0.0;
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x) {
+            const Color v = film.variance_of_mean(x, y);
+            variance += (double(v.r) + v.g + v.b) / 3.0;
+        }
+    render.noise_rmse = std::sqrt(variance / (double(film.width()) * film.height()));
+    (void)stats;
+    return render;
+}
+
+std::string metrics_text(const TradeResult& result) {
+    char text[128];
+    std::snprintf(text, sizeof text, "%s, RMSE %.4g, relMSE %.4g, SSIM %.4f", seconds_text(result.seconds).c_str(),
+                  result.rmse, result.rel_mse, result.ssim);
+    return text;
+}
+
+std::string command_line(const TradeArguments& arguments, const PreparedScene& prepared, double budget,
+                         std::uint64_t seed) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%g", budget);
+    std::string command = "lancer trade " + arguments.scene + " --out " + arguments.out + " --budget " + text;
+    if (arguments.quick) command += " --quick";
+    command += " --width " + std::to_string(prepared.width) + " --height " + std::to_string(prepared.height);
+    return command + " --seed " + std::to_string(seed);
+}
+
+int run_trade(const TradeArguments& arguments) {
+    // Arguments.
+    if (arguments.budget_option->count() && !(arguments.budget > 0.0)) {
+        print_error("--budget must be a positive number of seconds");
+        return kExitUsage;
+    }
+    if (arguments.width_option->count() != arguments.height_option->count()) {
+        print_error("--width and --height go together");
+        return kExitUsage;
+    }
+    if (arguments.width_option->count() && (arguments.width <= 0 || arguments.height <= 0)) {
+        print_error("--width and --height must be positive");
+        return kExitUsage;
+    }
+    if (arguments.threads < 0) {
+        print_error("--threads must be 0 (every core) or positive");
+        return kExitUsage;
+    }
+    const double budget =
+        arguments.budget_option->count() ? arguments.budget : arguments.quick ? kQuickBudgetSeconds : kDefaultBudgetSeconds;
+    const Clock::time_point run_start = Clock::now();
+
+    try {
+        PreparedScene prepared;
+        if (!prepare_scene(arguments, prepared)) return kExitBadInput;
+        const std::uint64_t seed =
+            arguments.seed_option->count() ? arguments.seed : prepared.graph.render.seed.value_or(0);
+        const fs::path out(arguments.out);
+        fs::create_directories(out / "renders");
+        fs::create_directories(out / "heatmaps");
+
+        TradeRun run;
+        run.scene = arguments.scene;
+        run.width = prepared.width;
+        run.height = prepared.height;
+        run.seed = seed;
+        run.budget_seconds = budget;
+        run.command = command_line(arguments, prepared, budget, seed);
+
+        // Every planned step, for the progress bar: the reference and each rung.
+        std::vector<std::vector<TradeSetting>> ladders;
+        int total_steps = 1;
+        for (const std::string& integrator : trade_integrator_order()) {
+            ladders.push_back(trade_ladder(integrator, arguments.quick));
+            total_steps += int(ladders.back().size());
+        }
+        TradeProgress progress(total_steps);
+        progress.note("trade: " + arguments.scene + " at " + std::to_string(prepared.width) + "x" +
+                      std::to_string(prepared.height) + ", budget " + seconds_text(budget));
+
+        // The reference: path, as many samples as its share of the budget
+        // buys (from a one-sample pilot), unless the cache holds one with
+        // at least half that many for the same scene and settings.
+        const Plugin path_plugin = load_plugin("path");
+        const std::uint64_t reference_seed = seed + kReferenceSeedOffset;
+        progress.starting("reference: pilot");
+        const TimedRender pilot = render_setting(prepared, path_plugin, {}, 1, reference_seed, arguments.threads);
+        const int wanted_spp = std::clamp(power_of_two_floor(kReferenceShare * budget / std::max(pilot.seconds, 1e-6)),
+                                          kMinReferenceSpp, kMaxReferenceSpp);
+        const std::string settings_text = std::string("lancer ") + kLancerVersion + " size " +
+                                          std::to_string(prepared.width) + "x" + std::to_string(prepared.height) +
+                                          " seed " + std::to_string(reference_seed) + " path " + pilot.parameters;
+        const std::string key = reference_key(arguments.scene, default_include_path(), settings_text);
+        const ReferenceCache cache(arguments.cache.empty() ? default_reference_cache_folder(out / "reference-cache")
+                                                           : fs::path(arguments.cache));
+        std::optional<CachedReference> reference = cache.find(key, wanted_spp / 2);
+        if (reference) {
+            run.reference.cached = true;
+            progress.finished("reference", "cached, " + std::to_string(reference->samples_per_pixel) + " spp");
+            progress.note("reference: cached (" + reference->file.string() + ")");
+        } else {
+            progress.starting("reference: path " + std::to_string(wanted_spp) + " spp");
+            const TimedRender rendered =
+                render_setting(prepared, path_plugin, {}, wanted_spp, reference_seed, arguments.threads);
+            reference = cache.store(key, rendered.image, wanted_spp, rendered.noise_rmse);
+            run.reference.seconds = rendered.seconds;
+            progress.finished("reference", "path " + std::to_string(wanted_spp) + " spp, " +
+                                               seconds_text(rendered.seconds));
+            progress.note("reference: rendered, path " + std::to_string(wanted_spp) + " spp in " +
+                          seconds_text(rendered.seconds) + " (cached in " + reference->file.string() + ")");
+        }
+        run.reference.samples_per_pixel = reference->samples_per_pixel;
+        run.reference.noise_rmse = reference->noise_rmse;
+        run.reference.cache_file = reference->file.string();
+        run.reference.image = "reference.png";
+        write_rgb_image(reference->image, (out / run.reference.image).string());
+
+        // The ladders. Each integrator may spend its share of the budget plus
+        // whatever the ones before it left; a rung whose predicted time
+        // (the last rung's, scaled by cost) does not fit is skipped with all
+        // the dearer ones after it. The first rung always runs.
+        const double ladder_budget = kLadderShare * budget;
+        double carried = 0.0;
+        for (std::size_t i = 0; i < ladders.size(); ++i) {
+            const std::string& integrator = trade_integrator_order()[i];
+            const double allowance = ladder_budget_share(integrator) * ladder_budget + carried;
+            const Plugin plugin = load_plugin(integrator);
+            double spent = 0.0;
+            const TradeSetting* previous = nullptr;
+            double previous_seconds = 0.0;
+            for (std::size_t rung = 0; rung < ladders[i].size(); ++rung) {
+                const TradeSetting& setting = ladders[i][rung];
+                const std::string what = integrator + " " + setting.label();
+                const bool beyond_reference =
+                    integrator == "path" &&
+                    setting.samples_per_pixel * kReferenceSppOverLadder > run.reference.samples_per_pixel;
+                const double predicted = previous ? previous_seconds * setting.cost / previous->cost : 0.0;
+                if (previous && (beyond_reference || spent + predicted > allowance)) {
+                    progress.skip(int(ladders[i].size() - rung));
+                    break;
+                }
+                progress.starting(what);
+                const TimedRender rendered = render_setting(prepared, plugin, setting.parameters,
+                                                            setting.samples_per_pixel, seed, arguments.threads);
+                TradeResult result;
+                result.integrator = integrator;
+                result.setting = setting.label();
+                result.seconds = rendered.seconds;
+                result.rays = rendered.rays;
+                result.rmse = rmse(rendered.image, reference->image);
+                result.rel_mse = relative_mse(rendered.image, reference->image);
+                result.ssim = ssim(rendered.image, reference->image);
+                result.image = "renders/" + integrator + "_" + setting.slug() + ".png";
+                result.heat_map = "heatmaps/" + integrator + "_" + setting.slug() + ".png";
+                write_rgb_image(rendered.image, (out / result.image).string());
+                write_rgb_image(error_heat_map(rendered.image, reference->image), (out / result.heat_map).string());
+                progress.finished(what, metrics_text(result));
+                run.results.push_back(result);
+                spent += rendered.seconds;
+                previous = &setting;
+                previous_seconds = rendered.seconds;
+            }
+            carried = std::max(0.0, allowance - spent);
+        }
+        progress.close();
+
+        // The report.
+        std::ofstream(out / "results.csv") << results_csv(run);
+        std::vector<std::string> plots;
+        for (const std::string metric : {"rmse", "rel_mse", "1-ssim"}) {
+            const std::string file = "error_vs_time_" + std::string(metric == "1-ssim" ? "ssim" : metric) + ".svg";
+            std::ofstream(out / file) << error_plot_svg(run, metric);
+            plots.push_back(file);
+        }
+        std::ofstream(out / "index.html") << report_html(run, plots);
+
+        const double total = std::chrono::duration<double>(Clock::now() - run_start).count();
+        std::printf("trade: %zu renders of %zu integrators in %s; wrote %s, %s and %s\n", run.results.size(),
+                    trade_integrator_order().size(), seconds_text(total).c_str(), (out / "results.csv").c_str(),
+                    (out / plots.front()).c_str(), (out / "index.html").c_str());
+    } catch (const SceneError& error) {
+        print_error(std::string(error.what()));
+        return kExitBadInput;
+    } catch (const std::exception& error) {
+        print_error(error.what());
+        return kExitBadInput;
+    }
+    return 0;
+}
+
+}  // namespace
+
+Command add_trade_command(CLI::App& app) {
+    auto arguments = std::make_shared<TradeArguments>();
+    CLI::App* trade = app.add_subcommand(
+        "trade", "Measure speed against accuracy: every integrator at a ladder of settings against a path reference");
+    trade->add_option("scene", arguments->scene, "Scene file (.pov)")->required();
+    trade->add_option("-o,--out", arguments->out, "Folder for results.csv, the plots, index.html and images")
+        ->required();
+    arguments->budget_option = trade->add_option(
+        "--budget", arguments->budget, "Seconds for the whole run, roughly (default 120; 40 with --quick)");
+    trade->add_flag("--quick", arguments->quick, "Small images (160 wide) and short ladders: about a minute");
+    arguments->width_option = trade->add_option("--width", arguments->width, "Image width (with --height)");
+    arguments->height_option = trade->add_option("--height", arguments->height, "Image height (with --width)");
+    arguments->seed_option = trade->add_option("--seed", arguments->seed, "Random seed (default: the scene's, else 0)");
+    trade->add_option("--threads", arguments->threads, "Worker threads (default 0: every core)");
+    trade->add_option("--cache", arguments->cache,
+                      "Reference cache folder (default $XDG_CACHE_HOME/lancer/references or ~/.cache/...)");
+    Command command;
+    command.cli = trade;
+    command.run = [arguments] { return run_trade(*arguments); };
+    return command;
+}
+
+}  // namespace lancer::app

@@ -1,0 +1,60 @@
+// What `lancer trade` measured, and the files that show it: results.csv,
+// error-versus-time plots (SVG) and index.html with every image side by
+// side. Pure formatting: the measuring lives in trade_command.cpp.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace lancer::app {
+
+// One render of the ladder and its errors against the reference.
+struct TradeResult {
+    std::string integrator;
+    std::string setting;  // "n=64 spp=4"
+    double seconds = 0.0;
+    std::uint64_t rays = 0;  // 0 when the renderer does not count them
+    double rmse = 0.0;
+    double rel_mse = 0.0;
+    double ssim = 0.0;
+    std::string image;     // PNG, relative to the output folder
+    std::string heat_map;  // PNG, relative to the output folder
+};
+
+struct TradeReference {
+    std::string image;  // PNG, relative to the output folder
+    int samples_per_pixel = 0;
+    double seconds = 0.0;  // 0 when cached
+    bool cached = false;
+    double noise_rmse = 0.0;  // the reference's own noise (RMSE of its mean)
+    std::string cache_file;
+};
+
+struct TradeRun {
+    std::string scene;
+    std::string command;  // the command line that produced it
+    int width = 0;
+    int height = 0;
+    std::uint64_t seed = 0;
+    double budget_seconds = 0.0;
+    TradeReference reference;
+    std::vector<TradeResult> results;
+};
+
+// The integrators in the order every table, plot and legend uses.
+const std::vector<std::string>& trade_integrator_order();
+std::string integrator_colour(const std::string& integrator);
+
+// One header line, then one line per result; numbers in full precision.
+std::string results_csv(const TradeRun& run);
+
+// Error against time, one curve per integrator; `metric` is "rmse",
+// "rel_mse" or "1-ssim".
+std::string error_plot_svg(const TradeRun& run, const std::string& metric);
+
+// The page: summary, plots, the reference, every render beside its heat
+// map, the table. `plot_files` are the SVGs written beside it.
+std::string report_html(const TradeRun& run, const std::vector<std::string>& plot_files);
+
+}  // namespace lancer::app
