@@ -119,21 +119,22 @@ std::optional<CachedReference> ReferenceCache::find(const std::string& key, int 
     std::ifstream noise(entry_stem(m_folder, key, best_spp).replace_extension(".txt"));
     std::string word;
     while (noise >> word)
-        if (word.rfind("noise_rmse=", 0) == 0) reference.noise_rmse = std::atof(word.c_str() + 11);
+        if (word.rfind("noise_rmse=", 0) == 0) reference.noise.rmse = std::atof(word.c_str() + 11);
+        else if (word.rfind("noise_rel_mse=", 0) == 0) reference.noise.rel_mse = std::atof(word.c_str() + 14);
     return reference;
 }
 
 CachedReference ReferenceCache::store(const std::string& key, const RgbImage& image, int samples_per_pixel,
-                                      double noise_rmse) const {
+                                      const ReferenceNoise& noise) const {
     fs::create_directories(m_folder);
     CachedReference reference;
     reference.image = image;
     reference.samples_per_pixel = samples_per_pixel;
-    reference.noise_rmse = noise_rmse;
+    reference.noise = noise;
     reference.file = entry_stem(m_folder, key, samples_per_pixel).replace_extension(".exr");
     // The note first: an entry is found by its EXR, which is written atomically.
     std::ofstream(entry_stem(m_folder, key, samples_per_pixel).replace_extension(".txt"))
-        << "spp=" << samples_per_pixel << " noise_rmse=" << noise_rmse << "\n";
+        << "spp=" << samples_per_pixel << " noise_rmse=" << noise.rmse << " noise_rel_mse=" << noise.rel_mse << "\n";
     write_rgb_image(image, reference.file.string());
     return reference;
 }

@@ -22,12 +22,19 @@ namespace lancer::app {
 std::string reference_key(const std::filesystem::path& scene, const std::vector<std::string>& include_path,
                           const std::string& settings);
 
+// The reference's own noise, from its film's per-pixel variance of the
+// mean: measured against a noisy reference r, a render x's expected squared
+// error is (x − truth)² + Var(r), so these are the floors under which no
+// render's RMSE or relative MSE can be measured.
+struct ReferenceNoise {
+    double rmse = 0.0;     // sqrt(mean over pixels and channels of Var(r))
+    double rel_mse = 0.0;  // mean of Var(r) / (r² + ε)
+};
+
 struct CachedReference {
     RgbImage image;
     int samples_per_pixel = 0;
-    // sqrt of the mean per-pixel variance of the reference's own mean: the
-    // RMSE below which no render can be measured against it.
-    double noise_rmse = 0.0;
+    ReferenceNoise noise;
     std::filesystem::path file;
 };
 
@@ -45,7 +52,7 @@ public:
 
     // Writes the entry (creating the folder) and returns it. Throws on I/O failure.
     CachedReference store(const std::string& key, const RgbImage& image, int samples_per_pixel,
-                          double noise_rmse) const;
+                          const ReferenceNoise& noise) const;
 
 private:
     std::filesystem::path m_folder;

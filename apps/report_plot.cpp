@@ -81,6 +81,8 @@ std::string render_svg(const LogLogPlot& plot, int width, int height) {
             y_low = std::min(y_low, point.y), y_high = std::max(y_high, point.y);
         }
     if (x_high == 0.0) x_low = 0.1, x_high = 1.0, y_low = 0.1, y_high = 1.0;  // nothing to plot
+    for (const PlotLevel& level : plot.levels)
+        if (std::isfinite(level.y) && level.y > 0.0) y_low = std::min(y_low, level.y), y_high = std::max(y_high, level.y);
     const LogAxis x_axis(x_low, x_high, left, right);
     const LogAxis y_axis(y_low, y_high, bottom, top);
 
@@ -121,6 +123,16 @@ std::string render_svg(const LogLogPlot& plot, int width, int height) {
         << "\" text-anchor=\"middle\">" << escape_xml(plot.x_label) << "</text>\n";
     svg << "<text transform=\"translate(16," << number((top + bottom) / 2)
         << ") rotate(-90)\" text-anchor=\"middle\">" << escape_xml(plot.y_label) << "</text>\n";
+
+    // Levels, under the curves.
+    for (const PlotLevel& level : plot.levels) {
+        if (!(std::isfinite(level.y) && level.y > 0.0)) continue;
+        const double y = y_axis.to_pixel(level.y);
+        svg << "<line x1=\"" << number(left) << "\" y1=\"" << number(y) << "\" x2=\"" << number(right)
+            << "\" y2=\"" << number(y) << "\" stroke=\"#555\" stroke-dasharray=\"6,4\"/>\n";
+        svg << "<text x=\"" << number(left + 6) << "\" y=\"" << number(y - 5) << "\" fill=\"#555\">"
+            << escape_xml(level.label) << "</text>\n";
+    }
 
     // Curves, with a marker per point whose tooltip names the setting.
     for (const PlotSeries& series : plot.series) {

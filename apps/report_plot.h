@@ -20,11 +20,18 @@ struct PlotSeries {
     std::vector<PlotPoint> points;  // drawn in the given order
 };
 
+// A horizontal dashed line across the plot, e.g. a noise floor.
+struct PlotLevel {
+    double y = 0.0;
+    std::string label;
+};
+
 struct LogLogPlot {
     std::string title;
     std::string x_label;
     std::string y_label;
     std::vector<PlotSeries> series;
+    std::vector<PlotLevel> levels;
 };
 
 // The plot as a standalone SVG document. Points with a non-positive or

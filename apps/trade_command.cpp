@@ -36,14 +36,18 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 constexpr const char* kLancerVersion = "0.1.0";  // as `lancer --version`; part of the cache key
-constexpr double kQuickBudgetSeconds = 40.0;
+constexpr double kQuickBudgetSeconds = 50.0;
 constexpr double kDefaultBudgetSeconds = 120.0;
-constexpr int kQuickWidth = 160;
+constexpr double kQuickPixels = 160 * 120;  // --quick: about this many pixels, the scene's aspect
 constexpr int kMaxDefaultWidth = 320;
 // Shares of the budget: the reference, then the ladders (split per
 // integrator by ladder_budget_share).
-constexpr double kReferenceShare = 0.4;
-constexpr double kLadderShare = 0.6;
+constexpr double kReferenceShare = 0.5;
+constexpr double kLadderShare = 0.5;
+// The reference uses path's Owen-scrambled Sobol sampler: unbiased like the
+// default, and its error falls faster (docs/integrators.md: slope −0.78
+// against −0.48), so the same seconds buy a cleaner reference.
+const std::vector<std::string> kReferenceParameters = {"sampler=sobol"};
 // The reference gets at least this many samples per pixel whatever the budget...
 constexpr int kMinReferenceSpp = 64;
 constexpr int kMaxReferenceSpp = 16384;
@@ -155,8 +159,8 @@ struct PreparedScene {
     int height = 0;
 };
 
-// Size: --width/--height, else the scene's aspect at 160 pixels wide for
-// --quick or at most 320 otherwise (trade renders dozens of images).
+// Size: --width/--height, else the scene's aspect at about 160×120 pixels
+// for --quick or at most 320 wide otherwise (trade renders dozens of images).
 bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
     auto print_diagnostics = [](const ParseResult& parsed) {
         for (const Diagnostic& diagnostic : parsed.diagnostics) {
@@ -178,8 +182,10 @@ bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
         prepared.width = arguments.width;
         prepared.height = arguments.height;
     } else {
-        prepared.width = arguments.quick ? kQuickWidth : std::min(scene_width, kMaxDefaultWidth);
-        prepared.height = std::max(1, int(std::lround(double(prepared.width) * scene_height / scene_width)));
+        const double aspect = double(scene_width) / double(scene_height);
+        prepared.width = arguments.quick ? int(std::lround(std::sqrt(kQuickPixels * aspect)))
+                                         : std::min(scene_width, kMaxDefaultWidth);
+        prepared.height = std::max(1, int(std::lround(prepared.width / aspect)));
     }
     // Again at the chosen size, which the scene may read as image_width.
     options.image_width = prepared.width;
@@ -199,7 +205,7 @@ struct TimedRender {
     RgbImage image;
     double seconds = 0.0;
     std::uint64_t rays = 0;
-    double noise_rmse = 0.0;  // sqrt of the mean variance of the pixel means
+    ReferenceNoise noise;  // the film's own noise, were it a reference
     std::string parameters;   // as resolved
 };
 
@@ -228,14 +234,20 @@ TimedRender render_setting(const PreparedScene& prepared, const Plugin& plugin,
     render.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     render.image = image_from_film(film);
     render.parameters = join_parameters(resolved);
-    double variance = 0.0;
+    render.rays = stats.rays;
+    double variance = 0.0, relative_variance = 0.0;
     for (int y = 0; y < film.height(); ++y)
         for (int x = 0; x < film.width(); ++x) {
             const Color v = film.variance_of_mean(x, y);
-            variance += (double(v.r) + v.g + v.b) / 3.0;
+            const Color m = film.mean(x, y);
+            for (int k = 0; k < 3; ++k) {
+                variance += v[k] / 3.0;
+                relative_variance += v[k] / (double(m[k]) * m[k] + kRelativeErrorEpsilon) / 3.0;
+            }
         }
-    render.noise_rmse = std::sqrt(variance / (double(film.width()) * film.height()));
-    (void)stats;
+    const double pixels = double(film.width()) * film.height();
+    render.noise.rmse = std::sqrt(variance / pixels);
+    render.noise.rel_mse = relative_variance / pixels;
     return render;
 }
 
@@ -312,7 +324,7 @@ int run_trade(const TradeArguments& arguments) {
         const Plugin path_plugin = load_plugin("path");
         const std::uint64_t reference_seed = seed + kReferenceSeedOffset;
         progress.starting("reference: pilot");
-        const TimedRender pilot = render_setting(prepared, path_plugin, {}, 1, reference_seed, arguments.threads);
+        const TimedRender pilot = render_setting(prepared, path_plugin, kReferenceParameters, 1, reference_seed, arguments.threads);
         const int wanted_spp = std::clamp(power_of_two_floor(kReferenceShare * budget / std::max(pilot.seconds, 1e-6)),
                                           kMinReferenceSpp, kMaxReferenceSpp);
         const std::string settings_text = std::string("lancer ") + kLancerVersion + " size " +
@@ -329,8 +341,8 @@ int run_trade(const TradeArguments& arguments) {
         } else {
             progress.starting("reference: path " + std::to_string(wanted_spp) + " spp");
             const TimedRender rendered =
-                render_setting(prepared, path_plugin, {}, wanted_spp, reference_seed, arguments.threads);
-            reference = cache.store(key, rendered.image, wanted_spp, rendered.noise_rmse);
+                render_setting(prepared, path_plugin, kReferenceParameters, wanted_spp, reference_seed, arguments.threads);
+            reference = cache.store(key, rendered.image, wanted_spp, rendered.noise);
             run.reference.seconds = rendered.seconds;
             progress.finished("reference", "path " + std::to_string(wanted_spp) + " spp, " +
                                                seconds_text(rendered.seconds));
@@ -338,7 +350,8 @@ int run_trade(const TradeArguments& arguments) {
                           seconds_text(rendered.seconds) + " (cached in " + reference->file.string() + ")");
         }
         run.reference.samples_per_pixel = reference->samples_per_pixel;
-        run.reference.noise_rmse = reference->noise_rmse;
+        run.reference.noise_rmse = reference->noise.rmse;
+        run.reference.noise_rel_mse = reference->noise.rel_mse;
         run.reference.cache_file = reference->file.string();
         run.reference.image = "reference.png";
         write_rgb_image(reference->image, (out / run.reference.image).string());
@@ -426,8 +439,8 @@ Command add_trade_command(CLI::App& app) {
     trade->add_option("-o,--out", arguments->out, "Folder for results.csv, the plots, index.html and images")
         ->required();
     arguments->budget_option = trade->add_option(
-        "--budget", arguments->budget, "Seconds for the whole run, roughly (default 120; 40 with --quick)");
-    trade->add_flag("--quick", arguments->quick, "Small images (160 wide) and short ladders: about a minute");
+        "--budget", arguments->budget, "Seconds for the whole run, roughly (default 120; 50 with --quick)");
+    trade->add_flag("--quick", arguments->quick, "Small images (about 160x120) and short ladders: about a minute");
     arguments->width_option = trade->add_option("--width", arguments->width, "Image width (with --height)");
     arguments->height_option = trade->add_option("--height", arguments->height, "Image height (with --width)");
     arguments->seed_option = trade->add_option("--seed", arguments->seed, "Random seed (default: the scene's, else 0)");

@@ -105,6 +105,11 @@ std::string error_plot_svg(const TradeRun& run, const std::string& metric) {
                 series.points.push_back({r.seconds, metric_value(r, metric), r.setting});
         if (!series.points.empty()) plot.series.push_back(std::move(series));
     }
+    // Below the reference's own noise a render's error cannot be measured.
+    const double floor = metric == "rmse"      ? run.reference.noise_rmse
+                         : metric == "rel_mse" ? run.reference.noise_rel_mse
+                                               : 0.0;
+    if (floor > 0.0) plot.levels.push_back({floor, "reference noise"});
     return render_svg(plot);
 }
 
@@ -121,8 +126,9 @@ std::string report_html(const TradeRun& run, const std::vector<std::string>& plo
     html << "<p>Reference: <code>path</code> at " << ref.samples_per_pixel << " samples per pixel, "
          << (ref.cached ? std::string("cached (") + escape_xml(ref.cache_file) + ")"
                         : format("%.1f s", ref.seconds) + ", stored in " + escape_xml(ref.cache_file))
-         << ". Its own noise is an RMSE of about " << format("%.3g", ref.noise_rmse)
-         << ": errors near that are the reference's, not the render's.</p>\n";
+         << ". Its own noise, from its per-pixel variance, is an RMSE of about " << format("%.3g", ref.noise_rmse)
+         << " (relative MSE " << format("%.3g", ref.noise_rel_mse)
+         << ", the dashed lines): errors near that are the reference's, not the render's.</p>\n";
 
     // The plots first: they answer "which integrator for my budget".
     html << "<h2>Error against time</h2>\n<p>Lower and further left is better. Each point is one setting "

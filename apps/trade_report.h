@@ -27,7 +27,8 @@ struct TradeReference {
     int samples_per_pixel = 0;
     double seconds = 0.0;  // 0 when cached
     bool cached = false;
-    double noise_rmse = 0.0;  // the reference's own noise (RMSE of its mean)
+    double noise_rmse = 0.0;     // the reference's own noise (RMSE of its mean)
+    double noise_rel_mse = 0.0;  // the same as a relative MSE
     std::string cache_file;
 };
 
