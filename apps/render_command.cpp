@@ -1,24 +1,36 @@
 // `lancer render SCENE [-i INTEGRATOR] [-o OUT] [--width W] [--height H]
-//  [--spp N] [--seed S] [--threads T] [--crop x0,y0,x1,y1] [-p key=value]...
-//  [--quiet]`
+//  [--spp N] [--time SECONDS] [--noise E] [--seed S] [--threads T]
+//  [--crop x0,y0,x1,y1] [-p key=value]... [--stats FILE.json]
+//  [--checkpoint SECONDS] [--resume] [--quiet]`
 //
 // Settings come from three places, later ones winning: lancer's defaults,
 // the scene's render_settings, the command line. Every check that can fail
 // runs before the render starts, and the image is written atomically at the
 // end, so an error never leaves a file behind (nor a long render wasted).
+// SIGINT and SIGTERM end the render early and write the image so far (see
+// docs/rendering.md).
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "commands.h"
+#include "lancer/checkpoint.h"
+#include "lancer/counting_scene.h"
 #include "lancer/image_io.h"
 #include "lancer/parser.h"
 #include "lancer/plugin_host.h"
+#include "lancer/render_report.h"
 #include "lancer/renderer.h"
 #include "lancer/scene_error.h"
 
@@ -34,6 +46,45 @@ constexpr int kDefaultHeight = 480;
 constexpr int kExitBadInput = 1;
 constexpr int kExitUsage = 2;
 
+// Time kept back from a --time budget for writing the image, per pixel and
+// fixed (measured: a 640x480 PNG takes about 30 ms to encode).
+constexpr double kOutputReserveSeconds = 0.05;
+constexpr double kOutputReserveSecondsPerPixel = 1e-7;
+
+// A signal handler can only reach globals; these two are its whole state.
+// Lock-free atomics are async-signal-safe.
+std::atomic<bool> g_interrupt_requested{false};
+std::atomic<int> g_interrupt_signal{0};
+
+extern "C" void request_interrupt(int signal_number) {
+    g_interrupt_signal.store(signal_number);
+    g_interrupt_requested.store(true);
+    // A second signal kills at once, for a user who will not wait.
+    std::signal(signal_number, SIG_DFL);
+}
+
+// Installs the handlers for the render's duration and restores the
+// previous ones after.
+class InterruptHandlers {
+public:
+    InterruptHandlers() {
+        g_interrupt_requested = false;
+        g_interrupt_signal = 0;
+        m_previous_int = std::signal(SIGINT, request_interrupt);
+        m_previous_term = std::signal(SIGTERM, request_interrupt);
+    }
+    ~InterruptHandlers() {
+        std::signal(SIGINT, m_previous_int);
+        std::signal(SIGTERM, m_previous_term);
+    }
+    InterruptHandlers(const InterruptHandlers&) = delete;
+    InterruptHandlers& operator=(const InterruptHandlers&) = delete;
+
+private:
+    void (*m_previous_int)(int) = SIG_DFL;
+    void (*m_previous_term)(int) = SIG_DFL;
+};
+
 struct RenderArguments {
     std::string scene;
     std::string integrator;
@@ -41,6 +92,11 @@ struct RenderArguments {
     int width = 0;
     int height = 0;
     int spp = 0;
+    double time_budget = 0.0;
+    double noise = 0.0;
+    std::string stats;
+    double checkpoint_interval = 0.0;
+    bool resume = false;
     std::uint64_t seed = 0;
     int threads = 0;
     std::string crop;
@@ -52,6 +108,9 @@ struct RenderArguments {
     CLI::Option* height_option = nullptr;
     CLI::Option* spp_option = nullptr;
     CLI::Option* seed_option = nullptr;
+    CLI::Option* time_option = nullptr;
+    CLI::Option* noise_option = nullptr;
+    CLI::Option* checkpoint_option = nullptr;
 };
 
 void print_error(const std::string& message) {
@@ -111,6 +170,18 @@ int check_arguments(const RenderArguments& arguments) {
         print_error("--spp must be at least 1, got " + std::to_string(arguments.spp));
         return kExitUsage;
     }
+    if (arguments.time_option->count() && !(arguments.time_budget > 0.0)) {
+        print_error("--time must be a positive number of seconds");
+        return kExitUsage;
+    }
+    if (arguments.noise_option->count() && !(arguments.noise > 0.0)) {
+        print_error("--noise must be a positive relative error, e.g. 0.05");
+        return kExitUsage;
+    }
+    if (arguments.checkpoint_option->count() && !(arguments.checkpoint_interval > 0.0)) {
+        print_error("--checkpoint must be a positive number of seconds");
+        return kExitUsage;
+    }
     if (arguments.threads < 0) {
         print_error("--threads must be 0 (every core) or positive, got " + std::to_string(arguments.threads));
         return kExitUsage;
@@ -136,16 +207,66 @@ int check_arguments(const RenderArguments& arguments) {
     return 0;
 }
 
-std::string join_parameters(const ParameterSet& parameters) {
+std::vector<std::pair<std::string, std::string>> parameter_list(const ParameterSet& parameters) {
+    std::vector<std::pair<std::string, std::string>> list;
+    for (const auto& [name, value] : parameters.values()) list.emplace_back(name, value);
+    return list;
+}
+
+// What a checkpoint must agree on to be resumed: everything that decides
+// which samples each pixel takes and what they are, but not the time
+// budget (a resumed render gets a budget of its own).
+CheckpointIdentity checkpoint_identity(const RenderArguments& arguments, const RenderOptions& options,
+                                       const std::string& integrator_name, const ParameterSet& parameters) {
     std::string joined;
-    for (const auto& [name, value] : parameters.values()) {
-        if (!joined.empty()) joined += ' ';
-        joined += name + "=" + value;
+    for (const auto& [name, value] : parameters.values()) joined += name + "=" + value + ";";
+    const CropWindow crop = options.crop.value_or(CropWindow{0, 0, options.width, options.height});
+    return {
+        {"scene_hash", content_hash_of_file(arguments.scene)},
+        {"width", std::to_string(options.width)},
+        {"height", std::to_string(options.height)},
+        {"seed", std::to_string(options.seed)},
+        {"integrator", integrator_name},
+        {"parameters", joined},
+        {"crop", std::to_string(crop.x0) + "," + std::to_string(crop.y0) + "," + std::to_string(crop.x1) + "," +
+                     std::to_string(crop.y1)},
+        {"spp", std::to_string(options.samples_per_pixel)},
+        {"max_spp", std::to_string(options.max_samples_per_pixel)},
+        {"noise", std::to_string(options.noise_target)},
+        {"min_samples", std::to_string(options.min_samples)},
+    };
+}
+
+// Seconds since the process started, from the kernel's record of its start
+// time: loading lancer's ~260 shared libraries and their static
+// initialisers takes a measurable part of a second before main() runs, and a
+// --time budget is wall time as the user measures it. 0 if unknown.
+double process_age_seconds() {
+    std::ifstream stat_file("/proc/self/stat");
+    std::string stat((std::istreambuf_iterator<char>(stat_file)), std::istreambuf_iterator<char>());
+    const auto name_end = stat.rfind(')');
+    std::ifstream uptime_file("/proc/uptime");
+    double uptime = 0.0;
+    if (name_end == std::string::npos || !(uptime_file >> uptime)) return 0.0;
+    // Fields after the command name start at field 3; starttime is field 22.
+    std::istringstream fields(stat.substr(name_end + 1));
+    std::string field;
+    for (int index = 3; index <= 22 && (fields >> field); ++index) {
+        if (index == 22) {
+            const double ticks = std::strtod(field.c_str(), nullptr);
+            const double age = uptime - ticks / double(::sysconf(_SC_CLK_TCK));
+            return std::clamp(age, 0.0, 60.0);
+        }
     }
-    return joined;
+    return 0.0;
 }
 
 int run_render(const RenderArguments& arguments) {
+    const auto started = std::chrono::steady_clock::now();
+    const double age_at_start = process_age_seconds();
+    auto seconds_so_far = [&] {
+        return age_at_start + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    };
     if (const int status = check_arguments(arguments)) return status;
 
     // Parse; the command line's size is what POV's image_width/height read.
@@ -255,7 +376,10 @@ int run_render(const RenderArguments& arguments) {
             print_error("plugin '" + plugin.path + "' created no integrator");
             return kExitBadInput;
         }
-        // A deterministic integrator is exact with one sample per pixel.
+        // Samples: a fixed count, or with --time/--noise the per-pixel cap
+        // (only if --spp says so). A deterministic integrator is exact with
+        // one sample per pixel and ignores --time and --noise.
+        const bool progressive = arguments.time_option->count() || arguments.noise_option->count();
         options.samples_per_pixel = arguments.spp_option->count()
                                         ? arguments.spp
                                         : settings.samples.value_or(integrator->is_deterministic() ? 1 : 16);
@@ -266,39 +390,82 @@ int run_render(const RenderArguments& arguments) {
             print_diagnostic(diagnostic);
             return kExitBadInput;
         }
+        if (progressive && arguments.spp_option->count()) options.max_samples_per_pixel = arguments.spp;
+        if (arguments.noise_option->count()) options.noise_target = arguments.noise;
 
-        const std::unique_ptr<RenderScene> scene = RenderScene::compile(graph);
-        integrator->prepare(*scene);
+        const std::string checkpoint_path = checkpoint_path_for(output);
+        const CheckpointIdentity identity = checkpoint_identity(arguments, options, integrator_name, parameters);
+        const std::unique_ptr<RenderScene> compiled = RenderScene::compile(graph);
+        // Prepared and rendered through the same counting wrapper: rays are
+        // counted, and integrators that remember their scene see one object.
+        CountingScene scene(*compiled);
+        integrator->prepare(scene);
         Film film(options.width, options.height);
-        const RenderStats stats = render_image(*scene, *integrator, options, film);
-        // What the host actually took: a deterministic integrator gets one
-        // sample per pixel whatever --spp asks.
-        const std::uint64_t pixels = options.crop ? std::uint64_t(options.crop->x1 - options.crop->x0) *
-                                                        std::uint64_t(options.crop->y1 - options.crop->y0)
-                                                  : std::uint64_t(options.width) * std::uint64_t(options.height);
-        const std::uint64_t spp_taken = pixels > 0 ? stats.samples / pixels : 0;
+        if (arguments.resume) {
+            try {
+                read_checkpoint(checkpoint_path, identity, film);
+            } catch (const CheckpointError& error) {
+                print_error(error.what());
+                return kExitBadInput;
+            }
+        }
+        const bool checkpointing = arguments.checkpoint_option->count() > 0;
+        if (checkpointing) {
+            options.checkpoint_interval_seconds = arguments.checkpoint_interval;
+            options.on_checkpoint = [&](const Film& state) { write_checkpoint(checkpoint_path, identity, state); };
+        }
+        // The budget covers the whole command: what parsing and building
+        // took, and what writing the image will take, come out of it.
+        if (arguments.time_option->count()) {
+            const double reserve =
+                kOutputReserveSeconds + kOutputReserveSecondsPerPixel * double(options.width) * options.height;
+            options.time_budget_seconds = std::max(arguments.time_budget - seconds_so_far() - reserve, 1e-3);
+        }
 
+        InterruptHandlers handlers;
+        options.cancel = &g_interrupt_requested;
+        const RenderStats stats = render_image(scene, *integrator, options, film);
+        const int signal_number = g_interrupt_signal.load();
+
+        // Report and write: image (with per-pixel sample counts in EXR when
+        // they vary), stats, and on interruption a checkpoint to resume.
+        RenderReport report;
+        report.scene = arguments.scene;
+        report.output = output;
+        report.integrator = integrator_name;
+        report.parameters = parameter_list(parameters);
+        report.width = options.width;
+        report.height = options.height;
+        report.seed = options.seed;
+        report.samples_per_pixel = progressive ? options.max_samples_per_pixel : options.samples_per_pixel;
+        report.time_budget_seconds = arguments.time_option->count() ? arguments.time_budget : 0.0;
+        report.noise_target = options.noise_target;
+        report.stats = stats;
         ImageWriteOptions write_options;
-        // write_image stores each key as "lancer:<key>".
-        write_options.metadata = {
-            {"scene", arguments.scene},
-            {"integrator", integrator_name},
-            {"parameters", join_parameters(parameters)},
-            {"spp", std::to_string(spp_taken)},
-            {"seed", std::to_string(options.seed)},
-            {"seconds", std::to_string(stats.seconds)},
-        };
+        write_options.sample_count_channel =
+            stats.interrupted || stats.min_samples_per_pixel != stats.max_samples_per_pixel;
+        write_options.metadata = stats_metadata(report);
         write_image(film, output, write_options);
+        if (stats.interrupted && (checkpointing || arguments.resume))
+            write_checkpoint(checkpoint_path, identity, film);
+        report.total_seconds = seconds_so_far();
+        if (!arguments.stats.empty()) write_stats_json(report, arguments.stats);
 
         if (stats.nonfinite_samples > 0) {
             std::fprintf(stderr, "lancer: warning: %llu non-finite samples (NaN or infinite radiance) were dropped\n",
                          static_cast<unsigned long long>(stats.nonfinite_samples));
         }
-        if (!arguments.quiet) {
-            std::printf("lancer: %dx%d, %llu spp, %s, %.2f s -> %s\n", options.width, options.height,
-                        static_cast<unsigned long long>(spp_taken), integrator_name.c_str(), stats.seconds,
-                        output.c_str());
+        if (stats.interrupted) {
+            const char* name = signal_number == SIGTERM ? "SIGTERM" : "SIGINT";
+            std::fprintf(stderr, "lancer: interrupted by %s after %.1f s: wrote the image so far (%.1f spp, %u-%u) to %s%s\n",
+                         name, report.total_seconds, stats.mean_samples_per_pixel, stats.min_samples_per_pixel,
+                         stats.max_samples_per_pixel, output.c_str(),
+                         checkpointing || arguments.resume ? "; continue with --resume" : "");
+            return 128 + (signal_number > 0 ? signal_number : SIGINT);
         }
+        std::error_code ignored;
+        fs::remove(checkpoint_path, ignored);
+        if (!arguments.quiet) std::printf("%s\n", summary_line(report).c_str());
     } catch (const SceneError& error) {
         print_scene_error(error);
         return kExitBadInput;
@@ -323,6 +490,18 @@ Command add_render_command(CLI::App& app) {
     arguments->height_option = render->add_option("--height", arguments->height, "Image height in pixels");
     arguments->spp_option = render->add_option(
         "--spp", arguments->spp, "Samples per pixel (default: the scene's, else 1 for deterministic integrators, 16)");
+    arguments->time_option = render->add_option(
+        "--time", arguments->time_budget,
+        "Render in passes until SECONDS have passed, counting parsing and writing (--spp then caps samples)");
+    arguments->noise_option = render->add_option(
+        "--noise", arguments->noise,
+        "Adaptive: a pixel stops when its estimated relative error is under E, e.g. 0.05 (--spp caps, default 4096)");
+    render->add_option("--stats", arguments->stats, "Write what the render did to FILE.json");
+    arguments->checkpoint_option = render->add_option(
+        "--checkpoint", arguments->checkpoint_interval,
+        "Save progress every SECONDS to <output>.lancer-checkpoint (removed when the render completes)");
+    render->add_flag("--resume", arguments->resume,
+                     "Continue from <output>.lancer-checkpoint; same scene and settings required");
     arguments->seed_option = render->add_option("--seed", arguments->seed, "Random seed (default: the scene's, else 0)");
     render->add_option("--threads", arguments->threads, "Worker threads (default 0: every core)");
     render->add_option("--crop", arguments->crop, "Render only pixels x0 <= x < x1, y0 <= y < y1");

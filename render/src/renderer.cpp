@@ -1,5 +1,7 @@
-// The host's pixel loop: tiles on oneTBB, deterministic per-sample sampler
-// streams, progress on stderr.
+// The host's pixel loop: passes over tiles on oneTBB, deterministic
+// per-sample sampler streams, a per-pass plan of how many samples each pixel
+// still takes (fixed count, time budget or noise target), progress on
+// stderr.
 #include "lancer/renderer.h"
 
 #include <unistd.h>
@@ -7,33 +9,41 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <mutex>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "lancer/counting_scene.h"
+#include "lancer/estimate.h"
+
 namespace lancer {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Reports finished tiles: a redrawn bar with ETA on a terminal, a line per
-// 10% otherwise, nothing when quiet.
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Reports the fraction done: a redrawn bar with ETA on a terminal, a line
+// per 10% otherwise, nothing when quiet. Safe to call from any thread.
 class Progress {
 public:
-    Progress(ProgressMode mode, int total) : m_total(std::max(total, 1)), m_start(Clock::now()) {
+    explicit Progress(ProgressMode mode) : m_start(Clock::now()) {
         if (mode == ProgressMode::Auto) mode = ::isatty(STDERR_FILENO) ? ProgressMode::Bar : ProgressMode::Lines;
         m_mode = mode;
     }
-    void tile_done() {
-        const int done = ++m_done;
+    void report(double fraction) {
         if (m_mode == ProgressMode::Quiet) return;
+        fraction = std::clamp(fraction, 0.0, 1.0);
         std::lock_guard<std::mutex> lock(m_mutex);
-        const int percent = int(100LL * done / m_total);
-        const double elapsed = std::chrono::duration<double>(Clock::now() - m_start).count();
+        const int percent = int(100.0 * fraction);
+        const double elapsed = seconds_since(m_start);
         if (m_mode == ProgressMode::Lines) {
             const int step = percent / 10 * 10;
             if (step > m_last_percent) {
@@ -42,27 +52,162 @@ public:
             }
             return;
         }
-        if (done < m_total && elapsed - m_last_draw < 0.1) return;
+        if (fraction < 1.0 && elapsed - m_last_draw < 0.1) return;
         m_last_draw = elapsed;
-        const int width = 40;
-        const int filled = width * done / m_total;
-        const double eta = done > 0 ? elapsed * double(m_total - done) / done : 0.0;
-        char bar[width + 1];
-        for (int i = 0; i < width; ++i) bar[i] = i < filled ? '=' : ' ';
-        bar[width] = '\0';
+        constexpr int kWidth = 40;
+        const int filled = int(kWidth * fraction);
+        const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+        char bar[kWidth + 1];
+        for (int i = 0; i < kWidth; ++i) bar[i] = i < filled ? '=' : ' ';
+        bar[kWidth] = '\0';
         std::fprintf(stderr, "\r[%s] %3d%%  elapsed %.1fs  ETA %.1fs ", bar, percent, elapsed, eta);
-        if (done == m_total) std::fprintf(stderr, "\n");
         std::fflush(stderr);
+    }
+    void finish() {
+        if (m_mode == ProgressMode::Bar && m_last_draw >= 0.0) std::fprintf(stderr, "\n");
     }
 
 private:
     ProgressMode m_mode;
-    int m_total;
-    std::atomic<int> m_done{0};
     Clock::time_point m_start;
     std::mutex m_mutex;
     int m_last_percent = -1;
     double m_last_draw = -1.0;
+};
+
+CropWindow clamped_window(const RenderOptions& options, int width, int height) {
+    CropWindow window{0, 0, width, height};
+    if (options.crop) window = *options.crop;
+    window.x0 = std::clamp(window.x0, 0, width);
+    window.x1 = std::clamp(window.x1, window.x0, width);
+    window.y0 = std::clamp(window.y0, 0, height);
+    window.y1 = std::clamp(window.y1, window.y0, height);
+    return window;
+}
+
+enum class Mode { Fixed, Budget, Adaptive };
+
+// Decides, before each pass, how many samples every pixel of the window
+// takes in it. Everything except the time-budget limit is a function of the
+// film alone, so a resumed render plans the same passes as an uninterrupted
+// one. A pixel at most doubles its samples per pass, so the image refines
+// evenly and the estimates that steer adaptive sampling are refreshed often.
+class PassPlanner {
+public:
+    PassPlanner(const RenderOptions& options, bool deterministic, const CropWindow& window)
+        : m_window(window), m_width(window.x1 - window.x0), m_height(window.y1 - window.y0) {
+        const bool budget = !deterministic && options.time_budget_seconds > 0.0;
+        const bool adaptive = !deterministic && options.noise_target > 0.0;
+        m_mode = adaptive ? Mode::Adaptive : budget ? Mode::Budget : Mode::Fixed;
+        if (m_mode == Mode::Fixed) {
+            m_cap = std::uint32_t(std::max(options.samples_per_pixel, 1));
+        } else if (options.max_samples_per_pixel > 0) {
+            m_cap = std::uint32_t(options.max_samples_per_pixel);
+        } else {
+            m_cap = adaptive && !budget ? std::uint32_t(kDefaultAdaptiveCap) : std::uint32_t(1) << 30;
+        }
+        m_noise_target = options.noise_target;
+        m_min_samples = std::uint32_t(std::max(options.min_samples, 2));
+        m_wanted.assign(std::size_t(m_width) * m_height, 0);
+        m_plan.assign(m_wanted.size(), 0);
+        m_relative_variance.assign(m_wanted.size(), 0.0);
+    }
+
+    Mode mode() const { return m_mode; }
+    std::uint32_t cap() const { return m_cap; }
+
+    // Samples each pixel would take next pass without a time limit; returns
+    // their total (0: the render is done).
+    std::uint64_t plan_unlimited(const Film& film) {
+        if (m_mode == Mode::Adaptive) update_relative_variance(film);
+        std::uint64_t total = 0;
+        for (int y = 0; y < m_height; ++y)
+            for (int x = 0; x < m_width; ++x) {
+                const std::size_t i = index(x, y);
+                m_wanted[i] = wanted(film, x, y);
+                total += m_wanted[i];
+            }
+        m_plan = m_wanted;
+        return total;
+    }
+
+    // Lowers the plan so that it costs at most `samples` samples by capping
+    // every pixel at the largest common per-pixel count that fits. Returns
+    // the new total (0 when not even one sample per pixel fits).
+    std::uint64_t limit_to(std::uint64_t samples) {
+        auto total_at = [&](std::uint32_t limit) {
+            std::uint64_t total = 0;
+            for (std::uint32_t wanted : m_wanted) total += std::min(wanted, limit);
+            return total;
+        };
+        std::uint32_t low = 0, high = *std::max_element(m_wanted.begin(), m_wanted.end());
+        if (total_at(high) <= samples) return total_at(high);
+        while (low < high) {  // largest limit whose total fits
+            const std::uint32_t middle = low + (high - low + 1) / 2;
+            if (total_at(middle) <= samples) low = middle;
+            else high = middle - 1;
+        }
+        for (std::size_t i = 0; i < m_plan.size(); ++i) m_plan[i] = std::min(m_wanted[i], low);
+        return total_at(low);
+    }
+
+    // Pixels that want at least one more sample.
+    std::uint64_t pixels_wanting() const {
+        return std::uint64_t(std::count_if(m_wanted.begin(), m_wanted.end(), [](std::uint32_t n) { return n > 0; }));
+    }
+
+    std::uint32_t planned(int x, int y) const { return m_plan[index(x, y)]; }
+
+private:
+    std::size_t index(int x, int y) const { return std::size_t(y) * m_width + x; }
+
+    std::uint32_t wanted(const Film& film, int x, int y) const {
+        const std::uint32_t taken = film.samples_taken(m_window.x0 + x, m_window.y0 + y);
+        if (taken >= m_cap) return 0;
+        const std::uint32_t room = m_cap - taken;
+        const std::uint32_t doubling = std::max<std::uint32_t>(taken, 1);
+        if (m_mode != Mode::Adaptive) return std::min(room, doubling);
+        if (taken < m_min_samples) return std::min({room, doubling, m_min_samples - taken});
+        // Relative error falls as 1/sqrt(n): aim for the n that meets the
+        // target, with 10% to spare, at most doubling per pass.
+        const double error_squared = pooled_relative_variance(x, y);
+        const double target_squared = m_noise_target * m_noise_target;
+        if (error_squared < target_squared) return 0;
+        const double needed = std::ceil(double(taken) * error_squared / target_squared * 1.1);
+        const double extra = std::clamp(needed - double(taken), 1.0, double(doubling));
+        return std::min(room, std::uint32_t(extra));
+    }
+
+    void update_relative_variance(const Film& film) {
+        tbb::parallel_for(0, m_height, [&](int y) {
+            for (int x = 0; x < m_width; ++x)
+                m_relative_variance[index(x, y)] = pixel_relative_variance(film, m_window.x0 + x, m_window.y0 + y);
+        });
+    }
+
+    // The pixel's own estimate, or its 3x3 neighbourhood's mean if larger:
+    // a pixel whose few samples happened to agree (a caustic not yet found)
+    // does not stop while its neighbours are still noisy.
+    double pooled_relative_variance(int x, int y) const {
+        double sum = 0.0;
+        int count = 0;
+        for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, m_height - 1); ++ny)
+            for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, m_width - 1); ++nx) {
+                sum += m_relative_variance[index(nx, ny)];
+                ++count;
+            }
+        return std::max(m_relative_variance[index(x, y)], sum / count);
+    }
+
+    CropWindow m_window;
+    int m_width, m_height;
+    Mode m_mode = Mode::Fixed;
+    std::uint32_t m_cap = 1;
+    std::uint32_t m_min_samples = 16;
+    double m_noise_target = 0.0;
+    std::vector<std::uint32_t> m_wanted;  // per pixel, before any time limit
+    std::vector<std::uint32_t> m_plan;    // per pixel, this pass
+    std::vector<double> m_relative_variance;
 };
 
 }  // namespace
@@ -71,55 +216,151 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
                          Film& film) {
     const auto start = Clock::now();
     const int width = film.width(), height = film.height();
-    CropWindow window{0, 0, width, height};
-    if (options.crop) window = *options.crop;
-    window.x0 = std::clamp(window.x0, 0, width);
-    window.x1 = std::clamp(window.x1, window.x0, width);
-    window.y0 = std::clamp(window.y0, 0, height);
-    window.y1 = std::clamp(window.y1, window.y0, height);
+    const CropWindow window = clamped_window(options, width, height);
     const int tile = std::max(options.tile_size, 1);
     const int tiles_x = (window.x1 - window.x0 + tile - 1) / tile;
     const int tiles_y = (window.y1 - window.y0 + tile - 1) / tile;
     const int tiles = tiles_x * tiles_y;
+    const std::uint64_t window_pixels = std::uint64_t(window.x1 - window.x0) * std::uint64_t(window.y1 - window.y0);
+    const bool deterministic = integrator.is_deterministic();
+    PassPlanner planner(options, deterministic, window);
     // One sample of a deterministic integrator goes through the pixel centre
     // (POV-Ray's picture without antialiasing); more samples, of any
     // integrator, spread over the pixel and antialias.
-    const int samples = std::max(options.samples_per_pixel, 1);
-    const bool pixel_centre = samples == 1 && integrator.is_deterministic();
+    const bool pixel_centre = deterministic && planner.cap() == 1;
     const Camera& camera = scene.camera();
+    const auto* counting = dynamic_cast<const CountingScene*>(&scene);
+    const std::uint64_t rays_before = counting ? counting->rays() : 0;
 
     const std::unique_ptr<Sampler> prototype = integrator.make_sampler(options.seed);
     tbb::enumerable_thread_specific<std::unique_ptr<Sampler>> samplers([&] { return prototype->clone(); });
     const std::uint64_t nonfinite_before = film.nonfinite_samples();
-    Progress progress(options.progress, tiles);
+    Progress progress(options.progress);
+
+    // Budget mode stops at the deadline even mid-pass; the planner keeps
+    // passes short enough that this is only a backstop.
+    const bool has_deadline = planner.mode() == Mode::Budget ||
+                              (planner.mode() == Mode::Adaptive && options.time_budget_seconds > 0.0);
+    const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
+                                      std::chrono::duration<double>(std::max(options.time_budget_seconds, 0.0)));
+    std::atomic<bool> stop{false};
+    auto should_stop = [&] {
+        if (stop.load(std::memory_order_relaxed)) return true;
+        if ((options.cancel && options.cancel->load(std::memory_order_relaxed)) ||
+            (has_deadline && Clock::now() >= deadline)) {
+            stop.store(true, std::memory_order_relaxed);
+            return true;
+        }
+        return false;
+    };
+
+    // Progress: samples against the fixed total, else time against the
+    // budget, else (adaptive alone) the share of pixels that stopped.
+    std::atomic<std::uint64_t> samples_taken{0};
+    const double fixed_total = double(window_pixels) * planner.cap();
+    auto fraction_done = [&](double stopped_pixels_fraction) {
+        if (planner.mode() == Mode::Fixed) return fixed_total > 0 ? double(samples_taken) / fixed_total : 1.0;
+        if (has_deadline) return seconds_since(start) / options.time_budget_seconds;
+        return stopped_pixels_fraction;
+    };
+    double stopped_fraction = 0.0;
 
     auto render_tile = [&](int tile_index) {
         Sampler& sampler = *samplers.local();
         const int tx = tile_index % tiles_x, ty = tile_index / tiles_x;
         const int x_begin = window.x0 + tx * tile, y_begin = window.y0 + ty * tile;
         const int x_end = std::min(x_begin + tile, window.x1), y_end = std::min(y_begin + tile, window.y1);
+        std::uint64_t taken = 0;
         for (int y = y_begin; y < y_end; ++y)
-            for (int x = x_begin; x < x_end; ++x)
-                for (int s = 0; s < samples; ++s) {
-                    sampler.start_sample(x, y, std::uint32_t(s));
+            for (int x = x_begin; x < x_end; ++x) {
+                const std::uint32_t count = planner.planned(x - window.x0, y - window.y0);
+                if (count == 0) continue;
+                if (should_stop()) {
+                    samples_taken += taken;
+                    return;
+                }
+                // The k-th sample of a pixel always uses stream k.
+                const std::uint32_t first = film.samples_taken(x, y);
+                for (std::uint32_t s = first; s < first + count; ++s) {
+                    sampler.start_sample(x, y, s);
                     const Vec2 jitter = pixel_centre ? Vec2(0.5f) : sampler.next_2d();
                     const Ray ray = camera.generate_ray(float(x) + jitter.x, float(y) + jitter.y, width, height);
                     film.add_sample(x, y, integrator.radiance(ray, scene, sampler));
                 }
-        progress.tile_done();
+                taken += count;
+            }
+        samples_taken += taken;
+        progress.report(fraction_done(stopped_fraction));
     };
 
-    tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-    arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& range) {
-            for (int t = range.begin(); t != range.end(); ++t) render_tile(t);
-        });
-    });
-
     RenderStats stats;
-    stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    stats.samples = std::uint64_t(window.x1 - window.x0) * std::uint64_t(window.y1 - window.y0) * samples;
+    tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+    double seconds_per_sample = 0.0;  // measured on the last pass
+    auto last_checkpoint = start;
+    arena.execute([&] {
+        while (!should_stop()) {
+            // Plan the pass; under a time budget, only what fits in 90% of
+            // the time left at the last pass's cost per sample.
+            std::uint64_t planned = planner.plan_unlimited(film);
+            if (planned == 0) break;
+            if (has_deadline && seconds_per_sample > 0.0) {
+                const double remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
+                const double affordable = 0.9 * remaining / seconds_per_sample;
+                planned = planner.limit_to(affordable > 0.0 ? std::uint64_t(affordable) : 0);
+                if (planned == 0) break;
+            }
+            // A fixed render that checkpoints keeps passes within the
+            // interval, so a kill loses at most about that much work.
+            if (planner.mode() == Mode::Fixed && options.checkpoint_interval_seconds > 0.0 &&
+                seconds_per_sample > 0.0) {
+                const double affordable = options.checkpoint_interval_seconds / seconds_per_sample;
+                planned = planner.limit_to(std::max(std::uint64_t(affordable), planner.pixels_wanting()));
+            }
+            stopped_fraction = 1.0 - double(planner.pixels_wanting()) / double(std::max<std::uint64_t>(window_pixels, 1));
+
+            // Render it.
+            const auto pass_start = Clock::now();
+            const std::uint64_t before = samples_taken;
+            tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& range) {
+                for (int t = range.begin(); t != range.end(); ++t) render_tile(t);
+            });
+            ++stats.passes;
+            const std::uint64_t done = samples_taken - before;
+            if (done > 0) seconds_per_sample = seconds_since(pass_start) / double(done);
+
+            // Checkpoint between passes, when the film is consistent.
+            if (options.on_checkpoint && options.checkpoint_interval_seconds > 0.0 && !stop &&
+                seconds_since(last_checkpoint) >= options.checkpoint_interval_seconds) {
+                options.on_checkpoint(film);
+                last_checkpoint = Clock::now();
+            }
+        }
+    });
+    progress.report(1.0);
+    progress.finish();
+
+    // What the render did.
+    stats.seconds = seconds_since(start);
+    stats.samples = samples_taken;
     stats.nonfinite_samples = film.nonfinite_samples() - nonfinite_before;
+    stats.interrupted = options.cancel && options.cancel->load();
+    if (counting) stats.rays = counting->rays() - rays_before;
+    stats.rays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds : 0.0;
+    std::uint64_t sum = 0;
+    std::uint32_t least = std::numeric_limits<std::uint32_t>::max(), most = 0;
+    for (int y = window.y0; y < window.y1; ++y)
+        for (int x = window.x0; x < window.x1; ++x) {
+            const std::uint32_t taken = film.samples_taken(x, y);
+            sum += taken;
+            least = std::min(least, taken);
+            most = std::max(most, taken);
+        }
+    stats.mean_samples_per_pixel = window_pixels > 0 ? double(sum) / double(window_pixels) : 0.0;
+    stats.min_samples_per_pixel = window_pixels > 0 ? least : 0;
+    stats.max_samples_per_pixel = most;
+    if (!deterministic && window_pixels > 0)
+        stats.estimated_rel_rmse =
+            estimated_relative_rmse(film, PixelWindow{window.x0, window.y0, window.x1, window.y1});
     return stats;
 }
 
