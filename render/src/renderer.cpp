@@ -257,9 +257,13 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
     // Progress: samples against the fixed total, else time against the
     // budget, else (adaptive alone) the share of pixels that stopped.
     std::atomic<std::uint64_t> samples_taken{0};
+    std::uint64_t already_taken = 0;  // e.g. resumed from a checkpoint
+    for (int y = window.y0; y < window.y1; ++y)
+        for (int x = window.x0; x < window.x1; ++x) already_taken += std::min(film.samples_taken(x, y), planner.cap());
     const double fixed_total = double(window_pixels) * planner.cap();
     auto fraction_done = [&](double stopped_pixels_fraction) {
-        if (planner.mode() == Mode::Fixed) return fixed_total > 0 ? double(samples_taken) / fixed_total : 1.0;
+        if (planner.mode() == Mode::Fixed)
+            return fixed_total > 0 ? double(already_taken + samples_taken) / fixed_total : 1.0;
         if (has_deadline) return seconds_since(start) / options.time_budget_seconds;
         return stopped_pixels_fraction;
     };
