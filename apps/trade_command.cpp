@@ -6,6 +6,7 @@
 // integrator at a ladder of settings, each timed and compared with the
 // reference (RMSE, relative MSE, SSIM). Writes results.csv, error-versus-
 // time plots and index.html into DIR.
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -15,10 +16,12 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "commands.h"
+#include "lancer/counting_scene.h"
 #include "lancer/image_metrics.h"
 #include "lancer/parser.h"
 #include "lancer/plugin_host.h"
@@ -76,6 +79,13 @@ struct TradeArguments {
     CLI::Option* height_option = nullptr;
     CLI::Option* seed_option = nullptr;
 };
+
+// CPU time of the whole process, every thread.
+double process_cpu_seconds() {
+    timespec now{};
+    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+    return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+}
 
 void print_error(const std::string& message) { std::fprintf(stderr, "lancer: error: %s\n", message.c_str()); }
 
@@ -204,37 +214,53 @@ bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
 struct TimedRender {
     RgbImage image;
     double seconds = 0.0;
+    double cpu_seconds = 0.0;
     std::uint64_t rays = 0;
+    double mean_spp = 0.0;
+    double estimated_rel_rmse = 0.0;
     ReferenceNoise noise;  // the film's own noise, were it a reference
     std::string parameters;   // as resolved
 };
 
+// `noise_target` > 0 renders adaptively, at most `spp` samples per pixel.
 TimedRender render_setting(const PreparedScene& prepared, const Plugin& plugin,
-                           const std::vector<std::string>& parameters, int spp, std::uint64_t seed, int threads) {
+                           const std::vector<std::string>& parameters, int spp, std::uint64_t seed, int threads,
+                           double noise_target = 0.0) {
     const sg::RenderSettings& settings = prepared.graph.render;
     std::map<std::string, sg::ParameterValue> scene_parameters;
     if (settings.integrator && *settings.integrator == plugin.descriptor->name) scene_parameters = settings.parameters;
     const ParameterSet resolved = resolve_parameters(*plugin.descriptor, scene_parameters, parameters);
 
     const Clock::time_point start = Clock::now();
+    const double cpu_start = process_cpu_seconds();
     std::unique_ptr<Integrator> integrator = plugin.descriptor->create(resolved);
     if (!integrator) throw PluginError("plugin '" + plugin.path + "' created no integrator");
-    integrator->prepare(*prepared.scene);
+    // Prepared and rendered through one counting wrapper, as `lancer render`
+    // does: rays are counted and the cost includes the counting.
+    const CountingScene scene(*prepared.scene);
+    integrator->prepare(scene);
     RenderOptions options;
     options.width = prepared.width;
     options.height = prepared.height;
     options.samples_per_pixel = spp;
+    if (noise_target > 0.0) {
+        options.noise_target = noise_target;
+        options.max_samples_per_pixel = spp;
+    }
     options.seed = seed;
     options.threads = threads;
     options.progress = ProgressMode::Quiet;
     Film film(prepared.width, prepared.height);
-    const RenderStats stats = render_image(*prepared.scene, *integrator, options, film);
+    const RenderStats stats = render_image(scene, *integrator, options, film);
 
     TimedRender render;
     render.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    render.cpu_seconds = process_cpu_seconds() - cpu_start;
     render.image = image_from_film(film);
     render.parameters = join_parameters(resolved);
     render.rays = stats.rays;
+    render.mean_spp = stats.mean_samples_per_pixel;
+    render.estimated_rel_rmse = stats.estimated_rel_rmse;
     double variance = 0.0, relative_variance = 0.0;
     for (int y = 0; y < film.height(); ++y)
         for (int x = 0; x < film.width(); ++x) {
@@ -253,8 +279,8 @@ TimedRender render_setting(const PreparedScene& prepared, const Plugin& plugin,
 
 std::string metrics_text(const TradeResult& result) {
     char text[128];
-    std::snprintf(text, sizeof text, "%s, RMSE %.4g, relMSE %.4g, SSIM %.4f", seconds_text(result.seconds).c_str(),
-                  result.rmse, result.rel_mse, result.ssim);
+    std::snprintf(text, sizeof text, "%s, %.1f spp, RMSE %.4g, relMSE %.4g, SSIM %.4f",
+                  seconds_text(result.seconds).c_str(), result.mean_spp, result.rmse, result.rel_mse, result.ssim);
     return text;
 }
 
@@ -323,8 +349,12 @@ int run_trade(const TradeArguments& arguments) {
         // at least half that many for the same scene and settings.
         const Plugin path_plugin = load_plugin("path");
         const std::uint64_t reference_seed = seed + kReferenceSeedOffset;
+        // Twice, keeping the faster: the first render of a process pays for
+        // warming up (threads, caches), which would halve the reference.
         progress.starting("reference: pilot");
-        const TimedRender pilot = render_setting(prepared, path_plugin, kReferenceParameters, 1, reference_seed, arguments.threads);
+        TimedRender pilot = render_setting(prepared, path_plugin, kReferenceParameters, 1, reference_seed, arguments.threads);
+        pilot.seconds = std::min(pilot.seconds, render_setting(prepared, path_plugin, kReferenceParameters, 1,
+                                                               reference_seed, arguments.threads).seconds);
         const int wanted_spp = std::clamp(power_of_two_floor(kReferenceShare * budget / std::max(pilot.seconds, 1e-6)),
                                           kMinReferenceSpp, kMaxReferenceSpp);
         const std::string settings_text = std::string("lancer ") + kLancerVersion + " size " +
@@ -365,7 +395,8 @@ int run_trade(const TradeArguments& arguments) {
         for (std::size_t i = 0; i < ladders.size(); ++i) {
             const std::string& integrator = trade_integrator_order()[i];
             const double allowance = ladder_budget_share(integrator) * ladder_budget + carried;
-            const Plugin plugin = load_plugin(integrator);
+            if (ladders[i].empty()) continue;
+            const Plugin plugin = load_plugin(ladders[i].front().integrator);
             double spent = 0.0;
             const TradeSetting* previous = nullptr;
             double previous_seconds = 0.0;
@@ -375,24 +406,33 @@ int run_trade(const TradeArguments& arguments) {
                 const bool beyond_reference =
                     integrator == "path" &&
                     setting.samples_per_pixel * kReferenceSppOverLadder > run.reference.samples_per_pixel;
+                // Adaptive rungs may spend up to what the reference can measure.
+                const int spp = setting.noise_target > 0.0
+                                    ? std::max(16, run.reference.samples_per_pixel / kReferenceSppOverLadder)
+                                    : setting.samples_per_pixel;
                 const double predicted = previous ? previous_seconds * setting.cost / previous->cost : 0.0;
                 if (previous && (beyond_reference || spent + predicted > allowance)) {
                     progress.skip(int(ladders[i].size() - rung));
                     break;
                 }
                 progress.starting(what);
-                const TimedRender rendered = render_setting(prepared, plugin, setting.parameters,
-                                                            setting.samples_per_pixel, seed, arguments.threads);
+                const TimedRender rendered = render_setting(prepared, plugin, setting.parameters, spp, seed,
+                                                            arguments.threads, setting.noise_target);
                 TradeResult result;
-                result.integrator = integrator;
+                result.curve = integrator;
+                result.integrator = setting.integrator;
                 result.setting = setting.label();
                 result.seconds = rendered.seconds;
+                result.cpu_seconds = rendered.cpu_seconds;
                 result.rays = rendered.rays;
+                result.mean_spp = rendered.mean_spp;
+                result.estimated_rel_rmse = rendered.estimated_rel_rmse;
                 result.rmse = rmse(rendered.image, reference->image);
                 result.rel_mse = relative_mse(rendered.image, reference->image);
                 result.ssim = ssim(rendered.image, reference->image);
-                result.image = "renders/" + integrator + "_" + setting.slug() + ".png";
-                result.heat_map = "heatmaps/" + integrator + "_" + setting.slug() + ".png";
+                const std::string stem = setting.integrator + "_" + setting.slug();
+                result.image = "renders/" + stem + ".png";
+                result.heat_map = "heatmaps/" + stem + ".png";
                 write_rgb_image(rendered.image, (out / result.image).string());
                 write_rgb_image(error_heat_map(rendered.image, reference->image), (out / result.heat_map).string());
                 progress.finished(what, metrics_text(result));
@@ -416,8 +456,10 @@ int run_trade(const TradeArguments& arguments) {
         std::ofstream(out / "index.html") << report_html(run, plots);
 
         const double total = std::chrono::duration<double>(Clock::now() - run_start).count();
+        std::set<std::string> integrators;
+        for (const TradeResult& result : run.results) integrators.insert(result.integrator);
         std::printf("trade: %zu renders of %zu integrators in %s; wrote %s, %s and %s\n", run.results.size(),
-                    trade_integrator_order().size(), seconds_text(total).c_str(), (out / "results.csv").c_str(),
+                    integrators.size(), seconds_text(total).c_str(), (out / "results.csv").c_str(),
                     (out / plots.front()).c_str(), (out / "index.html").c_str());
     } catch (const SceneError& error) {
         print_error(std::string(error.what()));

@@ -1,6 +1,8 @@
 // Ladders of settings for `lancer trade`.
 #include "trade_ladder.h"
 
+#include <cstdio>
+
 namespace lancer::app {
 namespace {
 
@@ -18,6 +20,11 @@ TradeSetting setting(const std::string& integrator, std::vector<std::string> par
 std::string TradeSetting::label() const {
     std::string text;
     for (const std::string& parameter : parameters) text += parameter + " ";
+    if (noise_target > 0.0) {
+        char target[32];
+        std::snprintf(target, sizeof target, "noise=%g", noise_target);
+        return text + target;
+    }
     return text + "spp=" + std::to_string(samples_per_pixel);
 }
 
@@ -25,6 +32,7 @@ std::string TradeSetting::slug() const {
     std::string text;
     for (char c : label()) {
         if (c == ' ') text += '_';
+        else if (c == '.') text += 'p';
         else if (c != '=') text += c;
     }
     return text;
@@ -67,6 +75,14 @@ std::vector<TradeSetting> trade_ladder(const std::string& integrator, bool quick
         // Unbiased: only samples. Powers of 4 halve the noise at each rung.
         const int top = quick ? 256 : 4096;
         for (int spp = 1; spp <= top; spp *= quick ? 4 : 2) ladder.push_back(setting(integrator, {}, spp, 8));
+    } else if (integrator == "path --noise") {
+        // Adaptive sampling: what --noise buys over the same error at fixed
+        // spp. The cost guess (as spp ~ 1/target²) only orders the rungs.
+        for (double target : quick ? std::vector<double>{0.2, 0.1} : std::vector<double>{0.2, 0.1, 0.05, 0.025}) {
+            TradeSetting s = setting("path", {}, 1, 8.0 / (target * target));
+            s.noise_target = target;
+            ladder.push_back(s);
+        }
     }
     return ladder;
 }
@@ -76,7 +92,8 @@ double ladder_budget_share(const std::string& integrator) {
     if (integrator == "shadow") return 0.15;
     if (integrator == "whitted") return 0.10;
     if (integrator == "gather") return 0.30;
-    if (integrator == "path") return 0.40;
+    if (integrator == "path") return 0.30;
+    if (integrator == "path --noise") return 0.10;
     return 0.10;
 }
 

@@ -11,11 +11,15 @@ struct TradeSetting {
     std::string integrator;
     std::vector<std::string> parameters;  // key=value, as `lancer render -p`
     int samples_per_pixel = 1;
+    // > 0: adaptive (`lancer render --noise`): each pixel stops when its
+    // estimated relative error falls under this; samples_per_pixel is then
+    // ignored and the cap comes from the reference.
+    double noise_target = 0.0;
     // Relative cost (rays per pixel, roughly): the time of the next setting
     // is predicted from the last one's by the ratio of their costs.
     double cost = 1.0;
 
-    // "n=64 spp=4": the parameters then the samples.
+    // "n=64 spp=4": the parameters then the samples; "noise=0.05" when adaptive.
     std::string label() const;
     // "n64_spp4": the label as a file name.
     std::string slug() const;

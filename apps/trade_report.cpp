@@ -65,25 +65,26 @@ code { background: #f2f2f2; padding: 0 0.2em; }
 }  // namespace
 
 const std::vector<std::string>& trade_integrator_order() {
-    static const std::vector<std::string> order = {"raycast", "shadow", "whitted", "gather", "path"};
+    static const std::vector<std::string> order = {"raycast", "shadow", "whitted", "gather", "path", "path --noise"};
     return order;
 }
 
 std::string integrator_colour(const std::string& integrator) {
     static const std::map<std::string, std::string> colours = {
         {"raycast", "#7f7f7f"}, {"shadow", "#1f77b4"}, {"whitted", "#2ca02c"},
-        {"gather", "#ff7f0e"},  {"path", "#d62728"}};
+        {"gather", "#ff7f0e"},  {"path", "#d62728"},      {"path --noise", "#9467bd"}};
     const auto found = colours.find(integrator);
-    return found != colours.end() ? found->second : "#9467bd";
+    return found != colours.end() ? found->second : "#8c564b";
 }
 
 std::string results_csv(const TradeRun& run) {
     std::ostringstream csv;
-    csv << "integrator,setting,seconds,rays,rmse,rel_mse,ssim\n";
+    csv << "integrator,setting,seconds,rays,rmse,rel_mse,ssim,cpu_seconds,mean_spp,estimated_rel_rmse\n";
     for (const TradeResult& r : run.results) {
         csv << csv_field(r.integrator) << ',' << csv_field(r.setting) << ',' << format("%.6g", r.seconds) << ','
             << r.rays << ',' << format("%.6g", r.rmse) << ',' << format("%.6g", r.rel_mse) << ','
-            << format("%.6g", r.ssim) << '\n';
+            << format("%.6g", r.ssim) << ',' << format("%.6g", r.cpu_seconds) << ',' << format("%.6g", r.mean_spp)
+            << ',' << format("%.6g", r.estimated_rel_rmse) << '\n';
     }
     return csv.str();
 }
@@ -101,7 +102,7 @@ std::string error_plot_svg(const TradeRun& run, const std::string& metric) {
         series.name = integrator;
         series.colour = integrator_colour(integrator);
         for (const TradeResult& r : run.results)
-            if (r.integrator == integrator)
+            if (r.curve == integrator)
                 series.points.push_back({r.seconds, metric_value(r, metric), r.setting});
         if (!series.points.empty()) plot.series.push_back(std::move(series));
     }
@@ -149,12 +150,12 @@ std::string report_html(const TradeRun& run, const std::vector<std::string>& plo
          << " spp</figcaption></figure></div>\n";
     for (const std::string& integrator : trade_integrator_order()) {
         bool any = false;
-        for (const TradeResult& r : run.results) any = any || r.integrator == integrator;
+        for (const TradeResult& r : run.results) any = any || r.curve == integrator;
         if (!any) continue;
         html << "<h3 style=\"color:" << integrator_colour(integrator) << "\">" << escape_xml(integrator)
              << "</h3>\n<div class=\"row\">\n";
         for (const TradeResult& r : run.results) {
-            if (r.integrator != integrator) continue;
+            if (r.curve != integrator) continue;
             html << "<figure><div class=\"pair\"><img src=\"" << escape_xml(r.image) << "\" width=\"" << run.width
                  << "\" alt=\"render\"><img src=\"" << escape_xml(r.heat_map) << "\" width=\"" << run.width
                  << "\" alt=\"heat map\"></div><figcaption><b>" << escape_xml(r.setting) << "</b>: "
@@ -166,13 +167,18 @@ std::string report_html(const TradeRun& run, const std::vector<std::string>& plo
     }
 
     // The table, as in results.csv.
-    html << "<h2>Numbers</h2>\n<p>Also in <a href=\"results.csv\">results.csv</a>. Rays are 0 when the "
-            "renderer did not count them.</p>\n<table><tr><th>integrator</th><th>setting</th><th>seconds</th>"
-            "<th>rays</th><th>RMSE</th><th>rel MSE</th><th>SSIM</th></tr>\n";
+    html << "<h2>Numbers</h2>\n<p>Also in <a href=\"results.csv\">results.csv</a>. Rays count every "
+            "intersection and shadow query. The estimated relative RMSE is the renderer's own, from each pixel's "
+            "variance (what <code>--noise</code> steers by); the true one is sqrt(rel MSE) against the "
+            "reference.</p>\n<table><tr><th>integrator</th><th>setting</th><th>seconds</th>"
+            "<th>rays</th><th>RMSE</th><th>rel MSE</th><th>SSIM</th><th>CPU seconds</th><th>mean spp</th>"
+            "<th>estimated rel. RMSE</th><th>true rel. RMSE</th></tr>\n";
     for (const TradeResult& r : run.results)
         html << "<tr><td>" << escape_xml(r.integrator) << "</td><td>" << escape_xml(r.setting) << "</td><td>"
              << format("%.3f", r.seconds) << "</td><td>" << r.rays << "</td><td>" << format("%.4g", r.rmse)
-             << "</td><td>" << format("%.4g", r.rel_mse) << "</td><td>" << format("%.4f", r.ssim)
+             << "</td><td>" << format("%.4g", r.rel_mse) << "</td><td>" << format("%.4f", r.ssim) << "</td><td>"
+             << format("%.3f", r.cpu_seconds) << "</td><td>" << format("%.1f", r.mean_spp) << "</td><td>"
+             << format("%.4g", r.estimated_rel_rmse) << "</td><td>" << format("%.4g", std::sqrt(r.rel_mse))
              << "</td></tr>\n";
     html << "</table>\n</body></html>\n";
     return html.str();

@@ -11,10 +11,16 @@ namespace lancer::app {
 
 // One render of the ladder and its errors against the reference.
 struct TradeResult {
+    std::string curve;  // the plot's series: the integrator, or "path --noise"
     std::string integrator;
     std::string setting;  // "n=64 spp=4"
-    double seconds = 0.0;
-    std::uint64_t rays = 0;  // 0 when the renderer does not count them
+    double seconds = 0.0;      // wall clock, what the user waits
+    double cpu_seconds = 0.0;  // over every thread: steadier on a shared machine
+    std::uint64_t rays = 0;    // ray queries (intersect and occluded)
+    // The renderer's own estimate of the relative RMSE (as --noise uses it);
+    // compare with sqrt(rel_mse), the true one. 0 for deterministic renders.
+    double estimated_rel_rmse = 0.0;
+    double mean_spp = 0.0;  // samples per pixel taken (adaptive: the mean)
     double rmse = 0.0;
     double rel_mse = 0.0;
     double ssim = 0.0;
@@ -43,11 +49,14 @@ struct TradeRun {
     std::vector<TradeResult> results;
 };
 
-// The integrators in the order every table, plot and legend uses.
+// The integrators in the order every table, plot and legend uses; "path
+// --noise" is path with adaptive sampling, shown as its own curve.
 const std::vector<std::string>& trade_integrator_order();
 std::string integrator_colour(const std::string& integrator);
 
-// One header line, then one line per result; numbers in full precision.
+// One header line, then one line per result: integrator, setting, seconds,
+// rays, rmse, rel_mse, ssim, then cpu_seconds, mean_spp and
+// estimated_rel_rmse (last, so readers of the first seven are unaffected).
 std::string results_csv(const TradeRun& run);
 
 // Error against time, one curve per integrator; `metric` is "rmse",

@@ -64,15 +64,22 @@ TEST_F(TradeCommand, MeasuresEveryIntegratorAndWritesTheReport) {
     std::istringstream lines(csv);
     std::string line;
     std::getline(lines, line);
-    EXPECT_EQ(line, "integrator,setting,seconds,rays,rmse,rel_mse,ssim");
+    EXPECT_EQ(line, "integrator,setting,seconds,rays,rmse,rel_mse,ssim,cpu_seconds,mean_spp,estimated_rel_rmse");
     std::set<std::string> integrators;
     int rows = 0;
+    bool adaptive = false;
     while (std::getline(lines, line)) {
         ++rows;
         integrators.insert(line.substr(0, line.find(',')));
-        // Seven fields, numbers where numbers belong.
-        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 6) << line;
+        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 9) << line;
+        adaptive = adaptive || line.rfind("path,noise=", 0) == 0;
+        // Rays are counted for every render.
+        std::istringstream fields(line);
+        std::string field;
+        for (int i = 0; i < 4; ++i) std::getline(fields, field, ',');
+        EXPECT_GT(std::stoull(field), 0u) << line;
     }
+    EXPECT_TRUE(adaptive) << "no path --noise rung in " << csv;
     EXPECT_EQ(integrators, (std::set<std::string>{"raycast", "shadow", "whitted", "gather", "path"}));
     EXPECT_GE(rows, 10);
 
