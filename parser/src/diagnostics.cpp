@@ -97,9 +97,14 @@ std::string Evaluator::suggestion(const std::string& name) const {
     return best;
 }
 
-void Evaluator::error(const sg::SourceLocation& where, const std::string& message) {
+bool Evaluator::add_diagnostic(Diagnostic::Severity severity, const sg::SourceLocation& where, const std::string& message) {
+    if (severity != Diagnostic::Severity::Error) {
+        // A warning inside a loop repeats every iteration: keep the first
+        // ones and drop the rest, so a long loop cannot fill memory.
+        if (++m_warning_count > kMaxWarnings) return false;
+    }
     Diagnostic diagnostic;
-    diagnostic.severity = Diagnostic::Severity::Error;
+    diagnostic.severity = severity;
     diagnostic.location = where;
     diagnostic.message = message;
     if (where.file) {
@@ -110,6 +115,19 @@ void Evaluator::error(const sg::SourceLocation& where, const std::string& messag
             diagnostic.source_line = buffer->second->lines[where.line - 1];
     }
     m_diagnostics.push_back(std::move(diagnostic));
+    if (m_warning_count == kMaxWarnings && severity != Diagnostic::Severity::Error) {
+        Diagnostic last;
+        last.severity = Diagnostic::Severity::Note;
+        last.location = where;
+        last.location.column = 0;
+        last.message = "more than " + std::to_string(kMaxWarnings) + " warnings and notes; the rest are not shown";
+        m_diagnostics.push_back(std::move(last));
+    }
+    return true;
+}
+
+void Evaluator::error(const sg::SourceLocation& where, const std::string& message) {
+    add_diagnostic(Diagnostic::Severity::Error, where, message);
     if (++m_error_count >= 30) {
         if (m_error_count == 30) note(where, "too many errors; stopping");
         abort_parse();
@@ -117,14 +135,11 @@ void Evaluator::error(const sg::SourceLocation& where, const std::string& messag
 }
 
 void Evaluator::warning(const sg::SourceLocation& where, const std::string& message) {
-    error(where, message);
-    --m_error_count;
-    m_diagnostics.back().severity = Diagnostic::Severity::Warning;
+    add_diagnostic(Diagnostic::Severity::Warning, where, message);
 }
 
 void Evaluator::note(const sg::SourceLocation& where, const std::string& message) {
-    warning(where, message);
-    m_diagnostics.back().severity = Diagnostic::Severity::Note;
+    add_diagnostic(Diagnostic::Severity::Note, where, message);
 }
 
 void Evaluator::ignored(const sg::SourceLocation& where, const std::string& what) {

@@ -504,8 +504,9 @@ void Evaluator::directive_message(const RawToken& d) {
     std::string text = message.kind == Value::Kind::String ? message.text : describe(message);
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
     if (d.text == "debug") {
-        note(d.location, "#debug: " + text);
-        m_diagnostics.back().location.column = 0;  // a message, not a place to point at
+        sg::SourceLocation where = d.location;
+        where.column = 0;  // a message, not a place to point at
+        note(where, "#debug: " + text);
     } else if (d.text == "warning") {
         warning(d.location, text);
     } else {

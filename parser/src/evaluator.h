@@ -70,6 +70,9 @@ public:
     void error(const sg::SourceLocation& where, const std::string& message);
     void warning(const sg::SourceLocation& where, const std::string& message);
     void note(const sg::SourceLocation& where, const std::string& message);
+    // Stores a diagnostic; false when a warning or note was dropped (past kMaxWarnings).
+    bool add_diagnostic(Diagnostic::Severity severity, const sg::SourceLocation& where, const std::string& message);
+    static constexpr int kMaxWarnings = 200;
     void ignored(const sg::SourceLocation& where, const std::string& what);
     void hint(const sg::SourceLocation& where, const std::string& what);
     void unknown_identifier(const std::string& name, const sg::SourceLocation& where, const std::string& expected);
@@ -243,6 +246,7 @@ private:
     ParseOptions m_options;
     std::vector<std::string> m_safe_roots;  // canonical; set by run() in safe mode
     long m_triangles = 0;
+    int m_warning_count = 0;  // warnings and notes, stored or dropped
     bool m_triangle_limit_reported = false;
     sg::SceneGraph m_scene;
     std::vector<Diagnostic> m_diagnostics;

@@ -7,7 +7,7 @@ OUT_DIR/scene/   every scene in scenes/, every include in include/, every
                  scene string of the parser tests (raw strings and the
                  malformed-scene table), and tests/fuzz/regressions/*.pov
 OUT_DIR/obj/     every OBJ in scenes/ (with its MTL appended after "#MTL",
-                 the layout fuzz_obj.cpp expects), small hand-made OBJ cases,
+                 the layout fuzz_obj.cc expects), small hand-made OBJ cases,
                  and tests/fuzz/regressions/*.obj
 OUT_DIR/scene.dict  the grammar's keywords and punctuation, for -dict=
 """

@@ -1,0 +1,65 @@
+// Inputs found by fuzzing (tests/fuzz, docs/robustness.md) and the bugs they
+// led to, kept so they stay fixed. Each input is inline; the longer ones are
+// also seeds in tests/fuzz/regressions/.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "parse_test_helpers.h"
+
+namespace lancer::test {
+
+namespace {
+
+int count(const ParseResult& result, Diagnostic::Severity severity) {
+    int n = 0;
+    for (const auto& d : result.diagnostics) n += d.severity == severity;
+    return n;
+}
+
+}  // namespace
+
+// fuzz_scene timeout (slow_unknown_identifier_in_loop.pov): an unknown
+// 120-character name inside a #for body is reported every iteration, each
+// time with a "did you mean" search over colors.inc. Not a hang (the
+// fuzzing machine was loaded), but errors must stay bounded: 30, then stop.
+TEST(FuzzRegression, ErrorsInALoopStopAtThirty) {
+    std::string name = "St" + std::string(120, 'z') + "eps";
+    ParseResult result = parse_scene_string("#include \"colors.inc\"\n#for (I, 0, 100000)\n#local F = I / (" + name +
+                                                " - 1);\n#end\n",
+                                            "loop.pov");
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(count(result, Diagnostic::Severity::Error), 30);
+    EXPECT_NE(all_diagnostics(result).find("too many errors; stopping"), std::string::npos);
+}
+
+// Found while triaging the above: warnings were not bounded at all, so a
+// warning in a long loop stored one diagnostic (with its source line) per
+// iteration: 10^6 iterations, hundreds of MB. Now the first 200 are kept.
+TEST(FuzzRegression, WarningsInALoopAreBounded) {
+    ParseResult result = parse_scene_string("#for (I, 0, 99999)\n#warning \"again\"\n#end\nsphere { 0, 1 }\n", "loop.pov");
+    ASSERT_TRUE(result.ok()) << all_diagnostics(result);
+    EXPECT_EQ(count(result, Diagnostic::Severity::Warning), 200);
+    EXPECT_NE(all_diagnostics(result).find("more than 200 warnings and notes; the rest are not shown"), std::string::npos);
+}
+
+// Also from that triage: a warning used to count as an error for the
+// 30-error stop, so 29 errors and one warning ended the parse early.
+TEST(FuzzRegression, AWarningDoesNotCountAsAnError) {
+    std::string scene;
+    for (int i = 0; i < 29; ++i) scene += "sphere { 0, -1 }\n";
+    scene += "#warning \"only a warning\"\nsphere { 0, -2 }\n";
+    ParseResult result = parse_scene_string(scene, "many.pov");
+    EXPECT_EQ(count(result, Diagnostic::Severity::Error), 30);
+    EXPECT_NE(all_diagnostics(result).find("only a warning"), std::string::npos);
+}
+
+// #debug prints a message without a caret (its location has no column).
+TEST(FuzzRegression, DebugMessageHasNoCaret) {
+    ParseResult result = parse_scene_string("#debug \"hello\"\nsphere { 0, 1 }\n", "debug.pov");
+    ASSERT_TRUE(result.ok());
+    ASSERT_FALSE(result.diagnostics.empty());
+    EXPECT_EQ(format_diagnostic(result.diagnostics.front()), "debug.pov:1: note: #debug: hello\n");
+}
+
+}  // namespace lancer::test
