@@ -23,6 +23,9 @@ function(lancer_add_integrator name)
     set_target_properties(lancer_integrator_${name} PROPERTIES
       LIBRARY_OUTPUT_DIRECTORY ${LANCER_PLUGIN_OUTPUT_DIR})
   endif()
+  # Every plugin target, so tests/ can build after all of them (the golden
+  # and plugin tests dlopen the built plugins).
+  set_property(GLOBAL APPEND PROPERTY LANCER_INTEGRATOR_TARGETS lancer_integrator_${name})
   if(LANCER_PLUGIN_INSTALL_DIR)
     # Installed in tree: <prefix>/lib/lancer/plugins, two levels below liblancer.so.
     set_target_properties(lancer_integrator_${name} PROPERTIES INSTALL_RPATH "$ORIGIN/../..")
