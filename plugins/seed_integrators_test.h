@@ -11,10 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "image_compare.h"
 #include "lancer/film.h"
-#include "lancer/image_io.h"
-#include "lancer/parser.h"
 #include "lancer/integrator.h"
 #include "lancer/plugin_host.h"
 #include "lancer/render_scene.h"
@@ -150,64 +147,6 @@ inline sg::Camera camera(const sg::Vec3& location, const sg::Vec3& direction) {
     return c;
 }
 
-// A scene of the corpus (scenes/NAME.pov), parsed for a width x height image.
-inline sg::SceneGraph corpus_scene(const std::string& name, int width, int height) {
-    ParseOptions options;
-    options.image_width = width;
-    options.image_height = height;
-    options.image_size_from_command_line = true;
-    const ParseResult parsed = parse_scene_file(std::string(LANCER_SOURCE_DIR) + "/scenes/" + name + ".pov", options);
-    if (!parsed.ok()) {
-        std::string message;
-        for (const Diagnostic& d : parsed.diagnostics) message += format_diagnostic(d) + "\n";
-        throw std::runtime_error(message);
-    }
-    return *parsed.scene;
-}
-
-// The film as an image for tests/image_compare.h, each channel mapped by
-// v / (1 + v): bright lamps stay comparable with the same thresholds as the
-// rest, and the golden's half-float rounding stays under them.
-inline testing::Image to_compressed_image(const Film& film) {
-    testing::Image image;
-    image.width = film.width();
-    image.height = film.height();
-    for (int y = 0; y < film.height(); ++y)
-        for (int x = 0; x < film.width(); ++x) {
-            const Color c = film.mean(x, y);
-            image.rgb.insert(image.rgb.end(), {c.r / (1.0f + c.r), c.g / (1.0f + c.g), c.b / (1.0f + c.b)});
-        }
-    return image;
-}
-
-// Golden-image regression: renders scenes/SCENE.pov small with the
-// integrator and compares it with plugins/INTEGRATOR/golden/SCENE.exr
-// (linear). LANCER_UPDATE_GOLDEN=1 rewrites the golden instead; a golden is
-// a claim about the right answer, so say in the commit how the new one was
-// checked. On failure, render | golden | difference is written beside the
-// build for inspection.
-inline void expect_matches_golden(const std::string& integrator, const std::string& scene_name,
-                                  const std::map<std::string, std::string>& parameters, int width, int height,
-                                  int samples = 1) {
-    const auto scene = RenderScene::compile(corpus_scene(scene_name, width, height));
-    const auto loaded = load_integrator(integrator, *scene, parameters);
-    const Film film = render_small(*scene, *loaded, width, height, samples);
-    const std::string golden = std::string(LANCER_SOURCE_DIR) + "/plugins/" + integrator + "/golden/" + scene_name + ".exr";
-    if (const char* update = std::getenv("LANCER_UPDATE_GOLDEN"); update != nullptr && std::string(update) == "1") {
-        write_image(film, golden);
-        return;
-    }
-    // EXR goldens may be half floats (3 significant digits): the thresholds
-    // allow that rounding and a few pixels flipped along silhouettes by
-    // floating-point changes in the core, nothing more.
-    testing::Image expected = testing::load_image(golden);
-    for (float& v : expected.rgb) v = v / (1.0f + v);
-    std::string message;
-    const bool same = testing::images_match(to_compressed_image(film), expected, 1e-3, 0.01,
-                                            long(width) * height / 100,
-                                            std::string(LANCER_BINARY_DIR) + "/golden_failure_" + integrator + "_" + scene_name,
-                                            &message);
-    EXPECT_TRUE(same) << integrator << " on " << scene_name << ": " << message;
-}
+// Golden images over scenes/ live in tests/golden/ (tests/golden_image_test.cpp).
 
 }  // namespace lancer::seed_test

@@ -164,11 +164,5 @@ TEST(GatherIntegrator, RejectsOutOfRangeParameters) {
             << bad;
 }
 
-// Golden image over the corpus: the Cornell box with the fixed lattice
-// (jitter 0 is deterministic, so the comparison is exact up to rounding).
-TEST(GatherIntegrator, GoldenCornellBoxFixedLattice) {
-    expect_matches_golden("gather", "cornell_box", {{"jitter", "0"}}, 48, 48);
-}
-
 }  // namespace
 }  // namespace lancer

@@ -137,10 +137,5 @@ TEST(ShadowIntegrator, RejectsNegativeAreaSamples) {
     EXPECT_THROW(plugin.descriptor->create(parameters), std::invalid_argument);
 }
 
-// Golden image over the corpus: the scene written to show hard shadows.
-// Regression guard; the golden was checked against path with max_depth=1 and
-// every light sampled (exact direct light), rendered without ambient.
-TEST(ShadowIntegrator, GoldenHardShadows) { expect_matches_golden("shadow", "hard_shadows", {}, 64, 48); }
-
 }  // namespace
 }  // namespace lancer

@@ -192,12 +192,5 @@ TEST(WhittedIntegrator, RejectsNegativeDepth) {
                  std::invalid_argument);
 }
 
-// Golden images over the corpus: deep mirror recursion; the demo's mirror,
-// Fresnel glass and area light.
-TEST(WhittedIntegrator, GoldenFacingMirrors) { expect_matches_golden("whitted", "facing_mirrors", {}, 64, 48); }
-TEST(WhittedIntegrator, GoldenDemoWithFresnel) {
-    expect_matches_golden("whitted", "demo", {{"fresnel", "true"}}, 64, 48);
-}
-
 }  // namespace
 }  // namespace lancer

@@ -1,5 +1,6 @@
 // Shows the directive layer: #declare/#local, #while, #for, #if, #switch and
 // a #macro that emits objects, all building a small grid of spheres.
+// Suits: raycast (a language scene: the picture only proves it evaluates).
 #version 3.7;
 #include "colors.inc"
 global_settings { assumed_gamma 1.0 }

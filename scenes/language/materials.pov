@@ -1,6 +1,7 @@
 // Shows materials and lights: declared textures, finishes with phong,
 // specular and reflection, an interior with ior, an emitting object, a
 // rectangular area light, the sphere-light extension and render_settings.
+// Suits: raycast, path (reference: emitters and area lights).
 #version 3.7;
 #include "colors.inc"
 global_settings { assumed_gamma 1.0 max_trace_level 6 }

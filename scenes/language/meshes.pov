@@ -1,5 +1,6 @@
 // Shows triangle geometry: triangle, smooth_triangle, mesh with a
 // per-triangle texture, and mesh2 with normals and uv coordinates.
+// Suits: raycast (a language scene: the picture only proves it evaluates).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 3, -6> look_at <0, 0.5, 0> }
