@@ -95,7 +95,7 @@ std::string reference_key(const fs::path& scene, const std::vector<std::string>&
     return hash.hex();
 }
 
-std::optional<CachedReference> ReferenceCache::find(const std::string& key, int minimum_spp) const {
+std::optional<CachedReference> ReferenceCache::find(const std::string& key) const {
     std::error_code error;
     if (!fs::is_directory(m_folder, error)) return std::nullopt;
     // The entry with the most samples under this key.
@@ -107,7 +107,7 @@ std::optional<CachedReference> ReferenceCache::find(const std::string& key, int 
         const int spp = std::atoi(name.c_str() + prefix.size());
         if (spp > best_spp) best_spp = spp;
     }
-    if (best_spp < minimum_spp || best_spp <= 0) return std::nullopt;
+    if (best_spp <= 0) return std::nullopt;
     CachedReference reference;
     reference.samples_per_pixel = best_spp;
     reference.file = entry_stem(m_folder, key, best_spp).replace_extension(".exr");
@@ -121,20 +121,23 @@ std::optional<CachedReference> ReferenceCache::find(const std::string& key, int 
     while (noise >> word)
         if (word.rfind("noise_rmse=", 0) == 0) reference.noise.rmse = std::atof(word.c_str() + 11);
         else if (word.rfind("noise_rel_mse=", 0) == 0) reference.noise.rel_mse = std::atof(word.c_str() + 14);
+        else if (word.rfind("seconds=", 0) == 0) reference.render_seconds = std::atof(word.c_str() + 8);
     return reference;
 }
 
 CachedReference ReferenceCache::store(const std::string& key, const RgbImage& image, int samples_per_pixel,
-                                      const ReferenceNoise& noise) const {
+                                      const ReferenceNoise& noise, double render_seconds) const {
     fs::create_directories(m_folder);
     CachedReference reference;
     reference.image = image;
     reference.samples_per_pixel = samples_per_pixel;
     reference.noise = noise;
+    reference.render_seconds = render_seconds;
     reference.file = entry_stem(m_folder, key, samples_per_pixel).replace_extension(".exr");
     // The note first: an entry is found by its EXR, which is written atomically.
     std::ofstream(entry_stem(m_folder, key, samples_per_pixel).replace_extension(".txt"))
-        << "spp=" << samples_per_pixel << " noise_rmse=" << noise.rmse << " noise_rel_mse=" << noise.rel_mse << "\n";
+        << "spp=" << samples_per_pixel << " noise_rmse=" << noise.rmse << " noise_rel_mse=" << noise.rel_mse
+        << " seconds=" << render_seconds << "\n";
     write_rgb_image(image, reference.file.string());
     return reference;
 }

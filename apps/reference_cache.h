@@ -35,6 +35,7 @@ struct CachedReference {
     RgbImage image;
     int samples_per_pixel = 0;
     ReferenceNoise noise;
+    double render_seconds = 0.0;  // what it cost to render, as recorded
     std::filesystem::path file;
 };
 
@@ -46,13 +47,12 @@ public:
 
     const std::filesystem::path& folder() const { return m_folder; }
 
-    // The entry under `key` with the most samples, if it has at least
-    // `minimum_spp`; unreadable entries are skipped.
-    std::optional<CachedReference> find(const std::string& key, int minimum_spp) const;
+    // The entry under `key` with the most samples, if any is readable.
+    std::optional<CachedReference> find(const std::string& key) const;
 
     // Writes the entry (creating the folder) and returns it. Throws on I/O failure.
     CachedReference store(const std::string& key, const RgbImage& image, int samples_per_pixel,
-                          const ReferenceNoise& noise) const;
+                          const ReferenceNoise& noise, double render_seconds) const;
 
 private:
     std::filesystem::path m_folder;

@@ -209,8 +209,17 @@ bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
     return true;
 }
 
-// One render: the plugin's integrator with the scene's parameters for it
-// (when the scene names it) under the ladder's, timed from prepare() on.
+// The plugin's parameters: the scene's (when the scene names this
+// integrator) under `parameters`.
+ParameterSet resolve_for(const PreparedScene& prepared, const Plugin& plugin,
+                         const std::vector<std::string>& parameters) {
+    const sg::RenderSettings& settings = prepared.graph.render;
+    std::map<std::string, sg::ParameterValue> scene_parameters;
+    if (settings.integrator && *settings.integrator == plugin.descriptor->name) scene_parameters = settings.parameters;
+    return resolve_parameters(*plugin.descriptor, scene_parameters, parameters);
+}
+
+// One render with resolve_for's parameters, timed from prepare() on.
 struct TimedRender {
     RgbImage image;
     double seconds = 0.0;
@@ -226,10 +235,7 @@ struct TimedRender {
 TimedRender render_setting(const PreparedScene& prepared, const Plugin& plugin,
                            const std::vector<std::string>& parameters, int spp, std::uint64_t seed, int threads,
                            double noise_target = 0.0) {
-    const sg::RenderSettings& settings = prepared.graph.render;
-    std::map<std::string, sg::ParameterValue> scene_parameters;
-    if (settings.integrator && *settings.integrator == plugin.descriptor->name) scene_parameters = settings.parameters;
-    const ParameterSet resolved = resolve_parameters(*plugin.descriptor, scene_parameters, parameters);
+    const ParameterSet resolved = resolve_for(prepared, plugin, parameters);
 
     const Clock::time_point start = Clock::now();
     const double cpu_start = process_cpu_seconds();
@@ -344,35 +350,44 @@ int run_trade(const TradeArguments& arguments) {
         progress.note("trade: " + arguments.scene + " at " + std::to_string(prepared.width) + "x" +
                       std::to_string(prepared.height) + ", budget " + seconds_text(budget));
 
-        // The reference: path, as many samples as its share of the budget
-        // buys (from a one-sample pilot), unless the cache holds one with
-        // at least half that many for the same scene and settings.
+        // The reference: path with as many samples as its share of the
+        // budget buys, unless the cache holds one for the same scene and
+        // settings. A cached one is kept unless this budget would spend
+        // over four times what it cost: the decision depends on budgets,
+        // not on timings, so a rerun reuses it however loaded the machine.
         const Plugin path_plugin = load_plugin("path");
         const std::uint64_t reference_seed = seed + kReferenceSeedOffset;
-        // Twice, keeping the faster: the first render of a process pays for
-        // warming up (threads, caches), which would halve the reference.
-        progress.starting("reference: pilot");
-        TimedRender pilot = render_setting(prepared, path_plugin, kReferenceParameters, 1, reference_seed, arguments.threads);
-        pilot.seconds = std::min(pilot.seconds, render_setting(prepared, path_plugin, kReferenceParameters, 1,
-                                                               reference_seed, arguments.threads).seconds);
-        const int wanted_spp = std::clamp(power_of_two_floor(kReferenceShare * budget / std::max(pilot.seconds, 1e-6)),
-                                          kMinReferenceSpp, kMaxReferenceSpp);
-        const std::string settings_text = std::string("lancer ") + kLancerVersion + " size " +
-                                          std::to_string(prepared.width) + "x" + std::to_string(prepared.height) +
-                                          " seed " + std::to_string(reference_seed) + " path " + pilot.parameters;
+        const double reference_seconds = kReferenceShare * budget;
+        const std::string settings_text =
+            std::string("lancer ") + kLancerVersion + " size " + std::to_string(prepared.width) + "x" +
+            std::to_string(prepared.height) + " seed " + std::to_string(reference_seed) + " path " +
+            join_parameters(resolve_for(prepared, path_plugin, kReferenceParameters));
         const std::string key = reference_key(arguments.scene, default_include_path(), settings_text);
         const ReferenceCache cache(arguments.cache.empty() ? default_reference_cache_folder(out / "reference-cache")
                                                            : fs::path(arguments.cache));
-        std::optional<CachedReference> reference = cache.find(key, wanted_spp / 2);
+        std::optional<CachedReference> reference = cache.find(key);
+        if (reference && reference->render_seconds * 4.0 < reference_seconds &&
+            reference->samples_per_pixel < kMaxReferenceSpp)
+            reference.reset();
         if (reference) {
             run.reference.cached = true;
             progress.finished("reference", "cached, " + std::to_string(reference->samples_per_pixel) + " spp");
             progress.note("reference: cached (" + reference->file.string() + ")");
         } else {
+            // A one-sample pilot sets the count; twice, keeping the faster,
+            // since a process's first render pays for warming up.
+            progress.starting("reference: pilot");
+            double pilot_seconds = 1e30;
+            for (int i = 0; i < 2; ++i)
+                pilot_seconds = std::min(pilot_seconds, render_setting(prepared, path_plugin, kReferenceParameters, 1,
+                                                                       reference_seed, arguments.threads)
+                                                            .seconds);
+            const int wanted_spp = std::clamp(power_of_two_floor(reference_seconds / std::max(pilot_seconds, 1e-6)),
+                                              kMinReferenceSpp, kMaxReferenceSpp);
             progress.starting("reference: path " + std::to_string(wanted_spp) + " spp");
             const TimedRender rendered =
                 render_setting(prepared, path_plugin, kReferenceParameters, wanted_spp, reference_seed, arguments.threads);
-            reference = cache.store(key, rendered.image, wanted_spp, rendered.noise);
+            reference = cache.store(key, rendered.image, wanted_spp, rendered.noise, rendered.seconds);
             run.reference.seconds = rendered.seconds;
             progress.finished("reference", "path " + std::to_string(wanted_spp) + " spp, " +
                                                seconds_text(rendered.seconds));
