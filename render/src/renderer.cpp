@@ -147,6 +147,7 @@ public:
             if (total_at(middle) <= samples) low = middle;
             else high = middle - 1;
         }
+        if (low == 0 && samples > 0) return spread_one_sample(samples);
         for (std::size_t i = 0; i < m_plan.size(); ++i) m_plan[i] = std::min(m_wanted[i], low);
         return total_at(low);
     }
@@ -160,6 +161,27 @@ public:
 
 private:
     std::size_t index(int x, int y) const { return std::size_t(y) * m_width + x; }
+
+    // When not every pixel can have one more sample, `samples` pixels get
+    // one, spread evenly over the image (an error-diffusion walk in scan
+    // order), so the last seconds of a budget are not wasted and no region
+    // is favoured.
+    std::uint64_t spread_one_sample(std::uint64_t samples) {
+        const double share = double(samples) / double(std::max<std::uint64_t>(pixels_wanting(), 1));
+        double credit = 0.0;
+        std::uint64_t total = 0;
+        for (std::size_t i = 0; i < m_plan.size(); ++i) {
+            m_plan[i] = 0;
+            if (m_wanted[i] == 0) continue;
+            credit += share;
+            if (credit >= 1.0) {
+                credit -= 1.0;
+                m_plan[i] = 1;
+                ++total;
+            }
+        }
+        return total;
+    }
 
     std::uint32_t wanted(const Film& film, int x, int y) const {
         const std::uint32_t taken = film.samples_taken(m_window.x0 + x, m_window.y0 + y);
@@ -310,7 +332,10 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
             if (has_deadline && seconds_per_sample > 0.0) {
                 const double remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
                 const double affordable = 0.9 * remaining / seconds_per_sample;
-                planned = planner.limit_to(affordable > 0.0 ? std::uint64_t(affordable) : 0);
+                // A pass for a sliver of the pixels costs more in overhead
+                // than it refines.
+                if (affordable < double(planner.pixels_wanting()) / 32.0) break;
+                planned = planner.limit_to(std::uint64_t(affordable));
                 if (planned == 0) break;
             }
             // A fixed render that checkpoints keeps passes within the
