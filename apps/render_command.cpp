@@ -401,7 +401,12 @@ int run_render(const RenderArguments& arguments) {
         CountingScene scene(*compiled);
         integrator->prepare(scene);
         Film film(options.width, options.height);
-        if (arguments.resume) {
+        // A render killed before its first checkpoint has nothing to resume:
+        // it starts over, so `--resume` after a kill at any moment works.
+        if (arguments.resume && !fs::exists(checkpoint_path)) {
+            std::fprintf(stderr, "lancer: note: no checkpoint '%s' yet; rendering from the start\n",
+                         checkpoint_path.c_str());
+        } else if (arguments.resume) {
             try {
                 read_checkpoint(checkpoint_path, identity, film);
             } catch (const CheckpointError& error) {
@@ -501,7 +506,7 @@ Command add_render_command(CLI::App& app) {
         "--checkpoint", arguments->checkpoint_interval,
         "Save progress every SECONDS to <output>.lancer-checkpoint (removed when the render completes)");
     render->add_flag("--resume", arguments->resume,
-                     "Continue from <output>.lancer-checkpoint; same scene and settings required");
+                     "Continue from <output>.lancer-checkpoint (same scene and settings required); without one, start over");
     arguments->seed_option = render->add_option("--seed", arguments->seed, "Random seed (default: the scene's, else 0)");
     render->add_option("--threads", arguments->threads, "Worker threads (default 0: every core)");
     render->add_option("--crop", arguments->crop, "Render only pixels x0 <= x < x1, y0 <= y < y1");
