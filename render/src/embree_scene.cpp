@@ -27,6 +27,19 @@ namespace {
 
 constexpr unsigned kInvalidId = RTC_INVALID_GEOMETRY_ID;
 
+// MEDIUM, not HIGH: on the 1M-triangle bench mesh HIGH traced no faster
+// (robust: 4.82 vs 4.73 Mrays per CPU second, within noise) and built
+// slower (bench/README.md).
+constexpr RTCBuildQuality kBuildQuality = RTC_BUILD_QUALITY_MEDIUM;
+// RTC_SCENE_FLAG_ROBUST is what makes meshes watertight: Embree then uses
+// conservative box tests and its Pluecker triangle test, whose edge tests
+// agree exactly between the two triangles sharing an edge. Without it, rays
+// aimed at shared edges of a closed mesh leak through it (3-7% of them,
+// render/src/watertight_test.cpp and bench/README.md), which shows as
+// speckles of background or of what lies behind in any image. It costs
+// traversal speed, measured by lancer_bench (BM_BareEmbreeRobustPrimaryRays).
+constexpr RTCSceneFlags kSceneFlags = RTC_SCENE_FLAG_ROBUST;
+
 // One Embree user geometry's primitives: instance indices per primitive.
 struct AnalyticGroup {
     const SceneData* data = nullptr;
@@ -174,7 +187,8 @@ private:
     void build();
     RTCGeometry make_triangles(const MeshData& mesh, const std::vector<float>& positions);
     void complete_analytic_hit(const Instance& instance, const Ray& ray, float t, int face, Hit& hit) const;
-    void complete_mesh_hit(const Instance& instance, std::uint32_t primitive, float b1, float b2, Hit& hit) const;
+    void complete_mesh_hit(const Instance& instance, bool faces_are_triangles, std::uint32_t primitive, float b1,
+                           float b2, Hit& hit) const;
 
     std::unique_ptr<SceneData> m_data;
     RTCDevice m_device = nullptr;
@@ -186,6 +200,8 @@ private:
     std::vector<std::uint32_t> m_planes;      // instance indices
     std::string m_device_error;
     bool m_has_no_shadow_mesh = false;
+    // By instance: a mesh whose triangle i is its face i (no polygons split).
+    std::vector<std::uint8_t> m_faces_are_triangles;
 };
 
 RTCGeometry EmbreeScene::make_triangles(const MeshData& mesh, const std::vector<float>& positions) {
@@ -209,9 +225,9 @@ void EmbreeScene::build() {
     }();
     m_has_no_shadow_mesh = any_no_shadow_mesh;
     m_scene = rtcNewScene(m_device);
-    rtcSetSceneFlags(m_scene, RTCSceneFlags(RTC_SCENE_FLAG_ROBUST |
+    rtcSetSceneFlags(m_scene, RTCSceneFlags(kSceneFlags |
                                             (any_no_shadow_mesh ? RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION : 0)));
-    rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_MEDIUM);
+    rtcSetSceneBuildQuality(m_scene, kBuildQuality);
 
     // Analytic kinds present in the scene, one user geometry each.
     std::map<ShapeKind, AnalyticGroup*> groups;
@@ -248,6 +264,23 @@ void EmbreeScene::build() {
         attach(geometry, GeometryEntry{group, 0});
     }
 
+    m_faces_are_triangles.assign(data.instances.size(), 0);
+    std::map<const MeshData*, bool> identity_of_mesh;
+    for (std::uint32_t index = 0; index < data.instances.size(); ++index) {
+        const Instance& instance = data.instances[index];
+        if (instance.kind != ShapeKind::Mesh || !instance.mesh) continue;
+        const MeshData& mesh = *instance.mesh;
+        auto [found, inserted] = identity_of_mesh.try_emplace(&mesh, true);
+        if (inserted) {
+            for (std::uint32_t t = 0; t < mesh.face_of_triangle.size(); ++t)
+                if (mesh.face_of_triangle[t] != t) {
+                    found->second = false;
+                    break;
+                }
+        }
+        m_faces_are_triangles[index] = found->second ? 1 : 0;
+    }
+
     // Meshes: world-space geometry when used once, instanced otherwise.
     for (std::uint32_t index = 0; index < data.instances.size(); ++index) {
         const Instance& instance = data.instances[index];
@@ -261,8 +294,8 @@ void EmbreeScene::build() {
         RTCScene& shared = m_scene_of_mesh[&mesh];
         if (!shared) {
             shared = rtcNewScene(m_device);
-            rtcSetSceneFlags(shared, RTC_SCENE_FLAG_ROBUST);
-            rtcSetSceneBuildQuality(shared, RTC_BUILD_QUALITY_MEDIUM);
+            rtcSetSceneFlags(shared, kSceneFlags);
+            rtcSetSceneBuildQuality(shared, kBuildQuality);
             RTCGeometry triangles = make_triangles(mesh, mesh.object_positions);
             rtcAttachGeometry(shared, triangles);
             rtcReleaseGeometry(triangles);
@@ -306,12 +339,12 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
     hit.primitive_id = std::uint32_t(face);
 }
 
-void EmbreeScene::complete_mesh_hit(const Instance& instance, std::uint32_t primitive, float u, float v,
-                                    Hit& hit) const {
+void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_triangles, std::uint32_t primitive,
+                                    float u, float v, Hit& hit) const {
     const MeshData& mesh = *instance.mesh;
     const sg::TriangleMesh& source = *mesh.source;
-    const std::uint32_t face_index = mesh.face_of_triangle[primitive];
-    const sg::TriangleMesh::Face& face = source.faces[face_index];
+    // Skipping the lookup when triangle i is face i saves one more cold load.
+    const std::uint32_t face_index = faces_are_triangles ? primitive : mesh.face_of_triangle[primitive];
     const std::vector<float>& positions = instance.mesh_in_world ? instance.world_positions : mesh.object_positions;
     // The hit from the same float vertices Embree intersected, in double:
     // an affine combination, so it lies on the triangle's plane.
@@ -351,11 +384,16 @@ void EmbreeScene::complete_mesh_hit(const Instance& instance, std::uint32_t prim
     hit.position_error = error;
     hit.geometric_normal = Vec3(world_normal);
     hit.shading_normal = hit.geometric_normal;
-    if (face.normal[0] >= 0 && !source.normals.empty()) {
+    // The source face (40 bytes a triangle, cold in cache: Embree traces its
+    // own copies of the vertices) is read only when the mesh has per-vertex
+    // normals or texture coordinates to interpolate.
+    const bool has_normals = !source.normals.empty(), has_uvs = !source.uvs.empty();
+    const sg::TriangleMesh::Face* face = has_normals || has_uvs ? &source.faces[face_index] : nullptr;
+    if (has_normals && face->normal[0] >= 0) {
         DVec3 interpolated(0.0);
         const double weight[3] = {b0, b1, b2};
         for (int k = 0; k < 3; ++k) {
-            const int n = face.normal[k];
+            const int n = face->normal[k];
             if (n >= 0 && std::size_t(n) < source.normals.size()) interpolated += weight[k] * source.normals[n];
         }
         if (glm::length(interpolated) > 0.0) {
@@ -365,11 +403,11 @@ void EmbreeScene::complete_mesh_hit(const Instance& instance, std::uint32_t prim
             if (glm::dot(shading, hit.geometric_normal) < 0.0f) hit.geometric_normal = -hit.geometric_normal;
         }
     }
-    if (face.uv[0] >= 0 && !source.uvs.empty()) {
+    if (has_uvs && face->uv[0] >= 0) {
         glm::dvec2 uv(0.0);
         const double weight[3] = {b0, b1, b2};
         for (int k = 0; k < 3; ++k) {
-            const int index = face.uv[k];
+            const int index = face->uv[k];
             if (index >= 0 && std::size_t(index) < source.uvs.size()) uv += weight[k] * source.uvs[index];
         }
         hit.uv = Vec2(uv);
@@ -430,7 +468,8 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
         complete_analytic_hit(m_data->instances[index], ray, rayhit.ray.tfar, int(rayhit.hit.u), hit);
     } else {
         index = entry.instance;
-        complete_mesh_hit(m_data->instances[index], rayhit.hit.primID, rayhit.hit.u, rayhit.hit.v, hit);
+        complete_mesh_hit(m_data->instances[index], m_faces_are_triangles[index] != 0, rayhit.hit.primID,
+                          rayhit.hit.u, rayhit.hit.v, hit);
     }
     const Instance& instance = m_data->instances[index];
     hit.object_id = index;
