@@ -30,6 +30,38 @@ namespace {
 
 using namespace lancer;
 
+// raycast draws no random numbers; only the host does, to jitter camera rays
+// when several samples per pixel antialias. This wraps the default sampler
+// and positions it only when a value is asked for, so the common one sample
+// through the pixel centre skips hashing (seed, pixel, sample) per ray; the
+// values, when drawn, are the default sampler's, bit for bit.
+class LazySampler final : public Sampler {
+public:
+    explicit LazySampler(std::unique_ptr<Sampler> inner) : m_inner(std::move(inner)) {}
+    void start_sample(int pixel_x, int pixel_y, std::uint32_t sample_index) override {
+        m_x = pixel_x;
+        m_y = pixel_y;
+        m_index = sample_index;
+        m_started = false;
+    }
+    float next_1d() override { return started().next_1d(); }
+    Vec2 next_2d() override { return started().next_2d(); }
+    std::unique_ptr<Sampler> clone() const override { return std::make_unique<LazySampler>(m_inner->clone()); }
+
+private:
+    Sampler& started() {
+        if (!m_started) {
+            m_inner->start_sample(m_x, m_y, m_index);
+            m_started = true;
+        }
+        return *m_inner;
+    }
+    std::unique_ptr<Sampler> m_inner;
+    int m_x = 0, m_y = 0;
+    std::uint32_t m_index = 0;
+    bool m_started = false;
+};
+
 class RaycastIntegrator final : public Integrator {
 public:
     RaycastIntegrator(bool with_ambient, bool with_specular)
@@ -49,6 +81,9 @@ public:
     }
 
     bool is_deterministic() const override { return true; }
+    std::unique_ptr<Sampler> make_sampler(std::uint64_t seed) const override {
+        return std::make_unique<LazySampler>(Integrator::make_sampler(seed));
+    }
 
 private:
     bool m_with_ambient;

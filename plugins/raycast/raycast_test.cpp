@@ -1,0 +1,77 @@
+// raycast's lazy sampler (raycast.cpp) changes nothing in the image: with
+// several samples per pixel, where the host jitters camera rays with the
+// sampler's values, the film is bit for bit the one the default sampler
+// gives.
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "lancer/plugin_host.h"
+#include "lancer/renderer.h"
+#include "lancer/scene_graph.h"
+
+namespace lancer::test {
+namespace {
+
+// raycast's radiance with the Integrator's default sampler.
+class WithDefaultSampler final : public Integrator {
+public:
+    explicit WithDefaultSampler(const Integrator& inner) : m_inner(inner) {}
+    Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const override {
+        return m_inner.radiance(ray, scene, sampler);
+    }
+    bool is_deterministic() const override { return m_inner.is_deterministic(); }
+
+private:
+    const Integrator& m_inner;
+};
+
+sg::SceneGraph sphere_scene() {
+    sg::SceneGraph graph;
+    sg::Camera camera;
+    camera.location = sg::Vec3(0.0, 0.0, -3.0);
+    camera.direction = sg::Vec3(0.0, 0.0, 1.0);
+    camera.right = sg::Vec3(1.0, 0.0, 0.0);
+    camera.up = sg::Vec3(0.0, 1.0, 0.0);
+    graph.camera = camera;
+    sg::Light light;
+    light.position = sg::Vec3(2.0, 3.0, -4.0);
+    graph.lights.push_back(light);
+    sg::Object sphere;
+    sphere.kind = sg::Object::Kind::Sphere;
+    sphere.shape = sg::Sphere{sg::Vec3(0.0), 1.0};
+    auto material = std::make_shared<sg::Material>();
+    material->pigment.color.rgb = sg::Vec3(0.9, 0.5, 0.2);
+    sphere.material = material;
+    graph.objects.push_back(sphere);
+    return graph;
+}
+
+TEST(RaycastSampler, AntialiasedImageIsTheDefaultSamplersBitForBit) {
+    Plugin plugin = load_plugin("raycast");
+    const auto raycast = plugin.descriptor->create(resolve_parameters(*plugin.descriptor, {}, {}));
+    const WithDefaultSampler reference(*raycast);
+    const auto scene = RenderScene::compile(sphere_scene());
+    RenderOptions options;
+    options.width = 24;
+    options.height = 24;
+    options.samples_per_pixel = 4;
+    options.threads = 2;
+    options.progress = ProgressMode::Quiet;
+    Film lazy(24, 24), plain(24, 24);
+    render_image(*scene, *raycast, options, lazy);
+    render_image(*scene, reference, options, plain);
+    int edge_pixels = 0;  // antialiased: the jitter did reach the image
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 24; ++x) {
+            const Color a = lazy.mean(x, y), b = plain.mean(x, y);
+            EXPECT_EQ(a.r, b.r) << x << "," << y;
+            EXPECT_EQ(a.g, b.g) << x << "," << y;
+            EXPECT_EQ(a.b, b.b) << x << "," << y;
+            if (a.r > 0.0f && lazy.variance_of_mean(x, y).r > 0.0f) ++edge_pixels;
+        }
+    EXPECT_GT(edge_pixels, 0);
+}
+
+}  // namespace
+}  // namespace lancer::test
