@@ -2,20 +2,33 @@
 // (render_image: tiles, sampler, camera rays, intersection, shading, film)
 // against the same camera rays through a bare rtcIntersect1 loop on the same
 // triangles, both on 2 threads. The target: raycast >= 0.7x bare.
+// Command and latest numbers: bench/README.md.
 //
-//   build/bin/lancer_bench --benchmark_filter=Raycast
+//   build/bin/lancer_bench --benchmark_filter=RaycastOverBare --benchmark_repetitions=5
 //
-// BM_BareEmbreeRobustPrimaryRays is the bare loop with RTC_SCENE_FLAG_ROBUST,
-// which lancer's scene sets (watertight traversal): the flag's own cost.
+// The bare scenes are built with the same build quality as lancer's
+// (kLancerBuildQuality mirrors embree_scene.cpp). BM_BareEmbreeRobustPrimaryRays
+// is the bare loop with RTC_SCENE_FLAG_ROBUST, which lancer's scene sets for
+// watertight meshes (render/src/watertight_test.cpp): the flag's own cost.
 // BM_HostIntersectOnlyPrimaryRays runs the host with an integrator that only
 // intersects, to tell the host's and RenderScene's share from raycast's.
 //
-// Counters: Mrays/s for each, `ratio` = raycast / bare (BM_RaycastOverBareEmbree),
-// and the render scene's memory per triangle (resident set growth while
-// compiling, and the process peak).
+// Counters: Mrays/s for each; in BM_RaycastOverBareEmbree, measured in
+// alternation in one process, `ratio` = raycast / bare and `ratio_robust` =
+// raycast / bare-with-the-robust-flag. Memory: `scene_bytes_per_triangle`
+// (resident set growth over RenderScene::compile), `compile_peak_bytes_per_triangle`
+// (peak resident set during compile above the level before it),
+// `embree_bytes_per_triangle` (Embree's own allocations for the same
+// triangles and flags, from rtcSetDeviceMemoryMonitorFunction) and
+// `peak_bytes_per_triangle` (the whole process's peak, bare scenes included).
+#include <sys/types.h>
+#include <time.h>
+
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -40,6 +53,50 @@ constexpr int kGrid = 709;  // 2 * 708^2 = 1,002,528 triangles
 constexpr int kWidth = 1024;
 constexpr int kHeight = 768;
 constexpr int kThreads = 2;
+// What embree_scene.cpp builds lancer's scenes with; the bare loop gets the
+// same, so the ratio compares traversal of equally good trees.
+constexpr RTCBuildQuality kLancerBuildQuality = RTC_BUILD_QUALITY_MEDIUM;
+
+// Embree's allocations on the bare device (bytes, net), from its memory monitor.
+std::atomic<long long> g_embree_bytes{0};
+bool count_embree_bytes(void*, ssize_t bytes, bool) {
+    g_embree_bytes += bytes;
+    return true;
+}
+
+// Resets the process's peak resident set (VmHWM) to the current one, so a
+// later VmHWM is the peak of what follows. Linux >= 4.0; false elsewhere.
+bool reset_peak_rss() {
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5";
+    return bool(clear);
+}
+
+// Wall and CPU (all threads of the process) seconds of one frame. On a
+// shared, loaded machine the wall time mostly measures the scheduler; the
+// CPU time measures the work, so ratios are given for both.
+struct FrameTime {
+    double wall = 0.0;
+    double cpu = 0.0;
+};
+
+double process_cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+class FrameClock {
+public:
+    FrameTime stop() const {
+        return {std::chrono::duration<double>(std::chrono::steady_clock::now() - m_wall).count(),
+                process_cpu_seconds() - m_cpu};
+    }
+
+private:
+    std::chrono::steady_clock::time_point m_wall = std::chrono::steady_clock::now();
+    double m_cpu = process_cpu_seconds();
+};
 
 // Kilobytes from /proc/self/status ("VmRSS:", "VmHWM:").
 long status_kilobytes(const char* field) {
@@ -97,6 +154,9 @@ struct BenchScene {
     std::vector<Ray> camera_rays;  // one per pixel centre, row-major
     std::unique_ptr<Film> film = std::make_unique<Film>(kWidth, kHeight);
     double rss_bytes_per_triangle = 0.0;
+    double compile_peak_bytes_per_triangle = 0.0;
+    double embree_bytes_per_triangle = 0.0;
+    double compile_seconds = 0.0;
 
     RTCDevice device = nullptr;
     RTCScene bare_scene = nullptr;
@@ -128,10 +188,16 @@ struct BenchScene {
         object.material = material;
         graph.objects.push_back(object);
 
+        const bool peak_reset = reset_peak_rss();
         const long rss_before = status_kilobytes("VmRSS:");
+        const auto compile_start = std::chrono::steady_clock::now();
         scene = RenderScene::compile(graph);
+        compile_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - compile_start).count();
         const long rss_after = status_kilobytes("VmRSS:");
         rss_bytes_per_triangle = 1024.0 * double(rss_after - rss_before) / double(triangles());
+        if (peak_reset)
+            compile_peak_bytes_per_triangle =
+                1024.0 * double(status_kilobytes("VmHWM:") - rss_before) / double(triangles());
 
         plugin = load_plugin("raycast");
         raycast = plugin.descriptor->create(resolve_parameters(*plugin.descriptor, {}, {}));
@@ -158,13 +224,18 @@ struct BenchScene {
             for (int k = 0; k < 3; ++k) indices.push_back(unsigned(face.position[k]));
         }
         device = rtcNewDevice(nullptr);
+        rtcSetDeviceMemoryMonitorFunction(device, count_embree_bytes, nullptr);
         bare_scene = make_bare_scene(RTC_SCENE_FLAG_NONE);
+        // Built last, alone on the monitor's count: the flags lancer uses.
+        const long long before = g_embree_bytes;
         bare_robust_scene = make_bare_scene(RTC_SCENE_FLAG_ROBUST);
+        embree_bytes_per_triangle = double(g_embree_bytes - before) / double(triangles());
     }
 
     RTCScene make_bare_scene(RTCSceneFlags flags) {
         RTCScene bare = rtcNewScene(device);
         rtcSetSceneFlags(bare, flags);
+        rtcSetSceneBuildQuality(bare, kLancerBuildQuality);
         RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
         rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertices.data(), 0,
                                    3 * sizeof(float), mesh->positions.size());
@@ -185,26 +256,31 @@ struct BenchScene {
     }
 
     // Seconds for one frame through the host with `integrator` (raycast by default).
-    double render_raycast(const Integrator* integrator = nullptr) const {
+    FrameTime render_raycast(const Integrator* integrator = nullptr) {
         RenderOptions options;
         options.width = kWidth;
         options.height = kHeight;
         options.threads = kThreads;
         options.progress = ProgressMode::Quiet;
-        // The film (44 MB of zeroed pixels) is allocated once, outside the
-        // timing: frames accumulate into it, which costs the same per sample.
-        const auto start = std::chrono::steady_clock::now();
+        // A fresh film per frame, allocated (and its pages touched) outside
+        // the timing: the progressive host plans each pixel's samples from
+        // what the film already holds, so a film that has its one sample per
+        // pixel would make the next frame render nothing.
+        film = std::make_unique<Film>(kWidth, kHeight);
+        const FrameClock clock;
         render_image(*scene, integrator ? *integrator : *raycast, options, *film);
+        const FrameTime time = clock.stop();
         benchmark::DoNotOptimize(film->mean(kWidth / 2, kHeight / 2));
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return time;
     }
 
     // Seconds for the same rays through rtcIntersect1 alone, same tiles and threads.
-    double trace_bare(bool robust = false) const {
+    // `hit_count`, when given, receives the number of rays that hit.
+    FrameTime trace_bare(bool robust = false, std::uint64_t* hit_count = nullptr) const {
         const RTCScene target = robust ? bare_robust_scene : bare_scene;
         tbb::task_arena arena(kThreads);
         std::vector<unsigned> hits(kHeight, 0);
-        const auto start = std::chrono::steady_clock::now();
+        const FrameClock clock;
         arena.execute([&] {
             tbb::parallel_for(tbb::blocked_range2d<int>(0, kHeight, 16, 0, kWidth, 16),
                               [&](const tbb::blocked_range2d<int>& tile) {
@@ -238,9 +314,13 @@ struct BenchScene {
                                   }
                               });
         });
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const FrameTime time = clock.stop();
         benchmark::DoNotOptimize(hits.data());
-        return seconds;
+        if (hit_count) {
+            *hit_count = 0;
+            for (unsigned row : hits) *hit_count += row;
+        }
+        return time;
     }
 };
 
@@ -254,75 +334,108 @@ constexpr double kRaysPerFrame = double(kWidth) * kHeight;
 void set_common_counters(benchmark::State& state, const BenchScene& bench) {
     state.counters["triangles"] = double(bench.triangles());
     state.counters["scene_bytes_per_triangle"] = bench.rss_bytes_per_triangle;
+    state.counters["compile_peak_bytes_per_triangle"] = bench.compile_peak_bytes_per_triangle;
+    state.counters["embree_bytes_per_triangle"] = bench.embree_bytes_per_triangle;
+    state.counters["compile_s"] = bench.compile_seconds;
     state.counters["peak_bytes_per_triangle"] =
         1024.0 * double(status_kilobytes("VmHWM:")) / double(bench.triangles());
 }
 
+// Rays of the frame that find the height field in the robust scene but
+// miss it without the flag: they slip through shared edges (watertightness,
+// see embree_scene.cpp). The height field has no holes, so any such ray leaks.
+void set_leak_counter(benchmark::State& state, const BenchScene& bench) {
+    std::uint64_t fast_hits = 0, robust_hits = 0;
+    bench.trace_bare(false, &fast_hits);
+    bench.trace_bare(true, &robust_hits);
+    state.counters["leaks_without_robust"] = double(robust_hits) - double(fast_hits);
+}
+
 void BM_RaycastPrimaryRays(benchmark::State& state) {
     BenchScene& bench = bench_scene();
-    double seconds = 0.0;
+    double seconds = 0.0, cpu_seconds = 0.0;
     for (auto _ : state) {
-        const double frame = bench.render_raycast();
-        state.SetIterationTime(frame);
-        seconds += frame;
+        const FrameTime frame = bench.render_raycast();
+        state.SetIterationTime(frame.wall);
+        seconds += frame.wall;
+        cpu_seconds += frame.cpu;
     }
     state.counters["Mrays/s"] = kRaysPerFrame * double(state.iterations()) / seconds / 1e6;
+    state.counters["Mrays/cpu_s"] = kRaysPerFrame * double(state.iterations()) / cpu_seconds / 1e6;
     set_common_counters(state, bench);
 }
 
 void BM_BareEmbreePrimaryRays(benchmark::State& state) {
     BenchScene& bench = bench_scene();
-    double seconds = 0.0;
+    double seconds = 0.0, cpu_seconds = 0.0;
     for (auto _ : state) {
-        const double frame = bench.trace_bare();
-        state.SetIterationTime(frame);
-        seconds += frame;
+        const FrameTime frame = bench.trace_bare();
+        state.SetIterationTime(frame.wall);
+        seconds += frame.wall;
+        cpu_seconds += frame.cpu;
     }
     state.counters["Mrays/s"] = kRaysPerFrame * double(state.iterations()) / seconds / 1e6;
+    state.counters["Mrays/cpu_s"] = kRaysPerFrame * double(state.iterations()) / cpu_seconds / 1e6;
     set_common_counters(state, bench);
 }
 
 void BM_BareEmbreeRobustPrimaryRays(benchmark::State& state) {
     BenchScene& bench = bench_scene();
-    double seconds = 0.0;
+    double seconds = 0.0, cpu_seconds = 0.0;
     for (auto _ : state) {
-        const double frame = bench.trace_bare(true);
-        state.SetIterationTime(frame);
-        seconds += frame;
+        const FrameTime frame = bench.trace_bare(true);
+        state.SetIterationTime(frame.wall);
+        seconds += frame.wall;
+        cpu_seconds += frame.cpu;
     }
     state.counters["Mrays/s"] = kRaysPerFrame * double(state.iterations()) / seconds / 1e6;
+    state.counters["Mrays/cpu_s"] = kRaysPerFrame * double(state.iterations()) / cpu_seconds / 1e6;
     set_common_counters(state, bench);
 }
 
 void BM_HostIntersectOnlyPrimaryRays(benchmark::State& state) {
     BenchScene& bench = bench_scene();
     const IntersectOnly intersect_only;
-    double seconds = 0.0;
+    double seconds = 0.0, cpu_seconds = 0.0;
     for (auto _ : state) {
-        const double frame = bench.render_raycast(&intersect_only);
-        state.SetIterationTime(frame);
-        seconds += frame;
+        const FrameTime frame = bench.render_raycast(&intersect_only);
+        state.SetIterationTime(frame.wall);
+        seconds += frame.wall;
+        cpu_seconds += frame.cpu;
     }
     state.counters["Mrays/s"] = kRaysPerFrame * double(state.iterations()) / seconds / 1e6;
+    state.counters["Mrays/cpu_s"] = kRaysPerFrame * double(state.iterations()) / cpu_seconds / 1e6;
     set_common_counters(state, bench);
 }
 
-// Both in alternation, so drift in machine load hits both alike.
+// All three in alternation, so drift in machine load hits them alike.
 void BM_RaycastOverBareEmbree(benchmark::State& state) {
     BenchScene& bench = bench_scene();
-    double raycast_seconds = 0.0, bare_seconds = 0.0;
+    FrameTime raycast, bare, robust;
+    auto add = [](FrameTime& total, const FrameTime& frame) {
+        total.wall += frame.wall;
+        total.cpu += frame.cpu;
+    };
     for (auto _ : state) {
-        const double raycast = bench.render_raycast();
-        const double bare = bench.trace_bare();
-        raycast_seconds += raycast;
-        bare_seconds += bare;
-        state.SetIterationTime(raycast + bare);
+        const FrameTime r = bench.render_raycast(), b = bench.trace_bare(), rb = bench.trace_bare(true);
+        add(raycast, r);
+        add(bare, b);
+        add(robust, rb);
+        state.SetIterationTime(r.wall + b.wall + rb.wall);
     }
-    const double frames = double(state.iterations());
-    state.counters["raycast_Mrays/s"] = kRaysPerFrame * frames / raycast_seconds / 1e6;
-    state.counters["bare_Mrays/s"] = kRaysPerFrame * frames / bare_seconds / 1e6;
-    state.counters["ratio"] = bare_seconds / raycast_seconds;
+    const double rays = kRaysPerFrame * double(state.iterations()) / 1e6;
+    state.counters["raycast_Mrays/s"] = rays / raycast.wall;
+    state.counters["bare_Mrays/s"] = rays / bare.wall;
+    state.counters["bare_robust_Mrays/s"] = rays / robust.wall;
+    state.counters["ratio"] = bare.wall / raycast.wall;
+    state.counters["ratio_robust"] = robust.wall / raycast.wall;
+    // The same from CPU time: what the ratio is on 2 idle cores.
+    state.counters["raycast_Mrays/cpu_s"] = rays / raycast.cpu;
+    state.counters["bare_Mrays/cpu_s"] = rays / bare.cpu;
+    state.counters["ratio_cpu"] = bare.cpu / raycast.cpu;
+    state.counters["ratio_robust_cpu"] = robust.cpu / raycast.cpu;
     set_common_counters(state, bench);
+    set_leak_counter(state, bench);
 }
 
 BENCHMARK(BM_RaycastPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
