@@ -214,6 +214,9 @@ void write_golden(const std::string& path, const Film& film, bool with_variance,
     if (with_variance) spec.channelnames.insert(spec.channelnames.end(), {"var.R", "var.G", "var.B"});
     spec.attribute("compression", "zip");
     for (const auto& [key, value] : metadata) spec.attribute("lancer:" + key, value);
+    // A fixed date, so regenerating an unchanged golden changes no byte (and
+    // git shows only goldens whose pixels changed).
+    spec.attribute("DateTime", "2000:01:01 00:00:00");
     std::vector<float> pixels;
     pixels.reserve(std::size_t(film.width()) * film.height() * channels);
     for (int y = 0; y < film.height(); ++y)
