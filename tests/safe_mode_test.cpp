@@ -117,7 +117,7 @@ TEST_F(SafeFixture, MtlTextureOutsideIsRefused) {
 }
 
 TEST_F(SafeFixture, ImageMapOutsideIsRefused) {
-    expect_refused(parse("sphere { 0, 1 pigment { image_map { png \"../outside/secret.png\" } } }\n"), 1, 25);
+    expect_refused(parse("sphere { 0, 1 pigment { image_map { png \"../outside/secret.png\" } } }\n"), 1, 41);
 }
 
 TEST_F(SafeFixture, WithoutSafeTheSameScenesParse) {

@@ -29,7 +29,11 @@ fs::path resolved(const fs::path& path) {
     fs::path absolute = fs::absolute(path, ec);
     if (ec) return {};
     fs::path canonical = fs::weakly_canonical(absolute, ec);
-    return ec ? fs::path() : canonical.lexically_normal();
+    if (ec) return {};
+    canonical = canonical.lexically_normal();
+    // "/a/b/" iterates as a, b, "": drop the empty last part so prefixes compare.
+    if (!canonical.has_filename() && canonical != canonical.root_path()) canonical = canonical.parent_path();
+    return canonical;
 }
 
 }  // namespace

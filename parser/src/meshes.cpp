@@ -1,5 +1,6 @@
 // Triangle meshes: triangle, smooth_triangle, mesh, mesh2 (with index
 // validation) and the obj_mesh extension (Wavefront OBJ via tinyobjloader).
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -23,8 +24,8 @@ const char* not_text(const std::string& text) {
     if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF')))
         return "is UTF-16 text; save it as UTF-8 or ASCII";
     if (text.find('\0') != std::string::npos) {
-        if (text.compare(0, 4, "\x89PNG") == 0) return "is a PNG image, not an OBJ file";
-        return "is a binary file, not OBJ text (or UTF-16 without a byte order mark)";
+        if (text.compare(0, 4, "\x89PNG") == 0) return "is a PNG image, not text";
+        return "is a binary file, not text (or UTF-16 without a byte order mark)";
     }
     return nullptr;
 }
