@@ -19,7 +19,8 @@ namespace fs = std::filesystem;
 
 const std::string kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 // A PNG signature and the start of an IHDR chunk: what a .png renamed .obj begins with.
-const std::string kPngHead = std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x02\0\0\0", 33);
+constexpr char kPngHeadBytes[] = "\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x02\0\0\0";
+const std::string kPngHead(kPngHeadBytes, sizeof kPngHeadBytes - 1);  // the NULs are part of it
 
 std::string all_text(const ParseResult& result) {
     std::string text;
