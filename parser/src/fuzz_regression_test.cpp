@@ -54,6 +54,22 @@ TEST(FuzzRegression, AWarningDoesNotCountAsAnError) {
     EXPECT_NE(all_diagnostics(result).find("only a warning"), std::string::npos);
 }
 
+// fuzz_scene timeout (procedural.pov with "#local L = L + 0"): an outer
+// #while that never ends, around inner loops that create spheres. Each
+// loop's own cap restarts for every inner loop, so objects grew until the
+// token budget; max_objects now stops them.
+TEST(FuzzRegression, NestedLoopsStopAtTheObjectLimit) {
+    ParseOptions options;
+    options.max_objects = 500;
+    ParseResult result = parse_scene_string(
+        "#declare L = 0;\n#while (L < 5)\n#declare A = 0;\n#while (A < 3)\n  sphere { <A, L, 0>, 0.5 }\n"
+        "#declare A = A + 1;\n#end\n#declare L = L + 0;\n#end\n",
+        "nested.pov", options);
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(all_diagnostics(result).find("nested.pov:5:3: error: the scene has more than 500 objects"), std::string::npos)
+        << all_diagnostics(result);
+}
+
 // #debug prints a message without a caret (its location has no column).
 TEST(FuzzRegression, DebugMessageHasNoCaret) {
     ParseResult result = parse_scene_string("#debug \"hello\"\nsphere { 0, 1 }\n", "debug.pov");

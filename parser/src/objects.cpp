@@ -347,6 +347,12 @@ void Evaluator::finish_image_map(sg::ImageMap& image, const sg::SourceLocation& 
 // ----------------------------------------------------------------- scene
 
 void Evaluator::add_object(const ShapePtr& shape) {
+    if (static_cast<long>(m_scene.objects.size()) >= m_options.max_objects) {
+        error(shape->object.location, "the scene has more than " + std::to_string(m_options.max_objects) +
+                                          " objects (the limit; ParseOptions::max_objects)");
+        abort_parse();
+        return;
+    }
     for (const auto& light : shape->lights) add_light(light, shape->object.parent_from_object);
     const auto* group = std::get_if<sg::Group>(&shape->object.shape);
     if (group && group->children.empty() && !shape->lights.empty()) return;  // object { Light }

@@ -18,6 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     static const std::string root = std::filesystem::current_path().string();
     lancer::ParseOptions options;
     options.max_loop_iterations = 2000;
+    options.max_objects = 2000;  // nested loops: see fuzz_regression_test.cpp
     options.safe = true;
     options.safe_root = root;
     std::string_view text(reinterpret_cast<const char*>(data), size);

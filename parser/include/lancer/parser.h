@@ -53,6 +53,9 @@ struct ParseOptions {
     // Triangles in the whole scene (mesh, mesh2, obj_mesh): ~100 bytes each
     // once the renderer holds them, so the default stops at ~5 GiB.
     long max_triangles = 50'000'000;
+    // Top-level objects: loops nest, and each nested #while has its own
+    // iteration cap, so only this bounds what nested loops can create.
+    long max_objects = 2'000'000;
     // Size of one scene, include or OBJ/MTL file; checked before reading.
     long long max_file_bytes = 1LL << 30;
 };
