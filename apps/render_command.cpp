@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_output.h"
 #include "commands.h"
 #include "lancer/checkpoint.h"
 #include "lancer/counting_scene.h"
@@ -112,34 +113,6 @@ struct RenderArguments {
     CLI::Option* noise_option = nullptr;
     CLI::Option* checkpoint_option = nullptr;
 };
-
-void print_error(const std::string& message) {
-    std::fprintf(stderr, "lancer: error: %s\n", message.c_str());
-}
-
-// Located diagnostics in the parser's format; one without a file (a setting
-// that came from no scene text) as a plain "lancer: error:" line.
-void print_diagnostic(const Diagnostic& diagnostic) {
-    if (!diagnostic.location.file) {
-        const char* severity = diagnostic.severity == Diagnostic::Severity::Error     ? "error"
-                               : diagnostic.severity == Diagnostic::Severity::Warning ? "warning"
-                                                                                      : "note";
-        std::fprintf(stderr, "lancer: %s: %s\n", severity, diagnostic.message.c_str());
-        return;
-    }
-    std::string text = format_diagnostic(diagnostic);
-    if (text.empty() || text.back() != '\n') text += '\n';
-    std::fputs(text.c_str(), stderr);
-}
-
-// A SceneError from any stage after parsing, shown like a parser diagnostic.
-void print_scene_error(const SceneError& error) {
-    Diagnostic diagnostic;
-    diagnostic.severity = Diagnostic::Severity::Error;
-    diagnostic.location = error.location();
-    diagnostic.message = error.what();
-    print_diagnostic(diagnostic);
-}
 
 // "x0,y0,x1,y1" as four integers, nothing else.
 bool parse_crop(const std::string& text, CropWindow& crop) {

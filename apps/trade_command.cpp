@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_output.h"
 #include "commands.h"
 #include "lancer/counting_scene.h"
 #include "lancer/image_metrics.h"
@@ -86,8 +87,6 @@ double process_cpu_seconds() {
     ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
     return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
 }
-
-void print_error(const std::string& message) { std::fprintf(stderr, "lancer: error: %s\n", message.c_str()); }
 
 // One line per step when stdout is not a terminal (logs, CI), else a bar
 // redrawn in place that counts steps and shows the time spent.
@@ -477,7 +476,7 @@ int run_trade(const TradeArguments& arguments) {
                     integrators.size(), seconds_text(total).c_str(), (out / "results.csv").c_str(),
                     (out / plots.front()).c_str(), (out / "index.html").c_str());
     } catch (const SceneError& error) {
-        print_error(std::string(error.what()));
+        print_scene_error(error);
         return kExitBadInput;
     } catch (const std::exception& error) {
         print_error(error.what());
