@@ -351,11 +351,13 @@ void set_leak_counter(benchmark::State& state, const BenchScene& bench) {
     state.counters["leaks_without_robust"] = double(robust_hits) - double(fast_hits);
 }
 
-void BM_RaycastPrimaryRays(benchmark::State& state) {
-    BenchScene& bench = bench_scene();
+// Times one frame per iteration with `trace_frame` and reports throughput
+// per wall second and per CPU second (the latter steadier on a busy machine).
+template <typename TraceFrame>
+void time_primary_rays(benchmark::State& state, BenchScene& bench, TraceFrame trace_frame) {
     double seconds = 0.0, cpu_seconds = 0.0;
     for (auto _ : state) {
-        const FrameTime frame = bench.render_raycast();
+        const FrameTime frame = trace_frame();
         state.SetIterationTime(frame.wall);
         seconds += frame.wall;
         cpu_seconds += frame.cpu;
@@ -363,49 +365,27 @@ void BM_RaycastPrimaryRays(benchmark::State& state) {
     state.counters["Mrays/s"] = kRaysPerFrame * double(state.iterations()) / seconds / 1e6;
     state.counters["Mrays/cpu_s"] = kRaysPerFrame * double(state.iterations()) / cpu_seconds / 1e6;
     set_common_counters(state, bench);
+}
+
+void BM_RaycastPrimaryRays(benchmark::State& state) {
+    BenchScene& bench = bench_scene();
+    time_primary_rays(state, bench, [&] { return bench.render_raycast(); });
 }
 
 void BM_BareEmbreePrimaryRays(benchmark::State& state) {
     BenchScene& bench = bench_scene();
-    double seconds = 0.0, cpu_seconds = 0.0;
-    for (auto _ : state) {
-        const FrameTime frame = bench.trace_bare();
-        state.SetIterationTime(frame.wall);
-        seconds += frame.wall;
-        cpu_seconds += frame.cpu;
-    }
-    state.counters["Mrays/s"] = kRaysPerFrame * double(state.iterations()) / seconds / 1e6;
-    state.counters["Mrays/cpu_s"] = kRaysPerFrame * double(state.iterations()) / cpu_seconds / 1e6;
-    set_common_counters(state, bench);
+    time_primary_rays(state, bench, [&] { return bench.trace_bare(); });
 }
 
 void BM_BareEmbreeRobustPrimaryRays(benchmark::State& state) {
     BenchScene& bench = bench_scene();
-    double seconds = 0.0, cpu_seconds = 0.0;
-    for (auto _ : state) {
-        const FrameTime frame = bench.trace_bare(true);
-        state.SetIterationTime(frame.wall);
-        seconds += frame.wall;
-        cpu_seconds += frame.cpu;
-    }
-    state.counters["Mrays/s"] = kRaysPerFrame * double(state.iterations()) / seconds / 1e6;
-    state.counters["Mrays/cpu_s"] = kRaysPerFrame * double(state.iterations()) / cpu_seconds / 1e6;
-    set_common_counters(state, bench);
+    time_primary_rays(state, bench, [&] { return bench.trace_bare(true); });
 }
 
 void BM_HostIntersectOnlyPrimaryRays(benchmark::State& state) {
     BenchScene& bench = bench_scene();
     const IntersectOnly intersect_only;
-    double seconds = 0.0, cpu_seconds = 0.0;
-    for (auto _ : state) {
-        const FrameTime frame = bench.render_raycast(&intersect_only);
-        state.SetIterationTime(frame.wall);
-        seconds += frame.wall;
-        cpu_seconds += frame.cpu;
-    }
-    state.counters["Mrays/s"] = kRaysPerFrame * double(state.iterations()) / seconds / 1e6;
-    state.counters["Mrays/cpu_s"] = kRaysPerFrame * double(state.iterations()) / cpu_seconds / 1e6;
-    set_common_counters(state, bench);
+    time_primary_rays(state, bench, [&] { return bench.render_raycast(&intersect_only); });
 }
 
 // All three in alternation, so drift in machine load hits them alike.
