@@ -12,6 +12,9 @@
 // watertight meshes (render/src/watertight_test.cpp): the flag's own cost.
 // BM_HostIntersectOnlyPrimaryRays runs the host with an integrator that only
 // intersects, to tell the host's and RenderScene's share from raycast's.
+// BM_BarePackets traces the rays in 4x4-pixel packets (rtcIntersect16), as
+// the host does for integrators that shade camera hits it finds
+// (Integrator::shades_camera_hits): what Embree alone gains from coherence.
 //
 // Counters: Mrays/s for each; in BM_RaycastOverBareEmbree, measured in
 // alternation in one process, `ratio` = raycast / bare and `ratio_robust` =
@@ -62,6 +65,21 @@ std::atomic<long long> g_embree_bytes{0};
 bool count_embree_bytes(void*, ssize_t bytes, bool) {
     g_embree_bytes += bytes;
     return true;
+}
+
+void to_embree(const Ray& ray, RTCRay& out) {
+    out.org_x = ray.origin.x;
+    out.org_y = ray.origin.y;
+    out.org_z = ray.origin.z;
+    out.dir_x = ray.direction.x;
+    out.dir_y = ray.direction.y;
+    out.dir_z = ray.direction.z;
+    out.tnear = ray.t_min;
+    out.tfar = ray.t_max;
+    out.time = 0.0f;
+    out.mask = 0xFFFFFFFFu;
+    out.id = 0;
+    out.flags = 0;
 }
 
 // Resets the process's peak resident set (VmHWM) to the current one, so a
@@ -137,11 +155,10 @@ std::shared_ptr<sg::TriangleMesh> make_height_field() {
 // The host's loop with the cheapest possible integrator: one scene.intersect
 // per ray and nothing else. Separates the host's and RenderScene's own cost
 // from raycast's shading.
-class IntersectOnly final : public Integrator {
+class IntersectOnly final : public FirstHitIntegrator {
 public:
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler&) const override {
-        Hit hit;
-        return scene.intersect(ray, hit) ? Color(1.0f) : Color(0.0f);
+    Color radiance_from_hit(const Ray&, const Hit* hit, const RenderScene&, Sampler&) const override {
+        return hit ? Color(1.0f) : Color(0.0f);
     }
     bool is_deterministic() const override { return true; }
 };
@@ -274,53 +291,91 @@ struct BenchScene {
         return time;
     }
 
-    // Seconds for the same rays through rtcIntersect1 alone, same tiles and threads.
-    // `hit_count`, when given, receives the number of rays that hit.
-    FrameTime trace_bare(bool robust = false, std::uint64_t* hit_count = nullptr) const {
-        const RTCScene target = robust ? bare_robust_scene : bare_scene;
+    // Times one frame of 16x16 tiles on kThreads threads; `trace_tile(tile,
+    // context)` traces the tile's rays and returns how many hit. The total
+    // goes to `hit_count` when given.
+    template <typename TraceTile>
+    FrameTime trace_tiles(TraceTile trace_tile, std::uint64_t* hit_count) const {
         tbb::task_arena arena(kThreads);
-        std::vector<unsigned> hits(kHeight, 0);
+        std::atomic<std::uint64_t> hits{0};
         const FrameClock clock;
         arena.execute([&] {
             tbb::parallel_for(tbb::blocked_range2d<int>(0, kHeight, 16, 0, kWidth, 16),
                               [&](const tbb::blocked_range2d<int>& tile) {
-                                  RTCIntersectContext context;
-                                  rtcInitIntersectContext(&context);
-                                  for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
-                                      unsigned row_hits = 0;
-                                      for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
-                                          const Ray& ray = camera_rays[std::size_t(y) * kWidth + x];
-                                          RTCRayHit query;
-                                          query.ray.org_x = ray.origin.x;
-                                          query.ray.org_y = ray.origin.y;
-                                          query.ray.org_z = ray.origin.z;
-                                          query.ray.dir_x = ray.direction.x;
-                                          query.ray.dir_y = ray.direction.y;
-                                          query.ray.dir_z = ray.direction.z;
-                                          query.ray.tnear = ray.t_min;
-                                          query.ray.tfar = ray.t_max;
-                                          query.ray.time = 0.0f;
-                                          query.ray.mask = 0xFFFFFFFFu;
-                                          query.ray.id = 0;
-                                          query.ray.flags = 0;
-                                          query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                                          query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-                                          rtcIntersect1(target, &context, &query);
-                                          row_hits += query.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-                                      }
-                                      // Rows are split across tiles; relaxed accumulation is fine
-                                      // for a value only kept alive for the optimiser.
-                                      __atomic_add_fetch(&hits[y], row_hits, __ATOMIC_RELAXED);
-                                  }
+                                  hits.fetch_add(trace_tile(tile), std::memory_order_relaxed);
                               });
         });
         const FrameTime time = clock.stop();
-        benchmark::DoNotOptimize(hits.data());
-        if (hit_count) {
-            *hit_count = 0;
-            for (unsigned row : hits) *hit_count += row;
-        }
+        if (hit_count) *hit_count = hits;
         return time;
+    }
+
+    // Seconds for the same rays through rtcIntersect1 alone, same tiles and threads.
+    // `hit_count`, when given, receives the number of rays that hit.
+    FrameTime trace_bare(bool robust = false, std::uint64_t* hit_count = nullptr) const {
+        const RTCScene target = robust ? bare_robust_scene : bare_scene;
+        return trace_tiles(
+            [&](const tbb::blocked_range2d<int>& tile) {
+                RTCIntersectContext context;
+                rtcInitIntersectContext(&context);
+                std::uint64_t found = 0;
+                for (int y = tile.rows().begin(); y < tile.rows().end(); ++y)
+                    for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+                        RTCRayHit query;
+                        to_embree(camera_rays[std::size_t(y) * kWidth + x], query.ray);
+                        query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+                        query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+                        rtcIntersect1(target, &context, &query);
+                        found += query.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+                    }
+                return found;
+            },
+            hit_count);
+    }
+
+    // The same rays in 4x4-pixel packets through rtcIntersect16: what
+    // coherent camera rays cost Embree when traced together.
+    FrameTime trace_bare_packets(bool robust) const {
+        const RTCScene target = robust ? bare_robust_scene : bare_scene;
+        return trace_tiles(
+            [&](const tbb::blocked_range2d<int>& tile) {
+                RTCIntersectContext context;
+                rtcInitIntersectContext(&context);
+                context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+                std::uint64_t found = 0;
+                for (int y0 = tile.rows().begin(); y0 < tile.rows().end(); y0 += 4)
+                    for (int x0 = tile.cols().begin(); x0 < tile.cols().end(); x0 += 4) {
+                        alignas(64) RTCRayHit16 packet;
+                        alignas(64) int valid[16];
+                        for (int k = 0; k < 16; ++k) {
+                            const int x = x0 + (k & 3), y = y0 + (k >> 2);
+                            valid[k] = x < tile.cols().end() && y < tile.rows().end() ? -1 : 0;
+                            RTCRay ray;
+                            to_embree(camera_rays[std::size_t(std::min(y, kHeight - 1)) * kWidth +
+                                                  std::min(x, kWidth - 1)],
+                                      ray);
+                            packet.ray.org_x[k] = ray.org_x;
+                            packet.ray.org_y[k] = ray.org_y;
+                            packet.ray.org_z[k] = ray.org_z;
+                            packet.ray.dir_x[k] = ray.dir_x;
+                            packet.ray.dir_y[k] = ray.dir_y;
+                            packet.ray.dir_z[k] = ray.dir_z;
+                            packet.ray.tnear[k] = ray.tnear;
+                            packet.ray.tfar[k] = ray.tfar;
+                            packet.ray.time[k] = ray.time;
+                            packet.ray.mask[k] = ray.mask;
+                            packet.ray.id[k] = ray.id;
+                            packet.ray.flags[k] = ray.flags;
+                            packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+                            packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+                        }
+                        rtcIntersect16(valid, target, &context, &packet);
+                        for (int k = 0; k < 16; ++k)
+                            found += valid[k] && packet.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
+                    }
+                return found;
+            },
+            nullptr);
     }
 };
 
@@ -418,6 +473,12 @@ void BM_RaycastOverBareEmbree(benchmark::State& state) {
     set_leak_counter(state, bench);
 }
 
+// Arg 0: without, 1: with RTC_SCENE_FLAG_ROBUST.
+void BM_BarePackets(benchmark::State& state) {
+    BenchScene& bench = bench_scene();
+    time_primary_rays(state, bench, [&] { return bench.trace_bare_packets(state.range(0) != 0); });
+}
+BENCHMARK(BM_BarePackets)->Arg(0)->Arg(1)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_RaycastPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_BareEmbreePrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_BareEmbreeRobustPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);

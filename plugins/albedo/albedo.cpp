@@ -15,13 +15,12 @@ namespace {
 
 using namespace lancer;
 
-class AlbedoIntegrator final : public Integrator {
+class AlbedoIntegrator final : public FirstHitIntegrator {
 public:
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler&) const override {
-        Hit hit;
-        if (!scene.intersect(ray, hit)) return Color(0.0f);
-        const Material& material = *hit.material;
-        return material.sample_surface(hit).pigment * material.parameters().diffuse;
+    Color radiance_from_hit(const Ray&, const Hit* hit, const RenderScene&, Sampler&) const override {
+        if (!hit) return Color(0.0f);
+        const Material& material = *hit->material;
+        return material.sample_surface(*hit).pigment * material.parameters().diffuse;
     }
 
     bool is_deterministic() const override { return true; }

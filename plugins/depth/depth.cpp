@@ -26,16 +26,15 @@ namespace {
 
 using namespace lancer;
 
-class DepthIntegrator final : public Integrator {
+class DepthIntegrator final : public FirstHitIntegrator {
 public:
     explicit DepthIntegrator(float max_distance) : m_max_distance(max_distance) {}
 
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler&) const override {
-        Hit hit;
+    Color radiance_from_hit(const Ray& ray, const Hit* hit, const RenderScene&, Sampler&) const override {
         const bool normalised = m_max_distance > 0.0f;
-        if (!scene.intersect(ray, hit)) return Color(normalised ? 1.0f : 0.0f);
+        if (!hit) return Color(normalised ? 1.0f : 0.0f);
         // t is in units of the direction's length, which need not be 1.
-        const float distance = hit.t * glm::length(ray.direction);
+        const float distance = hit->t * glm::length(ray.direction);
         return Color(normalised ? std::min(distance / m_max_distance, 1.0f) : distance);
     }
 

@@ -21,13 +21,13 @@ namespace {
 
 using namespace lancer;
 
-class NormalIntegrator final : public Integrator {
+class NormalIntegrator final : public FirstHitIntegrator {
 public:
     explicit NormalIntegrator(bool shading) : m_shading(shading) {}
 
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler&) const override {
-        Hit hit;
-        if (!scene.intersect(ray, hit)) return Color(0.0f);
+    Color radiance_from_hit(const Ray& ray, const Hit* found, const RenderScene&, Sampler&) const override {
+        if (!found) return Color(0.0f);
+        const Hit& hit = *found;
         const Vec3 toward_camera = -ray.direction;
         Vec3 n = m_shading ? hit.facing_normal(toward_camera) : hit.geometric_normal;
         if (glm::dot(n, toward_camera) < 0.0f) n = -n;

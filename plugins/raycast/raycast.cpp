@@ -62,14 +62,14 @@ private:
     bool m_started = false;
 };
 
-class RaycastIntegrator final : public Integrator {
+class RaycastIntegrator final : public FirstHitIntegrator {
 public:
     RaycastIntegrator(bool with_ambient, bool with_specular)
         : m_with_ambient(with_ambient), m_with_specular(with_specular) {}
 
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler&) const override {
-        Hit hit;
-        if (!scene.intersect(ray, hit)) return scene.background(ray);
+    Color radiance_from_hit(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler&) const override {
+        if (!found) return scene.background(ray);
+        const Hit& hit = *found;
         // The same local model as shadow/whitted/gather (local_shading.h),
         // without shadow rays, so the integrators agree where nothing occludes.
         const ShadingContext at = make_shading_context(hit, ray);

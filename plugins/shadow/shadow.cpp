@@ -41,14 +41,15 @@ namespace {
 
 using namespace lancer;
 
-class ShadowIntegrator final : public Integrator {
+class ShadowIntegrator final : public FirstHitIntegrator {
 public:
     ShadowIntegrator(int area_samples, bool with_ambient)
         : m_area_samples(area_samples), m_with_ambient(with_ambient) {}
 
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const override {
-        Hit hit;
-        if (!scene.intersect(ray, hit)) return scene.background(ray);
+    Color radiance_from_hit(const Ray& ray, const Hit* found, const RenderScene& scene,
+                            Sampler& sampler) const override {
+        if (!found) return scene.background(ray);
+        const Hit& hit = *found;
         const ShadingContext at = make_shading_context(hit, ray);
 
         Color radiance = surface_emission(at);

@@ -20,13 +20,13 @@ CountingScene::CountingScene(const RenderScene& inner)
     m_slots = std::make_unique<Slot[]>(std::size_t(m_slot_count));
 }
 
-void CountingScene::count() const {
+void CountingScene::count(std::uint64_t queries) const {
     const int index = tbb::this_task_arena::current_thread_index();
     if (index >= 0 && index + 1 < m_slot_count) {
         std::atomic<std::uint64_t>& slot = m_slots[index + 1].count;
-        slot.store(slot.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+        slot.store(slot.load(std::memory_order_relaxed) + queries, std::memory_order_relaxed);
     } else {
-        m_slots[kSharedSlot].count.fetch_add(1, std::memory_order_relaxed);
+        m_slots[kSharedSlot].count.fetch_add(queries, std::memory_order_relaxed);
     }
 }
 

@@ -85,44 +85,55 @@ void analytic_bounds(const RTCBoundsFunctionArguments* args) {
                                 instance.bounds_upper.x, instance.bounds_upper.y, instance.bounds_upper.z, 0.0f};
 }
 
+// Embree calls these with one ray, or with a packet of N when rays are
+// traced together (intersect_coherent); valid[i] says which lanes are live.
 void analytic_intersect(const RTCIntersectFunctionNArguments* args) {
-    if (!args->valid[0] || args->N != 1) return;
     const auto* group = static_cast<const AnalyticGroup*>(args->geometryUserPtr);
     const Instance& instance = group->data->instances[group->instances[args->primID]];
-    auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
-    const float org[3] = {rayhit->ray.org_x, rayhit->ray.org_y, rayhit->ray.org_z};
-    const float dir[3] = {rayhit->ray.dir_x, rayhit->ray.dir_y, rayhit->ray.dir_z};
-    DVec3 o, d;
-    ray_to_object(instance, org, dir, o, d);
-    double t;
-    int face;
-    if (!intersect_analytic(instance, o, d, rayhit->ray.tnear, rayhit->ray.tfar, t, face)) return;
-    const float t_float = float(t);
-    if (!(t_float < rayhit->ray.tfar)) return;
-    rayhit->ray.tfar = t_float;
-    rayhit->hit.u = float(face);
-    rayhit->hit.v = 0.0f;
-    rayhit->hit.Ng_x = 0.0f;
-    rayhit->hit.Ng_y = 1.0f;
-    rayhit->hit.Ng_z = 0.0f;
-    rayhit->hit.primID = args->primID;
-    rayhit->hit.geomID = args->geomID;
-    rayhit->hit.instID[0] = args->context->instID[0];
+    const unsigned n = args->N;
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, n);
+    RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
+    for (unsigned i = 0; i < n; ++i) {
+        if (!args->valid[i]) continue;
+        const float org[3] = {RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
+        const float dir[3] = {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
+        float& tfar = RTCRayN_tfar(rays, n, i);
+        DVec3 o, d;
+        ray_to_object(instance, org, dir, o, d);
+        double t;
+        int face;
+        if (!intersect_analytic(instance, o, d, RTCRayN_tnear(rays, n, i), tfar, t, face)) continue;
+        const float t_float = float(t);
+        if (!(t_float < tfar)) continue;
+        tfar = t_float;
+        RTCHitN_u(hits, n, i) = float(face);
+        RTCHitN_v(hits, n, i) = 0.0f;
+        RTCHitN_Ng_x(hits, n, i) = 0.0f;
+        RTCHitN_Ng_y(hits, n, i) = 1.0f;
+        RTCHitN_Ng_z(hits, n, i) = 0.0f;
+        RTCHitN_primID(hits, n, i) = args->primID;
+        RTCHitN_geomID(hits, n, i) = args->geomID;
+        RTCHitN_instID(hits, n, i, 0) = args->context->instID[0];
+    }
 }
 
 void analytic_occluded(const RTCOccludedFunctionNArguments* args) {
-    if (!args->valid[0] || args->N != 1) return;
     const auto* group = static_cast<const AnalyticGroup*>(args->geometryUserPtr);
     const Instance& instance = group->data->instances[group->instances[args->primID]];
     if (!instance.casts_shadow) return;
-    auto* ray = reinterpret_cast<RTCRay*>(args->ray);
-    const float org[3] = {ray->org_x, ray->org_y, ray->org_z};
-    const float dir[3] = {ray->dir_x, ray->dir_y, ray->dir_z};
-    DVec3 o, d;
-    ray_to_object(instance, org, dir, o, d);
-    double t;
-    int face;
-    if (intersect_analytic(instance, o, d, ray->tnear, ray->tfar, t, face)) ray->tfar = -INFINITY;
+    const unsigned n = args->N;
+    RTCRayN* rays = args->ray;
+    for (unsigned i = 0; i < n; ++i) {
+        if (!args->valid[i]) continue;
+        const float org[3] = {RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
+        const float dir[3] = {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
+        DVec3 o, d;
+        ray_to_object(instance, org, dir, o, d);
+        double t;
+        int face;
+        if (intersect_analytic(instance, o, d, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t, face))
+            RTCRayN_tfar(rays, n, i) = -INFINITY;
+    }
 }
 
 // Rejects hits on meshes of no_shadow objects during occluded().
@@ -159,6 +170,13 @@ void fill_embree_ray(const Ray& ray, RTCRay& out) {
     out.flags = 0;
 }
 
+// One ray's answer from Embree, whether traced alone or in a packet.
+struct EmbreeHit {
+    float tnear, tfar;
+    unsigned geometry, primitive, instance;
+    float u, v;
+};
+
 class EmbreeScene final : public RenderScene {
 public:
     explicit EmbreeScene(std::unique_ptr<SceneData> data) : m_data(std::move(data)) {
@@ -175,6 +193,7 @@ public:
     }
 
     bool intersect(const Ray& ray, Hit& hit) const override;
+    void intersect_coherent(const Ray* rays, int count, Hit* hits, bool* found) const override;
     bool occluded(const Ray& ray) const override;
     const std::vector<const Light*>& lights() const override { return m_data->lights; }
     const std::vector<const Light*>& local_lights() const override { return m_data->local_lights; }
@@ -186,6 +205,10 @@ public:
 private:
     void build();
     RTCGeometry make_triangles(const MeshData& mesh, const std::vector<float>& positions);
+    // The Hit from what Embree found for `ray` (and the planes outside it).
+    bool complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit) const;
+    // The mesh instance Embree's answer names, or null (analytic or no hit).
+    const Instance* mesh_instance_of(const EmbreeHit& found) const;
     void complete_analytic_hit(const Instance& instance, const Ray& ray, float t, int face, Hit& hit) const;
     void complete_mesh_hit(const Instance& instance, bool faces_are_triangles, std::uint32_t primitive, float b1,
                            float b2, Hit& hit) const;
@@ -346,44 +369,45 @@ void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_tri
     // Skipping the lookup when triangle i is face i saves one more cold load.
     const std::uint32_t face_index = faces_are_triangles ? primitive : mesh.face_of_triangle[primitive];
     const std::vector<float>& positions = instance.mesh_in_world ? instance.world_positions : mesh.object_positions;
-    // The hit from the same float vertices Embree intersected, in double:
-    // an affine combination, so it lies on the triangle's plane.
+    // The hit from the same float vertices Embree intersected: an affine
+    // combination, so it lies on the triangle's plane up to rounding, which
+    // `object_error` bounds (pbrt-v4's gamma(7) bound for this sum, made
+    // generous for Embree's own arithmetic).
     const std::uint32_t* corner = &mesh.indices[3 * primitive];
-    DVec3 vertex[3];
-    for (int k = 0; k < 3; ++k)
-        vertex[k] = DVec3(positions[3 * corner[k]], positions[3 * corner[k] + 1], positions[3 * corner[k] + 2]);
-    const double b1 = u, b2 = v, b0 = 1.0 - b1 - b2;
-    const DVec3 p = b0 * vertex[0] + b1 * vertex[1] + b2 * vertex[2];
-    DVec3 normal = glm::cross(vertex[1] - vertex[0], vertex[2] - vertex[0]);
-    const double normal_length = glm::length(normal);
-    normal = normal_length > 0.0 ? normal / normal_length : DVec3(0.0, 1.0, 0.0);
-    // Error: what the float vertices and Embree's float test may be off by,
-    // scaled by the largest vertex coordinate (pbrt-v4's triangle bound,
-    // made generous for Embree's own arithmetic).
-    DVec3 magnitude = glm::max(glm::abs(vertex[0]), glm::max(glm::abs(vertex[1]), glm::abs(vertex[2])));
-    const double largest = std::max({magnitude.x, magnitude.y, magnitude.z});
-    const DVec3 object_error(16.0 * FLT_EPSILON * largest);
-    DVec3 world, world_normal;
-    Vec3 error;
+    Vec3 vertex[3];
+    for (int k = 0; k < 3; ++k) {
+        const float* xyz = &positions[3 * std::size_t(corner[k])];
+        vertex[k] = Vec3(xyz[0], xyz[1], xyz[2]);
+    }
+    const float b1 = u, b2 = v, b0 = 1.0f - b1 - b2;
+    const Vec3 p = b0 * vertex[0] + b1 * vertex[1] + b2 * vertex[2];
+    Vec3 normal = glm::cross(vertex[1] - vertex[0], vertex[2] - vertex[0]);
+    const float normal_length = glm::length(normal);
+    normal = normal_length > 0.0f && std::isfinite(normal_length) ? normal / normal_length : Vec3(0.0f, 1.0f, 0.0f);
+    const Vec3 magnitude = glm::max(glm::abs(vertex[0]), glm::max(glm::abs(vertex[1]), glm::abs(vertex[2])));
+    const float largest = glm::max(magnitude.x, glm::max(magnitude.y, magnitude.z));
+    const Vec3 object_error(16.0f * FLT_EPSILON * largest);
+    Vec3 world, world_normal, error;
     if (instance.mesh_in_world) {
         world = p;
         world_normal = normal;
-        error = Vec3(object_error + 2.0 * double(FLT_EPSILON) * glm::abs(p));
+        error = object_error + 2.0f * FLT_EPSILON * glm::abs(p);
     } else {
-        world = instance.placement.point_to_world(p);
-        world_normal = instance.placement.normal_to_world_unit(normal);
+        const DVec3 world_point = instance.placement.point_to_world(DVec3(p));
+        world = Vec3(world_point);
+        world_normal = Vec3(instance.placement.normal_to_world_unit(DVec3(normal)));
         const DMat3 a(instance.placement.world_from_object);
         DVec3 spread(0.0);
         for (int row = 0; row < 3; ++row)
-            for (int col = 0; col < 3; ++col) spread[row] += std::fabs(a[col][row]) * object_error[col];
+            for (int col = 0; col < 3; ++col) spread[row] += std::fabs(a[col][row]) * double(object_error[col]);
         // Embree maps the ray to object space in float: an error of a few
         // ULPs of the world coordinates and the translation too.
-        error = Vec3(spread) + 8.0f * instance.placement.world_point_error(DVec3(largest), world);
+        error = Vec3(spread) + 8.0f * instance.placement.world_point_error(DVec3(largest), world_point);
     }
-    hit.position = Vec3(world);
+    hit.position = world;
     hit.position_error = error;
-    hit.geometric_normal = Vec3(world_normal);
-    hit.shading_normal = hit.geometric_normal;
+    hit.geometric_normal = world_normal;
+    hit.shading_normal = world_normal;  // not read back from hit: that stalls on the store just made
     // The source face (40 bytes a triangle, cold in cache: Embree traces its
     // own copies of the vertices) is read only when the mesh has per-vertex
     // normals or texture coordinates to interpolate.
@@ -430,10 +454,75 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
     rayhit.hit.instID[0] = kInvalidId;
     rayhit.hit.u = rayhit.hit.v = 0.0f;
     rtcIntersect1(m_scene, &context, &rayhit);
+    const EmbreeHit found{rayhit.ray.tnear, rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
+                          rayhit.hit.instID[0], rayhit.hit.u,  rayhit.hit.v};
+    return complete_hit(ray, found, hit);
+}
 
+void EmbreeScene::intersect_coherent(const Ray* rays, int count, Hit* hits, bool* found) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    constexpr int kLanes = 16;
+    for (int first = 0; first < count; first += kLanes) {
+        const int lanes = std::min(kLanes, count - first);
+        alignas(64) int valid[kLanes];
+        alignas(64) RTCRayHit16 packet;
+        for (int k = 0; k < kLanes; ++k) {
+            valid[k] = k < lanes ? -1 : 0;
+            // Idle lanes repeat a live ray so every lane holds finite data.
+            const Ray& ray = rays[first + std::min(k, lanes - 1)];
+            RTCRay single;
+            fill_embree_ray(ray, single);
+            packet.ray.org_x[k] = single.org_x;
+            packet.ray.org_y[k] = single.org_y;
+            packet.ray.org_z[k] = single.org_z;
+            packet.ray.dir_x[k] = single.dir_x;
+            packet.ray.dir_y[k] = single.dir_y;
+            packet.ray.dir_z[k] = single.dir_z;
+            packet.ray.tnear[k] = single.tnear;
+            packet.ray.tfar[k] = single.tfar;
+            packet.ray.time[k] = 0.0f;
+            packet.ray.mask[k] = single.mask;
+            packet.ray.id[k] = 0;
+            packet.ray.flags[k] = 0;
+            packet.hit.geomID[k] = kInvalidId;
+            packet.hit.primID[k] = kInvalidId;
+            packet.hit.instID[0][k] = kInvalidId;
+            packet.hit.u[k] = packet.hit.v[k] = 0.0f;
+        }
+        rtcIntersect16(valid, m_scene, &context, &packet);
+        EmbreeHit lane[kLanes];
+        for (int k = 0; k < lanes; ++k)
+            lane[k] = EmbreeHit{packet.ray.tnear[k], packet.ray.tfar[k], packet.hit.geomID[k], packet.hit.primID[k],
+                                packet.hit.instID[0][k], packet.hit.u[k],   packet.hit.v[k]};
+        // The hit triangles' corners are cold in cache (Embree traverses its
+        // own copy of the vertices): request every lane's before completing
+        // any, so the misses overlap instead of following one another.
+        for (int k = 0; k < lanes; ++k)
+            if (const Instance* mesh = mesh_instance_of(lane[k]))
+                __builtin_prefetch(&mesh->mesh->indices[3 * std::size_t(lane[k].primitive)]);
+        for (int k = 0; k < lanes; ++k)
+            if (const Instance* mesh = mesh_instance_of(lane[k])) {
+                const std::vector<float>& positions =
+                    mesh->mesh_in_world ? mesh->world_positions : mesh->mesh->object_positions;
+                const std::uint32_t* corner = &mesh->mesh->indices[3 * std::size_t(lane[k].primitive)];
+                for (int c = 0; c < 3; ++c) __builtin_prefetch(&positions[3 * std::size_t(corner[c])]);
+            }
+        for (int k = 0; k < lanes; ++k) found[first + k] = complete_hit(rays[first + k], lane[k], hits[first + k]);
+    }
+}
+
+const Instance* EmbreeScene::mesh_instance_of(const EmbreeHit& found) const {
+    if (found.geometry == kInvalidId) return nullptr;
+    const GeometryEntry& entry = m_geometries[found.instance != kInvalidId ? found.instance : found.geometry];
+    return entry.group ? nullptr : &m_data->instances[entry.instance];
+}
+
+bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit) const {
     // Planes are outside the BVH: test them against the nearest so far.
     std::uint32_t plane_hit = kInvalidId;
-    double plane_t = rayhit.hit.geomID != kInvalidId ? double(rayhit.ray.tfar) : double(rayhit.ray.tfar);
+    double plane_t = double(found.tfar);
     for (std::uint32_t index : m_planes) {
         const Instance& instance = m_data->instances[index];
         DVec3 o, d;
@@ -441,7 +530,7 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
         const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
         ray_to_object(instance, org, dir, o, d);
         double t;
-        if (intersect_plane(instance.plane, o, d, rayhit.ray.tnear, plane_t, t)) {
+        if (intersect_plane(instance.plane, o, d, found.tnear, plane_t, t)) {
             plane_t = t;
             plane_hit = index;
         }
@@ -456,20 +545,20 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
         hit.emitter = instance.emitter;
         return true;
     }
-    if (rayhit.hit.geomID == kInvalidId) return false;
+    if (found.geometry == kInvalidId) return false;
 
     hit = Hit{};
-    hit.t = rayhit.ray.tfar;
-    const unsigned top = rayhit.hit.instID[0] != kInvalidId ? rayhit.hit.instID[0] : rayhit.hit.geomID;
+    hit.t = found.tfar;
+    const unsigned top = found.instance != kInvalidId ? found.instance : found.geometry;
     const GeometryEntry& entry = m_geometries[top];
     std::uint32_t index;
     if (entry.group) {
-        index = entry.group->instances[rayhit.hit.primID];
-        complete_analytic_hit(m_data->instances[index], ray, rayhit.ray.tfar, int(rayhit.hit.u), hit);
+        index = entry.group->instances[found.primitive];
+        complete_analytic_hit(m_data->instances[index], ray, found.tfar, int(found.u), hit);
     } else {
         index = entry.instance;
-        complete_mesh_hit(m_data->instances[index], m_faces_are_triangles[index] != 0, rayhit.hit.primID,
-                          rayhit.hit.u, rayhit.hit.v, hit);
+        complete_mesh_hit(m_data->instances[index], m_faces_are_triangles[index] != 0, found.primitive, found.u,
+                          found.v, hit);
     }
     const Instance& instance = m_data->instances[index];
     hit.object_id = index;

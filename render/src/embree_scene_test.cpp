@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "lancer/render_scene.h"
 #include "lancer/scene_error.h"
@@ -157,6 +159,52 @@ TEST(EmbreeScene, MeshUsedTwiceIsInstancedWithEachTransform) {
     EXPECT_NEAR(hit.position.x, 10.0f, 1e-5f);
     EXPECT_EQ(hit.material->sample_surface(hit).pigment, Color(0, 1, 0));
     EXPECT_NE(hit.object_id, first);
+}
+
+// Rays traced together (as the host traces camera rays) must find exactly
+// what they find one by one, on every kind of shape, including instanced
+// meshes, planes outside the BVH and rays that hit nothing; batch sizes
+// that are not multiples of the packet width leave idle lanes.
+TEST(EmbreeScene, CoherentBatchesFindWhatSingleRaysFind) {
+    const auto mesh = triangle_mesh({-1, 0, 0}, {1, 0, 0}, {0, 1.5, 0});
+    auto scene = compile_objects({
+        sphere_object({-1.5, 0.5, 6}, 0.8, solid_material({1, 0, 0})),
+        box_object({0.5, -0.5, 5}, {1.5, 0.5, 6}, solid_material({0, 1, 0})),
+        plane_object({0, 1, 0}, -1.0, solid_material({0, 0, 1})),
+        mesh_object(mesh, solid_material({1, 1, 0}), glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 8))),
+        mesh_object(mesh, solid_material({0, 1, 1}), glm::translate(glm::dmat4(1.0), glm::dvec3(2, 1, 9))),
+        mesh_object(triangle_mesh({-3, 2, 7}, {-2, 2, 7}, {-2.5, 3, 7}), solid_material({1, 0, 1})),
+    });
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> spread(-0.6f, 0.6f);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 1000; ++i) rays.push_back(make_ray(Vec3(0, 0.5f, 0), Vec3(spread(random), spread(random), 1)));
+    int hits_found = 0;
+    for (std::size_t first = 0; first < rays.size(); first += 37) {
+        const int count = int(std::min<std::size_t>(37, rays.size() - first));
+        std::vector<Hit> batch(count);
+        std::unique_ptr<bool[]> found(new bool[count]);
+        scene->intersect_coherent(&rays[first], count, batch.data(), found.get());
+        for (int i = 0; i < count; ++i) {
+            Hit single;
+            const bool single_found = scene->intersect(rays[first + i], single);
+            ASSERT_EQ(found[i], single_found) << "ray " << first + i;
+            if (!single_found) continue;
+            ++hits_found;
+            const Hit& h = batch[i];
+            EXPECT_EQ(h.t, single.t);
+            EXPECT_EQ(h.position, single.position);
+            EXPECT_EQ(h.position_error, single.position_error);
+            EXPECT_EQ(h.geometric_normal, single.geometric_normal);
+            EXPECT_EQ(h.shading_normal, single.shading_normal);
+            EXPECT_EQ(h.uv, single.uv);
+            EXPECT_EQ(h.material, single.material);
+            EXPECT_EQ(h.emitter, single.emitter);
+            EXPECT_EQ(h.object_id, single.object_id);
+            EXPECT_EQ(h.primitive_id, single.primitive_id);
+        }
+    }
+    EXPECT_GT(hits_found, 500);  // the rays do meet the shapes
 }
 
 TEST(EmbreeScene, NoShadowObjectsDoNotOcclude) {

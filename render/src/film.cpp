@@ -11,12 +11,16 @@ namespace lancer {
 Film::Film(int width, int height) : m_width(width), m_height(height) {
     if (width <= 0 || height <= 0) throw std::invalid_argument("film size must be positive");
     m_pixels.resize(std::size_t(width) * std::size_t(height));
+    m_taken.resize(m_pixels.size(), 0);
 }
 
 void Film::add_sample(int x, int y, const Color& radiance) {
-    Accumulator& pixel = m_pixels[std::size_t(y) * m_width + x];
+    const std::size_t index = std::size_t(y) * m_width + x;
+    Accumulator& pixel = m_pixels[index];
+    ++m_taken[index];
     if (!std::isfinite(radiance.r) || !std::isfinite(radiance.g) || !std::isfinite(radiance.b)) {
         ++pixel.nonfinite;
+        m_nonfinite_total.value.fetch_add(1, std::memory_order_relaxed);
         return;
     }
     const glm::dvec3 value(radiance);
@@ -42,22 +46,18 @@ Color Film::variance_of_mean(int x, int y) const {
 
 std::uint32_t Film::sample_count(int x, int y) const { return at(x, y).count; }
 
-std::uint32_t Film::samples_taken(int x, int y) const {
-    const Accumulator& pixel = at(x, y);
-    return pixel.count + pixel.nonfinite;
-}
 
 void Film::restore(std::vector<Accumulator> accumulators) {
     if (accumulators.size() != m_pixels.size())
         throw std::invalid_argument("film restore: " + std::to_string(accumulators.size()) + " pixels for a " +
                                     std::to_string(m_width) + "x" + std::to_string(m_height) + " film");
     m_pixels = std::move(accumulators);
-}
-
-std::uint64_t Film::nonfinite_samples() const {
-    std::uint64_t total = 0;
-    for (const Accumulator& pixel : m_pixels) total += pixel.nonfinite;
-    return total;
+    std::uint64_t nonfinite = 0;
+    for (std::size_t i = 0; i < m_pixels.size(); ++i) {
+        nonfinite += m_pixels[i].nonfinite;
+        m_taken[i] = m_pixels[i].count + m_pixels[i].nonfinite;
+    }
+    m_nonfinite_total.value.store(nonfinite, std::memory_order_relaxed);
 }
 
 }  // namespace lancer

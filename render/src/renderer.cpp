@@ -18,6 +18,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
 
 #include "lancer/counting_scene.h"
@@ -117,19 +118,48 @@ public:
     std::uint32_t cap() const { return m_cap; }
 
     // Samples each pixel would take next pass without a time limit; returns
-    // their total (0: the render is done).
+    // their total (0: the render is done). One parallel sweep of the film,
+    // which also counts the samples it already holds (taken_at_plan()) and
+    // whether this plan, carried out whole, completes every pixel.
     std::uint64_t plan_unlimited(const Film& film) {
         if (m_mode == Mode::Adaptive) update_relative_variance(film);
-        std::uint64_t total = 0;
-        for (int y = 0; y < m_height; ++y)
-            for (int x = 0; x < m_width; ++x) {
-                const std::size_t i = index(x, y);
-                m_wanted[i] = wanted(film, x, y);
-                total += m_wanted[i];
-            }
-        m_plan = m_wanted;
-        return total;
+        struct Sweep {
+            std::uint64_t wanted = 0, taken = 0;
+            bool completes = true;
+        };
+        const Sweep sweep = tbb::parallel_reduce(
+            tbb::blocked_range<int>(0, m_height), Sweep{},
+            [&](const tbb::blocked_range<int>& rows, Sweep sum) {
+                for (int y = rows.begin(); y < rows.end(); ++y)
+                    for (int x = 0; x < m_width; ++x) {
+                        const std::size_t i = index(x, y);
+                        const std::uint32_t taken =
+                            std::min(film.samples_taken(m_window.x0 + x, m_window.y0 + y), m_cap);
+                        const std::uint32_t wanted = wanted_after(taken, x, y);
+                        m_wanted[i] = m_plan[i] = wanted;
+                        sum.wanted += wanted;
+                        sum.taken += taken;
+                        sum.completes = sum.completes && taken + wanted >= m_cap;
+                    }
+                return sum;
+            },
+            [](Sweep a, const Sweep& b) {
+                a.wanted += b.wanted;
+                a.taken += b.taken;
+                a.completes = a.completes && b.completes;
+                return a;
+            });
+        m_taken_at_plan = sweep.taken;
+        m_plan_completes = sweep.completes;
+        return sweep.wanted;
     }
+
+    // Samples the film held (each pixel counted up to the cap) when the
+    // last plan was made.
+    std::uint64_t taken_at_plan() const { return m_taken_at_plan; }
+    // True when the current plan, carried out whole, leaves no pixel wanting
+    // more: the render can end without sweeping the film once more.
+    bool plan_completes() const { return m_plan_completes && m_mode != Mode::Adaptive; }
 
     // Lowers the plan so that it costs at most `samples` samples by capping
     // every pixel at the largest common per-pixel count that fits. Returns
@@ -142,6 +172,7 @@ public:
         };
         std::uint32_t low = 0, high = *std::max_element(m_wanted.begin(), m_wanted.end());
         if (total_at(high) <= samples) return total_at(high);
+        m_plan_completes = false;
         while (low < high) {  // largest limit whose total fits
             const std::uint32_t middle = low + (high - low + 1) / 2;
             if (total_at(middle) <= samples) low = middle;
@@ -183,8 +214,7 @@ private:
         return total;
     }
 
-    std::uint32_t wanted(const Film& film, int x, int y) const {
-        const std::uint32_t taken = film.samples_taken(m_window.x0 + x, m_window.y0 + y);
+    std::uint32_t wanted_after(std::uint32_t taken, int x, int y) const {
         if (taken >= m_cap) return 0;
         const std::uint32_t room = m_cap - taken;
         const std::uint32_t doubling = std::max<std::uint32_t>(taken, 1);
@@ -230,6 +260,31 @@ private:
     std::vector<std::uint32_t> m_wanted;  // per pixel, before any time limit
     std::vector<std::uint32_t> m_plan;    // per pixel, this pass
     std::vector<double> m_relative_variance;
+    std::uint64_t m_taken_at_plan = 0;
+    bool m_plan_completes = false;
+};
+
+// Camera samples waiting to be traced together: a 4x4 block of pixels at
+// one sample each fills it.
+struct CameraBatch {
+    static constexpr int kBlock = 4;
+    static constexpr int kCapacity = kBlock * kBlock;
+    struct Sample {
+        int x, y;
+        std::uint32_t index;
+    };
+    Sample samples[kCapacity];
+    Ray rays[kCapacity];
+    Hit hits[kCapacity];
+    bool found[kCapacity];
+    int size = 0;
+
+    void add(int x, int y, std::uint32_t index, const Ray& ray) {
+        samples[size] = Sample{x, y, index};
+        rays[size] = ray;
+        ++size;
+    }
+    bool full() const { return size == kCapacity; }
 };
 
 }  // namespace
@@ -279,9 +334,7 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
     // Progress: samples against the fixed total, else time against the
     // budget, else (adaptive alone) the share of pixels that stopped.
     std::atomic<std::uint64_t> samples_taken{0};
-    std::uint64_t already_taken = 0;  // e.g. resumed from a checkpoint
-    for (int y = window.y0; y < window.y1; ++y)
-        for (int x = window.x0; x < window.x1; ++x) already_taken += std::min(film.samples_taken(x, y), planner.cap());
+    std::uint64_t already_taken = 0;  // e.g. resumed from a checkpoint; set by the first plan
     const double fixed_total = double(window_pixels) * planner.cap();
     auto fraction_done = [&](double stopped_pixels_fraction) {
         if (planner.mode() == Mode::Fixed)
@@ -291,30 +344,76 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
     };
     double stopped_fraction = 0.0;
 
+    // Integrators that shade host-found hits get their camera rays traced
+    // in batches of neighbouring pixels (4x4 blocks of the tile), which
+    // Embree traverses together; the rest trace ray by ray themselves.
+    const bool batched = integrator.shades_camera_hits();
     auto render_tile = [&](int tile_index) {
         Sampler& sampler = *samplers.local();
         const int tx = tile_index % tiles_x, ty = tile_index / tiles_x;
         const int x_begin = window.x0 + tx * tile, y_begin = window.y0 + ty * tile;
         const int x_end = std::min(x_begin + tile, window.x1), y_end = std::min(y_begin + tile, window.y1);
         std::uint64_t taken = 0;
-        for (int y = y_begin; y < y_end; ++y)
-            for (int x = x_begin; x < x_end; ++x) {
-                const std::uint32_t count = planner.planned(x - window.x0, y - window.y0);
-                if (count == 0) continue;
-                if (should_stop()) {
-                    samples_taken += taken;
-                    return;
+        // The k-th sample of a pixel always uses stream k.
+        auto camera_ray = [&](int x, int y, std::uint32_t s) {
+            sampler.start_sample(x, y, s);
+            const Vec2 jitter = pixel_centre ? Vec2(0.5f) : sampler.next_2d();
+            return camera.generate_ray(float(x) + jitter.x, float(y) + jitter.y, width, height);
+        };
+        if (!batched) {
+            for (int y = y_begin; y < y_end; ++y)
+                for (int x = x_begin; x < x_end; ++x) {
+                    const std::uint32_t count = planner.planned(x - window.x0, y - window.y0);
+                    if (count == 0) continue;
+                    if (should_stop()) {
+                        samples_taken += taken;
+                        return;
+                    }
+                    const std::uint32_t first = film.samples_taken(x, y);
+                    for (std::uint32_t s = first; s < first + count; ++s) {
+                        const Ray ray = camera_ray(x, y, s);
+                        film.add_sample(x, y, integrator.radiance(ray, scene, sampler));
+                    }
+                    taken += count;
                 }
-                // The k-th sample of a pixel always uses stream k.
-                const std::uint32_t first = film.samples_taken(x, y);
-                for (std::uint32_t s = first; s < first + count; ++s) {
-                    sampler.start_sample(x, y, s);
-                    const Vec2 jitter = pixel_centre ? Vec2(0.5f) : sampler.next_2d();
-                    const Ray ray = camera.generate_ray(float(x) + jitter.x, float(y) + jitter.y, width, height);
-                    film.add_sample(x, y, integrator.radiance(ray, scene, sampler));
-                }
-                taken += count;
+            samples_taken += taken;
+            progress.report(fraction_done(stopped_fraction));
+            return;
+        }
+        CameraBatch batch;
+        auto shade_batch = [&] {
+            scene.intersect_coherent(batch.rays, batch.size, batch.hits, batch.found);
+            for (int i = 0; i < batch.size; ++i) {
+                const CameraBatch::Sample& at = batch.samples[i];
+                // Back to where camera_ray left this sample's stream.
+                sampler.start_sample(at.x, at.y, at.index);
+                if (!pixel_centre) sampler.next_2d();
+                film.add_sample(at.x, at.y,
+                                integrator.radiance_from_hit(batch.rays[i], batch.found[i] ? &batch.hits[i] : nullptr,
+                                                             scene, sampler));
             }
+            batch.size = 0;
+        };
+        constexpr int kBlock = CameraBatch::kBlock;
+        for (int block_y = y_begin; block_y < y_end; block_y += kBlock)
+            for (int block_x = x_begin; block_x < x_end; block_x += kBlock)
+                for (int y = block_y; y < std::min(block_y + kBlock, y_end); ++y)
+                    for (int x = block_x; x < std::min(block_x + kBlock, x_end); ++x) {
+                        const std::uint32_t count = planner.planned(x - window.x0, y - window.y0);
+                        if (count == 0) continue;
+                        if (should_stop()) {
+                            shade_batch();
+                            samples_taken += taken;
+                            return;
+                        }
+                        const std::uint32_t first = film.samples_taken(x, y);
+                        for (std::uint32_t s = first; s < first + count; ++s) {
+                            batch.add(x, y, s, camera_ray(x, y, s));
+                            if (batch.full()) shade_batch();
+                        }
+                        taken += count;
+                    }
+        shade_batch();
         samples_taken += taken;
         progress.report(fraction_done(stopped_fraction));
     };
@@ -328,6 +427,7 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
             // Plan the pass; under a time budget, only what fits in 90% of
             // the time left at the last pass's cost per sample.
             std::uint64_t planned = planner.plan_unlimited(film);
+            if (stats.passes == 0) already_taken = planner.taken_at_plan();
             if (planned == 0) break;
             if (has_deadline && seconds_per_sample > 0.0) {
                 const double remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
@@ -356,6 +456,7 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
             ++stats.passes;
             const std::uint64_t done = samples_taken - before;
             if (done > 0) seconds_per_sample = seconds_since(pass_start) / double(done);
+            const bool finished = done == planned && planner.plan_completes();
 
             // Checkpoint between passes, when the film is consistent.
             if (options.on_checkpoint && options.checkpoint_interval_seconds > 0.0 && !stop &&
@@ -363,6 +464,7 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
                 options.on_checkpoint(film);
                 last_checkpoint = Clock::now();
             }
+            if (finished) break;
         }
     });
     progress.report(1.0);
@@ -375,15 +477,30 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
     stats.interrupted = options.cancel && options.cancel->load();
     if (counting) stats.rays = counting->rays() - rays_before;
     stats.rays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds : 0.0;
-    std::uint64_t sum = 0;
-    std::uint32_t least = std::numeric_limits<std::uint32_t>::max(), most = 0;
-    for (int y = window.y0; y < window.y1; ++y)
-        for (int x = window.x0; x < window.x1; ++x) {
-            const std::uint32_t taken = film.samples_taken(x, y);
-            sum += taken;
-            least = std::min(least, taken);
-            most = std::max(most, taken);
-        }
+    struct Counts {
+        std::uint64_t sum = 0;
+        std::uint32_t least = std::numeric_limits<std::uint32_t>::max(), most = 0;
+    };
+    const Counts counts = arena.execute([&] { return tbb::parallel_reduce(
+        tbb::blocked_range<int>(window.y0, window.y1), Counts{},
+        [&](const tbb::blocked_range<int>& rows, Counts c) {
+            for (int y = rows.begin(); y < rows.end(); ++y)
+                for (int x = window.x0; x < window.x1; ++x) {
+                    const std::uint32_t taken = film.samples_taken(x, y);
+                    c.sum += taken;
+                    c.least = std::min(c.least, taken);
+                    c.most = std::max(c.most, taken);
+                }
+            return c;
+        },
+        [](Counts a, const Counts& b) {
+            a.sum += b.sum;
+            a.least = std::min(a.least, b.least);
+            a.most = std::max(a.most, b.most);
+            return a;
+        }); });
+    const std::uint64_t sum = counts.sum;
+    const std::uint32_t least = counts.least, most = counts.most;
     stats.mean_samples_per_pixel = window_pixels > 0 ? double(sum) / double(window_pixels) : 0.0;
     stats.min_samples_per_pixel = window_pixels > 0 ? least : 0;
     stats.max_samples_per_pixel = most;

@@ -32,6 +32,21 @@ public:
     }
 };
 
+// NoisyIntegrator's image again, through the host's batched camera hits
+// when `batched`: the two paths must agree bit for bit.
+class NoisyHitIntegrator final : public FirstHitIntegrator {
+public:
+    explicit NoisyHitIntegrator(bool batched) : m_batched(batched) {}
+    bool shades_camera_hits() const override { return m_batched; }
+    Color radiance_from_hit(const Ray& ray, const Hit* hit, const RenderScene&, Sampler& sampler) const override {
+        const float depth = hit ? hit->t : 0.0f;
+        return Color(sampler.next_1d(), sampler.next_1d() * depth, ray.direction.x);
+    }
+
+private:
+    bool m_batched;
+};
+
 class NanIntegrator final : public Integrator {
 public:
     Color radiance(const Ray&, const RenderScene&, Sampler& sampler) const override {
@@ -73,6 +88,27 @@ TEST(Renderer, BitIdenticalForOneAndTwoThreads) {
     options.seed = 100;
     render_image(*scene, integrator, options, other);
     EXPECT_NE(one.mean(3, 3), other.mean(3, 3));
+}
+
+TEST(Renderer, BatchedCameraHitsGiveTheSameImage) {
+    auto scene = small_scene();
+    RenderOptions options;
+    options.width = 37;
+    options.height = 23;
+    options.samples_per_pixel = 3;
+    options.seed = 5;
+    options.tile_size = 7;  // blocks of 4x4 pixels cut by tile edges
+    options.threads = 2;
+    options.progress = ProgressMode::Quiet;
+    Film one_by_one(37, 23), batched(37, 23);
+    render_image(*scene, NoisyHitIntegrator(false), options, one_by_one);
+    const RenderStats stats = render_image(*scene, NoisyHitIntegrator(true), options, batched);
+    EXPECT_EQ(stats.samples, 37u * 23u * 3u);
+    for (int y = 0; y < 23; ++y)
+        for (int x = 0; x < 37; ++x) {
+            ASSERT_EQ(one_by_one.mean(x, y), batched.mean(x, y)) << x << "," << y;
+            ASSERT_EQ(batched.sample_count(x, y), 3u);
+        }
 }
 
 TEST(Renderer, CropWindowRendersOnlyItsPixels) {

@@ -24,6 +24,10 @@ public:
         count();
         return m_inner.intersect(ray, hit);
     }
+    void intersect_coherent(const Ray* rays, int count, Hit* hits, bool* found) const override {
+        this->count(std::uint64_t(count));
+        m_inner.intersect_coherent(rays, count, hits, found);
+    }
     bool occluded(const Ray& ray) const override {
         count();
         return m_inner.occluded(ray);
@@ -45,7 +49,7 @@ private:
     struct alignas(64) Slot {
         std::atomic<std::uint64_t> count{0};
     };
-    void count() const;
+    void count(std::uint64_t queries = 1) const;
     const RenderScene& m_inner;
     std::unique_ptr<Slot[]> m_slots;
     int m_slot_count;

@@ -3,6 +3,7 @@
 // counted and dropped, never written.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -33,8 +34,10 @@ public:
     Color variance_of_mean(int x, int y) const;  // sample variance / n
     std::uint32_t sample_count(int x, int y) const;  // finite samples
     // Samples taken, finite or not: the index of the pixel's next sample.
-    std::uint32_t samples_taken(int x, int y) const;
-    std::uint64_t nonfinite_samples() const;     // over the whole film
+    std::uint32_t samples_taken(int x, int y) const { return m_taken[std::size_t(y) * m_width + x]; }
+    std::uint64_t nonfinite_samples() const {   // over the whole film
+        return m_nonfinite_total.value.load(std::memory_order_relaxed);
+    }
 
     // Every pixel's totals, row-major; for checkpoints.
     const std::vector<Accumulator>& accumulators() const { return m_pixels; }
@@ -47,6 +50,21 @@ private:
     int m_width;
     int m_height;
     std::vector<Accumulator> m_pixels;
+    // Samples taken per pixel (count + nonfinite), apart from the totals:
+    // the host's sweeps over the film read 4 bytes a pixel, not 56.
+    std::vector<std::uint32_t> m_taken;
+    // A count threads add to concurrently, copied along with the film.
+    struct SharedCount {
+        std::atomic<std::uint64_t> value{0};
+        SharedCount() = default;
+        SharedCount(const SharedCount& other) : value(other.value.load(std::memory_order_relaxed)) {}
+        SharedCount& operator=(const SharedCount& other) {
+            value.store(other.value.load(std::memory_order_relaxed), std::memory_order_relaxed);
+            return *this;
+        }
+    };
+    // Kept as samples arrive, so asking costs no sweep of the film.
+    SharedCount m_nonfinite_total;
 };
 
 }  // namespace lancer

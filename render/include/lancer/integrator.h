@@ -18,7 +18,7 @@ namespace lancer {
 
 // Bump whenever a header a plugin compiles against changes layout or
 // virtual tables; the host refuses any other version.
-inline constexpr std::uint32_t kPluginAbiVersion = 1;
+inline constexpr std::uint32_t kPluginAbiVersion = 2;
 
 class Integrator {
 public:
@@ -29,6 +29,19 @@ public:
     // many threads: must not mutate the integrator. Use only `sampler` for
     // randomness.
     virtual Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const = 0;
+    // Opt-in for integrators whose radiance() begins by finding the ray's
+    // nearest hit: when true, the host finds the camera rays' hits itself,
+    // tracing neighbouring rays together (RenderScene::intersect_coherent,
+    // faster than one by one), and calls radiance_from_hit() instead of
+    // radiance(). radiance() must still work and give the same result.
+    virtual bool shades_camera_hits() const { return false; }
+    // Radiance arriving at the camera along `ray`, given its nearest hit
+    // (null: the ray hit nothing). The sampler is positioned exactly as it
+    // would be for radiance(). Same threading rules as radiance().
+    virtual Color radiance_from_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
+                                    Sampler& sampler) const {
+        return radiance(ray, scene, sampler);
+    }
     // True if radiance() uses no randomness: at one sample per pixel the host
     // then traces the pixel centre; more samples antialias.
     virtual bool is_deterministic() const { return false; }
@@ -36,6 +49,21 @@ public:
     virtual std::unique_ptr<Sampler> make_sampler(std::uint64_t seed) const {
         return make_independent_sampler(seed);
     }
+};
+
+// Base for integrators that shade the camera ray's nearest hit: radiance()
+// is intersect() then radiance_from_hit(), so the host's batched path and
+// the ray-by-ray path agree by construction. Implement radiance_from_hit().
+class FirstHitIntegrator : public Integrator {
+public:
+    Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const final {
+        Hit hit;
+        const bool found = scene.intersect(ray, hit);
+        return radiance_from_hit(ray, found ? &hit : nullptr, scene, sampler);
+    }
+    bool shades_camera_hits() const override { return true; }
+    Color radiance_from_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
+                            Sampler& sampler) const override = 0;
 };
 
 struct IntegratorDescriptor {

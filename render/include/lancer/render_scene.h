@@ -40,6 +40,13 @@ public:
 
     // Nearest hit along the ray within [t_min, t_max]; false if none.
     virtual bool intersect(const Ray& ray, Hit& hit) const = 0;
+    // intersect() for `count` rays at once; found[i] tells whether hits[i]
+    // was filled. Coherent rays (neighbouring camera rays) are traced
+    // together, which is faster than one by one; the results are the same.
+    // The default asks intersect() ray by ray.
+    virtual void intersect_coherent(const Ray* rays, int count, Hit* hits, bool* found) const {
+        for (int i = 0; i < count; ++i) found[i] = intersect(rays[i], hits[i]);
+    }
     // True if any shadow-casting surface lies within [t_min, t_max]. Area
     // lights are not occluders of themselves: a shadow ray aimed at a point
     // on a light stops short of it (Hit::spawn_ray_to).
