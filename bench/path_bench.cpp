@@ -1,23 +1,15 @@
 // The reference path tracer on the Cornell box (scenes/cornell_box.pov,
 // built here in C++ so the bench needs no parser) at 256x256 on 2 threads:
-//   - throughput: camera samples (paths) per second;
-//   - speed vs accuracy: RMSE against a converged reference after each
-//     power-of-two sample count, and the time to reach a target RMSE, for
-//     the independent and the Sobol sampler.
-// The reference is rendered once (Sobol, LANCER_BENCH_REFERENCE_SPP samples
-// per pixel, 1024 by default) and cached as raw floats in LANCER_BENCH_CACHE
-// (default /tmp).
+// throughput in camera samples (paths) per second, for the independent and
+// the Sobol sampler. The time to reach a given RMSE is measured, by
+// rendering, in cycles_compare.cpp (against Blender Cycles).
 //
-//     build/bin/lancer_bench --benchmark_filter=Path
+//     build/bin/lancer_bench --benchmark_filter=PathCornellThroughput
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <memory>
 #include <string>
-#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -117,39 +109,6 @@ Setup& setup() {
     return s;
 }
 
-const std::vector<Color>& reference() {
-    static const std::vector<Color> pixels = [] {
-        const int spp = std::getenv("LANCER_BENCH_REFERENCE_SPP") ? std::atoi(std::getenv("LANCER_BENCH_REFERENCE_SPP")) : 1024;
-        const char* folder = std::getenv("LANCER_BENCH_CACHE");
-        const std::string cache = std::string(folder ? folder : "/tmp") + "/path_bench_cornell_" +
-                                  std::to_string(spp) + ".bin";
-        std::vector<Color> out(kSize * kSize);
-        std::ifstream in(cache, std::ios::binary);
-        if (in.read(reinterpret_cast<char*>(out.data()), std::streamsize(out.size() * sizeof(Color)))) return out;
-        std::fprintf(stderr, "path_bench: rendering the %d spp reference (cached in %s)\n", spp, cache.c_str());
-        const Film film = setup().render(*setup().integrator("sobol"), spp, 12345);
-        for (int y = 0; y < kSize; ++y)
-            for (int x = 0; x < kSize; ++x) out[y * kSize + x] = film.mean(x, y);
-        std::ofstream(cache, std::ios::binary)
-            .write(reinterpret_cast<const char*>(out.data()), std::streamsize(out.size() * sizeof(Color)));
-        return out;
-    }();
-    return pixels;
-}
-
-// RMSE of display values (linear, clamped to [0, 1] as a PNG would be), so
-// the lamp's own pixels (radiance ~50) do not swamp the room.
-double rmse(const Film& film) {
-    const std::vector<Color>& ref = reference();
-    double sum = 0.0;
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
-            const Color d = glm::min(film.mean(x, y), Color(1.0f)) - glm::min(ref[y * kSize + x], Color(1.0f));
-            sum += glm::dot(d, d) / 3.0;
-        }
-    return std::sqrt(sum / (kSize * kSize));
-}
-
 // Paths per second at 4 samples per pixel.
 void BM_PathCornellThroughput(benchmark::State& state, const char* sampler) {
     const auto integrator = setup().integrator(sampler);
@@ -164,31 +123,5 @@ void BM_PathCornellThroughput(benchmark::State& state, const char* sampler) {
 }
 BENCHMARK_CAPTURE(BM_PathCornellThroughput, independent, "independent")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_PathCornellThroughput, sobol, "sobol")->Unit(benchmark::kMillisecond)->UseRealTime();
-
-// One render at range(0) samples per pixel: its time and RMSE, and the time
-// projected to reach kTarget assuming error ~ N^-1/2 from there on (exact
-// for the independent sampler, pessimistic for Sobol). The reference's own
-// error (half the variance of a 512-spp render's at 64 spp) inflates the
-// measured RMSE slightly.
-constexpr double kTarget = 0.02;
-void BM_PathCornellRmse(benchmark::State& state, const char* sampler) {
-    const auto integrator = setup().integrator(sampler);
-    reference();  // outside the timing
-    const int spp = int(state.range(0));
-    double error = 0.0;
-    double seconds = 0.0;
-    for (auto _ : state) {
-        RenderStats stats;
-        error = rmse(setup().render(*integrator, spp, 7, &stats));
-        seconds = stats.seconds;
-    }
-    state.counters["spp"] = spp;
-    state.counters["rmse"] = error;
-    state.counters["seconds_to_rmse_0.02"] = seconds * (error / kTarget) * (error / kTarget);
-}
-BENCHMARK_CAPTURE(BM_PathCornellRmse, independent, "independent")
-    ->RangeMultiplier(4)->Range(1, 64)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_PathCornellRmse, sobol, "sobol")
-    ->RangeMultiplier(4)->Range(1, 64)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
