@@ -23,41 +23,12 @@ float blinn_exponent(float roughness) { return 1.0f / glm::max(roughness, 1e-4f)
 
 }  // namespace
 
-SurfaceSample Material::sample_surface(const Hit& hit) const {
-    SurfaceSample surface;
-    if (m_params.pigment == nullptr) return surface;
-    const TextureSample texel = m_params.pigment->evaluate(hit);
-    surface.pigment = texel.rgb;
-    surface.filter = texel.filter;
-    surface.transmit = texel.transmit;
-    return surface;
-}
-
-float Material::transparency(const SurfaceSample& surface) const {
-    return glm::clamp(surface.filter + surface.transmit, 0.0f, 1.0f);
-}
-
 Color Material::transmission_tint(const SurfaceSample& surface) const {
     const float total = surface.filter + surface.transmit;
     if (!(total > 0.0f)) return Color(0.0f);
     return (surface.filter * surface.pigment + Color(surface.transmit)) / total;
 }
 
-Color Material::emitted(const SurfaceSample& surface) const { return m_params.emission * surface.pigment; }
-
-Color Material::ambient(const SurfaceSample& surface, const Color& ambient_light) const {
-    return m_params.ambient * surface.pigment * ambient_light;
-}
-
-Color Material::diffuse_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo,
-                             const Vec3& wi) const {
-    const float cos_i = glm::dot(n, wi);
-    if (!(cos_i > 0.0f) || m_params.diffuse == 0.0f) return Color(0.0f);
-    const float opacity = 1.0f - transparency(surface);
-    float shape = 1.0f;
-    if (m_params.brilliance != 1.0f) shape = std::pow(cos_i, m_params.brilliance - 1.0f);
-    return m_params.diffuse * opacity * kInvPi * shape * surface.pigment;
-}
 
 // With wo = N, N.H = cos(theta_i / 2); substituting x = cos(theta_i / 2)
 // turns the albedo integral 2 pi * int x^k cos(theta) sin(theta) dtheta into
@@ -139,7 +110,6 @@ bool Material::has_mirror() const {
     return max_component(m_params.reflection_max) > 0.0f || max_component(m_params.reflection_min) > 0.0f;
 }
 
-bool Material::is_emissive() const { return max_component(m_params.emission) > 0.0f; }
 
 bool refract(const Vec3& d, const Vec3& n, float eta, Vec3& transmitted) {
     const float cos_i = -glm::dot(d, n);

@@ -18,12 +18,14 @@
 // tracer agree on directly lit scenes.
 #pragma once
 
+#include <cmath>
+
 #include "lancer/hit.h"
 #include "lancer/ray.h"
+#include "lancer/texture.h"
 
 namespace lancer {
 
-class Texture;
 
 // Everything a material needs to know about one hit, with the pigment
 // already looked up.
@@ -58,27 +60,41 @@ public:
     const MaterialParameters& parameters() const { return m_params; }
 
     // Pigment colour, filter and transmit at the hit (texture lookup).
-    SurfaceSample sample_surface(const Hit& hit) const;
+    SurfaceSample sample_surface(const Hit& hit) const {
+        if (m_params.pigment == nullptr) return {};
+        const TextureSample texel = m_params.pigment->evaluate(hit);
+        return SurfaceSample{texel.rgb, texel.filter, texel.transmit};
+    }
 
     // Fraction of light that passes through the surface: filter + transmit,
     // in [0, 1]. Diffuse and glossy lobes are scaled by (1 - it).
-    float transparency(const SurfaceSample& surface) const;
+    float transparency(const SurfaceSample& surface) const {
+        return glm::clamp(surface.filter + surface.transmit, 0.0f, 1.0f);
+    }
     // Colour of transmitted light per unit transparency: filter tints by the
     // pigment, transmit does not.
     Color transmission_tint(const SurfaceSample& surface) const;
 
     // Radiance emitted towards the viewer (two-sided).
-    Color emitted(const SurfaceSample& surface) const;
+    Color emitted(const SurfaceSample& surface) const { return m_params.emission * surface.pigment; }
     // POV's ambient term, ambient * pigment * ambient_light.
-    Color ambient(const SurfaceSample& surface, const Color& ambient_light) const;
+    Color ambient(const SurfaceSample& surface, const Color& ambient_light) const {
+        return m_params.ambient * surface.pigment * ambient_light;
+    }
 
     // The non-delta BRDF (diffuse + phong + specular, times opacity) for
     // light arriving from wi and leaving towards wo. All vectors unit; n is
     // the shading normal facing wo. Returns 0 when wi is below the surface.
     Color brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const;
     // The diffuse part alone (gather replaces only this term).
-    Color diffuse_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo,
-                       const Vec3& wi) const;
+    Color diffuse_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const {
+        const float cos_i = glm::dot(n, wi);
+        if (!(cos_i > 0.0f) || m_params.diffuse == 0.0f) return Color(0.0f);
+        const float opacity = 1.0f - transparency(surface);
+        float shape = 1.0f;
+        if (m_params.brilliance != 1.0f) shape = std::pow(cos_i, m_params.brilliance - 1.0f);
+        return m_params.diffuse * opacity * (1.0f / kPi) * shape * surface.pigment;
+    }
     // The glossy part alone (phong + specular).
     Color glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo,
                       const Vec3& wi) const;
@@ -88,7 +104,7 @@ public:
     Color mirror_reflectance(const SurfaceSample& surface, float cos_i, bool entering) const;
     bool has_mirror() const;
     bool has_glossy() const { return m_params.phong > 0.0f || m_params.specular > 0.0f; }
-    bool is_emissive() const;
+    bool is_emissive() const { return max_component(m_params.emission) > 0.0f; }
 
 private:
     MaterialParameters m_params;
