@@ -3,7 +3,7 @@
 #
 #   blender -b --factory-startup --python bench/cycles/cornell_cycles.py -- \
 #       --out /tmp/cycles/cornell --size 256 --samples 1,4,16 \
-#       [--threads 2] [--seed 0] [--bounces 15] [--half 0]
+#       [--threads 2] [--seed 0] [--bounces 15] [--half 0] [--specular 0]
 #
 # writes /tmp/cycles/cornell_<samples>.exr and appends one line per render to
 # /tmp/cycles/cornell_times.txt: "samples <n> seconds <wall seconds of the
@@ -11,7 +11,8 @@
 # threads>". Blender's own start-up is
 # not in those seconds: time the whole process to get it. --half 1 writes
 # half floats (the checked-in reference: 3 significant digits are plenty for
-# a 2 % test and halve the file).
+# a 2 % test and halve the file). --specular 1 builds
+# cornell_cycles_specular.pov instead (a mirror and a glass box).
 #
 # Coordinates: lancer/POV is left-handed with y up, Blender right-handed with
 # z up. (x, y, z)_pov -> (x, z, y)_blender swaps two axes, which both turns y
@@ -59,6 +60,8 @@ BOXES = [
     ("tall", (-0.3, 0, -0.3), (0.3, 1.2, 0.3), 20.0, (-0.35, 0, 0.35)),
     ("short", (-0.3, 0, -0.3), (0.3, 0.6, 0.3), -18.0, (0.35, 0, -0.3)),
 ]
+# cornell_cycles_specular.pov lifts the glass box 1 mm off the floor.
+SPECULAR_LIFT = 0.001
 CAMERA_LOCATION = (0, 1, -3.4)  # looking along +z, horizontal field of view:
 CAMERA_ANGLE = 40.0
 MAX_BOUNCES = 15  # lancer's max_depth 16
@@ -115,7 +118,7 @@ def add_mesh(scene, name, vertices_pov, faces, material):
     return obj
 
 
-def build(scene):
+def build(scene, specular):
     for obj in list(bpy.data.objects):
         bpy.data.objects.remove(obj, do_unlink=True)
     materials = {}
@@ -123,8 +126,17 @@ def build(scene):
         m = materials.setdefault(color, diffuse_material("mat_%d" % len(materials), color))
         add_mesh(scene, name, corners, [(0, 1, 2, 3)], m)
     add_mesh(scene, "lamp", LAMP, [(0, 1, 2, 3)], emission_material("lamp", LAMP_COLOR, LAMP_STRENGTH))
-    white = materials[WHITE]
+    box_materials = {"tall": materials[WHITE], "short": materials[WHITE]}
+    if specular:
+        box_materials["tall"] = node_material(
+            "mirror", "ShaderNodeBsdfGlossy", "BSDF", {"Color": (1, 1, 1, 1), "Roughness": 0.0})
+        box_materials["short"] = node_material(
+            "glass", "ShaderNodeBsdfGlass", "BSDF", {"Color": (1, 1, 1, 1), "Roughness": 0.0, "IOR": 1.5})
+        for m in box_materials.values():
+            m.node_tree.nodes[0].distribution = "SHARP"
     for name, lo, hi, degrees, offset in BOXES:
+        if specular and name == "short":
+            offset = (offset[0], offset[1] + SPECULAR_LIFT, offset[2])
         corners = []
         for i in range(8):
             p = (hi[0] if i & 1 else lo[0], hi[1] if i & 2 else lo[1], hi[2] if i & 4 else lo[2])
@@ -133,7 +145,7 @@ def build(scene):
         # Faces by corner index bits (x = 1, y = 2, z = 4); winding does not
         # matter: the walls are two-sided in both renderers.
         faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
-        add_mesh(scene, name, corners, faces, white)
+        add_mesh(scene, name, corners, faces, box_materials[name])
 
     camera_data = bpy.data.cameras.new("camera")
     camera_data.sensor_fit = "HORIZONTAL"
@@ -208,7 +220,7 @@ def configure(scene, size, threads, seed, bounces, half):
 def parse(argv):
     args = argv[argv.index("--") + 1:] if "--" in argv else []
     options = {"--out": None, "--size": "256", "--samples": "16", "--threads": "2", "--seed": "0",
-               "--bounces": str(MAX_BOUNCES), "--half": "0"}
+               "--bounces": str(MAX_BOUNCES), "--half": "0", "--specular": "0"}
     for key, value in zip(args[::2], args[1::2]):
         if key not in options:
             raise SystemExit("cornell_cycles.py: unknown option " + key)
@@ -223,7 +235,7 @@ def main():
     prefix = options["--out"]
     os.makedirs(os.path.dirname(os.path.abspath(prefix)), exist_ok=True)
     scene = bpy.context.scene
-    build(scene)
+    build(scene, options["--specular"] == "1")
     configure(scene, int(options["--size"]), int(options["--threads"]), int(options["--seed"]),
               int(options["--bounces"]), options["--half"] == "1")
     with open(prefix + "_times.txt", "a") as times:
