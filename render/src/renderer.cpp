@@ -111,7 +111,7 @@ public:
         m_min_samples = std::uint32_t(std::max(options.min_samples, 2));
         m_wanted.assign(std::size_t(m_width) * m_height, 0);
         m_plan.assign(m_wanted.size(), 0);
-        m_relative_variance.assign(m_wanted.size(), 0.0);
+        if (m_mode == Mode::Adaptive) m_relative_variance.assign(m_wanted.size(), 0.0);
     }
 
     Mode mode() const { return m_mode; }
@@ -259,7 +259,7 @@ private:
     double m_noise_target = 0.0;
     std::vector<std::uint32_t> m_wanted;  // per pixel, before any time limit
     std::vector<std::uint32_t> m_plan;    // per pixel, this pass
-    std::vector<double> m_relative_variance;
+    std::vector<double> m_relative_variance;  // per pixel, adaptive mode only
     std::uint64_t m_taken_at_plan = 0;
     bool m_plan_completes = false;
 };
