@@ -213,7 +213,7 @@ TEST_F(PathFixture, MisNeeAndBsdfSamplingAgree) {
 
 TEST_F(PathFixture, SobolAndIndependentAgree) {
     const sg::SceneGraph graph = glossy_area_scene();
-    auto independent = make_integrator(path);
+    auto independent = make_integrator(path, {"sampler=independent"});
     auto sobol = make_integrator(path, {"sampler=sobol"});
     const ImageComparison c =
         compare_images(PixelStatistics::from_film(render(graph, *sobol, 16, 12, 256, 6)),
@@ -345,7 +345,7 @@ TEST_F(PathFixture, ConvergenceRate) {
     graph.lights.push_back(light);
     graph.global.ambient_light = sg::Vec3(0.0);
 
-    auto independent = make_integrator(path, {"max_depth=1"});
+    auto independent = make_integrator(path, {"max_depth=1", "sampler=independent"});
     auto sobol = make_integrator(path, {"max_depth=1", "sampler=sobol"});
     const Film reference = render(graph, *sobol, 8, 8, 1 << 14, 99);
     const std::vector<double> counts = {4, 16, 64, 256};
