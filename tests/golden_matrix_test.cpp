@@ -64,10 +64,12 @@ TEST(GoldenMatrix, EveryRowHasItsGolden) {
 TEST(GoldenMatrix, NoGoldenWithoutARow) {
     std::set<std::string> expected;
     for (const MatrixEntry& entry : load_matrix()) expected.insert(fs::path(entry.golden_path()).lexically_normal());
-    for (const auto& item : fs::recursive_directory_iterator(golden_dir()))
-        if (item.is_regular_file() && item.path().extension() == ".exr")
+    for (const auto& item : fs::recursive_directory_iterator(golden_dir())) {
+        if (item.is_regular_file() && item.path().extension() == ".exr") {
             EXPECT_TRUE(expected.count(item.path().lexically_normal()))
                 << item.path() << " belongs to no row of tests/golden/matrix.txt";
+        }
+    }
     for (const auto& item : fs::directory_iterator(source_dir() + "/plugins"))
         EXPECT_FALSE(fs::exists(item.path() / "golden"))
             << item.path() / "golden" << ": goldens live in tests/golden/ (docs/testing.md)";

@@ -93,7 +93,7 @@ void Evaluator::directive_declare(const RawToken& d, bool local) {
     Value value = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
     if (m_aborted) return;
     bool terminated = take_punct(";");
-    if (!terminated && value.is_numeric() || !terminated && value.kind == Value::Kind::String) {
+    if (!terminated && (value.is_numeric() || value.kind == Value::Kind::String)) {
         warning(where, "missing ';' after the value of #" + d.text + " " + name +
                            " (POV-Ray 3.5+ requires it for floats, vectors, colours and strings)");
     }
