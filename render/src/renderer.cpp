@@ -360,28 +360,9 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
             const Vec2 jitter = pixel_centre ? Vec2(0.5f) : sampler.next_2d();
             return camera.generate_ray(float(x) + jitter.x, float(y) + jitter.y, width, height);
         };
-        if (!batched) {
-            for (int y = y_begin; y < y_end; ++y)
-                for (int x = x_begin; x < x_end; ++x) {
-                    const std::uint32_t count = planner.planned(x - window.x0, y - window.y0);
-                    if (count == 0) continue;
-                    if (should_stop()) {
-                        samples_taken += taken;
-                        return;
-                    }
-                    const std::uint32_t first = film.samples_taken(x, y);
-                    for (std::uint32_t s = first; s < first + count; ++s) {
-                        const Ray ray = camera_ray(x, y, s);
-                        film.add_sample(x, y, integrator.radiance(ray, scene, sampler));
-                    }
-                    taken += count;
-                }
-            samples_taken += taken;
-            progress.report(fraction_done(stopped_fraction));
-            return;
-        }
         CameraBatch batch;
         auto shade_batch = [&] {
+            if (batch.size == 0) return;
             scene.intersect_coherent(batch.rays, batch.size, batch.hits, batch.found);
             for (int i = 0; i < batch.size; ++i) {
                 const CameraBatch::Sample& at = batch.samples[i];
@@ -408,7 +389,12 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
                         }
                         const std::uint32_t first = film.samples_taken(x, y);
                         for (std::uint32_t s = first; s < first + count; ++s) {
-                            batch.add(x, y, s, camera_ray(x, y, s));
+                            const Ray ray = camera_ray(x, y, s);
+                            if (!batched) {
+                                film.add_sample(x, y, integrator.radiance(ray, scene, sampler));
+                                continue;
+                            }
+                            batch.add(x, y, s, ray);
                             if (batch.full()) shade_batch();
                         }
                         taken += count;
