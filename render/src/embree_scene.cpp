@@ -66,6 +66,19 @@ void ray_to_object(const Instance& instance, const float org[3], const float dir
     d = instance.placement.vector_to_object(DVec3(dir[0], dir[1], dir[2]));
 }
 
+// Lane i of a packet of n rays in an object's space (a single ray is n = 1).
+void ray_lane_to_object(const Instance& instance, RTCRayN* rays, unsigned n, unsigned i, DVec3& o, DVec3& d) {
+    const float org[3] = {RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
+    const float dir[3] = {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
+    ray_to_object(instance, org, dir, o, d);
+}
+
+// The float vertices Embree traces for a mesh instance: world space for a
+// mesh used once, object space for an instanced one.
+const std::vector<float>& traced_positions(const Instance& instance) {
+    return instance.mesh_in_world ? instance.world_positions : instance.mesh->object_positions;
+}
+
 bool intersect_analytic(const Instance& instance, const DVec3& o, const DVec3& d, double t_min, double t_max,
                         double& t, int& face) {
     face = 0;
@@ -95,11 +108,9 @@ void analytic_intersect(const RTCIntersectFunctionNArguments* args) {
     RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
     for (unsigned i = 0; i < n; ++i) {
         if (!args->valid[i]) continue;
-        const float org[3] = {RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
-        const float dir[3] = {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
         float& tfar = RTCRayN_tfar(rays, n, i);
         DVec3 o, d;
-        ray_to_object(instance, org, dir, o, d);
+        ray_lane_to_object(instance, rays, n, i, o, d);
         double t;
         int face;
         if (!intersect_analytic(instance, o, d, RTCRayN_tnear(rays, n, i), tfar, t, face)) continue;
@@ -125,10 +136,8 @@ void analytic_occluded(const RTCOccludedFunctionNArguments* args) {
     RTCRayN* rays = args->ray;
     for (unsigned i = 0; i < n; ++i) {
         if (!args->valid[i]) continue;
-        const float org[3] = {RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
-        const float dir[3] = {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
         DVec3 o, d;
-        ray_to_object(instance, org, dir, o, d);
+        ray_lane_to_object(instance, rays, n, i, o, d);
         double t;
         int face;
         if (intersect_analytic(instance, o, d, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t, face))
@@ -368,7 +377,7 @@ void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_tri
     const sg::TriangleMesh& source = *mesh.source;
     // Skipping the lookup when triangle i is face i saves one more cold load.
     const std::uint32_t face_index = faces_are_triangles ? primitive : mesh.face_of_triangle[primitive];
-    const std::vector<float>& positions = instance.mesh_in_world ? instance.world_positions : mesh.object_positions;
+    const std::vector<float>& positions = traced_positions(instance);
     // The hit from the same float vertices Embree intersected: an affine
     // combination, so it lies on the triangle's plane up to rounding, which
     // `object_error` bounds (pbrt-v4's gamma(7) bound for this sum, made
@@ -504,8 +513,7 @@ void EmbreeScene::intersect_coherent(const Ray* rays, int count, Hit* hits, bool
                 __builtin_prefetch(&mesh->mesh->indices[3 * std::size_t(lane[k].primitive)]);
         for (int k = 0; k < lanes; ++k)
             if (const Instance* mesh = mesh_instance_of(lane[k])) {
-                const std::vector<float>& positions =
-                    mesh->mesh_in_world ? mesh->world_positions : mesh->mesh->object_positions;
+                const std::vector<float>& positions = traced_positions(*mesh);
                 const std::uint32_t* corner = &mesh->mesh->indices[3 * std::size_t(lane[k].primitive)];
                 for (int c = 0; c < 3; ++c) __builtin_prefetch(&positions[3 * std::size_t(corner[c])]);
             }
