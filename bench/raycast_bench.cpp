@@ -11,7 +11,10 @@
 // is the bare loop with RTC_SCENE_FLAG_ROBUST, which lancer's scene sets for
 // watertight meshes (render/src/watertight_test.cpp): the flag's own cost.
 // BM_HostIntersectOnlyPrimaryRays runs the host with an integrator that only
-// intersects, to tell the host's and RenderScene's share from raycast's.
+// intersects, to tell the host's and RenderScene's share from raycast's;
+// BM_HostAlonePrimaryRays with one that traces nothing, the host's alone.
+// BM_ScenePackets calls RenderScene::intersect_coherent on the packets
+// without the host: Embree plus lancer's hit completion.
 // BM_BarePackets traces the rays in 4x4-pixel packets (rtcIntersect16), as
 // the host does for integrators that shade camera hits it finds
 // (Integrator::shades_camera_hits): what Embree alone gains from coherence.
@@ -160,6 +163,14 @@ public:
     Color radiance_from_hit(const Ray&, const Hit* hit, const RenderScene&, Sampler&) const override {
         return hit ? Color(1.0f) : Color(0.0f);
     }
+    bool is_deterministic() const override { return true; }
+};
+
+// The host's loop with an integrator that traces nothing: what tiles,
+// planning, camera rays and the film cost per pixel on their own.
+class TracesNothing final : public Integrator {
+public:
+    Color radiance(const Ray& ray, const RenderScene&, Sampler&) const override { return Color(ray.direction.x); }
     bool is_deterministic() const override { return true; }
 };
 
@@ -333,6 +344,36 @@ struct BenchScene {
             hit_count);
     }
 
+    // The same rays through RenderScene::intersect_coherent in 4x4-pixel
+    // blocks, 16 blocks to a call as the host gives them, hits completed, no
+    // host: what lancer's scene adds to Embree.
+    FrameTime trace_scene_packets() const {
+        return trace_tiles(
+            [&](const tbb::blocked_range2d<int>& tile) {
+                constexpr int kBatch = 16 * 16;
+                Ray rays[kBatch];
+                Hit hits[kBatch];
+                bool hit_found[kBatch];
+                std::uint64_t found = 0;
+                int count = 0;
+                auto flush = [&] {
+                    scene->intersect_coherent(rays, count, hits, hit_found);
+                    for (int k = 0; k < count; ++k) found += hit_found[k];
+                    count = 0;
+                };
+                for (int y0 = tile.rows().begin(); y0 < tile.rows().end(); y0 += 4)
+                    for (int x0 = tile.cols().begin(); x0 < tile.cols().end(); x0 += 4) {
+                        for (int y = y0; y < std::min(y0 + 4, tile.rows().end()); ++y)
+                            for (int x = x0; x < std::min(x0 + 4, tile.cols().end()); ++x)
+                                rays[count++] = camera_rays[std::size_t(y) * kWidth + x];
+                        if (count > kBatch - 16) flush();
+                    }
+                if (count > 0) flush();
+                return found;
+            },
+            nullptr);
+    }
+
     // The same rays in 4x4-pixel packets through rtcIntersect16: what
     // coherent camera rays cost Embree when traced together.
     FrameTime trace_bare_packets(bool robust) const {
@@ -443,6 +484,17 @@ void BM_HostIntersectOnlyPrimaryRays(benchmark::State& state) {
     time_primary_rays(state, bench, [&] { return bench.render_raycast(&intersect_only); });
 }
 
+void BM_HostAlonePrimaryRays(benchmark::State& state) {
+    BenchScene& bench = bench_scene();
+    const TracesNothing traces_nothing;
+    time_primary_rays(state, bench, [&] { return bench.render_raycast(&traces_nothing); });
+}
+
+void BM_ScenePackets(benchmark::State& state) {
+    BenchScene& bench = bench_scene();
+    time_primary_rays(state, bench, [&] { return bench.trace_scene_packets(); });
+}
+
 // All three in alternation, so drift in machine load hits them alike.
 void BM_RaycastOverBareEmbree(benchmark::State& state) {
     BenchScene& bench = bench_scene();
@@ -482,6 +534,8 @@ BENCHMARK(BM_BarePackets)->Arg(0)->Arg(1)->UseManualTime()->Unit(benchmark::kMil
 BENCHMARK(BM_RaycastPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_BareEmbreePrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_BareEmbreeRobustPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_ScenePackets)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_HostAlonePrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_HostIntersectOnlyPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_RaycastOverBareEmbree)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(4.0);
 

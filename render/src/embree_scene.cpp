@@ -79,6 +79,118 @@ const std::vector<float>& traced_positions(const Instance& instance) {
     return instance.mesh_in_world ? instance.world_positions : instance.mesh->object_positions;
 }
 
+// Triangle hits from the float vertices Embree intersected: each point an
+// affine combination of the corners (on the triangle's plane up to
+// rounding, which `error` bounds: pbrt-v4's gamma(7) bound for this sum,
+// made generous for Embree's own arithmetic) and the unit geometric normal.
+struct TriangleSurface {
+    Vec3 point, normal, error;
+    float largest_coordinate;  // of the corners, in magnitude
+};
+
+// Lane k: the triangle whose corner indices start at corners[k], into the
+// xyz array positions[k], at barycentrics (b1[k], b2[k]); count at most
+// kMaxLanes. Laid out lane by lane (structure of arrays) so the compiler
+// computes several lanes per instruction: a packet's square roots and
+// divisions then cost little more than one ray's.
+constexpr int kMaxLanes = 16;
+void triangle_surfaces(const float* const* positions, const std::uint32_t* const* corners, const float* b1,
+                       const float* b2, int count, TriangleSurface* out) {
+    float corner_x[3][kMaxLanes], corner_y[3][kMaxLanes], corner_z[3][kMaxLanes];
+    for (int k = 0; k < count; ++k)
+        for (int c = 0; c < 3; ++c) {
+            const float* xyz = &positions[k][3 * std::size_t(corners[k][c])];
+            corner_x[c][k] = xyz[0];
+            corner_y[c][k] = xyz[1];
+            corner_z[c][k] = xyz[2];
+        }
+    float px[kMaxLanes], py[kMaxLanes], pz[kMaxLanes];
+    float nx[kMaxLanes], ny[kMaxLanes], nz[kMaxLanes];
+    float largest[kMaxLanes];
+    for (int k = 0; k < count; ++k) {
+        const float b0 = 1.0f - b1[k] - b2[k];
+        px[k] = b0 * corner_x[0][k] + b1[k] * corner_x[1][k] + b2[k] * corner_x[2][k];
+        py[k] = b0 * corner_y[0][k] + b1[k] * corner_y[1][k] + b2[k] * corner_y[2][k];
+        pz[k] = b0 * corner_z[0][k] + b1[k] * corner_z[1][k] + b2[k] * corner_z[2][k];
+        const float e1x = corner_x[1][k] - corner_x[0][k], e1y = corner_y[1][k] - corner_y[0][k],
+                    e1z = corner_z[1][k] - corner_z[0][k];
+        const float e2x = corner_x[2][k] - corner_x[0][k], e2y = corner_y[2][k] - corner_y[0][k],
+                    e2z = corner_z[2][k] - corner_z[0][k];
+        const float cx = e1y * e2z - e2y * e1z, cy = e1z * e2x - e2z * e1x, cz = e1x * e2y - e2x * e1y;
+        const float length = std::sqrt(cx * cx + cy * cy + cz * cz);
+        // A degenerate (zero-area) or overflowing triangle gets +y.
+        const bool usable = length > 0.0f && length <= FLT_MAX;
+        const float inverse = 1.0f / length;
+        nx[k] = usable ? cx * inverse : 0.0f;
+        ny[k] = usable ? cy * inverse : 1.0f;
+        nz[k] = usable ? cz * inverse : 0.0f;
+        float m = 0.0f;
+        for (int c = 0; c < 3; ++c)
+            m = std::max(m, std::max(std::fabs(corner_x[c][k]),
+                                     std::max(std::fabs(corner_y[c][k]), std::fabs(corner_z[c][k]))));
+        largest[k] = m;
+    }
+    for (int k = 0; k < count; ++k) {
+        out[k].point = Vec3(px[k], py[k], pz[k]);
+        out[k].normal = Vec3(nx[k], ny[k], nz[k]);
+        out[k].largest_coordinate = largest[k];
+        out[k].error = Vec3(16.0f * FLT_EPSILON * largest[k]);
+    }
+}
+
+// Everything a hit on a mesh placed in world space needs, when its
+// triangles are its faces and it has no per-vertex normals, texture
+// coordinates or per-face materials (the common OBJ and mesh2 case): a hit
+// then reads 48 bytes of this record and the triangle's corners, nothing of
+// the Instance or the source mesh.
+struct PlainTriangles {
+    const float* positions = nullptr;  // null: not a plain world mesh
+    const std::uint32_t* indices = nullptr;
+    const Material* material = nullptr;
+    const Light* emitter = nullptr;
+    std::uint32_t object_id = 0;
+    bool casts_shadow = true;
+};
+
+// One ray's answer from Embree, whether traced alone or in a packet.
+struct EmbreeHit {
+    float tnear, tfar;
+    unsigned geometry, primitive, instance;
+    float u, v;
+};
+
+// Completes `count` (at most kMaxLanes) hits on plain world meshes: lane k
+// is triangle answers[k].primitive of *meshes[k], written to hits[k].
+void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const EmbreeHit* answers, int count,
+                                  Hit* hits) {
+    const float* positions[kMaxLanes];
+    const std::uint32_t* corners[kMaxLanes];
+    float b1[kMaxLanes], b2[kMaxLanes];
+    for (int k = 0; k < count; ++k) {
+        positions[k] = meshes[k]->positions;
+        corners[k] = &meshes[k]->indices[3 * std::size_t(answers[k].primitive)];
+        b1[k] = answers[k].u;
+        b2[k] = answers[k].v;
+    }
+    TriangleSurface surfaces[kMaxLanes];
+    triangle_surfaces(positions, corners, b1, b2, count, surfaces);
+    for (int k = 0; k < count; ++k) {
+        const PlainTriangles& mesh = *meshes[k];
+        const TriangleSurface& surface = surfaces[k];
+        Hit& hit = hits[k];
+        hit.t = answers[k].tfar;
+        hit.position = surface.point;
+        hit.position_error = surface.error + 2.0f * FLT_EPSILON * glm::abs(surface.point);
+        hit.geometric_normal = hit.shading_normal = surface.normal;
+        hit.uv = Vec2(b1[k], b2[k]);
+        hit.material = mesh.material;
+        hit.emitter = mesh.emitter;
+        hit.object_id = mesh.object_id;
+        hit.primitive_id = answers[k].primitive;
+        hit.casts_shadow = mesh.casts_shadow;
+    }
+}
+
 bool intersect_analytic(const Instance& instance, const DVec3& o, const DVec3& d, double t_min, double t_max,
                         double& t, int& face) {
     face = 0;
@@ -179,13 +291,6 @@ void fill_embree_ray(const Ray& ray, RTCRay& out) {
     out.flags = 0;
 }
 
-// One ray's answer from Embree, whether traced alone or in a packet.
-struct EmbreeHit {
-    float tnear, tfar;
-    unsigned geometry, primitive, instance;
-    float u, v;
-};
-
 class EmbreeScene final : public RenderScene {
 public:
     explicit EmbreeScene(std::unique_ptr<SceneData> data) : m_data(std::move(data)) {
@@ -214,6 +319,12 @@ public:
 private:
     void build();
     RTCGeometry make_triangles(const MeshData& mesh, const std::vector<float>& positions);
+    // intersect_coherent's stages (see there); packets of kPacketLanes rays.
+    static constexpr int kPacketLanes = kMaxLanes;
+    void trace_packet(const Ray* rays, int lanes, EmbreeHit* answers) const;
+    void prefetch_corner_indices(const EmbreeHit* answers, int lanes) const;
+    void prefetch_corners(const EmbreeHit* answers, int lanes) const;
+    void complete_packet(const Ray* rays, const EmbreeHit* answers, int lanes, Hit* hits, bool* found) const;
     // The Hit from what Embree found for `ray` (and the planes outside it).
     bool complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit) const;
     // The mesh instance Embree's answer names, or null (analytic or no hit).
@@ -234,6 +345,19 @@ private:
     bool m_has_no_shadow_mesh = false;
     // By instance: a mesh whose triangle i is its face i (no polygons split).
     std::vector<std::uint8_t> m_faces_are_triangles;
+    // By top-level geometry id: plain world meshes (see PlainTriangles).
+    std::vector<PlainTriangles> m_plain_triangles;
+    // The emitter a hit on `instance` with `material` reports.
+    static const Light* emitter_of(const Instance& instance, const Material* material) {
+        if (instance.light) return instance.light;
+        return material && material->is_emissive() ? instance.emitter : nullptr;
+    }
+    // The plain world mesh Embree's answer names, or null.
+    const PlainTriangles* plain_triangles_of(const EmbreeHit& found) const {
+        if (found.instance != kInvalidId || found.geometry >= m_plain_triangles.size()) return nullptr;
+        const PlainTriangles& mesh = m_plain_triangles[found.geometry];
+        return mesh.positions ? &mesh : nullptr;
+    }
 };
 
 RTCGeometry EmbreeScene::make_triangles(const MeshData& mesh, const std::vector<float>& positions) {
@@ -321,6 +445,15 @@ void EmbreeScene::build() {
         if (mesh.indices.empty()) continue;
         if (instance.mesh_in_world) {
             attach(make_triangles(mesh, instance.world_positions), GeometryEntry{nullptr, index});
+            const sg::TriangleMesh& source = *mesh.source;
+            if (m_faces_are_triangles[index] && source.normals.empty() && source.uvs.empty() &&
+                instance.face_materials.empty()) {
+                const unsigned id = unsigned(m_geometries.size() - 1);
+                if (m_plain_triangles.size() <= id) m_plain_triangles.resize(id + 1);
+                m_plain_triangles[id] =
+                    PlainTriangles{instance.world_positions.data(), mesh.indices.data(), instance.material,
+                                   emitter_of(instance, instance.material), index, instance.casts_shadow};
+            }
             continue;
         }
         RTCScene& shared = m_scene_of_mesh[&mesh];
@@ -378,24 +511,15 @@ void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_tri
     // Skipping the lookup when triangle i is face i saves one more cold load.
     const std::uint32_t face_index = faces_are_triangles ? primitive : mesh.face_of_triangle[primitive];
     const std::vector<float>& positions = traced_positions(instance);
-    // The hit from the same float vertices Embree intersected: an affine
-    // combination, so it lies on the triangle's plane up to rounding, which
-    // `object_error` bounds (pbrt-v4's gamma(7) bound for this sum, made
-    // generous for Embree's own arithmetic).
-    const std::uint32_t* corner = &mesh.indices[3 * primitive];
-    Vec3 vertex[3];
-    for (int k = 0; k < 3; ++k) {
-        const float* xyz = &positions[3 * std::size_t(corner[k])];
-        vertex[k] = Vec3(xyz[0], xyz[1], xyz[2]);
-    }
+    const float* vertices = positions.data();
+    const std::uint32_t* corners = &mesh.indices[3 * primitive];
+    TriangleSurface surface;
+    triangle_surfaces(&vertices, &corners, &u, &v, 1, &surface);
     const float b1 = u, b2 = v, b0 = 1.0f - b1 - b2;
-    const Vec3 p = b0 * vertex[0] + b1 * vertex[1] + b2 * vertex[2];
-    Vec3 normal = glm::cross(vertex[1] - vertex[0], vertex[2] - vertex[0]);
-    const float normal_length = glm::length(normal);
-    normal = normal_length > 0.0f && std::isfinite(normal_length) ? normal / normal_length : Vec3(0.0f, 1.0f, 0.0f);
-    const Vec3 magnitude = glm::max(glm::abs(vertex[0]), glm::max(glm::abs(vertex[1]), glm::abs(vertex[2])));
-    const float largest = glm::max(magnitude.x, glm::max(magnitude.y, magnitude.z));
-    const Vec3 object_error(16.0f * FLT_EPSILON * largest);
+    const Vec3& p = surface.point;
+    const Vec3& normal = surface.normal;
+    const Vec3& object_error = surface.error;
+    const float largest = surface.largest_coordinate;
     Vec3 world, world_normal, error;
     if (instance.mesh_in_world) {
         world = p;
@@ -468,56 +592,108 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
     return complete_hit(ray, found, hit);
 }
 
-void EmbreeScene::intersect_coherent(const Ray* rays, int count, Hit* hits, bool* found) const {
+void EmbreeScene::trace_packet(const Ray* rays, int lanes, EmbreeHit* answers) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    constexpr int kLanes = 16;
-    for (int first = 0; first < count; first += kLanes) {
-        const int lanes = std::min(kLanes, count - first);
-        alignas(64) int valid[kLanes];
-        alignas(64) RTCRayHit16 packet;
-        for (int k = 0; k < kLanes; ++k) {
-            valid[k] = k < lanes ? -1 : 0;
-            // Idle lanes repeat a live ray so every lane holds finite data.
-            const Ray& ray = rays[first + std::min(k, lanes - 1)];
-            RTCRay single;
-            fill_embree_ray(ray, single);
-            packet.ray.org_x[k] = single.org_x;
-            packet.ray.org_y[k] = single.org_y;
-            packet.ray.org_z[k] = single.org_z;
-            packet.ray.dir_x[k] = single.dir_x;
-            packet.ray.dir_y[k] = single.dir_y;
-            packet.ray.dir_z[k] = single.dir_z;
-            packet.ray.tnear[k] = single.tnear;
-            packet.ray.tfar[k] = single.tfar;
-            packet.ray.time[k] = 0.0f;
-            packet.ray.mask[k] = single.mask;
-            packet.ray.id[k] = 0;
-            packet.ray.flags[k] = 0;
-            packet.hit.geomID[k] = kInvalidId;
-            packet.hit.primID[k] = kInvalidId;
-            packet.hit.instID[0][k] = kInvalidId;
-            packet.hit.u[k] = packet.hit.v[k] = 0.0f;
+    alignas(64) int valid[kPacketLanes];
+    alignas(64) RTCRayHit16 packet;
+    for (int k = 0; k < kPacketLanes; ++k) {
+        valid[k] = k < lanes ? -1 : 0;
+        // Idle lanes repeat a live ray so every lane holds finite data.
+        const Ray& ray = rays[std::min(k, lanes - 1)];
+        packet.ray.org_x[k] = ray.origin.x;
+        packet.ray.org_y[k] = ray.origin.y;
+        packet.ray.org_z[k] = ray.origin.z;
+        packet.ray.dir_x[k] = ray.direction.x;
+        packet.ray.dir_y[k] = ray.direction.y;
+        packet.ray.dir_z[k] = ray.direction.z;
+        packet.ray.tnear[k] = glm::max(ray.t_min, 0.0f);  // as fill_embree_ray
+        packet.ray.tfar[k] = glm::max(ray.t_max, packet.ray.tnear[k]);
+        packet.ray.time[k] = 0.0f;
+        packet.ray.mask[k] = 0xffffffffu;
+        packet.ray.id[k] = 0;
+        packet.ray.flags[k] = 0;
+        packet.hit.geomID[k] = kInvalidId;
+        packet.hit.primID[k] = kInvalidId;
+        packet.hit.instID[0][k] = kInvalidId;
+        packet.hit.u[k] = packet.hit.v[k] = 0.0f;
+    }
+    rtcIntersect16(valid, m_scene, &context, &packet);
+    for (int k = 0; k < lanes; ++k)
+        answers[k] = EmbreeHit{packet.ray.tnear[k], packet.ray.tfar[k], packet.hit.geomID[k], packet.hit.primID[k],
+                               packet.hit.instID[0][k], packet.hit.u[k],   packet.hit.v[k]};
+}
+
+void EmbreeScene::prefetch_corner_indices(const EmbreeHit* answers, int lanes) const {
+    for (int k = 0; k < lanes; ++k)
+        if (const Instance* mesh = mesh_instance_of(answers[k]))
+            __builtin_prefetch(&mesh->mesh->indices[3 * std::size_t(answers[k].primitive)]);
+}
+
+void EmbreeScene::prefetch_corners(const EmbreeHit* answers, int lanes) const {
+    for (int k = 0; k < lanes; ++k)
+        if (const Instance* mesh = mesh_instance_of(answers[k])) {
+            const float* positions = traced_positions(*mesh).data();
+            const std::uint32_t* corner = &mesh->mesh->indices[3 * std::size_t(answers[k].primitive)];
+            for (int c = 0; c < 3; ++c) __builtin_prefetch(&positions[3 * std::size_t(corner[c])]);
         }
-        rtcIntersect16(valid, m_scene, &context, &packet);
-        EmbreeHit lane[kLanes];
-        for (int k = 0; k < lanes; ++k)
-            lane[k] = EmbreeHit{packet.ray.tnear[k], packet.ray.tfar[k], packet.hit.geomID[k], packet.hit.primID[k],
-                                packet.hit.instID[0][k], packet.hit.u[k],   packet.hit.v[k]};
-        // The hit triangles' corners are cold in cache (Embree traverses its
-        // own copy of the vertices): request every lane's before completing
-        // any, so the misses overlap instead of following one another.
-        for (int k = 0; k < lanes; ++k)
-            if (const Instance* mesh = mesh_instance_of(lane[k]))
-                __builtin_prefetch(&mesh->mesh->indices[3 * std::size_t(lane[k].primitive)]);
-        for (int k = 0; k < lanes; ++k)
-            if (const Instance* mesh = mesh_instance_of(lane[k])) {
-                const std::vector<float>& positions = traced_positions(*mesh);
-                const std::uint32_t* corner = &mesh->mesh->indices[3 * std::size_t(lane[k].primitive)];
-                for (int c = 0; c < 3; ++c) __builtin_prefetch(&positions[3 * std::size_t(corner[c])]);
-            }
-        for (int k = 0; k < lanes; ++k) found[first + k] = complete_hit(rays[first + k], lane[k], hits[first + k]);
+}
+
+void EmbreeScene::intersect_coherent(const Ray* rays, int count, Hit* hits, bool* found) const {
+    // A mesh hit needs its triangle's corner indices, then the corners: two
+    // dependent loads, cold in cache (Embree traverses its own copy of the
+    // vertices), which would stall completion for most of a memory latency
+    // each. So the packets go through a pipeline: after packet i is traced,
+    // its indices are requested, packet i-1's corners (indices now cached)
+    // are requested, and packet i-2 is completed; each packet's tracing
+    // hides the next stage's misses.
+    constexpr int kDepth = 3;
+    EmbreeHit answers[kDepth][kPacketLanes];
+    const int packets = (count + kPacketLanes - 1) / kPacketLanes;
+    auto lanes_of = [&](int packet) { return std::min(kPacketLanes, count - packet * kPacketLanes); };
+    for (int step = 0; step < packets + 2; ++step) {
+        if (step < packets) {
+            EmbreeHit* traced = answers[step % kDepth];
+            trace_packet(rays + step * kPacketLanes, lanes_of(step), traced);
+            prefetch_corner_indices(traced, lanes_of(step));
+        }
+        if (const int previous = step - 1; previous >= 0 && previous < packets)
+            prefetch_corners(answers[previous % kDepth], lanes_of(previous));
+        if (const int ready = step - 2; ready >= 0)
+            complete_packet(rays + ready * kPacketLanes, answers[ready % kDepth], lanes_of(ready),
+                            hits + ready * kPacketLanes, found + ready * kPacketLanes);
+    }
+}
+
+void EmbreeScene::complete_packet(const Ray* rays, const EmbreeHit* answers, int lanes, Hit* hits,
+                                  bool* found) const {
+    // Hits on plain world meshes are completed together; the rest (and
+    // every hit when planes, outside the BVH, may lie nearer) one by one.
+    const PlainTriangles* plain_mesh[kPacketLanes];
+    EmbreeHit plain_answer[kPacketLanes];
+    Hit plain_hit[kPacketLanes];
+    int plain_lane[kPacketLanes];
+    int plain = 0;
+    for (int k = 0; k < lanes; ++k) {
+        const PlainTriangles* mesh = m_planes.empty() ? plain_triangles_of(answers[k]) : nullptr;
+        if (mesh) {
+            plain_mesh[plain] = mesh;
+            plain_answer[plain] = answers[k];
+            plain_lane[plain++] = k;
+        } else {
+            found[k] = complete_hit(rays[k], answers[k], hits[k]);
+        }
+    }
+    if (plain == lanes) {  // the common case: straight into place
+        complete_plain_triangle_hits(plain_mesh, plain_answer, plain, hits);
+        for (int k = 0; k < lanes; ++k) found[k] = true;
+        return;
+    }
+    complete_plain_triangle_hits(plain_mesh, plain_answer, plain, plain_hit);
+    for (int i = 0; i < plain; ++i) {
+        hits[plain_lane[i]] = plain_hit[i];
+        found[plain_lane[i]] = true;
     }
 }
 
@@ -554,6 +730,10 @@ bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit)
         return true;
     }
     if (found.geometry == kInvalidId) return false;
+    if (const PlainTriangles* mesh = plain_triangles_of(found)) {
+        complete_plain_triangle_hits(&mesh, &found, 1, &hit);
+        return true;
+    }
 
     hit = Hit{};
     hit.t = found.tfar;
@@ -571,8 +751,7 @@ bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit)
     const Instance& instance = m_data->instances[index];
     hit.object_id = index;
     hit.casts_shadow = instance.casts_shadow;
-    hit.emitter = hit.material && hit.material->is_emissive() ? instance.emitter : nullptr;
-    if (instance.light) hit.emitter = instance.light;
+    hit.emitter = emitter_of(instance, hit.material);
     return true;
 }
 

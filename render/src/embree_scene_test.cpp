@@ -165,29 +165,20 @@ TEST(EmbreeScene, MeshUsedTwiceIsInstancedWithEachTransform) {
 // what they find one by one, on every kind of shape, including instanced
 // meshes, planes outside the BVH and rays that hit nothing; batch sizes
 // that are not multiples of the packet width leave idle lanes.
-TEST(EmbreeScene, CoherentBatchesFindWhatSingleRaysFind) {
-    const auto mesh = triangle_mesh({-1, 0, 0}, {1, 0, 0}, {0, 1.5, 0});
-    auto scene = compile_objects({
-        sphere_object({-1.5, 0.5, 6}, 0.8, solid_material({1, 0, 0})),
-        box_object({0.5, -0.5, 5}, {1.5, 0.5, 6}, solid_material({0, 1, 0})),
-        plane_object({0, 1, 0}, -1.0, solid_material({0, 0, 1})),
-        mesh_object(mesh, solid_material({1, 1, 0}), glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 8))),
-        mesh_object(mesh, solid_material({0, 1, 1}), glm::translate(glm::dmat4(1.0), glm::dvec3(2, 1, 9))),
-        mesh_object(triangle_mesh({-3, 2, 7}, {-2, 2, 7}, {-2.5, 3, 7}), solid_material({1, 0, 1})),
-    });
+void expect_batches_find_what_single_rays_find(const RenderScene& scene, int batch_size) {
     std::mt19937 random(7);
     std::uniform_real_distribution<float> spread(-0.6f, 0.6f);
     std::vector<Ray> rays;
     for (int i = 0; i < 1000; ++i) rays.push_back(make_ray(Vec3(0, 0.5f, 0), Vec3(spread(random), spread(random), 1)));
     int hits_found = 0;
-    for (std::size_t first = 0; first < rays.size(); first += 37) {
-        const int count = int(std::min<std::size_t>(37, rays.size() - first));
+    for (std::size_t first = 0; first < rays.size(); first += batch_size) {
+        const int count = int(std::min<std::size_t>(batch_size, rays.size() - first));
         std::vector<Hit> batch(count);
         std::unique_ptr<bool[]> found(new bool[count]);
-        scene->intersect_coherent(&rays[first], count, batch.data(), found.get());
+        scene.intersect_coherent(&rays[first], count, batch.data(), found.get());
         for (int i = 0; i < count; ++i) {
             Hit single;
-            const bool single_found = scene->intersect(rays[first + i], single);
+            const bool single_found = scene.intersect(rays[first + i], single);
             ASSERT_EQ(found[i], single_found) << "ray " << first + i;
             if (!single_found) continue;
             ++hits_found;
@@ -202,9 +193,39 @@ TEST(EmbreeScene, CoherentBatchesFindWhatSingleRaysFind) {
             EXPECT_EQ(h.emitter, single.emitter);
             EXPECT_EQ(h.object_id, single.object_id);
             EXPECT_EQ(h.primitive_id, single.primitive_id);
+            EXPECT_EQ(h.casts_shadow, single.casts_shadow);
         }
     }
     EXPECT_GT(hits_found, 500);  // the rays do meet the shapes
+}
+
+std::vector<sg::Object> shapes_of_every_kind(bool with_plane) {
+    const auto mesh = triangle_mesh({-1, 0, 0}, {1, 0, 0}, {0, 1.5, 0});
+    std::vector<sg::Object> objects = {
+        sphere_object({-1.5, 0.5, 6}, 0.8, solid_material({1, 0, 0})),
+        box_object({0.5, -0.5, 5}, {1.5, 0.5, 6}, solid_material({0, 1, 0})),
+        mesh_object(mesh, solid_material({1, 1, 0}), glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 8))),
+        mesh_object(mesh, solid_material({0, 1, 1}), glm::translate(glm::dmat4(1.0), glm::dvec3(2, 1, 9))),
+        // Used once, no normals or texture coordinates: a plain world mesh,
+        // whose hits in packets are completed lane-parallel.
+        mesh_object(triangle_mesh({-3, 2, 7}, {-2, 2, 7}, {-2.5, 3, 7}), solid_material({1, 0, 1})),
+        mesh_object(triangle_mesh({-20, -20, 12}, {20, -20, 12}, {0, 20, 12}), solid_material({0.5, 0.5, 0.5})),
+    };
+    if (with_plane) objects.push_back(plane_object({0, 1, 0}, -1.0, solid_material({0, 0, 1})));
+    return objects;
+}
+
+TEST(EmbreeScene, CoherentBatchesFindWhatSingleRaysFind) {
+    expect_batches_find_what_single_rays_find(*compile_objects(shapes_of_every_kind(true)), 37);
+}
+
+// Without planes, packet lanes on plain world meshes take the lane-parallel
+// completion, and long batches go through intersect_coherent's pipeline.
+TEST(EmbreeScene, CoherentBatchesWithoutPlanesFindWhatSingleRaysFind) {
+    const auto scene = compile_objects(shapes_of_every_kind(false));
+    expect_batches_find_what_single_rays_find(*scene, 37);
+    expect_batches_find_what_single_rays_find(*scene, 256);
+    expect_batches_find_what_single_rays_find(*scene, 1);
 }
 
 TEST(EmbreeScene, NoShadowObjectsDoNotOcclude) {

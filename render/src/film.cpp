@@ -14,21 +14,6 @@ Film::Film(int width, int height) : m_width(width), m_height(height) {
     m_taken.resize(m_pixels.size(), 0);
 }
 
-void Film::add_sample(int x, int y, const Color& radiance) {
-    const std::size_t index = std::size_t(y) * m_width + x;
-    Accumulator& pixel = m_pixels[index];
-    ++m_taken[index];
-    if (!std::isfinite(radiance.r) || !std::isfinite(radiance.g) || !std::isfinite(radiance.b)) {
-        ++pixel.nonfinite;
-        m_nonfinite_total.value.fetch_add(1, std::memory_order_relaxed);
-        return;
-    }
-    const glm::dvec3 value(radiance);
-    pixel.sum += value;
-    pixel.sum_squares += value * value;
-    ++pixel.count;
-}
-
 Color Film::mean(int x, int y) const {
     const Accumulator& pixel = at(x, y);
     if (pixel.count == 0) return Color(0.0f);

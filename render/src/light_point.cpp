@@ -12,6 +12,23 @@ PointLight::PointLight(const Vec3& position, const Color& intensity, float fade_
       m_pattern_axis(pattern_axis), m_one_sided(one_sided) {}
 
 LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
+    // Float where nothing can overflow or underflow: a squared distance
+    // well inside float's range. Every shading point of an ordinary scene
+    // takes this path; it is half the cost of the double one below.
+    const Vec3 to_light_float = m_position - p;
+    const float distance_squared = glm::dot(to_light_float, to_light_float);
+    if (distance_squared > 1e-30f && distance_squared < 1e30f && m_fade_distance == 0.0f &&
+        m_pattern_axis == Vec3(0.0f)) {
+        const float distance = std::sqrt(distance_squared);
+        LightSample s;
+        s.radiance = m_intensity * (1.0f / distance_squared);
+        s.wi = to_light_float * (1.0f / distance);
+        s.distance = distance;
+        s.point = m_position;
+        s.pdf = 1.0f;
+        s.is_delta = true;
+        return s;
+    }
     LightSample s;
     // Difference in double: at large offsets the float subtraction is
     // exact anyway, but the length must not overflow for huge scenes.

@@ -43,7 +43,12 @@ float blinn_normalization(float exponent) {
 
 Material::Material(const MaterialParameters& parameters)
     : m_params(parameters),
-      m_blinn_normalization(blinn_normalization(blinn_exponent(parameters.roughness))) {}
+      m_blinn_normalization(blinn_normalization(blinn_exponent(parameters.roughness))) {
+    if (const TextureSample* constant = parameters.pigment ? parameters.pigment->constant() : nullptr) {
+        m_constant_pigment = SurfaceSample{constant->rgb, constant->filter, constant->transmit};
+        m_pigment_is_constant = true;
+    }
+}
 
 Color Material::glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo,
                             const Vec3& wi) const {

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <limits>
 #include <mutex>
+#include <stdexcept>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -109,9 +110,15 @@ public:
         }
         m_noise_target = options.noise_target;
         m_min_samples = std::uint32_t(std::max(options.min_samples, 2));
-        m_wanted.assign(std::size_t(m_width) * m_height, 0);
-        m_plan.assign(m_wanted.size(), 0);
-        if (m_mode == Mode::Adaptive) m_relative_variance.assign(m_wanted.size(), 0.0);
+        // A fixed count without checkpoints is never limited (limit_to), and
+        // a pixel's share of it depends on its own count alone: planned()
+        // works it out when asked, and no per-pixel plan is stored.
+        m_plans_per_pixel = m_mode != Mode::Fixed || options.checkpoint_interval_seconds > 0.0;
+        if (m_plans_per_pixel) {
+            m_wanted.assign(std::size_t(m_width) * m_height, 0);
+            m_plan.assign(m_wanted.size(), 0);
+        }
+        if (m_mode == Mode::Adaptive) m_relative_variance.assign(std::size_t(m_width) * m_height, 0.0);
     }
 
     Mode mode() const { return m_mode; }
@@ -124,7 +131,7 @@ public:
     std::uint64_t plan_unlimited(const Film& film) {
         if (m_mode == Mode::Adaptive) update_relative_variance(film);
         struct Sweep {
-            std::uint64_t wanted = 0, taken = 0;
+            std::uint64_t wanted = 0, taken = 0, pixels_wanting = 0;
             bool completes = true;
         };
         const Sweep sweep = tbb::parallel_reduce(
@@ -136,9 +143,10 @@ public:
                         const std::uint32_t taken =
                             std::min(film.samples_taken(m_window.x0 + x, m_window.y0 + y), m_cap);
                         const std::uint32_t wanted = wanted_after(taken, x, y);
-                        m_wanted[i] = m_plan[i] = wanted;
+                        if (m_plans_per_pixel) m_wanted[i] = m_plan[i] = wanted;
                         sum.wanted += wanted;
                         sum.taken += taken;
+                        sum.pixels_wanting += wanted > 0;
                         sum.completes = sum.completes && taken + wanted >= m_cap;
                     }
                 return sum;
@@ -146,11 +154,13 @@ public:
             [](Sweep a, const Sweep& b) {
                 a.wanted += b.wanted;
                 a.taken += b.taken;
+                a.pixels_wanting += b.pixels_wanting;
                 a.completes = a.completes && b.completes;
                 return a;
             });
         m_taken_at_plan = sweep.taken;
         m_plan_completes = sweep.completes;
+        m_pixels_wanting = sweep.pixels_wanting;
         return sweep.wanted;
     }
 
@@ -165,6 +175,7 @@ public:
     // every pixel at the largest common per-pixel count that fits. Returns
     // the new total (0 when not even one sample per pixel fits).
     std::uint64_t limit_to(std::uint64_t samples) {
+        if (!m_plans_per_pixel) throw std::logic_error("PassPlanner::limit_to on a plan kept per count");
         auto total_at = [&](std::uint32_t limit) {
             std::uint64_t total = 0;
             for (std::uint32_t wanted : m_wanted) total += std::min(wanted, limit);
@@ -183,12 +194,14 @@ public:
         return total_at(low);
     }
 
-    // Pixels that want at least one more sample.
-    std::uint64_t pixels_wanting() const {
-        return std::uint64_t(std::count_if(m_wanted.begin(), m_wanted.end(), [](std::uint32_t n) { return n > 0; }));
-    }
+    // Pixels that want at least one more sample (in the plan before any limit).
+    std::uint64_t pixels_wanting() const { return m_pixels_wanting; }
 
-    std::uint32_t planned(int x, int y) const { return m_plan[index(x, y)]; }
+    // Samples pixel (x, y) of the window takes this pass, given the samples
+    // `taken` it held when the pass began.
+    std::uint32_t planned(int x, int y, std::uint32_t taken) const {
+        return m_plans_per_pixel ? m_plan[index(x, y)] : wanted_after(std::min(taken, m_cap), x, y);
+    }
 
 private:
     std::size_t index(int x, int y) const { return std::size_t(y) * m_width + x; }
@@ -261,14 +274,18 @@ private:
     std::vector<std::uint32_t> m_plan;    // per pixel, this pass
     std::vector<double> m_relative_variance;  // per pixel, adaptive mode only
     std::uint64_t m_taken_at_plan = 0;
+    std::uint64_t m_pixels_wanting = 0;
     bool m_plan_completes = false;
+    bool m_plans_per_pixel = true;  // else m_wanted and m_plan stay empty
 };
 
-// Camera samples waiting to be traced together: a 4x4 block of pixels at
-// one sample each fills it.
+// Camera samples waiting to be traced together, added in 4x4 blocks of
+// pixels: a 16x16 tile at one sample each fills it. Long batches let
+// RenderScene::intersect_coherent overlap one packet's memory accesses with
+// the next packet's tracing.
 struct CameraBatch {
     static constexpr int kBlock = 4;
-    static constexpr int kCapacity = kBlock * kBlock;
+    static constexpr int kCapacity = 16 * kBlock * kBlock;
     struct Sample {
         int x, y;
         std::uint32_t index;
@@ -380,21 +397,20 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
             for (int block_x = x_begin; block_x < x_end; block_x += kBlock)
                 for (int y = block_y; y < std::min(block_y + kBlock, y_end); ++y)
                     for (int x = block_x; x < std::min(block_x + kBlock, x_end); ++x) {
-                        const std::uint32_t count = planner.planned(x - window.x0, y - window.y0);
+                        const std::uint32_t first = film.samples_taken(x, y);
+                        const std::uint32_t count = planner.planned(x - window.x0, y - window.y0, first);
                         if (count == 0) continue;
                         if (should_stop()) {
                             shade_batch();
                             samples_taken += taken;
                             return;
                         }
-                        const std::uint32_t first = film.samples_taken(x, y);
                         for (std::uint32_t s = first; s < first + count; ++s) {
-                            const Ray ray = camera_ray(x, y, s);
                             if (!batched) {
-                                film.add_sample(x, y, integrator.radiance(ray, scene, sampler));
+                                film.add_sample(x, y, integrator.radiance(camera_ray(x, y, s), scene, sampler));
                                 continue;
                             }
-                            batch.add(x, y, s, ray);
+                            batch.add(x, y, s, camera_ray(x, y, s));
                             if (batch.full()) shade_batch();
                         }
                         taken += count;

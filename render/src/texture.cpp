@@ -36,6 +36,7 @@ public:
     explicit SolidTexture(const TextureSample& value) : m_value(value) {}
     TextureSample evaluate(const Hit&) const override { return m_value; }
     TextureSample average() const override { return m_value; }
+    const TextureSample* constant() const override { return &m_value; }
 
 private:
     TextureSample m_value;

@@ -18,8 +18,25 @@ public:
 
     // Ray through the film point (x, y) in pixels, (0,0) the top-left corner
     // of the image and (width, height) the bottom-right. Pixel centres are at
-    // half-integers, as POV-Ray's.
-    Ray generate_ray(float x, float y, int width, int height) const;
+    // half-integers, as POV-Ray's. Inline: the host calls it once per
+    // camera sample, and the ray is then built where it is stored.
+    Ray generate_ray(float x, float y, int width, int height) const {
+        // Normalised image coordinates: x0 in [-0.5, 0.5] left to right, y0
+        // in [-0.5, 0.5] bottom to top.
+        const float x0 = x / float(width) - 0.5f;
+        const float y0 = 0.5f - y / float(height);
+        Ray ray;
+        if (m_projection == Projection::Orthographic) {
+            ray.origin = m_location + x0 * m_right + y0 * m_up;
+            ray.direction = glm::normalize(m_direction);
+        } else {
+            ray.origin = m_location;
+            ray.direction = glm::normalize(m_direction + x0 * m_right + y0 * m_up);
+        }
+        ray.t_min = 0.0f;
+        ray.t_max = kInfinity;
+        return ray;
+    }
 
     Projection projection() const { return m_projection; }
     const Vec3& location() const { return m_location; }

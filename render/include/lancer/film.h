@@ -4,6 +4,7 @@
 #pragma once
 
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -28,7 +29,21 @@ public:
     int height() const { return m_height; }
 
     // Not thread-safe per pixel: the host gives each pixel to one thread.
-    void add_sample(int x, int y, const Color& radiance);
+    // Inline: the host calls it once per sample.
+    void add_sample(int x, int y, const Color& radiance) {
+        const std::size_t index = std::size_t(y) * m_width + x;
+        Accumulator& pixel = m_pixels[index];
+        ++m_taken[index];
+        if (!std::isfinite(radiance.r) || !std::isfinite(radiance.g) || !std::isfinite(radiance.b)) {
+            ++pixel.nonfinite;
+            m_nonfinite_total.value.fetch_add(1, std::memory_order_relaxed);
+            return;
+        }
+        const glm::dvec3 value(radiance);
+        pixel.sum += value;
+        pixel.sum_squares += value * value;
+        ++pixel.count;
+    }
 
     Color mean(int x, int y) const;              // black if no samples
     Color variance_of_mean(int x, int y) const;  // sample variance / n

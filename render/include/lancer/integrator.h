@@ -18,7 +18,7 @@ namespace lancer {
 
 // Bump whenever a header a plugin compiles against changes layout or
 // virtual tables; the host refuses any other version.
-inline constexpr std::uint32_t kPluginAbiVersion = 2;
+inline constexpr std::uint32_t kPluginAbiVersion = 3;
 
 class Integrator {
 public:

@@ -61,6 +61,7 @@ public:
 
     // Pigment colour, filter and transmit at the hit (texture lookup).
     SurfaceSample sample_surface(const Hit& hit) const {
+        if (m_pigment_is_constant) return m_constant_pigment;
         if (m_params.pigment == nullptr) return {};
         const TextureSample texel = m_params.pigment->evaluate(hit);
         return SurfaceSample{texel.rgb, texel.filter, texel.transmit};
@@ -109,6 +110,10 @@ public:
 private:
     MaterialParameters m_params;
     float m_blinn_normalization;  // c(k) of the Blinn lobe, see above
+    // A pigment that does not vary, looked up once: sample_surface then
+    // needs no virtual call.
+    bool m_pigment_is_constant = false;
+    SurfaceSample m_constant_pigment;
 };
 
 // The Blinn lobe's normalisation c(k) for exponent k: 1 over the integral of

@@ -24,6 +24,9 @@ public:
     virtual TextureSample evaluate(const Hit& hit) const = 0;
     // Mean over the texture's area, for light power and proxies.
     virtual TextureSample average() const = 0;
+    // The value everywhere, for a texture that does not vary; else null.
+    // Lets a material skip the per-hit lookup.
+    virtual const TextureSample* constant() const { return nullptr; }
 };
 
 }  // namespace lancer
