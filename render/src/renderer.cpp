@@ -365,6 +365,10 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
     // in batches of neighbouring pixels (4x4 blocks of the tile), which
     // Embree traverses together; the rest trace ray by ray themselves.
     const bool batched = integrator.shades_camera_hits();
+    // One batch per thread for the whole render: its 34 KB of rays and hits
+    // are initialised once, not once per tile.
+    tbb::enumerable_thread_specific<std::unique_ptr<CameraBatch>> batches(
+        [] { return std::make_unique<CameraBatch>(); });
     auto render_tile = [&](int tile_index) {
         Sampler& sampler = *samplers.local();
         const int tx = tile_index % tiles_x, ty = tile_index / tiles_x;
@@ -377,7 +381,8 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
             const Vec2 jitter = pixel_centre ? Vec2(0.5f) : sampler.next_2d();
             return camera.generate_ray(float(x) + jitter.x, float(y) + jitter.y, width, height);
         };
-        CameraBatch batch;
+        CameraBatch& batch = *batches.local();
+        batch.size = 0;
         auto shade_batch = [&] {
             if (batch.size == 0) return;
             scene.intersect_coherent(batch.rays, batch.size, batch.hits, batch.found);
