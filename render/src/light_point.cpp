@@ -20,9 +20,10 @@ LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     if (distance_squared > 1e-30f && distance_squared < 1e30f && m_fade_distance == 0.0f &&
         m_pattern_axis == Vec3(0.0f)) {
         const float distance = std::sqrt(distance_squared);
+        const float inverse_distance = 1.0f / distance;
         LightSample s;
-        s.radiance = m_intensity * (1.0f / distance_squared);
-        s.wi = to_light_float * (1.0f / distance);
+        s.radiance = m_intensity * (inverse_distance * inverse_distance);
+        s.wi = to_light_float * inverse_distance;
         s.distance = distance;
         s.point = m_position;
         s.pdf = 1.0f;

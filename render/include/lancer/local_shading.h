@@ -58,8 +58,10 @@ inline bool is_finite(const Color& c) {
 // 0/0), so a lamp's own surface never turns NaN.
 inline LobeRadiance reflect_light_sample(const ShadingContext& at, const LightSample& sample) {
     if (!(sample.pdf > 0.0f) || lancer::is_black(sample.radiance)) return {};
-    const Color incident =
-        sample.radiance * (std::abs(glm::dot(at.normal, sample.wi)) / sample.pdf);
+    // Delta lights have pdf 1: dividing by it is exact, and skipping the
+    // division takes it off the critical path of direct lighting.
+    const float cosine = std::abs(glm::dot(at.normal, sample.wi));
+    const Color incident = sample.radiance * (sample.pdf == 1.0f ? cosine : cosine / sample.pdf);
     LobeRadiance reflected;
     reflected.diffuse = at.material.diffuse_brdf(at.surface, at.normal, at.wo, sample.wi) * incident;
     if (at.material.has_glossy())
