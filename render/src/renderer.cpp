@@ -377,6 +377,8 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
         std::uint64_t taken = 0;
         // The k-th sample of a pixel always uses stream k.
         auto camera_ray = [&](int x, int y, std::uint32_t s) {
+            if (pixel_centre && batched)  // shade_batch positions the sampler itself
+                return camera.generate_ray(float(x) + 0.5f, float(y) + 0.5f, width, height);
             sampler.start_sample(x, y, s);
             const Vec2 jitter = pixel_centre ? Vec2(0.5f) : sampler.next_2d();
             return camera.generate_ray(float(x) + jitter.x, float(y) + jitter.y, width, height);
