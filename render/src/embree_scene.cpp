@@ -141,7 +141,7 @@ void triangle_surfaces(const float* const* positions, const std::uint32_t* const
 // Everything a hit on a mesh placed in world space needs, when its
 // triangles are its faces and it has no per-vertex normals, texture
 // coordinates or per-face materials (the common OBJ and mesh2 case): a hit
-// then reads 48 bytes of this record and the triangle's corners, nothing of
+// then reads this 40-byte record and the triangle's corners, nothing of
 // the Instance or the source mesh.
 struct PlainTriangles {
     const float* positions = nullptr;  // null: not a plain world mesh
