@@ -672,7 +672,6 @@ void EmbreeScene::complete_packet(const Ray* rays, const EmbreeHit* answers, int
     // every hit when planes, outside the BVH, may lie nearer) one by one.
     const PlainTriangles* plain_mesh[kPacketLanes];
     EmbreeHit plain_answer[kPacketLanes];
-    Hit plain_hit[kPacketLanes];
     int plain_lane[kPacketLanes];
     int plain = 0;
     for (int k = 0; k < lanes; ++k) {
@@ -690,6 +689,7 @@ void EmbreeScene::complete_packet(const Ray* rays, const EmbreeHit* answers, int
         for (int k = 0; k < lanes; ++k) found[k] = true;
         return;
     }
+    Hit plain_hit[kPacketLanes];  // constructed only for mixed packets
     complete_plain_triangle_hits(plain_mesh, plain_answer, plain, plain_hit);
     for (int i = 0; i < plain; ++i) {
         hits[plain_lane[i]] = plain_hit[i];
