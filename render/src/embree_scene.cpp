@@ -81,21 +81,26 @@ const std::vector<float>& traced_positions(const Instance& instance) {
 
 // Triangle hits from the float vertices Embree intersected: each point an
 // affine combination of the corners (on the triangle's plane up to
-// rounding, which `error` bounds: pbrt-v4's gamma(7) bound for this sum,
+// rounding, which the error bounds: pbrt-v4's gamma(7) bound for this sum,
 // made generous for Embree's own arithmetic) and the unit geometric normal.
-struct TriangleSurface {
-    Vec3 point, normal, error;
-    float largest_coordinate;  // of the corners, in magnitude
+// Lane by lane (structure of arrays), so the compiler computes several
+// lanes per instruction: a packet's square roots and divisions then cost
+// little more than one ray's.
+constexpr int kMaxLanes = 16;
+struct TriangleSurfaces {
+    float px[kMaxLanes], py[kMaxLanes], pz[kMaxLanes];
+    float nx[kMaxLanes], ny[kMaxLanes], nz[kMaxLanes];
+    float largest[kMaxLanes];  // of the corners' coordinates, in magnitude
 };
+
+// The point's error bound per axis, in the space of the corners.
+inline float triangle_point_error(float largest_coordinate) { return 16.0f * FLT_EPSILON * largest_coordinate; }
 
 // Lane k: the triangle whose corner indices start at corners[k], into the
 // xyz array positions[k], at barycentrics (b1[k], b2[k]); count at most
-// kMaxLanes. Laid out lane by lane (structure of arrays) so the compiler
-// computes several lanes per instruction: a packet's square roots and
-// divisions then cost little more than one ray's.
-constexpr int kMaxLanes = 16;
+// kMaxLanes.
 void triangle_surfaces(const float* const* positions, const std::uint32_t* const* corners, const float* b1,
-                       const float* b2, int count, TriangleSurface* out) {
+                       const float* b2, int count, TriangleSurfaces& out) {
     float corner_x[3][kMaxLanes], corner_y[3][kMaxLanes], corner_z[3][kMaxLanes];
     for (int k = 0; k < count; ++k)
         for (int c = 0; c < 3; ++c) {
@@ -104,14 +109,11 @@ void triangle_surfaces(const float* const* positions, const std::uint32_t* const
             corner_y[c][k] = xyz[1];
             corner_z[c][k] = xyz[2];
         }
-    float px[kMaxLanes], py[kMaxLanes], pz[kMaxLanes];
-    float nx[kMaxLanes], ny[kMaxLanes], nz[kMaxLanes];
-    float largest[kMaxLanes];
     for (int k = 0; k < count; ++k) {
         const float b0 = 1.0f - b1[k] - b2[k];
-        px[k] = b0 * corner_x[0][k] + b1[k] * corner_x[1][k] + b2[k] * corner_x[2][k];
-        py[k] = b0 * corner_y[0][k] + b1[k] * corner_y[1][k] + b2[k] * corner_y[2][k];
-        pz[k] = b0 * corner_z[0][k] + b1[k] * corner_z[1][k] + b2[k] * corner_z[2][k];
+        out.px[k] = b0 * corner_x[0][k] + b1[k] * corner_x[1][k] + b2[k] * corner_x[2][k];
+        out.py[k] = b0 * corner_y[0][k] + b1[k] * corner_y[1][k] + b2[k] * corner_y[2][k];
+        out.pz[k] = b0 * corner_z[0][k] + b1[k] * corner_z[1][k] + b2[k] * corner_z[2][k];
         const float e1x = corner_x[1][k] - corner_x[0][k], e1y = corner_y[1][k] - corner_y[0][k],
                     e1z = corner_z[1][k] - corner_z[0][k];
         const float e2x = corner_x[2][k] - corner_x[0][k], e2y = corner_y[2][k] - corner_y[0][k],
@@ -121,21 +123,28 @@ void triangle_surfaces(const float* const* positions, const std::uint32_t* const
         // A degenerate (zero-area) or overflowing triangle gets +y.
         const bool usable = length > 0.0f && length <= FLT_MAX;
         const float inverse = 1.0f / length;
-        nx[k] = usable ? cx * inverse : 0.0f;
-        ny[k] = usable ? cy * inverse : 1.0f;
-        nz[k] = usable ? cz * inverse : 0.0f;
+        out.nx[k] = usable ? cx * inverse : 0.0f;
+        out.ny[k] = usable ? cy * inverse : 1.0f;
+        out.nz[k] = usable ? cz * inverse : 0.0f;
         float m = 0.0f;
         for (int c = 0; c < 3; ++c)
             m = std::max(m, std::max(std::fabs(corner_x[c][k]),
                                      std::max(std::fabs(corner_y[c][k]), std::fabs(corner_z[c][k]))));
-        largest[k] = m;
+        out.largest[k] = m;
     }
-    for (int k = 0; k < count; ++k) {
-        out[k].point = Vec3(px[k], py[k], pz[k]);
-        out[k].normal = Vec3(nx[k], ny[k], nz[k]);
-        out[k].largest_coordinate = largest[k];
-        out[k].error = Vec3(16.0f * FLT_EPSILON * largest[k]);
-    }
+}
+
+// One triangle's hit point, unit normal and the point's error bound.
+struct TriangleSurface {
+    Vec3 point, normal, error;
+    float largest_coordinate;
+};
+
+TriangleSurface triangle_surface(const float* positions, const std::uint32_t* corners, float b1, float b2) {
+    TriangleSurfaces lane;
+    triangle_surfaces(&positions, &corners, &b1, &b2, 1, lane);
+    return TriangleSurface{Vec3(lane.px[0], lane.py[0], lane.pz[0]), Vec3(lane.nx[0], lane.ny[0], lane.nz[0]),
+                           Vec3(triangle_point_error(lane.largest[0])), lane.largest[0]};
 }
 
 // Everything a hit on a mesh placed in world space needs, when its
@@ -152,41 +161,55 @@ struct PlainTriangles {
     bool casts_shadow = true;
 };
 
-// One ray's answer from Embree, whether traced alone or in a packet.
+// One ray's answer from Embree.
 struct EmbreeHit {
     float tnear, tfar;
     unsigned geometry, primitive, instance;
     float u, v;
 };
 
+// A packet's answers, lane by lane, as Embree gives them.
+struct PacketAnswers {
+    float tnear[kMaxLanes], tfar[kMaxLanes];
+    unsigned geometry[kMaxLanes], primitive[kMaxLanes], instance[kMaxLanes];
+    float u[kMaxLanes], v[kMaxLanes];
+
+    EmbreeHit lane(int k) const { return EmbreeHit{tnear[k], tfar[k], geometry[k], primitive[k], instance[k], u[k], v[k]}; }
+};
+
 // Completes `count` (at most kMaxLanes) hits on plain world meshes: lane k
-// is triangle answers[k].primitive of *meshes[k], written to hits[k].
-void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const EmbreeHit* answers, int count,
-                                  Hit* hits) {
+// found triangle primitive[k] of *meshes[k] at distance t[k] and
+// barycentrics (u[k], v[k]); written to hits[k].
+void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const float* t, const unsigned* primitive,
+                                  const float* u, const float* v, int count, Hit* hits) {
     const float* positions[kMaxLanes];
     const std::uint32_t* corners[kMaxLanes];
-    float b1[kMaxLanes], b2[kMaxLanes];
     for (int k = 0; k < count; ++k) {
         positions[k] = meshes[k]->positions;
-        corners[k] = &meshes[k]->indices[3 * std::size_t(answers[k].primitive)];
-        b1[k] = answers[k].u;
-        b2[k] = answers[k].v;
+        corners[k] = &meshes[k]->indices[3 * std::size_t(primitive[k])];
     }
-    TriangleSurface surfaces[kMaxLanes];
-    triangle_surfaces(positions, corners, b1, b2, count, surfaces);
+    TriangleSurfaces surfaces;
+    triangle_surfaces(positions, corners, u, v, count, surfaces);
+    // World-space error: the corners' bound and the rounding of the point.
+    float ex[kMaxLanes], ey[kMaxLanes], ez[kMaxLanes];
+    for (int k = 0; k < count; ++k) {
+        const float corner_error = triangle_point_error(surfaces.largest[k]);
+        ex[k] = corner_error + 2.0f * FLT_EPSILON * std::fabs(surfaces.px[k]);
+        ey[k] = corner_error + 2.0f * FLT_EPSILON * std::fabs(surfaces.py[k]);
+        ez[k] = corner_error + 2.0f * FLT_EPSILON * std::fabs(surfaces.pz[k]);
+    }
     for (int k = 0; k < count; ++k) {
         const PlainTriangles& mesh = *meshes[k];
-        const TriangleSurface& surface = surfaces[k];
         Hit& hit = hits[k];
-        hit.t = answers[k].tfar;
-        hit.position = surface.point;
-        hit.position_error = surface.error + 2.0f * FLT_EPSILON * glm::abs(surface.point);
-        hit.geometric_normal = hit.shading_normal = surface.normal;
-        hit.uv = Vec2(b1[k], b2[k]);
+        hit.t = t[k];
+        hit.position = Vec3(surfaces.px[k], surfaces.py[k], surfaces.pz[k]);
+        hit.position_error = Vec3(ex[k], ey[k], ez[k]);
+        hit.geometric_normal = hit.shading_normal = Vec3(surfaces.nx[k], surfaces.ny[k], surfaces.nz[k]);
+        hit.uv = Vec2(u[k], v[k]);
         hit.material = mesh.material;
         hit.emitter = mesh.emitter;
         hit.object_id = mesh.object_id;
-        hit.primitive_id = answers[k].primitive;
+        hit.primitive_id = primitive[k];
         hit.casts_shadow = mesh.casts_shadow;
     }
 }
@@ -321,10 +344,10 @@ private:
     RTCGeometry make_triangles(const MeshData& mesh, const std::vector<float>& positions);
     // intersect_coherent's stages (see there); packets of kPacketLanes rays.
     static constexpr int kPacketLanes = kMaxLanes;
-    void trace_packet(const Ray* rays, int lanes, EmbreeHit* answers) const;
-    void prefetch_corner_indices(const EmbreeHit* answers, int lanes) const;
-    void prefetch_corners(const EmbreeHit* answers, int lanes) const;
-    void complete_packet(const Ray* rays, const EmbreeHit* answers, int lanes, Hit* hits, bool* found) const;
+    void trace_packet(const Ray* rays, int lanes, PacketAnswers& answers) const;
+    void prefetch_corner_indices(const PacketAnswers& answers, int lanes) const;
+    void prefetch_corners(const PacketAnswers& answers, int lanes) const;
+    void complete_packet(const Ray* rays, const PacketAnswers& answers, int lanes, Hit* hits, bool* found) const;
     // The Hit from what Embree found for `ray` (and the planes outside it).
     bool complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit) const;
     // The mesh instance Embree's answer names, or null (analytic or no hit).
@@ -353,9 +376,9 @@ private:
         return material && material->is_emissive() ? instance.emitter : nullptr;
     }
     // The plain world mesh Embree's answer names, or null.
-    const PlainTriangles* plain_triangles_of(const EmbreeHit& found) const {
-        if (found.instance != kInvalidId || found.geometry >= m_plain_triangles.size()) return nullptr;
-        const PlainTriangles& mesh = m_plain_triangles[found.geometry];
+    const PlainTriangles* plain_triangles_of(unsigned geometry, unsigned instance) const {
+        if (instance != kInvalidId || geometry >= m_plain_triangles.size()) return nullptr;
+        const PlainTriangles& mesh = m_plain_triangles[geometry];
         return mesh.positions ? &mesh : nullptr;
     }
 };
@@ -513,8 +536,7 @@ void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_tri
     const std::vector<float>& positions = traced_positions(instance);
     const float* vertices = positions.data();
     const std::uint32_t* corners = &mesh.indices[3 * primitive];
-    TriangleSurface surface;
-    triangle_surfaces(&vertices, &corners, &u, &v, 1, &surface);
+    const TriangleSurface surface = triangle_surface(vertices, corners, u, v);
     const float b1 = u, b2 = v, b0 = 1.0f - b1 - b2;
     const Vec3& p = surface.point;
     const Vec3& normal = surface.normal;
@@ -592,7 +614,7 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
     return complete_hit(ray, found, hit);
 }
 
-void EmbreeScene::trace_packet(const Ray* rays, int lanes, EmbreeHit* answers) const {
+void EmbreeScene::trace_packet(const Ray* rays, int lanes, PacketAnswers& answers) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
@@ -620,24 +642,41 @@ void EmbreeScene::trace_packet(const Ray* rays, int lanes, EmbreeHit* answers) c
         packet.hit.u[k] = packet.hit.v[k] = 0.0f;
     }
     rtcIntersect16(valid, m_scene, &context, &packet);
-    for (int k = 0; k < lanes; ++k)
-        answers[k] = EmbreeHit{packet.ray.tnear[k], packet.ray.tfar[k], packet.hit.geomID[k], packet.hit.primID[k],
-                               packet.hit.instID[0][k], packet.hit.u[k],   packet.hit.v[k]};
+    for (int k = 0; k < kPacketLanes; ++k) {
+        answers.tnear[k] = packet.ray.tnear[k];
+        answers.tfar[k] = packet.ray.tfar[k];
+        answers.geometry[k] = packet.hit.geomID[k];
+        answers.primitive[k] = packet.hit.primID[k];
+        answers.instance[k] = packet.hit.instID[0][k];
+        answers.u[k] = packet.hit.u[k];
+        answers.v[k] = packet.hit.v[k];
+    }
 }
 
-void EmbreeScene::prefetch_corner_indices(const EmbreeHit* answers, int lanes) const {
-    for (int k = 0; k < lanes; ++k)
-        if (const Instance* mesh = mesh_instance_of(answers[k]))
-            __builtin_prefetch(&mesh->mesh->indices[3 * std::size_t(answers[k].primitive)]);
+void EmbreeScene::prefetch_corner_indices(const PacketAnswers& answers, int lanes) const {
+    for (int k = 0; k < lanes; ++k) {
+        if (const PlainTriangles* mesh = plain_triangles_of(answers.geometry[k], answers.instance[k]))
+            __builtin_prefetch(&mesh->indices[3 * std::size_t(answers.primitive[k])]);
+        else if (const Instance* instance = mesh_instance_of(answers.lane(k)))
+            __builtin_prefetch(&instance->mesh->indices[3 * std::size_t(answers.primitive[k])]);
+    }
 }
 
-void EmbreeScene::prefetch_corners(const EmbreeHit* answers, int lanes) const {
-    for (int k = 0; k < lanes; ++k)
-        if (const Instance* mesh = mesh_instance_of(answers[k])) {
-            const float* positions = traced_positions(*mesh).data();
-            const std::uint32_t* corner = &mesh->mesh->indices[3 * std::size_t(answers[k].primitive)];
-            for (int c = 0; c < 3; ++c) __builtin_prefetch(&positions[3 * std::size_t(corner[c])]);
+void EmbreeScene::prefetch_corners(const PacketAnswers& answers, int lanes) const {
+    for (int k = 0; k < lanes; ++k) {
+        const float* positions;
+        const std::uint32_t* corner;
+        if (const PlainTriangles* mesh = plain_triangles_of(answers.geometry[k], answers.instance[k])) {
+            positions = mesh->positions;
+            corner = &mesh->indices[3 * std::size_t(answers.primitive[k])];
+        } else if (const Instance* instance = mesh_instance_of(answers.lane(k))) {
+            positions = traced_positions(*instance).data();
+            corner = &instance->mesh->indices[3 * std::size_t(answers.primitive[k])];
+        } else {
+            continue;
         }
+        for (int c = 0; c < 3; ++c) __builtin_prefetch(&positions[3 * std::size_t(corner[c])]);
+    }
 }
 
 void EmbreeScene::intersect_coherent(const Ray* rays, int count, Hit* hits, bool* found) const {
@@ -649,12 +688,12 @@ void EmbreeScene::intersect_coherent(const Ray* rays, int count, Hit* hits, bool
     // are requested, and packet i-2 is completed; each packet's tracing
     // hides the next stage's misses.
     constexpr int kDepth = 3;
-    EmbreeHit answers[kDepth][kPacketLanes];
+    PacketAnswers answers[kDepth];
     const int packets = (count + kPacketLanes - 1) / kPacketLanes;
     auto lanes_of = [&](int packet) { return std::min(kPacketLanes, count - packet * kPacketLanes); };
     for (int step = 0; step < packets + 2; ++step) {
         if (step < packets) {
-            EmbreeHit* traced = answers[step % kDepth];
+            PacketAnswers& traced = answers[step % kDepth];
             trace_packet(rays + step * kPacketLanes, lanes_of(step), traced);
             prefetch_corner_indices(traced, lanes_of(step));
         }
@@ -666,35 +705,23 @@ void EmbreeScene::intersect_coherent(const Ray* rays, int count, Hit* hits, bool
     }
 }
 
-void EmbreeScene::complete_packet(const Ray* rays, const EmbreeHit* answers, int lanes, Hit* hits,
+void EmbreeScene::complete_packet(const Ray* rays, const PacketAnswers& answers, int lanes, Hit* hits,
                                   bool* found) const {
-    // Hits on plain world meshes are completed together; the rest (and
-    // every hit when planes, outside the BVH, may lie nearer) one by one.
+    // The common case, every lane on a plain world mesh (and no planes,
+    // outside the BVH, that may lie nearer), is completed lane-parallel;
+    // any other packet lane by lane.
     const PlainTriangles* plain_mesh[kPacketLanes];
-    EmbreeHit plain_answer[kPacketLanes];
-    int plain_lane[kPacketLanes];
-    int plain = 0;
+    bool all_plain = m_planes.empty();
     for (int k = 0; k < lanes; ++k) {
-        const PlainTriangles* mesh = m_planes.empty() ? plain_triangles_of(answers[k]) : nullptr;
-        if (mesh) {
-            plain_mesh[plain] = mesh;
-            plain_answer[plain] = answers[k];
-            plain_lane[plain++] = k;
-        } else {
-            found[k] = complete_hit(rays[k], answers[k], hits[k]);
-        }
+        plain_mesh[k] = plain_triangles_of(answers.geometry[k], answers.instance[k]);
+        all_plain = all_plain && plain_mesh[k] != nullptr;
     }
-    if (plain == lanes) {  // the common case: straight into place
-        complete_plain_triangle_hits(plain_mesh, plain_answer, plain, hits);
+    if (all_plain) {
+        complete_plain_triangle_hits(plain_mesh, answers.tfar, answers.primitive, answers.u, answers.v, lanes, hits);
         for (int k = 0; k < lanes; ++k) found[k] = true;
         return;
     }
-    Hit plain_hit[kPacketLanes];  // constructed only for mixed packets
-    complete_plain_triangle_hits(plain_mesh, plain_answer, plain, plain_hit);
-    for (int i = 0; i < plain; ++i) {
-        hits[plain_lane[i]] = plain_hit[i];
-        found[plain_lane[i]] = true;
-    }
+    for (int k = 0; k < lanes; ++k) found[k] = complete_hit(rays[k], answers.lane(k), hits[k]);
 }
 
 const Instance* EmbreeScene::mesh_instance_of(const EmbreeHit& found) const {
@@ -730,8 +757,8 @@ bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit)
         return true;
     }
     if (found.geometry == kInvalidId) return false;
-    if (const PlainTriangles* mesh = plain_triangles_of(found)) {
-        complete_plain_triangle_hits(&mesh, &found, 1, &hit);
+    if (const PlainTriangles* mesh = plain_triangles_of(found.geometry, found.instance)) {
+        complete_plain_triangle_hits(&mesh, &found.tfar, &found.primitive, &found.u, &found.v, 1, &hit);
         return true;
     }
 
