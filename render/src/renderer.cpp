@@ -282,7 +282,8 @@ private:
 // Camera samples waiting to be traced together, added in 4x4 blocks of
 // pixels: a 16x16 tile at one sample each fills it. Long batches let
 // RenderScene::intersect_coherent overlap one packet's memory accesses with
-// the next packet's tracing.
+// the next packet's tracing, and the rays are generated all at once
+// (Camera::generate_rays) from the film points.
 struct CameraBatch {
     static constexpr int kBlock = 4;
     static constexpr int kCapacity = 16 * kBlock * kBlock;
@@ -291,14 +292,16 @@ struct CameraBatch {
         std::uint32_t index;
     };
     Sample samples[kCapacity];
+    float film_x[kCapacity], film_y[kCapacity];
     Ray rays[kCapacity];
     Hit hits[kCapacity];
     bool found[kCapacity];
     int size = 0;
 
-    void add(int x, int y, std::uint32_t index, const Ray& ray) {
+    void add(int x, int y, std::uint32_t index, const Vec2& film_point) {
         samples[size] = Sample{x, y, index};
-        rays[size] = ray;
+        film_x[size] = film_point.x;
+        film_y[size] = film_point.y;
         ++size;
     }
     bool full() const { return size == kCapacity; }
@@ -376,17 +379,18 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
         const int x_end = std::min(x_begin + tile, window.x1), y_end = std::min(y_begin + tile, window.y1);
         std::uint64_t taken = 0;
         // The k-th sample of a pixel always uses stream k.
-        auto camera_ray = [&](int x, int y, std::uint32_t s) {
+        auto film_point = [&](int x, int y, std::uint32_t s) {
             if (pixel_centre && batched)  // shade_batch positions the sampler itself
-                return camera.generate_ray(float(x) + 0.5f, float(y) + 0.5f, width, height);
+                return Vec2(float(x) + 0.5f, float(y) + 0.5f);
             sampler.start_sample(x, y, s);
             const Vec2 jitter = pixel_centre ? Vec2(0.5f) : sampler.next_2d();
-            return camera.generate_ray(float(x) + jitter.x, float(y) + jitter.y, width, height);
+            return Vec2(float(x) + jitter.x, float(y) + jitter.y);
         };
         CameraBatch& batch = *batches.local();
         batch.size = 0;
         auto shade_batch = [&] {
             if (batch.size == 0) return;
+            camera.generate_rays(batch.film_x, batch.film_y, batch.size, width, height, batch.rays);
             scene.intersect_coherent(batch.rays, batch.size, batch.hits, batch.found);
             for (int i = 0; i < batch.size; ++i) {
                 const CameraBatch::Sample& at = batch.samples[i];
@@ -401,27 +405,29 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
         };
         constexpr int kBlock = CameraBatch::kBlock;
         for (int block_y = y_begin; block_y < y_end; block_y += kBlock)
-            for (int block_x = x_begin; block_x < x_end; block_x += kBlock)
+            for (int block_x = x_begin; block_x < x_end; block_x += kBlock) {
+                if (should_stop()) {
+                    shade_batch();
+                    samples_taken += taken;
+                    return;
+                }
                 for (int y = block_y; y < std::min(block_y + kBlock, y_end); ++y)
                     for (int x = block_x; x < std::min(block_x + kBlock, x_end); ++x) {
                         const std::uint32_t first = film.samples_taken(x, y);
                         const std::uint32_t count = planner.planned(x - window.x0, y - window.y0, first);
-                        if (count == 0) continue;
-                        if (should_stop()) {
-                            shade_batch();
-                            samples_taken += taken;
-                            return;
-                        }
                         for (std::uint32_t s = first; s < first + count; ++s) {
+                            const Vec2 point = film_point(x, y, s);
                             if (!batched) {
-                                film.add_sample(x, y, integrator.radiance(camera_ray(x, y, s), scene, sampler));
+                                const Ray ray = camera.generate_ray(point.x, point.y, width, height);
+                                film.add_sample(x, y, integrator.radiance(ray, scene, sampler));
                                 continue;
                             }
-                            batch.add(x, y, s, camera_ray(x, y, s));
+                            batch.add(x, y, s, point);
                             if (batch.full()) shade_batch();
                         }
                         taken += count;
                     }
+            }
         shade_batch();
         samples_taken += taken;
         progress.report(fraction_done(stopped_fraction));

@@ -2,6 +2,8 @@
 // (reference/pov-3.7-semantics.md §1).
 #pragma once
 
+#include <cmath>
+
 #include "lancer/ray.h"
 
 namespace lancer {
@@ -36,6 +38,40 @@ public:
         ray.t_min = 0.0f;
         ray.t_max = kInfinity;
         return ray;
+    }
+
+    // generate_ray for `count` film points (x[i], y[i]), bit for bit, into
+    // out[i]. Computed lane by lane, so the compiler takes several rays per
+    // instruction: the host generates a tile's camera rays at once.
+    void generate_rays(const float* x, const float* y, int count, int width, int height, Ray* out) const {
+        if (m_projection == Projection::Orthographic) {
+            for (int i = 0; i < count; ++i) out[i] = generate_ray(x[i], y[i], width, height);
+            return;
+        }
+        constexpr int kLanes = 16;
+        for (int first = 0; first < count; first += kLanes) {
+            const int lanes = count - first < kLanes ? count - first : kLanes;
+            float dx[kLanes], dy[kLanes], dz[kLanes];
+            for (int i = 0; i < lanes; ++i) {
+                // generate_ray's arithmetic, component by component.
+                const float x0 = x[first + i] / float(width) - 0.5f;
+                const float y0 = 0.5f - y[first + i] / float(height);
+                const float vx = (m_direction.x + x0 * m_right.x) + y0 * m_up.x;
+                const float vy = (m_direction.y + x0 * m_right.y) + y0 * m_up.y;
+                const float vz = (m_direction.z + x0 * m_right.z) + y0 * m_up.z;
+                const float inverse_length = 1.0f / std::sqrt((vx * vx + vy * vy) + vz * vz);
+                dx[i] = vx * inverse_length;
+                dy[i] = vy * inverse_length;
+                dz[i] = vz * inverse_length;
+            }
+            for (int i = 0; i < lanes; ++i) {
+                Ray& ray = out[first + i];
+                ray.origin = m_location;
+                ray.direction = Vec3(dx[i], dy[i], dz[i]);
+                ray.t_min = 0.0f;
+                ray.t_max = kInfinity;
+            }
+        }
     }
 
     Projection projection() const { return m_projection; }
