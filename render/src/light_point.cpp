@@ -9,7 +9,8 @@ namespace lancer {
 PointLight::PointLight(const Vec3& position, const Color& intensity, float fade_distance, float fade_power,
                        const Vec3& pattern_axis, bool one_sided)
     : m_position(position), m_intensity(intensity), m_fade_distance(fade_distance), m_fade_power(fade_power),
-      m_pattern_axis(pattern_axis), m_one_sided(one_sided) {}
+      m_pattern_axis(pattern_axis), m_one_sided(one_sided),
+      m_plain_inverse_square(fade_distance == 0.0f && pattern_axis == Vec3(0.0f)) {}
 
 LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     // Float where nothing can overflow or underflow: a squared distance
@@ -17,8 +18,7 @@ LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     // takes this path; it is half the cost of the double one below.
     const Vec3 to_light_float = m_position - p;
     const float distance_squared = glm::dot(to_light_float, to_light_float);
-    if (distance_squared > 1e-30f && distance_squared < 1e30f && m_fade_distance == 0.0f &&
-        m_pattern_axis == Vec3(0.0f)) {
+    if (m_plain_inverse_square && distance_squared > 1e-30f && distance_squared < 1e30f) {
         const float distance = std::sqrt(distance_squared);
         const float inverse_distance = 1.0f / distance;
         LightSample s;

@@ -33,6 +33,8 @@ private:
     float m_fade_power;
     Vec3 m_pattern_axis;
     bool m_one_sided;
+    // Inverse-square without a pattern: sample()'s float path applies.
+    bool m_plain_inverse_square;
 };
 
 class DirectionalLight final : public Light {

@@ -422,6 +422,7 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
                                 film.add_sample(x, y, integrator.radiance(ray, scene, sampler));
                                 continue;
                             }
+                            film.prefetch(x, y);
                             batch.add(x, y, s, point);
                             if (batch.full()) shade_batch();
                         }

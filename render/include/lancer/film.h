@@ -45,6 +45,17 @@ public:
         ++pixel.count;
     }
 
+    // Asks the cache for a pixel's totals ahead of a coming add_sample. The
+    // film of a large image lies far out of cache, and the host adds a
+    // batch's samples only after tracing it: prefetched when the sample
+    // joins the batch, its totals have arrived by then.
+    void prefetch(int x, int y) const {
+        const std::size_t index = std::size_t(y) * m_width + x;
+        const char* first = reinterpret_cast<const char*>(&m_pixels[index]);
+        __builtin_prefetch(first, 1);
+        __builtin_prefetch(first + sizeof(Accumulator) - 1, 1);
+    }
+
     Color mean(int x, int y) const;              // black if no samples
     Color variance_of_mean(int x, int y) const;  // sample variance / n
     std::uint32_t sample_count(int x, int y) const;  // finite samples

@@ -29,7 +29,10 @@ public:
 
     virtual ~Light() = default;
     virtual Kind kind() const = 0;
-    bool is_delta() const { return kind() == Kind::Point || kind() == Kind::Directional; }
+    bool is_delta() const {
+        const Kind k = kind();
+        return k == Kind::Point || k == Kind::Directional;
+    }
 
     // Sample incident light at p; u uniform in [0,1)^2.
     virtual LightSample sample(const Vec3& p, const Vec2& u) const = 0;
