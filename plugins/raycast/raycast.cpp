@@ -68,16 +68,14 @@ public:
         : m_with_ambient(with_ambient), m_with_specular(with_specular) {}
 
     Color radiance_from_hit(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler&) const override {
-        if (!found) return scene.background(ray);
-        const Hit& hit = *found;
-        // The same local model as shadow/whitted/gather (local_shading.h),
-        // without shadow rays, so the integrators agree where nothing occludes.
-        const ShadingContext at = make_shading_context(hit, ray);
-        Color radiance = surface_emission(at);
-        if (m_with_ambient) radiance += opaque_ambient(scene, at);
-        const LobeRadiance reflected = simple_direct_light(scene, at, Shadows::None);
-        radiance += m_with_specular ? reflected.total() : reflected.diffuse;
-        return radiance;
+        return shade(ray, found, scene, SceneLighting(scene));
+    }
+    // No random numbers to position a sampler for, so a batch is shaded in
+    // one loop, with the scene's lights and ambient light looked up once.
+    void radiance_from_hits(const CameraHits& batch, const RenderScene& scene, Sampler&,
+                            Color* radiance) const override {
+        const SceneLighting lighting(scene);
+        for (int i = 0; i < batch.count; ++i) radiance[i] = shade(batch.rays[i], batch.hit(i), scene, lighting);
     }
 
     bool is_deterministic() const override { return true; }
@@ -86,6 +84,26 @@ public:
     }
 
 private:
+    struct SceneLighting {
+        explicit SceneLighting(const RenderScene& scene)
+            : lights(scene.lights()), ambient_light(scene.options().ambient_light) {}
+        const std::vector<const Light*>& lights;
+        Color ambient_light;
+    };
+
+    Color shade(const Ray& ray, const Hit* found, const RenderScene& scene, const SceneLighting& lighting) const {
+        if (!found) return scene.background(ray);
+        const Hit& hit = *found;
+        // The same local model as shadow/whitted/gather (local_shading.h),
+        // without shadow rays, so the integrators agree where nothing occludes.
+        const ShadingContext at = make_shading_context(hit, ray);
+        Color radiance = surface_emission(at);
+        if (m_with_ambient) radiance += opaque_ambient(lighting.ambient_light, at);
+        const LobeRadiance reflected = simple_direct_light(scene, lighting.lights, at, Shadows::None);
+        radiance += m_with_specular ? reflected.total() : reflected.diffuse;
+        return radiance;
+    }
+
     bool m_with_ambient;
     bool m_with_specular;
 };

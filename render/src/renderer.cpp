@@ -287,19 +287,16 @@ private:
 struct CameraBatch {
     static constexpr int kBlock = 4;
     static constexpr int kCapacity = 16 * kBlock * kBlock;
-    struct Sample {
-        int x, y;
-        std::uint32_t index;
-    };
-    Sample samples[kCapacity];
+    CameraSample samples[kCapacity];
     float film_x[kCapacity], film_y[kCapacity];
     Ray rays[kCapacity];
     Hit hits[kCapacity];
     bool found[kCapacity];
+    Color radiance[kCapacity];
     int size = 0;
 
     void add(int x, int y, std::uint32_t index, const Vec2& film_point) {
-        samples[size] = Sample{x, y, index};
+        samples[size] = CameraSample{x, y, index};
         film_x[size] = film_point.x;
         film_y[size] = film_point.y;
         ++size;
@@ -368,7 +365,7 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
     // in batches of neighbouring pixels (4x4 blocks of the tile), which
     // Embree traverses together; the rest trace ray by ray themselves.
     const bool batched = integrator.shades_camera_hits();
-    // One batch per thread for the whole render: its 34 KB of rays and hits
+    // One batch per thread for the whole render: its 42 KB of rays and hits
     // are initialised once, not once per tile.
     tbb::enumerable_thread_specific<std::unique_ptr<CameraBatch>> batches(
         [] { return std::make_unique<CameraBatch>(); });
@@ -392,15 +389,16 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
             if (batch.size == 0) return;
             camera.generate_rays(batch.film_x, batch.film_y, batch.size, width, height, batch.rays);
             scene.intersect_coherent(batch.rays, batch.size, batch.hits, batch.found);
-            for (int i = 0; i < batch.size; ++i) {
-                const CameraBatch::Sample& at = batch.samples[i];
-                // Back to where camera_ray left this sample's stream.
-                sampler.start_sample(at.x, at.y, at.index);
-                if (!pixel_centre) sampler.next_2d();
-                film.add_sample(at.x, at.y,
-                                integrator.radiance_from_hit(batch.rays[i], batch.found[i] ? &batch.hits[i] : nullptr,
-                                                             scene, sampler));
-            }
+            CameraHits traced;
+            traced.count = batch.size;
+            traced.samples = batch.samples;
+            traced.rays = batch.rays;
+            traced.hits = batch.hits;
+            traced.found = batch.found;
+            traced.camera_drew_jitter = !pixel_centre;
+            integrator.radiance_from_hits(traced, scene, sampler, batch.radiance);
+            for (int i = 0; i < batch.size; ++i)
+                film.add_sample(batch.samples[i].x, batch.samples[i].y, batch.radiance[i]);
             batch.size = 0;
         };
         constexpr int kBlock = CameraBatch::kBlock;

@@ -18,7 +18,33 @@ namespace lancer {
 
 // Bump whenever a header a plugin compiles against changes layout or
 // virtual tables; the host refuses any other version.
-inline constexpr std::uint32_t kPluginAbiVersion = 3;
+inline constexpr std::uint32_t kPluginAbiVersion = 4;
+
+// One camera sample: its pixel and its index among the pixel's samples
+// (which selects its random stream).
+struct CameraSample {
+    int x = 0, y = 0;
+    std::uint32_t index = 0;
+};
+
+// Camera samples whose nearest hits the host found together: sample i's
+// ray is rays[i], and its hit hits[i] when found[i] (else it escaped).
+struct CameraHits {
+    int count = 0;
+    const CameraSample* samples = nullptr;
+    const Ray* rays = nullptr;
+    const Hit* hits = nullptr;
+    const bool* found = nullptr;
+    bool camera_drew_jitter = false;  // the camera took one next_2d() of each stream
+
+    const Hit* hit(int i) const { return found[i] ? &hits[i] : nullptr; }
+    // Positions `sampler` where radiance() would find sample i's stream:
+    // started, and past the camera's jitter.
+    void position(Sampler& sampler, int i) const {
+        sampler.start_sample(samples[i].x, samples[i].y, samples[i].index);
+        if (camera_drew_jitter) sampler.next_2d();
+    }
+};
 
 class Integrator {
 public:
@@ -41,6 +67,19 @@ public:
     virtual Color radiance_from_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
                                     Sampler& sampler) const {
         return radiance(ray, scene, sampler);
+    }
+    // What the host calls for a batch of camera hits (up to a tile's):
+    // radiance[i] for sample i. The default positions the sampler and calls
+    // radiance_from_hit() for each; an integrator that draws no random
+    // numbers may override it to shade the batch in one loop, with no
+    // virtual call or sampler positioning per hit. The result must equal
+    // radiance_from_hit()'s bit for bit.
+    virtual void radiance_from_hits(const CameraHits& batch, const RenderScene& scene, Sampler& sampler,
+                                    Color* radiance) const {
+        for (int i = 0; i < batch.count; ++i) {
+            batch.position(sampler, i);
+            radiance[i] = radiance_from_hit(batch.rays[i], batch.hit(i), scene, sampler);
+        }
     }
     // True if radiance() uses no randomness: at one sample per pixel the host
     // then traces the pixel centre; more samples antialias.

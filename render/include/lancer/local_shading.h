@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cmath>
+#include <vector>
 
 #include "lancer/render_scene.h"
 
@@ -135,11 +136,15 @@ inline LobeRadiance reflect_simple_light(const RenderScene& scene, const Shading
 // Direct light from every light of the simple model. Iterates scene.lights()
 // and takes each one's stand-in, which is exactly scene.local_lights() but
 // keeps the identity of the area light a proxy stands for (for shadows).
+inline LobeRadiance simple_direct_light(const RenderScene& scene, const std::vector<const Light*>& lights,
+                                        const ShadingContext& at, Shadows shadows) {
+    LobeRadiance total;
+    for (const Light* light : lights) total += reflect_simple_light(scene, at, *light, shadows);
+    return total;
+}
 inline LobeRadiance simple_direct_light(const RenderScene& scene, const ShadingContext& at,
                                         Shadows shadows) {
-    LobeRadiance total;
-    for (const Light* light : scene.lights()) total += reflect_simple_light(scene, at, *light, shadows);
-    return total;
+    return simple_direct_light(scene, scene.lights(), at, shadows);
 }
 
 // Radiance the surface emits towards wo: the light's own emission when the
@@ -152,9 +157,12 @@ inline Color surface_emission(const ShadingContext& at) {
 // POV's ambient term, scaled by the surface's opacity as POV-Ray does: the
 // light of a transparent surface is what passes through it, so a fully
 // transmitting object shows no ambient (nor diffuse, nor highlights).
-inline Color opaque_ambient(const RenderScene& scene, const ShadingContext& at) {
+inline Color opaque_ambient(const Color& ambient_light, const ShadingContext& at) {
     const float opacity = 1.0f - at.material.transparency(at.surface);
-    return opacity * at.material.ambient(at.surface, scene.options().ambient_light);
+    return opacity * at.material.ambient(at.surface, ambient_light);
+}
+inline Color opaque_ambient(const RenderScene& scene, const ShadingContext& at) {
+    return opaque_ambient(scene.options().ambient_light, at);
 }
 
 }  // namespace lancer
