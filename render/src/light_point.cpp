@@ -18,7 +18,7 @@ LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     // takes this path; it is half the cost of the double one below.
     const Vec3 to_light_float = m_position - p;
     const float distance_squared = glm::dot(to_light_float, to_light_float);
-    if (m_plain_inverse_square && distance_squared > 1e-30f && distance_squared < 1e30f) {
+    if (m_plain_inverse_square && distance_squared > kPlainRangeLow && distance_squared < kPlainRangeHigh) {
         const float distance = std::sqrt(distance_squared);
         const float inverse_distance = 1.0f / distance;
         LightSample s;

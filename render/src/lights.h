@@ -25,6 +25,11 @@ public:
     Color power() const override;
     const Vec3& position() const { return m_position; }
     const Color& intensity() const { return m_intensity; }
+    bool inverse_square_point(Vec3& position, Color& intensity) const override {
+        position = m_position;
+        intensity = m_intensity;
+        return m_plain_inverse_square;
+    }
 
 private:
     Vec3 m_position;

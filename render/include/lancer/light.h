@@ -49,6 +49,14 @@ public:
     // seed's simple local model (raycast, shadow, gather). Point and
     // directional lights are their own proxy.
     virtual const Light& proxy() const { return *this; }
+
+    // True for a point light without fade or pattern whose sample() at any
+    // p with squared distance d2 in (kPlainRangeLow, kPlainRangeHigh) is, in
+    // float: wi = (position - p) / sqrt(d2), radiance = intensity * (1 /
+    // sqrt(d2))^2, pdf 1. Lets an integrator evaluate many such samples at
+    // once, bit for bit as sample() would.
+    virtual bool inverse_square_point(Vec3& position, Color& intensity) const { return false; }
+    static constexpr float kPlainRangeLow = 1e-30f, kPlainRangeHigh = 1e30f;
 };
 
 }  // namespace lancer

@@ -104,6 +104,8 @@ public:
     // fresnel, Fresnel of ior scaled between min and max). Zero: no mirror.
     Color mirror_reflectance(const SurfaceSample& surface, float cos_i, bool entering) const;
     bool has_mirror() const;
+    // sample_surface() is the same at every hit.
+    bool pigment_is_constant() const { return m_pigment_is_constant; }
     bool has_glossy() const { return m_params.phong > 0.0f || m_params.specular > 0.0f; }
     bool is_emissive() const { return max_component(m_params.emission) > 0.0f; }
 
