@@ -45,6 +45,24 @@ sg::SceneGraph sphere_scene() {
     material->pigment.color.rgb = sg::Vec3(0.9, 0.5, 0.2);
     sphere.material = material;
     graph.objects.push_back(sphere);
+    // Hits the lane-parallel path does not take, among those it does: a
+    // highlight, a checker pigment; and a second, coloured light.
+    sg::Light second;
+    second.position = sg::Vec3(-3.0, 1.0, -2.0);
+    second.color = sg::Vec3(0.3, 0.6, 1.0);
+    graph.lights.push_back(second);
+    sg::Object shiny = sphere;
+    shiny.shape = sg::Sphere{sg::Vec3(1.2, 0.8, 0.5), 0.5};
+    auto shiny_material = std::make_shared<sg::Material>(*material);
+    shiny_material->finish.phong = 0.7;
+    shiny.material = shiny_material;
+    graph.objects.push_back(shiny);
+    sg::Object checkered = sphere;
+    checkered.shape = sg::Sphere{sg::Vec3(-1.2, -0.8, 0.5), 0.5};
+    auto checker_material = std::make_shared<sg::Material>(*material);
+    checker_material->pigment.kind = sg::Pigment::Kind::Checker;
+    checkered.material = checker_material;
+    graph.objects.push_back(checkered);
     return graph;
 }
 
