@@ -2,6 +2,7 @@
 // samples and variance estimates.
 #include "lancer/film.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -43,6 +44,8 @@ void Film::restore(std::vector<Accumulator> accumulators) {
         m_taken[i] = m_pixels[i].count + m_pixels[i].nonfinite;
     }
     m_nonfinite_total.value.store(nonfinite, std::memory_order_relaxed);
+    m_has_samples.value.store(std::any_of(m_taken.begin(), m_taken.end(), [](std::uint32_t n) { return n > 0; }),
+                              std::memory_order_relaxed);
 }
 
 }  // namespace lancer

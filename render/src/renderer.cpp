@@ -129,6 +129,15 @@ public:
     // which also counts the samples it already holds (taken_at_plan()) and
     // whether this plan, carried out whole, completes every pixel.
     std::uint64_t plan_unlimited(const Film& film) {
+        if (!m_plans_per_pixel && !film.has_samples()) {
+            // A fixed count on an empty film: every pixel wants the same.
+            const std::uint64_t pixels = std::uint64_t(m_width) * std::uint64_t(m_height);
+            const std::uint32_t wanted = wanted_after(0, 0, 0);
+            m_taken_at_plan = 0;
+            m_plan_completes = wanted >= m_cap;
+            m_pixels_wanting = wanted > 0 ? pixels : 0;
+            return pixels * wanted;
+        }
         if (m_mode == Mode::Adaptive) update_relative_variance(film);
         struct Sweep {
             std::uint64_t wanted = 0, taken = 0, pixels_wanting = 0;

@@ -144,6 +144,30 @@ TEST(Renderer, NonFiniteSamplesAreCountedAndDropped) {
         for (int x = 0; x < 8; ++x) EXPECT_EQ(film.mean(x, y), film.sample_count(x, y) ? Color(1.0f) : Color(0.0f));
 }
 
+// The host plans a fixed render's first pass on an empty film without
+// sweeping it (Film::has_samples): a second render on the same film, or on
+// its restored copy, must still see the samples already taken.
+TEST(Renderer, FixedRenderOnAFilmWithSamplesAddsOnlyWhatIsMissing) {
+    auto scene = small_scene();
+    NoisyIntegrator integrator;
+    RenderOptions options;
+    options.width = 9;
+    options.height = 7;
+    options.samples_per_pixel = 2;
+    options.progress = ProgressMode::Quiet;
+    Film film(9, 7);
+    EXPECT_FALSE(film.has_samples());
+    EXPECT_EQ(render_image(*scene, integrator, options, film).samples, 9u * 7u * 2u);
+    EXPECT_TRUE(film.has_samples());
+    EXPECT_EQ(render_image(*scene, integrator, options, film).samples, 0u);
+    Film restored(9, 7);
+    restored.restore(film.accumulators());
+    EXPECT_TRUE(restored.has_samples());
+    options.samples_per_pixel = 3;
+    EXPECT_EQ(render_image(*scene, integrator, options, restored).samples, 9u * 7u);
+    EXPECT_EQ(restored.samples_taken(4, 3), 3u);
+}
+
 TEST(Sampler, DeterministicPerPixelSampleAndDimension) {
     auto a = make_independent_sampler(7);
     auto b = a->clone();

@@ -34,6 +34,9 @@ public:
         const std::size_t index = std::size_t(y) * m_width + x;
         Accumulator& pixel = m_pixels[index];
         ++m_taken[index];
+        // Written once: afterwards every thread only reads the flag.
+        if (!m_has_samples.value.load(std::memory_order_relaxed))
+            m_has_samples.value.store(true, std::memory_order_relaxed);
         if (!std::isfinite(radiance.r) || !std::isfinite(radiance.g) || !std::isfinite(radiance.b)) {
             ++pixel.nonfinite;
             m_nonfinite_total.value.fetch_add(1, std::memory_order_relaxed);
@@ -64,6 +67,9 @@ public:
     std::uint64_t nonfinite_samples() const {   // over the whole film
         return m_nonfinite_total.value.load(std::memory_order_relaxed);
     }
+    // False until a sample is added (or restored): every pixel has taken
+    // none, and the host plans a first pass without sweeping the film.
+    bool has_samples() const { return m_has_samples.value.load(std::memory_order_relaxed); }
 
     // Every pixel's totals, row-major; for checkpoints.
     const std::vector<Accumulator>& accumulators() const { return m_pixels; }
@@ -79,18 +85,20 @@ private:
     // Samples taken per pixel (count + nonfinite), apart from the totals:
     // the host's sweeps over the film read 4 bytes a pixel, not 56.
     std::vector<std::uint32_t> m_taken;
-    // A count threads add to concurrently, copied along with the film.
-    struct SharedCount {
-        std::atomic<std::uint64_t> value{0};
-        SharedCount() = default;
-        SharedCount(const SharedCount& other) : value(other.value.load(std::memory_order_relaxed)) {}
-        SharedCount& operator=(const SharedCount& other) {
+    // A value threads update concurrently, copied along with the film.
+    template <typename T>
+    struct Shared {
+        std::atomic<T> value{};
+        Shared() = default;
+        Shared(const Shared& other) : value(other.value.load(std::memory_order_relaxed)) {}
+        Shared& operator=(const Shared& other) {
             value.store(other.value.load(std::memory_order_relaxed), std::memory_order_relaxed);
             return *this;
         }
     };
     // Kept as samples arrive, so asking costs no sweep of the film.
-    SharedCount m_nonfinite_total;
+    Shared<std::uint64_t> m_nonfinite_total;
+    Shared<bool> m_has_samples;
 };
 
 }  // namespace lancer
