@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "lancer/local_shading.h"
@@ -69,8 +70,9 @@ public:
             sum_r[k] = sum.r, sum_g[k] = sum.g, sum_b[k] = sum.b;
         }
         float lit_r[kLanes] = {}, lit_g[kLanes] = {}, lit_b[kLanes] = {};
-        bool in_range[kLanes];
-        for (int k = 0; k < count; ++k) in_range[k] = true;
+        // As wide as a float, so the loop below vectorises.
+        std::int32_t in_range[kLanes];
+        for (int k = 0; k < count; ++k) in_range[k] = 1;
         for (int light = 0; light < m_lights; ++light) {
             const Vec3 at = m_position[light];
             const Color intensity = m_intensity[light];
@@ -78,8 +80,7 @@ public:
                 // PointLight::sample's float path.
                 const float tx = at.x - px[k], ty = at.y - py[k], tz = at.z - pz[k];
                 const float distance_squared = (tx * tx + ty * ty) + tz * tz;
-                in_range[k] = in_range[k] && distance_squared > Light::kPlainRangeLow &&
-                              distance_squared < Light::kPlainRangeHigh;
+                in_range[k] &= distance_squared > Light::kPlainRangeLow && distance_squared < Light::kPlainRangeHigh;
                 const float inverse_distance = 1.0f / std::sqrt(distance_squared);
                 const float falloff = inverse_distance * inverse_distance;
                 const float radiance_r = intensity.r * falloff, radiance_g = intensity.g * falloff,
@@ -107,7 +108,7 @@ public:
         for (int k = 0; k < count; ++k) {
             // LobeRadiance::total(): the glossy lobe's sum is +0.
             out[k] = Color(sum_r[k] + (lit_r[k] + 0.0f), sum_g[k] + (lit_g[k] + 0.0f), sum_b[k] + (lit_b[k] + 0.0f));
-            shaded[k] = in_range[k];
+            shaded[k] = in_range[k] != 0;
         }
     }
 
