@@ -374,7 +374,7 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
     // in batches of neighbouring pixels (4x4 blocks of the tile), which
     // Embree traverses together; the rest trace ray by ray themselves.
     const bool batched = integrator.shades_camera_hits();
-    // One batch per thread for the whole render: its 42 KB of rays and hits
+    // One batch per thread for the whole render: its 41 KB of rays and hits
     // are initialised once, not once per tile.
     tbb::enumerable_thread_specific<std::unique_ptr<CameraBatch>> batches(
         [] { return std::make_unique<CameraBatch>(); });
@@ -386,7 +386,7 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
         std::uint64_t taken = 0;
         // The k-th sample of a pixel always uses stream k.
         auto film_point = [&](int x, int y, std::uint32_t s) {
-            if (pixel_centre && batched)  // shade_batch positions the sampler itself
+            if (pixel_centre && batched)  // radiance_from_hits positions the sampler itself
                 return Vec2(float(x) + 0.5f, float(y) + 0.5f);
             sampler.start_sample(x, y, s);
             const Vec2 jitter = pixel_centre ? Vec2(0.5f) : sampler.next_2d();
