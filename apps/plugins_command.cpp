@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "commands.h"
-#include "lancer/plugin_host.h"
+#include "lancer/host/plugin_host.h"
 
 namespace lancer::app {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "lancer/rgb_image.h"
+#include "lancer/host/rgb_image.h"
 
 namespace lancer::app {
 

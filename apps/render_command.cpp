@@ -26,13 +26,13 @@
 
 #include "cli_output.h"
 #include "commands.h"
-#include "lancer/checkpoint.h"
-#include "lancer/counting_scene.h"
-#include "lancer/image_io.h"
+#include "lancer/host/checkpoint.h"
+#include "lancer/host/counting_scene.h"
+#include "lancer/host/image_io.h"
 #include "lancer/parser.h"
-#include "lancer/plugin_host.h"
-#include "lancer/render_report.h"
-#include "lancer/renderer.h"
+#include "lancer/host/plugin_host.h"
+#include "render_report.h"
+#include "lancer/host/renderer.h"
 #include "lancer/scene_error.h"
 
 namespace lancer::app {

@@ -6,7 +6,7 @@
 #include <map>
 #include <sstream>
 
-#include "lancer/image_metrics.h"
+#include "image_metrics.h"
 #include "report_plot.h"
 
 namespace lancer::app {

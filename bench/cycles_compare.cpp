@@ -31,8 +31,8 @@
 #include <vector>
 
 #include "lancer/parser.h"
-#include "lancer/plugin_host.h"
-#include "lancer/renderer.h"
+#include "lancer/host/plugin_host.h"
+#include "lancer/host/renderer.h"
 
 namespace {
 

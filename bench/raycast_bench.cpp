@@ -47,8 +47,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "lancer/plugin_host.h"
-#include "lancer/renderer.h"
+#include "lancer/host/plugin_host.h"
+#include "lancer/host/renderer.h"
 #include "lancer/scene_graph.h"
 
 namespace {

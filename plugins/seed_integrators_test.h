@@ -11,11 +11,11 @@
 
 #include <gtest/gtest.h>
 
-#include "lancer/film.h"
+#include "lancer/host/film.h"
 #include "lancer/integrator.h"
-#include "lancer/plugin_host.h"
+#include "lancer/host/plugin_host.h"
 #include "lancer/render_scene.h"
-#include "lancer/renderer.h"
+#include "lancer/host/renderer.h"
 #include "lancer/scene_graph.h"
 
 namespace lancer::seed_test {

@@ -19,8 +19,8 @@
 
 #include "image_compare.h"
 #include "lancer/parser.h"
-#include "lancer/plugin_host.h"
-#include "lancer/renderer.h"
+#include "lancer/host/plugin_host.h"
+#include "lancer/host/renderer.h"
 #include "run_command.h"
 
 namespace lancer::test {

@@ -1,5 +1,5 @@
 // The error estimate is honest on the corpus: for path renders of scenes
-// from scenes/, the estimated relative RMSE (lancer/estimate.h) over the
+// from scenes/, the estimated relative RMSE (lancer/host/estimate.h) over the
 // true one, measured against a render with 16 times the samples, lies in
 // [0.5, 2] (issue 7). Small images keep this to a few seconds.
 #include <cstdio>
@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include "lancer/estimate.h"
+#include "lancer/host/estimate.h"
 #include "lancer/parser.h"
-#include "lancer/plugin_host.h"
-#include "lancer/renderer.h"
+#include "lancer/host/plugin_host.h"
+#include "lancer/host/renderer.h"
 #include "run_command.h"
 
 namespace lancer {

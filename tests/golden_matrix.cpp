@@ -12,12 +12,12 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "lancer/image_io.h"
+#include "lancer/host/image_io.h"
 #include "lancer/integrator.h"
 #include "lancer/parser.h"
-#include "lancer/plugin_host.h"
+#include "lancer/host/plugin_host.h"
 #include "lancer/render_scene.h"
-#include "lancer/renderer.h"
+#include "lancer/host/renderer.h"
 #include "lancer/scene_graph.h"
 
 namespace lancer::golden {

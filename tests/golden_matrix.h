@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "lancer/film.h"
+#include "lancer/host/film.h"
 #include "stat_compare.h"
 
 namespace lancer::golden {

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "golden_matrix.h"
-#include "lancer/plugin_host.h"
+#include "lancer/host/plugin_host.h"
 
 namespace lancer::golden {
 namespace {

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "lancer/plugin_host.h"
+#include "lancer/host/plugin_host.h"
 #include "lancer/scene_error.h"
 
 namespace lancer::test {

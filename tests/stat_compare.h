@@ -20,7 +20,7 @@
 
 #include <glm/glm.hpp>
 
-#include "lancer/film.h"
+#include "lancer/host/film.h"
 
 namespace lancer::test {
 

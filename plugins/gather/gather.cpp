@@ -59,7 +59,7 @@
 #include <string>
 
 #include <lancer/integrator.h>
-#include <lancer/specular_tracing.h>
+#include <lancer/shading/specular_tracing.h>
 
 #include "sphere_lattice.h"
 

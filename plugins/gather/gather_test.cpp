@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "../seed_integrators_test.h"
-#include "lancer/local_shading.h"
+#include "lancer/shading/local_shading.h"
 #include "sphere_lattice.h"
 
 namespace lancer {

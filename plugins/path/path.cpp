@@ -45,7 +45,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include <lancer/bsdf_sampling.h>
+#include <lancer/shading/bsdf_sampling.h>
 #include <lancer/integrator.h>
 
 namespace {

@@ -11,8 +11,8 @@
 
 #include <gtest/gtest.h>
 
-#include "lancer/plugin_host.h"
-#include "lancer/renderer.h"
+#include "lancer/host/plugin_host.h"
+#include "lancer/host/renderer.h"
 #include "lancer/scene_graph.h"
 #include "stat_compare.h"
 

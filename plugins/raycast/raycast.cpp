@@ -24,8 +24,8 @@
 #include <iterator>
 
 #include <lancer/integrator.h>
-#include <lancer/local_shading.h>
-#include <lancer/local_shading_lanes.h>
+#include <lancer/shading/local_shading.h>
+#include "diffuse_point_lanes.h"
 
 namespace {
 

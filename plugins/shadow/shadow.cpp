@@ -35,7 +35,7 @@
 #include <string>
 
 #include <lancer/integrator.h>
-#include <lancer/local_shading.h>
+#include <lancer/shading/local_shading.h>
 
 namespace {
 

@@ -43,7 +43,7 @@
 #include <string>
 
 #include <lancer/integrator.h>
-#include <lancer/specular_tracing.h>
+#include <lancer/shading/specular_tracing.h>
 
 namespace {
 

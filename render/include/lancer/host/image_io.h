@@ -1,0 +1,32 @@
+// Writing the film through OpenImageIO, format chosen by file extension:
+// .png (sRGB, 8-bit, clamped), .exr (linear half/float RGB, optional extra
+// channels), .hdr (linear), .tif/.tiff (sRGB 16-bit). Written atomically: a
+// temporary file beside the target, then rename, so a failure never leaves
+// a partial image.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "lancer/host/film.h"
+
+namespace lancer {
+
+struct ImageWriteOptions {
+    // Metadata stored in the file (integrator, samples, seconds ...).
+    std::map<std::string, std::string> metadata;
+    bool sample_count_channel = false;  // EXR only: per-pixel sample count
+};
+
+// Throws std::runtime_error naming the path on failure (unknown extension,
+// unwritable directory).
+void write_image(const Film& film, const std::string& path, const ImageWriteOptions& options = {});
+
+// True if the extension names a format write_image supports.
+bool is_supported_image_extension(const std::string& path);
+
+// sRGB transfer function on one linear value in [0, 1].
+float linear_to_srgb(float linear);
+float srgb_to_linear(float encoded);
+
+}  // namespace lancer

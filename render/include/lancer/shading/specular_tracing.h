@@ -1,0 +1,103 @@
+// Whitted-style recursion shared by the whitted and gather integrators
+// (docs/integrators.md): at each hit, emission + a local term + mirror
+// reflection + refraction, followed recursively to a depth limit. The local
+// term is the integrator's own (whitted: lights with shadows; gather: the
+// gathered diffuse), the recursion and its weights are common.
+//
+// Weights at one hit, with R the material's mirror reflectance at this
+// angle, T its transparency and tint its transmission tint:
+//   fresnel off (the seed's fixed coefficients):
+//       reflected R, transmitted T * tint; on total internal reflection the
+//       transmitted share goes to the reflection: R + T.
+//   fresnel on (an energy-conserving dielectric), F = Fresnel reflectance of
+//   the interface (1 on total internal reflection):
+//       reflected max(R, T * F), transmitted T * (1 - F) * tint. The max
+//       keeps a material that already writes POV's `reflection {0, 1
+//       fresnel on}` from reflecting twice.
+//   "A mirror has no diffuse" (seed): the diffuse lobe and the ambient term
+//   are scaled by (1 - R) per channel, unless `additive_reflection` asks for
+//   POV-Ray's behaviour (reflection added on top of the diffuse). Highlights
+//   are kept: the seed's specular term is the mirror image of the lamps,
+//   which have no surface a reflected ray could find.
+#pragma once
+
+#include "lancer/shading/local_shading.h"
+#include "lancer/sampler.h"
+
+namespace lancer {
+
+struct SpecularOptions {
+    int max_depth = 5;                     // POV's max_trace_level: the camera ray is level 1
+    float min_weight = 1.0f / 255.0f;      // POV's adc_bailout on the path weight
+    bool fresnel = false;                  // see the header comment
+    bool additive_reflection = false;      // true: POV-Ray's diffuse + reflection
+};
+
+// How one hit passes light on along its mirror and refracted directions.
+struct SpecularSplit {
+    Color diffuse_scale{1.0f};  // applied to the diffuse lobe and the ambient term
+    Color reflection{0.0f};     // weight of the radiance seen along `reflected`
+    Color transmission{0.0f};   // weight of the radiance seen along `refracted`
+    Vec3 reflected{0.0f};
+    Vec3 refracted{0.0f};
+};
+
+inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOptions& options) {
+    SpecularSplit split;
+    const Vec3 incident = -at.wo;
+    const float cos_i = glm::dot(at.normal, at.wo);
+    const Color mirror = at.material.mirror_reflectance(at.surface, cos_i, at.entering);
+    if (!options.additive_reflection) split.diffuse_scale = glm::max(Color(1.0f) - mirror, Color(0.0f));
+    split.reflection = mirror;
+
+    const float transparency = at.material.transparency(at.surface);
+    if (transparency > 0.0f) {
+        // Relative index: outside is ior 1; a ray on the back face leaves the object.
+        const float ior = glm::max(at.material.parameters().ior, 1e-6f);
+        const float eta = at.entering ? 1.0f / ior : ior;
+        const bool refracts = refract(incident, at.normal, eta, split.refracted);
+        const Color tint = at.material.transmission_tint(at.surface);
+        if (options.fresnel) {
+            const float fresnel = refracts ? fresnel_dielectric(cos_i, eta) : 1.0f;
+            split.reflection = glm::max(mirror, Color(transparency * fresnel));
+            if (refracts) split.transmission = transparency * (1.0f - fresnel) * tint;
+        } else if (refracts) {
+            split.transmission = transparency * tint;
+        } else {
+            split.reflection = mirror + Color(transparency);  // total internal reflection
+        }
+    }
+    if (!is_black(split.reflection)) split.reflected = reflect(incident, at.normal);
+    return split;
+}
+
+// Radiance along `ray` at recursion `level` (1 for a camera ray) with path
+// weight `weight`. `local_term(at, diffuse_scale, sampler)` returns the
+// hit's diffuse (ambient included) and glossy radiance; it may skip the
+// diffuse work when diffuse_scale is black. A ray past max_depth or under
+// min_weight is not traced and counts black, as in POV-Ray.
+template <class LocalTerm>
+Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler,
+                     const SpecularOptions& options, const LocalTerm& local_term, int level = 1,
+                     float weight = 1.0f) {
+    Hit hit;
+    if (!scene.intersect(ray, hit)) return scene.background(ray);
+    const ShadingContext at = make_shading_context(hit, ray);
+    const SpecularSplit split = split_specular(at, options);
+
+    const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
+    Color radiance = surface_emission(at) + split.diffuse_scale * local.diffuse + local.glossy;
+
+    const auto follow = [&](const Color& path_weight, const Vec3& direction) {
+        if (is_black(path_weight)) return;
+        const float next_weight = weight * max_component(path_weight);
+        if (level + 1 > options.max_depth || next_weight < options.min_weight) return;
+        radiance += path_weight * trace_specular(hit.spawn_ray(direction), scene, sampler, options,
+                                                 local_term, level + 1, next_weight);
+    };
+    follow(split.reflection, split.reflected);
+    follow(split.transmission, split.refracted);
+    return radiance;
+}
+
+}  // namespace lancer

@@ -1,0 +1,283 @@
+// The pixel loop, film and image output: determinism across thread counts,
+// crop windows, non-finite samples, PNG/EXR round trips, atomic writes.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include <OpenImageIO/imageio.h>
+
+#include "image_compare.h"
+#include "lancer/host/film.h"
+#include "lancer/host/image_io.h"
+#include "lancer/host/renderer.h"
+#include "scene_test_helpers.h"
+
+namespace lancer {
+namespace {
+
+using namespace lancer::testing;
+namespace fs = std::filesystem;
+
+// Returns random numbers drawn from the sampler plus the hit distance: any
+// dependence on thread or tile order would show.
+class NoisyIntegrator final : public Integrator {
+public:
+    Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const override {
+        Hit hit;
+        const float depth = scene.intersect(ray, hit) ? hit.t : 0.0f;
+        return Color(sampler.next_1d(), sampler.next_1d() * depth, ray.direction.x);
+    }
+};
+
+// NoisyIntegrator's image again, through the host's batched camera hits
+// when `batched`: the two paths must agree bit for bit.
+class NoisyHitIntegrator final : public FirstHitIntegrator {
+public:
+    explicit NoisyHitIntegrator(bool batched) : m_batched(batched) {}
+    bool shades_camera_hits() const override { return m_batched; }
+    Color radiance_from_hit(const Ray& ray, const Hit* hit, const RenderScene&, Sampler& sampler) const override {
+        const float depth = hit ? hit->t : 0.0f;
+        return Color(sampler.next_1d(), sampler.next_1d() * depth, ray.direction.x);
+    }
+
+private:
+    bool m_batched;
+};
+
+class NanIntegrator final : public Integrator {
+public:
+    Color radiance(const Ray&, const RenderScene&, Sampler& sampler) const override {
+        return sampler.next_1d() < 0.5f ? Color(NAN) : Color(1.0f);
+    }
+};
+
+std::unique_ptr<RenderScene> small_scene() {
+    sg::SceneGraph graph;
+    graph.objects.push_back(sphere_object({0, 0, 5}, 1.0));
+    graph.objects.push_back(plane_object({0, 1, 0}, -1.0));
+    return RenderScene::compile(graph);
+}
+
+TEST(Renderer, BitIdenticalForOneAndTwoThreads) {
+    auto scene = small_scene();
+    NoisyIntegrator integrator;
+    RenderOptions options;
+    options.width = 37;
+    options.height = 23;
+    options.samples_per_pixel = 3;
+    options.seed = 99;
+    options.tile_size = 5;
+    options.progress = ProgressMode::Quiet;
+    Film one(37, 23), two(37, 23);
+    options.threads = 1;
+    render_image(*scene, integrator, options, one);
+    options.threads = 2;
+    options.tile_size = 7;  // tile order and size must not matter either
+    const RenderStats stats = render_image(*scene, integrator, options, two);
+    EXPECT_EQ(stats.samples, 37u * 23u * 3u);
+    for (int y = 0; y < 23; ++y)
+        for (int x = 0; x < 37; ++x) {
+            ASSERT_EQ(one.mean(x, y), two.mean(x, y)) << x << "," << y;
+            ASSERT_EQ(one.sample_count(x, y), 3u);
+        }
+    // Another seed changes the image.
+    Film other(37, 23);
+    options.seed = 100;
+    render_image(*scene, integrator, options, other);
+    EXPECT_NE(one.mean(3, 3), other.mean(3, 3));
+}
+
+TEST(Renderer, BatchedCameraHitsGiveTheSameImage) {
+    auto scene = small_scene();
+    RenderOptions options;
+    options.width = 37;
+    options.height = 23;
+    options.samples_per_pixel = 3;
+    options.seed = 5;
+    options.tile_size = 7;  // blocks of 4x4 pixels cut by tile edges
+    options.threads = 2;
+    options.progress = ProgressMode::Quiet;
+    Film one_by_one(37, 23), batched(37, 23);
+    render_image(*scene, NoisyHitIntegrator(false), options, one_by_one);
+    const RenderStats stats = render_image(*scene, NoisyHitIntegrator(true), options, batched);
+    EXPECT_EQ(stats.samples, 37u * 23u * 3u);
+    for (int y = 0; y < 23; ++y)
+        for (int x = 0; x < 37; ++x) {
+            ASSERT_EQ(one_by_one.mean(x, y), batched.mean(x, y)) << x << "," << y;
+            ASSERT_EQ(batched.sample_count(x, y), 3u);
+        }
+}
+
+TEST(Renderer, CropWindowRendersOnlyItsPixels) {
+    auto scene = small_scene();
+    NoisyIntegrator integrator;
+    RenderOptions options;
+    options.width = 20;
+    options.height = 10;
+    options.crop = CropWindow{5, 2, 12, 6};
+    options.progress = ProgressMode::Quiet;
+    Film film(20, 10);
+    const RenderStats stats = render_image(*scene, integrator, options, film);
+    EXPECT_EQ(stats.samples, 7u * 4u);
+    EXPECT_EQ(film.sample_count(5, 2), 1u);
+    EXPECT_EQ(film.sample_count(11, 5), 1u);
+    EXPECT_EQ(film.sample_count(12, 5), 0u);
+    EXPECT_EQ(film.sample_count(4, 2), 0u);
+}
+
+TEST(Renderer, NonFiniteSamplesAreCountedAndDropped) {
+    auto scene = small_scene();
+    NanIntegrator integrator;
+    RenderOptions options;
+    options.width = 8;
+    options.height = 8;
+    options.samples_per_pixel = 16;
+    options.progress = ProgressMode::Quiet;
+    Film film(8, 8);
+    const RenderStats stats = render_image(*scene, integrator, options, film);
+    EXPECT_GT(stats.nonfinite_samples, 0u);
+    EXPECT_EQ(stats.nonfinite_samples, film.nonfinite_samples());
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) EXPECT_EQ(film.mean(x, y), film.sample_count(x, y) ? Color(1.0f) : Color(0.0f));
+}
+
+// The host plans a fixed render's first pass on an empty film without
+// sweeping it (Film::has_samples): a second render on the same film, or on
+// its restored copy, must still see the samples already taken.
+TEST(Renderer, FixedRenderOnAFilmWithSamplesAddsOnlyWhatIsMissing) {
+    auto scene = small_scene();
+    NoisyIntegrator integrator;
+    RenderOptions options;
+    options.width = 9;
+    options.height = 7;
+    options.samples_per_pixel = 2;
+    options.progress = ProgressMode::Quiet;
+    Film film(9, 7);
+    EXPECT_FALSE(film.has_samples());
+    EXPECT_EQ(render_image(*scene, integrator, options, film).samples, 9u * 7u * 2u);
+    EXPECT_TRUE(film.has_samples());
+    EXPECT_EQ(render_image(*scene, integrator, options, film).samples, 0u);
+    Film restored(9, 7);
+    restored.restore(film.accumulators());
+    EXPECT_TRUE(restored.has_samples());
+    options.samples_per_pixel = 3;
+    EXPECT_EQ(render_image(*scene, integrator, options, restored).samples, 9u * 7u);
+    EXPECT_EQ(restored.samples_taken(4, 3), 3u);
+}
+
+TEST(Sampler, DeterministicPerPixelSampleAndDimension) {
+    auto a = make_independent_sampler(7);
+    auto b = a->clone();
+    a->start_sample(3, 4, 5);
+    const float first = a->next_1d();
+    const Vec2 second = a->next_2d();
+    b->start_sample(9, 9, 9);
+    b->next_1d();
+    b->start_sample(3, 4, 5);
+    EXPECT_EQ(b->next_1d(), first);
+    EXPECT_EQ(b->next_2d(), second);
+    // Uniform on [0,1): mean and range over many values.
+    double sum = 0.0;
+    for (int i = 0; i < 100000; ++i) {
+        a->start_sample(i % 317, i / 317, std::uint32_t(i));
+        const float v = a->next_1d();
+        ASSERT_GE(v, 0.0f);
+        ASSERT_LT(v, 1.0f);
+        sum += v;
+    }
+    EXPECT_NEAR(sum / 100000.0, 0.5, 0.005);
+}
+
+class ImageOutput : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_dir = fs::temp_directory_path() / ("lancer_image_io_test_" + std::to_string(::getpid()));
+        fs::create_directories(m_dir);
+    }
+    void TearDown() override { fs::remove_all(m_dir); }
+    fs::path m_dir;
+};
+
+Film gradient_film() {
+    Film film(4, 3);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 4; ++x) film.add_sample(x, y, Color(x / 3.0f, y / 2.0f, 2.0f));
+    return film;
+}
+
+TEST_F(ImageOutput, PngIsSrgbEncodedAndClamped) {
+    const Film film = gradient_film();
+    const std::string path = (m_dir / "out.png").string();
+    write_image(film, path, {{{"integrator", "test"}}, false});
+    const Image image = load_image(path);
+    ASSERT_EQ(image.width, 4);
+    ASSERT_EQ(image.height, 3);
+    EXPECT_NEAR(image.at(1, 0, 0), std::round(linear_to_srgb(1.0f / 3.0f) * 255.0f) / 255.0f, 1e-6f);
+    EXPECT_NEAR(image.at(0, 0, 2), 1.0f, 1e-6f);  // 2.0 clamped
+    EXPECT_NEAR(srgb_to_linear(linear_to_srgb(0.25f)), 0.25f, 1e-6f);
+    // No temporary file is left behind.
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(m_dir)) files += entry.is_regular_file();
+    EXPECT_EQ(files, 1);
+}
+
+TEST_F(ImageOutput, ExrKeepsLinearValuesAndSampleCounts) {
+    const Film film = gradient_film();
+    const std::string path = (m_dir / "out.exr").string();
+    ImageWriteOptions options;
+    options.sample_count_channel = true;
+    write_image(film, path, options);
+    const Image image = load_image(path);
+    EXPECT_FLOAT_EQ(image.at(1, 0, 0), 1.0f / 3.0f);
+    EXPECT_FLOAT_EQ(image.at(0, 0, 2), 2.0f);
+    auto input = OIIO::ImageInput::open(path);
+    ASSERT_TRUE(input);
+    EXPECT_EQ(input->spec().nchannels, 4);
+    EXPECT_EQ(input->spec().channelnames[3], "samples");
+}
+
+TEST_F(ImageOutput, HdrAndTiffAreWritten) {
+    const Film film = gradient_film();
+    for (const char* name : {"out.hdr", "out.tif"}) {
+        const std::string path = (m_dir / name).string();
+        write_image(film, path);
+        EXPECT_EQ(load_image(path).width, 4) << name;
+    }
+}
+
+TEST_F(ImageOutput, FailedWriteLeavesNoFile) {
+    const Film film = gradient_film();
+    EXPECT_THROW(write_image(film, (m_dir / "missing" / "out.png").string()), std::runtime_error);
+    EXPECT_THROW(write_image(film, (m_dir / "out.bmpx").string()), std::runtime_error);
+    // A directory in the way of the rename: the write fails, nothing partial stays.
+    fs::create_directories(m_dir / "blocked.png" / "inside");
+    EXPECT_THROW(write_image(film, (m_dir / "blocked.png").string()), std::runtime_error);
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(m_dir)) files += entry.is_regular_file();
+    EXPECT_EQ(files, 0);
+}
+
+TEST_F(ImageOutput, CompareHelperMeasuresAndWritesSideBySide) {
+    Image a;
+    a.width = 2;
+    a.height = 1;
+    a.rgb = {0.5f, 0.5f, 0.5f, 1.0f, 1.0f, 1.0f};
+    Image b = a;
+    b.rgb[3] = 0.0f;
+    const ImageDifference d = compare_images(a, b, 0.1);
+    EXPECT_NEAR(d.mean_absolute, 1.0 / 6.0, 1e-9);
+    EXPECT_NEAR(d.max_absolute, 1.0, 1e-9);
+    EXPECT_EQ(d.pixels_over_threshold, 1);
+    std::string message;
+    const std::string stem = (m_dir / "failure").string();
+    EXPECT_FALSE(images_match(a, b, 0.01, 0.1, 0, stem, &message));
+    EXPECT_TRUE(fs::exists(stem + ".png")) << message;
+    EXPECT_EQ(load_image(stem + ".png").width, 6);
+    EXPECT_TRUE(images_match(a, a, 0.0, 0.0, 0, stem + "_ok", &message));
+}
+
+}  // namespace
+}  // namespace lancer

@@ -1,0 +1,404 @@
+// Walking the scene graph into world-space tables.
+#include "host/scene_builder.h"
+
+#include <cfloat>
+#include <cmath>
+#include <iostream>
+#include <map>
+
+#include "lancer/scene_error.h"
+
+namespace lancer {
+namespace {
+
+constexpr double kPiD = 3.141592653589793238463;
+
+MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment) {
+    MaterialParameters p;
+    p.pigment = pigment;
+    p.ambient = Color(m.finish.ambient);
+    p.emission = Color(m.finish.emission);
+    p.diffuse = float(m.finish.diffuse);
+    p.brilliance = float(m.finish.brilliance);
+    p.specular = float(m.finish.specular);
+    p.roughness = float(m.finish.roughness);
+    p.phong = float(m.finish.phong);
+    p.phong_size = float(m.finish.phong_size);
+    p.metallic = float(m.finish.metallic);
+    p.reflection_min = Color(m.finish.reflection.min);
+    p.reflection_max = Color(m.finish.reflection.max);
+    p.reflection_falloff = float(m.finish.reflection.falloff);
+    p.reflection_fresnel = m.finish.reflection.fresnel;
+    p.ior = float(m.interior.ior);
+    return p;
+}
+
+void expand(Bounds& b, const Vec3& lower, const Vec3& upper) {
+    b.lower = glm::min(b.lower, lower);
+    b.upper = glm::max(b.upper, upper);
+}
+
+// World AABB of an object-space box under a placement, widened by a few
+// ULPs so float bounds contain the double-precision surface.
+void world_bounds(const Placement& placement, const DVec3& lower, const DVec3& upper, Vec3& out_lower,
+                  Vec3& out_upper) {
+    DVec3 lo(INFINITY), hi(-INFINITY);
+    for (int corner = 0; corner < 8; ++corner) {
+        const DVec3 p((corner & 1) ? upper.x : lower.x, (corner & 2) ? upper.y : lower.y,
+                      (corner & 4) ? upper.z : lower.z);
+        const DVec3 w = placement.point_to_world(p);
+        lo = glm::min(lo, w);
+        hi = glm::max(hi, w);
+    }
+    const DVec3 slack = 8.0 * double(FLT_EPSILON) * glm::max(glm::abs(lo), glm::abs(hi));
+    out_lower = Vec3(lo - slack);
+    out_upper = Vec3(hi + slack);
+}
+
+class Builder {
+public:
+    explicit Builder(const sg::SceneGraph& graph) : m_graph(graph), m_data(std::make_unique<SceneData>()) {
+        m_data->texture_factory = std::make_unique<TextureFactory>(m_data->texture_spaces);
+    }
+
+    std::unique_ptr<SceneData> run() {
+        build_camera();
+        m_data->background = Color(m_graph.background);
+        m_data->options.max_trace_level = m_graph.global.max_trace_level;
+        m_data->options.adc_bailout = float(m_graph.global.adc_bailout);
+        m_data->options.ambient_light = Color(m_graph.global.ambient_light);
+        count_mesh_uses(m_graph.objects);
+        add_objects(m_graph.objects, DMat4(1.0), nullptr, DMat4(1.0), false);
+        build_emitters();
+        add_area_light_surfaces();
+        compute_bounds();
+        add_sg_lights();
+        return std::move(m_data);
+    }
+
+private:
+    void build_camera() {
+        const sg::Camera camera = m_graph.camera.value_or(sg::Camera{});
+        m_data->camera = Camera(camera.projection == sg::Camera::Projection::Orthographic
+                                    ? Camera::Projection::Orthographic
+                                    : Camera::Projection::Perspective,
+                                Vec3(camera.location), Vec3(camera.direction), Vec3(camera.right),
+                                Vec3(camera.up));
+    }
+
+    void count_mesh_uses(const std::vector<sg::Object>& objects) {
+        for (const sg::Object& object : objects) {
+            if (const auto* group = std::get_if<sg::Group>(&object.shape)) count_mesh_uses(group->children);
+            if (const auto* mesh = std::get_if<sg::MeshRef>(&object.shape))
+                if (*mesh) ++m_mesh_uses[mesh->get()];
+        }
+    }
+
+    const Material* default_material() {
+        if (!m_default_material) {
+            sg::Material black;  // black pigment, default finish
+            m_default_material = make_material(black);
+        }
+        return m_default_material;
+    }
+
+    const Material* material_for(const sg::MaterialRef& ref) {
+        if (!ref) return default_material();
+        auto found = m_materials.find(ref.get());
+        if (found != m_materials.end()) return found->second;
+        const Material* material = make_material(*ref);
+        m_materials[ref.get()] = material;
+        return material;
+    }
+
+    const Material* make_material(const sg::Material& source) {
+        m_data->textures.push_back(m_data->texture_factory->make(source.pigment));
+        m_data->materials.push_back(
+            std::make_unique<Material>(to_parameters(source, m_data->textures.back().get())));
+        return m_data->materials.back().get();
+    }
+
+    const MeshData* mesh_data(const sg::MeshRef& ref, const sg::SourceLocation& location) {
+        auto found = m_meshes.find(ref.get());
+        if (found != m_meshes.end()) return found->second;
+        auto mesh = std::make_unique<MeshData>();
+        mesh->source = ref;
+        mesh->object_positions.reserve(3 * ref->positions.size() + 1);
+        for (const sg::Vec3& p : ref->positions) {
+            mesh->object_positions.push_back(float(p.x));
+            mesh->object_positions.push_back(float(p.y));
+            mesh->object_positions.push_back(float(p.z));
+        }
+        mesh->object_positions.push_back(0.0f);  // Embree reads 16 bytes per vertex
+        const int count = int(ref->positions.size());
+        for (std::uint32_t f = 0; f < ref->faces.size(); ++f) {
+            const auto& face = ref->faces[f];
+            for (int k = 0; k < 3; ++k)
+                if (face.position[k] < 0 || face.position[k] >= count)
+                    throw SceneError(location, "mesh face " + std::to_string(f) + " uses vertex " +
+                                                   std::to_string(face.position[k]) + " but the mesh has " +
+                                                   std::to_string(count) + " vertices");
+            for (int k = 0; k < 3; ++k) mesh->indices.push_back(std::uint32_t(face.position[k]));
+            mesh->face_of_triangle.push_back(f);
+        }
+        const MeshData* result = mesh.get();
+        m_data->meshes.push_back(std::move(mesh));
+        m_meshes[ref.get()] = result;
+        return result;
+    }
+
+    std::uint32_t push_instance(Instance instance, const DMat4& texture_owner_from_world) {
+        m_data->instances.push_back(std::move(instance));
+        m_data->texture_spaces.push_back(texture_owner_from_world);
+        return std::uint32_t(m_data->instances.size() - 1);
+    }
+
+    void add_objects(const std::vector<sg::Object>& objects, const DMat4& world_from_parent,
+                     const sg::MaterialRef& inherited, const DMat4& inherited_owner, bool no_shadow) {
+        for (const sg::Object& object : objects) {
+            const DMat4 world_from_object = world_from_parent * object.parent_from_object;
+            const sg::MaterialRef& material = object.material ? object.material : inherited;
+            // POV: a texture follows the transforms applied after it, i.e. it
+            // lives in the space of the object it was attached to.
+            const DMat4 owner = object.material ? world_from_object : inherited_owner;
+            const bool object_no_shadow = no_shadow || object.no_shadow;
+            if (const auto* group = std::get_if<sg::Group>(&object.shape)) {
+                add_objects(group->children, world_from_object, material, owner, object_no_shadow);
+                continue;
+            }
+            Instance instance;
+            instance.placement = Placement::from(world_from_object);
+            instance.material = material_for(material);
+            instance.casts_shadow = !object_no_shadow;
+            instance.location = object.location;
+            if (const auto* sphere = std::get_if<sg::Sphere>(&object.shape)) {
+                instance.kind = ShapeKind::Sphere;
+                instance.sphere = {sphere->center, std::fabs(sphere->radius)};
+                const DVec3 r(instance.sphere.radius);
+                world_bounds(instance.placement, sphere->center - r, sphere->center + r, instance.bounds_lower,
+                             instance.bounds_upper);
+            } else if (const auto* box = std::get_if<sg::Box>(&object.shape)) {
+                instance.kind = ShapeKind::Box;
+                instance.box = {glm::min(box->corner1, box->corner2), glm::max(box->corner1, box->corner2)};
+                world_bounds(instance.placement, instance.box.lower, instance.box.upper, instance.bounds_lower,
+                             instance.bounds_upper);
+            } else if (const auto* plane = std::get_if<sg::Plane>(&object.shape)) {
+                instance.kind = ShapeKind::Plane;
+                const double length = glm::length(plane->normal);
+                if (!(length > 0.0)) throw SceneError(object.location, "plane normal has zero length");
+                instance.plane = {plane->normal / length, plane->distance};
+            } else if (const auto* mesh_ref = std::get_if<sg::MeshRef>(&object.shape)) {
+                if (!*mesh_ref) continue;
+                instance.kind = ShapeKind::Mesh;
+                const MeshData* mesh = mesh_data(*mesh_ref, object.location);
+                instance.mesh = mesh;
+                instance.mesh_in_world = m_mesh_uses[mesh_ref->get()] <= 1;
+                add_mesh_details(instance, *mesh);
+            }
+            push_instance(std::move(instance), glm::inverse(owner));
+        }
+    }
+
+    void add_mesh_details(Instance& instance, const MeshData& mesh) {
+        const sg::TriangleMesh& source = *mesh.source;
+        DVec3 lo(INFINITY), hi(-INFINITY);
+        if (instance.mesh_in_world) instance.world_positions.reserve(3 * source.positions.size() + 1);
+        for (const sg::Vec3& p : source.positions) {
+            const DVec3 w = instance.placement.point_to_world(p);
+            lo = glm::min(lo, w);
+            hi = glm::max(hi, w);
+            if (instance.mesh_in_world) {
+                instance.world_positions.push_back(float(w.x));
+                instance.world_positions.push_back(float(w.y));
+                instance.world_positions.push_back(float(w.z));
+            }
+        }
+        if (instance.mesh_in_world) instance.world_positions.push_back(0.0f);
+        if (source.positions.empty()) lo = hi = DVec3(0.0);
+        instance.bounds_lower = Vec3(lo);
+        instance.bounds_upper = Vec3(hi);
+        bool any_face_material = false;
+        for (const auto& face : source.faces)
+            any_face_material |= face.material >= 0 && std::size_t(face.material) < source.materials.size();
+        if (any_face_material) {
+            instance.face_materials.resize(source.faces.size(), nullptr);
+            for (std::size_t f = 0; f < source.faces.size(); ++f) {
+                const int m = source.faces[f].material;
+                if (m >= 0 && std::size_t(m) < source.materials.size() && source.materials[m])
+                    instance.face_materials[f] = material_for(source.materials[m]);
+            }
+        }
+    }
+
+    // Every object whose material (or a face's) emits becomes a light.
+    void build_emitters() {
+        const std::size_t count = m_data->instances.size();
+        for (std::uint32_t index = 0; index < count; ++index) {
+            Instance& instance = m_data->instances[index];
+            std::unique_ptr<SurfaceSampler> surface;
+            const EmissiveShapeLight::SphereShape* sphere_shape = nullptr;
+            EmissiveShapeLight::SphereShape shape;
+            switch (instance.kind) {
+            case ShapeKind::Sphere:
+                if (!instance.material->is_emissive()) continue;
+                if (!(instance.sphere.radius > 0.0)) continue;
+                surface = make_sphere_sampler(instance.sphere, instance.placement, instance.material);
+                if (instance.placement.is_similarity()) {
+                    shape.object = instance.sphere;
+                    shape.placement = instance.placement;
+                    shape.world.center = instance.placement.point_to_world(instance.sphere.center);
+                    shape.world.radius = instance.sphere.radius * instance.placement.uniform_scale();
+                    sphere_shape = &shape;
+                }
+                break;
+            case ShapeKind::Box:
+                if (!instance.material->is_emissive()) continue;
+                surface = make_box_sampler(instance.box, instance.placement, instance.material);
+                break;
+            case ShapeKind::Plane:
+                if (instance.material->is_emissive())
+                    std::cerr << "lancer: note: an emissive plane is infinite and cannot be sampled as a "
+                                 "light; it still shows its emission to rays that hit it\n";
+                continue;
+            case ShapeKind::Mesh: {
+                std::vector<WorldTriangle> triangles = emissive_triangles(instance);
+                if (triangles.empty()) continue;
+                surface = make_triangle_sampler(std::move(triangles));
+                break;
+            }
+            default: continue;
+            }
+            if (!(surface->area() > 0.0) || !std::isfinite(surface->area())) continue;
+            auto light = std::make_unique<EmissiveShapeLight>(std::move(surface), index, instance.material,
+                                                              sphere_shape);
+            instance.emitter = light.get();
+            m_data->lights.push_back(light.get());
+            m_data->local_lights.push_back(&light->proxy());
+            m_data->owned_lights.push_back(std::move(light));
+        }
+    }
+
+    std::vector<WorldTriangle> emissive_triangles(const Instance& instance) {
+        std::vector<WorldTriangle> triangles;
+        const sg::TriangleMesh& source = *instance.mesh->source;
+        for (std::size_t f = 0; f < source.faces.size(); ++f) {
+            const Material* face_material =
+                f < instance.face_materials.size() && instance.face_materials[f] ? instance.face_materials[f]
+                                                                                 : instance.material;
+            if (!face_material->is_emissive()) continue;
+            const auto& face = source.faces[f];
+            WorldTriangle t;
+            for (int k = 0; k < 3; ++k) {
+                t.p[k] = instance.placement.point_to_world(source.positions[face.position[k]]);
+                const int uv = face.uv[k];
+                t.uv[k] = uv >= 0 && std::size_t(uv) < source.uvs.size() ? Vec2(source.uvs[uv])
+                                                                         : Vec2(k == 1, k == 2);
+            }
+            t.material = face_material;
+            triangles.push_back(t);
+        }
+        return triangles;
+    }
+
+    // Area lights as black, non-reflecting emitting surfaces (after the
+    // scene's objects so their ids do not shift).
+    void add_area_light_surfaces() {
+        for (const sg::Light& source : m_graph.lights) {
+            if (source.kind == sg::Light::Kind::AreaRectangle) {
+                const DVec3 cross = glm::cross(source.axis1, source.axis2);
+                const double area = glm::length(cross);
+                if (!(area > 0.0) || !std::isfinite(area)) continue;  // a point light, added later
+                AnalyticRectangle rectangle{source.position, source.axis1, source.axis2};
+                auto light = std::make_unique<RectangleLight>(rectangle, Color(source.color));
+                Instance instance;
+                instance.kind = ShapeKind::Rectangle;
+                instance.rectangle = rectangle;
+                instance.material = emitting_material(light->radiance());
+                instance.light = light.get();
+                instance.location = source.location;
+                const DVec3 half = 0.5 * (glm::abs(source.axis1) + glm::abs(source.axis2));
+                world_bounds(instance.placement, source.position - half, source.position + half,
+                             instance.bounds_lower, instance.bounds_upper);
+                push_instance(std::move(instance), DMat4(1.0));
+                add_light(std::move(light));
+            } else if (source.kind == sg::Light::Kind::AreaSphere) {
+                if (!(source.radius > 0.0) || !std::isfinite(source.radius)) continue;
+                auto light = std::make_unique<SphereLight>(source.position, source.radius, Color(source.color));
+                Instance instance;
+                instance.kind = ShapeKind::Sphere;
+                instance.sphere = {source.position, source.radius};
+                instance.material = emitting_material(light->radiance());
+                instance.light = light.get();
+                instance.location = source.location;
+                const DVec3 r(source.radius);
+                world_bounds(instance.placement, source.position - r, source.position + r, instance.bounds_lower,
+                             instance.bounds_upper);
+                push_instance(std::move(instance), DMat4(1.0));
+                add_light(std::move(light));
+            }
+        }
+    }
+
+    const Material* emitting_material(const Color& radiance) {
+        m_data->textures.push_back(TextureFactory::make_solid(Color(1.0f)));
+        MaterialParameters p;
+        p.pigment = m_data->textures.back().get();
+        p.ambient = Color(0.0f);
+        p.diffuse = 0.0f;
+        p.emission = radiance;
+        m_data->materials.push_back(std::make_unique<Material>(p));
+        return m_data->materials.back().get();
+    }
+
+    void add_light(std::unique_ptr<Light> light) {
+        m_data->lights.push_back(light.get());
+        m_data->local_lights.push_back(&light->proxy());
+        m_data->owned_lights.push_back(std::move(light));
+    }
+
+    void compute_bounds() {
+        for (const Instance& instance : m_data->instances)
+            if (instance.kind != ShapeKind::Plane)
+                expand(m_data->bounds, instance.bounds_lower, instance.bounds_upper);
+    }
+
+    // Point and directional lights, and area lights too small to have a
+    // surface (degraded to point lights of the same intensity pi*C).
+    void add_sg_lights() {
+        const Bounds& b = m_data->bounds;
+        const Vec3 centre = b.empty() ? Vec3(0.0f) : 0.5f * (b.lower + b.upper);
+        const float radius = b.empty() ? 1.0f : glm::max(0.5f * glm::length(b.upper - b.lower), 1e-30f);
+        for (const sg::Light& source : m_graph.lights) {
+            const Color color(source.color);
+            const bool directional = source.kind == sg::Light::Kind::Directional ||
+                                     (source.kind == sg::Light::Kind::Point && source.parallel);
+            if (directional) {
+                add_light(std::make_unique<DirectionalLight>(Vec3(source.point_at - source.position),
+                                                             float(kPiD) * color, centre, radius));
+                continue;
+            }
+            const bool degenerate_rectangle =
+                source.kind == sg::Light::Kind::AreaRectangle &&
+                !(glm::length(glm::cross(source.axis1, source.axis2)) > 0.0);
+            const bool degenerate_sphere = source.kind == sg::Light::Kind::AreaSphere && !(source.radius > 0.0);
+            if (source.kind == sg::Light::Kind::Point || degenerate_rectangle || degenerate_sphere) {
+                const float fade_distance = source.kind == sg::Light::Kind::Point ? float(source.fade_distance) : 0.0f;
+                add_light(std::make_unique<PointLight>(Vec3(source.position), float(kPiD) * color, fade_distance,
+                                                       float(source.fade_power)));
+            }
+        }
+    }
+
+    const sg::SceneGraph& m_graph;
+    std::unique_ptr<SceneData> m_data;
+    std::map<const sg::TriangleMesh*, int> m_mesh_uses;
+    std::map<const sg::TriangleMesh*, const MeshData*> m_meshes;
+    std::map<const sg::Material*, const Material*> m_materials;
+    const Material* m_default_material = nullptr;
+};
+
+}  // namespace
+
+std::unique_ptr<SceneData> build_scene_data(const sg::SceneGraph& graph) { return Builder(graph).run(); }
+
+}  // namespace lancer

@@ -1,0 +1,94 @@
+// Objects whose material emits light, sampled by area (or by the cone of a
+// sphere), with an automatically derived point proxy.
+#include <cmath>
+
+#include "lancer/texture.h"
+#include "lights/lights.h"
+
+namespace lancer {
+namespace {
+
+constexpr double kPiD = 3.141592653589793238463;
+
+
+}  // namespace
+
+EmissiveShapeLight::EmissiveShapeLight(std::unique_ptr<SurfaceSampler> surface, std::uint32_t object_id,
+                                       const Material* material, const SphereShape* sphere)
+    : m_surface(std::move(surface)), m_object_id(object_id), m_material(material) {
+    if (sphere) {
+        m_has_sphere = true;
+        m_sphere = *sphere;
+    }
+    // Mean radiance from the pigment's average (textured emitters).
+    Color mean_radiance(0.0f);
+    if (material && material->parameters().pigment)
+        mean_radiance = material->parameters().emission * material->parameters().pigment->average().rgb;
+    const double area = m_surface->area();
+    DVec3 flat_normal;
+    const bool flat = m_surface->is_flat(flat_normal);
+    // Closed shapes radiate pi*A*Le outwards; flat two-sided ones 2*pi*A*Le.
+    const double sides = flat ? 2.0 : 1.0;
+    m_power = float(sides * kPiD * area) * mean_radiance;
+    const Vec3 centre(m_surface->centroid());
+    if (flat)
+        m_proxy = std::make_unique<PointLight>(centre, float(area) * mean_radiance, 0.0f, 0.0f, Vec3(flat_normal));
+    else
+        m_proxy = std::make_unique<PointLight>(centre, float(area / 4.0) * mean_radiance);
+}
+
+Color EmissiveShapeLight::radiance_at(const Hit& hit) const {
+    const Material* material = hit.material ? hit.material : m_material;
+    if (!material) return Color(0.0f);
+    return material->emitted(material->sample_surface(hit));
+}
+
+LightSample EmissiveShapeLight::sample(const Vec3& p, const Vec2& u) const {
+    LightSample s;
+    const DVec3 origin(p);
+    Hit hit;
+    float pdf = 0.0f;
+    ConeSample cone;
+    if (m_has_sphere && sample_sphere_cone(m_sphere.world.center, m_sphere.world.radius, origin, u, cone)) {
+        hit.position = Vec3(cone.point);
+        hit.geometric_normal = Vec3(cone.normal);
+        hit.uv = sphere_surface(m_sphere.object, m_sphere.placement.point_to_object(cone.point)).uv;
+        pdf = float(cone.pdf);
+    } else {
+        const SurfacePoint point = m_surface->sample(u);
+        if (!(point.pdf_area > 0.0)) return s;
+        hit.position = Vec3(point.position);
+        hit.geometric_normal = Vec3(point.normal);
+        hit.uv = point.uv;
+        hit.material = point.material;
+        pdf = area_to_solid_angle(point.pdf_area, origin, point.position, point.normal);
+    }
+    if (!(pdf > 0.0f)) return s;
+    hit.shading_normal = hit.geometric_normal;
+    hit.object_id = m_object_id;
+    if (!hit.material) hit.material = m_material;
+    const DVec3 target = lift_towards(DVec3(hit.position), DVec3(hit.geometric_normal), origin);
+    const DVec3 offset = target - origin;
+    const double distance = glm::length(offset);
+    if (!(distance > 0.0)) return s;
+    s.radiance = radiance_at(hit);
+    s.wi = Vec3(offset / distance);
+    s.distance = float(distance);
+    s.point = Vec3(target);
+    s.pdf = pdf;
+    return s;
+}
+
+float EmissiveShapeLight::pdf(const Vec3& p, const Vec3&, const Hit& light_hit) const {
+    const DVec3 origin(p);
+    if (m_has_sphere) {
+        const double cone = sphere_cone_pdf(m_sphere.world.center, m_sphere.world.radius, origin);
+        if (cone > 0.0) return float(cone);
+    }
+    return area_to_solid_angle(m_surface->pdf_area(light_hit), origin, DVec3(light_hit.position),
+                               DVec3(light_hit.geometric_normal));
+}
+
+Color EmissiveShapeLight::emitted(const Hit& light_hit, const Vec3&) const { return radiance_at(light_hit); }
+
+}  // namespace lancer

@@ -1,0 +1,154 @@
+// The concrete lights (internal to liblancer). Units, lancer/light.h:
+// a light of `color C` has radiant intensity pi*C (point), irradiance pi*C
+// on a perpendicular surface (directional); area lights are physical
+// Lambertian emitters with the same on-axis intensity.
+#pragma once
+
+#include <memory>
+
+#include "lancer/light.h"
+#include "geometry/shapes.h"
+
+namespace lancer {
+
+// Isotropic, or with a cosine pattern about `pattern_axis` when it is not
+// zero: |cos| for the proxy of a flat two-sided emitter, max(0, cos) for a
+// one-sided one (a rectangle light).
+class PointLight final : public Light {
+public:
+    // intensity in radiance units times area (W/sr); fade as POV's when
+    // fade_distance > 0, else inverse-square.
+    PointLight(const Vec3& position, const Color& intensity, float fade_distance = 0.0f,
+               float fade_power = 0.0f, const Vec3& pattern_axis = Vec3(0.0f), bool one_sided = false);
+    Kind kind() const override { return Kind::Point; }
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    Color power() const override;
+    const Vec3& position() const { return m_position; }
+    const Color& intensity() const { return m_intensity; }
+    bool inverse_square_point(Vec3& position, Color& intensity) const override {
+        position = m_position;
+        intensity = m_intensity;
+        return m_plain_inverse_square;
+    }
+
+private:
+    Vec3 m_position;
+    Color m_intensity;
+    float m_fade_distance;
+    float m_fade_power;
+    Vec3 m_pattern_axis;
+    bool m_one_sided;
+    // Inverse-square without a pattern: sample()'s float path applies.
+    bool m_plain_inverse_square;
+};
+
+class DirectionalLight final : public Light {
+public:
+    // `travel`: direction light travels (position -> point_at); the scene
+    // sphere places the shadow-ray target beyond all geometry.
+    DirectionalLight(const Vec3& travel, const Color& irradiance, const Vec3& scene_center, float scene_radius);
+    Kind kind() const override { return Kind::Directional; }
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    Color power() const override;
+
+private:
+    Vec3 m_to_light;
+    Color m_irradiance;
+    Vec3 m_scene_center;
+    float m_scene_radius;
+};
+
+// One-sided Lambertian parallelogram, radiance pi*C/area, emitting on the
+// side of normalize(axis1 x axis2) (docs/scene-language.md: a ceiling light
+// `area_light <a,0,0>, <0,0,b>` faces down). One-sided because a physical
+// panel lights the room, not the ceiling it hangs from.
+class RectangleLight final : public Light {
+public:
+    RectangleLight(const AnalyticRectangle& rectangle, const Color& color);
+    Kind kind() const override { return Kind::Rectangle; }
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    float pdf(const Vec3& p, const Vec3& wi, const Hit& light_hit) const override;
+    Color emitted(const Hit& light_hit, const Vec3& wo) const override;
+    Color power() const override;
+    const Light& proxy() const override { return *m_proxy; }
+    const Color& radiance() const { return m_radiance; }
+    const AnalyticRectangle& rectangle() const { return m_rectangle; }
+    bool emits_towards(const glm::dvec3& from_surface) const { return glm::dot(m_normal, from_surface) > 0.0; }
+
+private:
+    AnalyticRectangle m_rectangle;
+    glm::dvec3 m_normal;
+    double m_area;
+    Color m_radiance;
+    std::unique_ptr<PointLight> m_proxy;
+};
+
+// Solid-angle density of a point sampled on a surface with area density
+// pdf_area, seen from p: pdf_area * d^2 / |cos at the light|; 0 when
+// degenerate (p on the surface's plane or at the point).
+float area_to_solid_angle(double pdf_area, const DVec3& p, const DVec3& point, const DVec3& light_normal);
+
+// Solid-angle sampling of the cone a sphere subtends from p (outside), in
+// double precision. Returns false when p is inside or on the sphere.
+struct ConeSample {
+    DVec3 point, normal;
+    double pdf = 0.0;  // solid angle
+};
+// `point` moved off its surface towards the side of p by more than its
+// float rounding, so a shadow ray from p to it cannot clip the surface the
+// point lies on (the segment stays in p's half-space of the tangent plane).
+DVec3 lift_towards(const DVec3& point, const DVec3& normal, const DVec3& p);
+
+bool sample_sphere_cone(const DVec3& center, double radius, const DVec3& p, const Vec2& u, ConeSample& out);
+double sphere_cone_pdf(const DVec3& center, double radius, const DVec3& p);
+
+// Sphere of radius R with radiance C/R^2: intensity pi*C in every direction.
+class SphereLight final : public Light {
+public:
+    SphereLight(const DVec3& center, double radius, const Color& color);
+    Kind kind() const override { return Kind::Sphere; }
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    float pdf(const Vec3& p, const Vec3& wi, const Hit& light_hit) const override;
+    Color emitted(const Hit& light_hit, const Vec3& wo) const override { return m_radiance; }
+    Color power() const override;
+    const Light& proxy() const override { return *m_proxy; }
+    const Color& radiance() const { return m_radiance; }
+
+private:
+    DVec3 m_center;
+    double m_radius;
+    Color m_radiance;
+    std::unique_ptr<PointLight> m_proxy;
+};
+
+// An object whose material emits: radiance emission * pigment, two-sided.
+class EmissiveShapeLight final : public Light {
+public:
+    // `sphere`: when set (a sphere under a similarity transform, world
+    // centre and radius), sampled by the cone it subtends.
+    struct SphereShape {
+        AnalyticSphere world;   // centre and radius in world space
+        AnalyticSphere object;  // as the scene gave it, for (u,v)
+        Placement placement;
+    };
+    EmissiveShapeLight(std::unique_ptr<SurfaceSampler> surface, std::uint32_t object_id,
+                       const Material* material, const SphereShape* sphere);
+    Kind kind() const override { return Kind::EmissiveShape; }
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    float pdf(const Vec3& p, const Vec3& wi, const Hit& light_hit) const override;
+    Color emitted(const Hit& light_hit, const Vec3& wo) const override;
+    Color power() const override { return m_power; }
+    const Light& proxy() const override { return *m_proxy; }
+
+private:
+    Color radiance_at(const Hit& hit) const;
+    std::unique_ptr<SurfaceSampler> m_surface;
+    std::uint32_t m_object_id;
+    const Material* m_material;
+    bool m_has_sphere = false;
+    SphereShape m_sphere;
+    Color m_power{0.0f};
+    std::unique_ptr<PointLight> m_proxy;
+};
+
+}  // namespace lancer
