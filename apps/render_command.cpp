@@ -26,6 +26,7 @@
 
 #include "cli_output.h"
 #include "commands.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/host/checkpoint.h"
 #include "lancer/host/counting_scene.h"
 #include "lancer/host/image_io.h"
@@ -368,10 +369,11 @@ int run_render(const RenderArguments& arguments) {
 
         const std::string checkpoint_path = checkpoint_path_for(output);
         const CheckpointIdentity identity = checkpoint_identity(arguments, options, integrator_name, parameters);
-        const std::unique_ptr<RenderScene> compiled = RenderScene::compile(graph);
+        const std::unique_ptr<RenderScene> compiled = compile_scene(graph);
         // Prepared and rendered through the same counting wrapper: rays are
         // counted, and integrators that remember their scene see one object.
         CountingScene scene(*compiled);
+        options.ray_counter = &scene;
         integrator->prepare(scene);
         Film film(options.width, options.height);
         // A render killed before its first checkpoint has nothing to resume:

@@ -22,6 +22,7 @@
 
 #include "cli_output.h"
 #include "commands.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/host/counting_scene.h"
 #include "image_metrics.h"
 #include "lancer/parser.h"
@@ -204,7 +205,7 @@ bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
     print_diagnostics(parsed);
     if (!parsed.ok()) return false;
     prepared.graph = std::move(*parsed.scene);
-    prepared.scene = RenderScene::compile(prepared.graph);
+    prepared.scene = compile_scene(prepared.graph);
     return true;
 }
 
@@ -255,6 +256,7 @@ TimedRender render_setting(const PreparedScene& prepared, const Plugin& plugin,
     options.seed = seed;
     options.threads = threads;
     options.progress = ProgressMode::Quiet;
+    options.ray_counter = &scene;
     Film film(prepared.width, prepared.height);
     const RenderStats stats = render_image(scene, *integrator, options, film);
 

@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/parser.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
@@ -134,7 +135,7 @@ struct Lancer {
         const ParseResult parsed = parse_scene_file(source("bench/cycles/cornell_cycles.pov"), options);
         if (!parsed.ok()) throw std::runtime_error("bench/cycles/cornell_cycles.pov does not parse");
         parameters = parsed.scene->render.parameters;
-        scene = RenderScene::compile(*parsed.scene);
+        scene = compile_scene(*parsed.scene);
         build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 

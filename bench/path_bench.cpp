@@ -13,6 +13,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
 #include "lancer/scene_graph.h"
@@ -82,7 +83,7 @@ sg::SceneGraph cornell_box() {
 
 struct Setup {
     Plugin plugin = load_plugin("path");
-    std::unique_ptr<RenderScene> scene = RenderScene::compile(cornell_box());
+    std::unique_ptr<RenderScene> scene = compile_scene(cornell_box());
 
     std::unique_ptr<Integrator> integrator(const std::string& sampler) const {
         auto i = plugin.descriptor->create(

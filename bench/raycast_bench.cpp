@@ -11,18 +11,18 @@
 // is the bare loop with RTC_SCENE_FLAG_ROBUST, which lancer's scene sets for
 // watertight meshes (render/src/watertight_test.cpp): the flag's own cost.
 // BM_HostIntersectOnlyPrimaryRays runs the host with an integrator that only
-// intersects, to tell the host's and RenderScene's share from raycast's;
-// BM_HostAlonePrimaryRays with one that traces nothing, the host's alone.
-// BM_ScenePackets calls RenderScene::intersect_coherent on the packets
-// without the host: Embree plus lancer's hit completion.
-// BM_BarePackets traces the rays in 4x4-pixel packets (rtcIntersect16), as
-// the host does for integrators that shade camera hits it finds
-// (Integrator::shades_camera_hits): what Embree alone gains from coherence.
+// reports the hit the host found, to tell the host's and RenderScene's
+// share from raycast's shading. BM_ScenePackets calls
+// RenderScene::intersect_batch (coherent) on the packets without the host:
+// Embree plus lancer's hit completion; the host's own share is the
+// difference. BM_BarePackets traces the rays in 4x4-pixel packets
+// (rtcIntersect16), as the host does for every camera batch: what Embree
+// alone gains from coherence.
 //
 // Counters: Mrays/s for each; in BM_RaycastOverBareEmbree, measured in
 // alternation in one process, `ratio` = raycast / bare and `ratio_robust` =
 // raycast / bare-with-the-robust-flag. Memory: `scene_bytes_per_triangle`
-// (resident set growth over RenderScene::compile), `compile_peak_bytes_per_triangle`
+// (resident set growth over compile_scene), `compile_peak_bytes_per_triangle`
 // (peak resident set during compile above the level before it),
 // `embree_bytes_per_triangle` (Embree's own allocations for the same
 // triangles and flags, from rtcSetDeviceMemoryMonitorFunction) and
@@ -47,6 +47,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
 #include "lancer/scene_graph.h"
@@ -158,19 +159,11 @@ std::shared_ptr<sg::TriangleMesh> make_height_field() {
 // The host's loop with the cheapest possible integrator: one scene.intersect
 // per ray and nothing else. Separates the host's and RenderScene's own cost
 // from raycast's shading.
-class IntersectOnly final : public FirstHitIntegrator {
+class IntersectOnly final : public Integrator {
 public:
-    Color radiance_from_hit(const Ray&, const Hit* hit, const RenderScene&, Sampler&) const override {
+    Color shade_camera_hit(const Ray&, const Hit* hit, const RenderScene&, Sampler&) const override {
         return hit ? Color(1.0f) : Color(0.0f);
     }
-    bool is_deterministic() const override { return true; }
-};
-
-// The host's loop with an integrator that traces nothing: what tiles,
-// planning, camera rays and the film cost per pixel on their own.
-class TracesNothing final : public Integrator {
-public:
-    Color radiance(const Ray& ray, const RenderScene&, Sampler&) const override { return Color(ray.direction.x); }
     bool is_deterministic() const override { return true; }
 };
 
@@ -210,7 +203,9 @@ struct BenchScene {
         graph.lights.push_back(light);
         sg::Object object;
         object.kind = sg::Object::Kind::Mesh;
-        object.shape = sg::MeshRef(mesh);
+        // The graph's own copy, which compiling moves into the render
+        // scene; `mesh` stays whole for the bare Embree scenes.
+        object.shape = sg::MeshRef(std::make_shared<sg::TriangleMesh>(*mesh));
         auto material = std::make_shared<sg::Material>();
         material->pigment.color.rgb = sg::Vec3(0.8);
         object.material = material;
@@ -219,7 +214,7 @@ struct BenchScene {
         const bool peak_reset = reset_peak_rss();
         const long rss_before = status_kilobytes("VmRSS:");
         const auto compile_start = std::chrono::steady_clock::now();
-        scene = RenderScene::compile(graph);
+        scene = compile_scene(std::move(graph));
         compile_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - compile_start).count();
         const long rss_after = status_kilobytes("VmRSS:");
         rss_bytes_per_triangle = 1024.0 * double(rss_after - rss_before) / double(triangles());
@@ -344,7 +339,7 @@ struct BenchScene {
             hit_count);
     }
 
-    // The same rays through RenderScene::intersect_coherent in 4x4-pixel
+    // The same rays through RenderScene::intersect_batch in 4x4-pixel
     // blocks, 16 blocks to a call as the host gives them, hits completed, no
     // host: what lancer's scene adds to Embree.
     FrameTime trace_scene_packets() const {
@@ -357,7 +352,7 @@ struct BenchScene {
                 std::uint64_t found = 0;
                 int count = 0;
                 auto flush = [&] {
-                    scene->intersect_coherent(rays, count, hits, hit_found);
+                    scene->intersect_batch(rays, count, hits, hit_found, RayCoherence::Coherent);
                     for (int k = 0; k < count; ++k) found += hit_found[k];
                     count = 0;
                 };
@@ -484,12 +479,6 @@ void BM_HostIntersectOnlyPrimaryRays(benchmark::State& state) {
     time_primary_rays(state, bench, [&] { return bench.render_raycast(&intersect_only); });
 }
 
-void BM_HostAlonePrimaryRays(benchmark::State& state) {
-    BenchScene& bench = bench_scene();
-    const TracesNothing traces_nothing;
-    time_primary_rays(state, bench, [&] { return bench.render_raycast(&traces_nothing); });
-}
-
 void BM_ScenePackets(benchmark::State& state) {
     BenchScene& bench = bench_scene();
     time_primary_rays(state, bench, [&] { return bench.trace_scene_packets(); });
@@ -535,7 +524,6 @@ BENCHMARK(BM_RaycastPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_BareEmbreePrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_BareEmbreeRobustPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_ScenePackets)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
-BENCHMARK(BM_HostAlonePrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_HostIntersectOnlyPrimaryRays)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_RaycastOverBareEmbree)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(4.0);
 

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lancer/host/camera_ray.h"
 #include "lancer/host/film.h"
 #include "lancer/integrator.h"
 #include "lancer/host/plugin_host.h"
@@ -111,7 +112,7 @@ inline Color mean_radiance(const Integrator& integrator, const RenderScene& scen
     Color sum(0.0f);
     for (int i = 0; i < samples; ++i) {
         sampler->start_sample(0, 0, std::uint32_t(i));
-        sum += integrator.radiance(ray, scene, *sampler);
+        sum += shade_camera_ray(integrator, ray, scene, *sampler);
     }
     return sum / float(samples);
 }

@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "image_compare.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/parser.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
@@ -78,7 +79,7 @@ testing::Image render_scene(const std::string& scene_file, const std::string& sa
         for (const Diagnostic& d : parsed.diagnostics) message += format_diagnostic(d) + "\n";
         throw std::runtime_error(message);
     }
-    const auto scene = RenderScene::compile(*parsed.scene);
+    const auto scene = compile_scene(*parsed.scene);
     const Plugin plugin = load_plugin("path");
     // The scene's own integrator settings (max_depth matched to Cycles').
     const auto integrator = plugin.descriptor->create(

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/host/estimate.h"
 #include "lancer/parser.h"
 #include "lancer/host/plugin_host.h"
@@ -46,7 +47,7 @@ protected:
         auto parameters = settings.integrator == std::optional<std::string>("path") ? settings.parameters
                                                                                     : decltype(settings.parameters){};
         m_integrator = m_plugin.descriptor->create(resolve_parameters(*m_plugin.descriptor, parameters, {}));
-        m_scene = RenderScene::compile(*parsed.scene);
+        m_scene = compile_scene(*parsed.scene);
         m_integrator->prepare(*m_scene);
     }
     // Destroy the integrator before the plugin that holds its code.

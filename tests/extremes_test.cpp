@@ -20,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/scene_error.h"
 #include "lancer/host/film.h"
 #include "lancer/integrator.h"
@@ -51,7 +52,7 @@ sg::SceneGraph parse(const std::string& text, int width, int height) {
 // Renders a scene graph with the named integrator on every core.
 Film render_graph(const sg::SceneGraph& graph, const std::string& integrator_name, const Parameters& parameters,
                   int width, int height, int spp = 1, std::uint64_t seed = 3) {
-    const auto scene = RenderScene::compile(graph);
+    const auto scene = compile_scene(graph);
     const Plugin plugin = load_plugin(integrator_name);
     std::vector<std::string> assignments;
     for (const auto& [key, value] : parameters) assignments.push_back(key + "=" + value);

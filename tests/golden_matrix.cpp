@@ -12,6 +12,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/host/image_io.h"
 #include "lancer/integrator.h"
 #include "lancer/parser.h"
@@ -149,7 +150,7 @@ RenderResult render_entry(const MatrixEntry& entry, int width, int height, int s
         for (const Diagnostic& d : parsed.diagnostics) message += format_diagnostic(d) + "\n";
         throw std::runtime_error(message);
     }
-    const auto scene = RenderScene::compile(*parsed.scene);
+    const auto scene = compile_scene(*parsed.scene);
     // Plugin before integrator: the integrator's code must outlive it.
     const Plugin plugin = load_plugin(entry.integrator);
     std::vector<std::string> assignments;

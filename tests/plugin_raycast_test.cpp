@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
 #include "lancer/scene_graph.h"
@@ -62,7 +63,7 @@ struct RaycastFixture {
 };
 
 Film render(const sg::SceneGraph& graph, const Integrator& integrator, int size, int threads, int spp = 1) {
-    const auto scene = RenderScene::compile(graph);
+    const auto scene = compile_scene(graph);
     RenderOptions options;
     options.width = size;
     options.height = size;
@@ -166,8 +167,9 @@ TEST(RaycastIntegrator, OneAndTwoThreadsGiveTheSameImageBitForBit) {
 class JitteredRaycast final : public Integrator {
 public:
     explicit JitteredRaycast(const Integrator& raycast) : m_raycast(raycast) {}
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const override {
-        return m_raycast.radiance(ray, scene, sampler) * (0.5f + sampler.next_1d());
+    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
+                           Sampler& sampler) const override {
+        return m_raycast.shade_camera_hit(ray, hit, scene, sampler) * (0.5f + sampler.next_1d());
     }
 
 private:

@@ -15,9 +15,9 @@ namespace {
 
 using namespace lancer;
 
-class AlbedoIntegrator final : public FirstHitIntegrator {
+class AlbedoIntegrator final : public Integrator {
 public:
-    Color radiance_from_hit(const Ray&, const Hit* hit, const RenderScene&, Sampler&) const override {
+    Color shade_camera_hit(const Ray&, const Hit* hit, const RenderScene&, Sampler&) const override {
         if (!hit) return Color(0.0f);
         const Material& material = *hit->material;
         return material.sample_surface(*hit).pigment * material.parameters().diffuse;

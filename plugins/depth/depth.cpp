@@ -26,11 +26,11 @@ namespace {
 
 using namespace lancer;
 
-class DepthIntegrator final : public FirstHitIntegrator {
+class DepthIntegrator final : public Integrator {
 public:
     explicit DepthIntegrator(float max_distance) : m_max_distance(max_distance) {}
 
-    Color radiance_from_hit(const Ray& ray, const Hit* hit, const RenderScene&, Sampler&) const override {
+    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene&, Sampler&) const override {
         const bool normalised = m_max_distance > 0.0f;
         if (!hit) return Color(normalised ? 1.0f : 0.0f);
         // t is in units of the direction's length, which need not be 1.

@@ -86,14 +86,15 @@ public:
         m_options.min_weight = scene.options().adc_bailout;
     }
 
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const override {
+    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
+                           Sampler& sampler) const override {
         const auto gathered_local_term = [this, &scene](const ShadingContext& at, const Color& diffuse_scale,
                                                         Sampler& hit_sampler) {
             LobeRadiance local = direct_light(scene, at);
             if (!is_black(diffuse_scale)) local.diffuse += gathered_diffuse(scene, at, hit_sampler);
             return local;
         };
-        return trace_specular(ray, scene, sampler, m_options, gathered_local_term);
+        return shade_specular(ray, hit, scene, sampler, m_options, gathered_local_term);
     }
 
     bool is_deterministic() const override { return m_jitter == 0.0f; }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "../seed_integrators_test.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/shading/local_shading.h"
 #include "sphere_lattice.h"
 
@@ -108,7 +109,7 @@ double view_factor_to_square(double a, double h) {
 TEST(GatherIntegrator, CloserLampLightsThePlaneMore) {
     float previous = 0.0f;
     for (double height : {4.0, 2.0, 1.0}) {
-        const auto scene = RenderScene::compile(floor_under_lamp(height));
+        const auto scene = compile_scene(floor_under_lamp(height));
         const auto gather = load_integrator("gather", *scene);
         const float seen = mean_radiance(*gather, *scene, kToFloorCentre, 32).g;
         EXPECT_GT(seen, previous) << "lamp at height " << height;
@@ -120,7 +121,7 @@ TEST(GatherIntegrator, FloorUnderLampMatchesTheViewFactor) {
     // Only the lamp is in view of the floor, so the gathered diffuse is
     // unbiased here: rho * Le * F, with the lamp's radiance Le = pi C / area.
     const double height = 1.0, size = 1.0;
-    const auto scene = RenderScene::compile(floor_under_lamp(height, size));
+    const auto scene = compile_scene(floor_under_lamp(height, size));
     const auto gather = load_integrator("gather", *scene);
     const double lamp_radiance = 3.14159265358979 * 10.0 / (size * size);
     const double expected = 0.6 * lamp_radiance * view_factor_to_square(size, height);
@@ -131,7 +132,7 @@ TEST(GatherIntegrator, ExtremeLatticeSizesGiveFiniteImages) {
     sg::SceneGraph graph = floor_under_lamp(1.5);
     graph.objects.push_back(sphere({0.0, 0.5, 0.0}, 0.5, default_material()));
     graph.lights.push_back(point_light({2.0, 3.0, -2.0}, sg::Vec3(5.0)));
-    const auto scene = RenderScene::compile(graph);
+    const auto scene = compile_scene(graph);
     for (const char* n : {"1", "10000"}) {
         const auto gather = load_integrator("gather", *scene, {{"n", n}});
         const Film film = render_small(*scene, *gather, 8, 6);
@@ -149,7 +150,7 @@ TEST(GatherIntegrator, ExtremeLatticeSizesGiveFiniteImages) {
 
 TEST(GatherIntegrator, JitterComesOnlyFromThePixelSampler) {
     // Same seed, different thread counts and tile orders: the same image, bit for bit.
-    const auto scene = RenderScene::compile(floor_under_lamp(1.5));
+    const auto scene = compile_scene(floor_under_lamp(1.5));
     const auto gather = load_integrator("gather", *scene, {{"n", "16"}});
     const Film one_thread = render_small(*scene, *gather, 12, 9, 2, 1);
     const Film two_threads = render_small(*scene, *gather, 12, 9, 2, 2);

@@ -21,11 +21,11 @@ namespace {
 
 using namespace lancer;
 
-class NormalIntegrator final : public FirstHitIntegrator {
+class NormalIntegrator final : public Integrator {
 public:
     explicit NormalIntegrator(bool shading) : m_shading(shading) {}
 
-    Color radiance_from_hit(const Ray& ray, const Hit* found, const RenderScene&, Sampler&) const override {
+    Color shade_camera_hit(const Ray& ray, const Hit* found, const RenderScene&, Sampler&) const override {
         if (!found) return Color(0.0f);
         const Hit& hit = *found;
         const Vec3 toward_camera = -ray.direction;

@@ -111,7 +111,8 @@ public:
                                                         : make_independent_sampler(seed);
     }
 
-    Color radiance(const Ray& camera_ray, const RenderScene& scene, Sampler& sampler) const override {
+    Color shade_camera_hit(const Ray& camera_ray, const Hit* camera_hit, const RenderScene& scene,
+                           Sampler& sampler) const override {
         const int max_depth = m_settings.max_depth < 0 ? kUnlimitedDepth : m_settings.max_depth;
         Ray ray = camera_ray;
         ray.direction = glm::normalize(ray.direction);
@@ -127,7 +128,10 @@ public:
 
         for (int depth = 0;; ++depth) {
             Hit hit;
-            if (!scene.intersect(ray, hit)) {
+            // The host traced the camera ray; the path traces the rest.
+            const bool found = depth == 0 ? camera_hit != nullptr : scene.intersect(ray, hit);
+            if (depth == 0 && found) hit = *camera_hit;
+            if (!found) {
                 radiance += throughput * scene.background(ray);
                 break;
             }

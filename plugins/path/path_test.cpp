@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "lancer/host/camera_ray.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
 #include "lancer/scene_graph.h"
@@ -61,7 +63,7 @@ std::unique_ptr<Integrator> make_integrator(const Plugin& plugin, std::vector<st
 
 Film render(const sg::SceneGraph& graph, Integrator& integrator, int width, int height, int spp,
             std::uint64_t seed = 0) {
-    const auto scene = RenderScene::compile(graph);
+    const auto scene = compile_scene(graph);
     integrator.prepare(*scene);
     RenderOptions options;
     options.width = width;
@@ -252,7 +254,7 @@ TEST_F(PathFixture, DirectLightingEqualsShadow) {
     sun.point_at = sg::Vec3(0.0);
     sun.color = sg::Vec3(0.4, 0.4, 0.3);
     graph.lights.push_back(sun);
-    const auto scene = RenderScene::compile(graph);
+    const auto scene = compile_scene(graph);
     const Plugin shadow_plugin = load_plugin("shadow");
     auto shadow = make_integrator(shadow_plugin);
     auto exact = make_integrator(path, {"max_depth=1", "light_sampling=all"});
@@ -269,15 +271,15 @@ TEST_F(PathFixture, DirectLightingEqualsShadow) {
         for (int x = 0; x < kWidth; ++x) {
             const Ray ray = scene->camera().generate_ray(x + 0.5f, y + 0.5f, kWidth, kHeight);
             unused->start_sample(x, y, 0);
-            const Color expected = shadow->radiance(ray, *scene, *unused);
+            const Color expected = shade_camera_ray(*shadow, ray, *scene, *unused);
             sampler->start_sample(x, y, 0);
-            const Color direct = exact->radiance(ray, *scene, *sampler);
+            const Color direct = shade_camera_ray(*exact, ray, *scene, *sampler);
             for (int c = 0; c < 3; ++c)
                 ASSERT_NEAR(direct[c], expected[c], 1e-4 * (1.0 + expected[c])) << x << "," << y;
             glm::dvec3 sum(0.0), sum2(0.0);
             for (int s = 0; s < kSamples; ++s) {
                 sampler->start_sample(x, y, s);
-                const glm::dvec3 v(stochastic->radiance(ray, *scene, *sampler));
+                const glm::dvec3 v(shade_camera_ray(*stochastic, ray, *scene, *sampler));
                 sum += v;
                 sum2 += v * v;
             }

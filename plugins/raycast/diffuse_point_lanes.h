@@ -27,7 +27,11 @@ public:
         : m_ambient_light(ambient_light), m_with_ambient(with_ambient) {
         m_usable = lights.size() <= std::size_t(kMaxLights);
         for (std::size_t i = 0; m_usable && i < lights.size(); ++i) {
-            m_usable = lights[i]->inverse_square_point(m_position[i], m_intensity[i]);
+            const auto* point = lights[i]->parameters<PointLightParameters>();
+            m_usable = point != nullptr && point->is_plain_inverse_square();
+            if (!m_usable) break;
+            m_position[i] = point->position;
+            m_intensity[i] = point->intensity;
             ++m_lights;
         }
     }
@@ -80,9 +84,10 @@ public:
                 // PointLight::sample's float path.
                 const float tx = at.x - px[k], ty = at.y - py[k], tz = at.z - pz[k];
                 const float distance_squared = (tx * tx + ty * ty) + tz * tz;
-                in_range[k] &= distance_squared > Light::kPlainRangeLow && distance_squared < Light::kPlainRangeHigh;
-                const float inverse_distance = 1.0f / std::sqrt(distance_squared);
-                const float falloff = inverse_distance * inverse_distance;
+                in_range[k] &= in_plain_point_range(distance_squared);
+                const PointIncidence incidence = plain_point_incidence(distance_squared);
+                const float inverse_distance = incidence.inverse_distance;
+                const float falloff = incidence.falloff;
                 const float radiance_r = intensity.r * falloff, radiance_g = intensity.g * falloff,
                             radiance_b = intensity.b * falloff;
                 const float wx = tx * inverse_distance, wy = ty * inverse_distance, wz = tz * inverse_distance;
@@ -91,7 +96,7 @@ public:
                 const float cosine = std::fabs(cos_i);
                 const float incident_r = radiance_r * cosine, incident_g = radiance_g * cosine,
                             incident_b = radiance_b * cosine;
-                const float shape = diffuse[k] * opacity[k] * (1.0f / kPi) * 1.0f;
+                const float shape = diffuse_lobe_weight(diffuse[k], opacity[k], 1.0f);
                 const bool lit = cos_i > 0.0f && diffuse[k] != 0.0f;
                 const float reflected_r = (lit ? shape * red[k] : 0.0f) * incident_r;
                 const float reflected_g = (lit ? shape * green[k] : 0.0f) * incident_g;

@@ -31,53 +31,20 @@ namespace {
 
 using namespace lancer;
 
-// raycast draws no random numbers; only the host does, to jitter camera rays
-// when several samples per pixel antialias. This wraps the default sampler
-// and positions it only when a value is asked for, so the common one sample
-// through the pixel centre skips hashing (seed, pixel, sample) per ray; the
-// values, when drawn, are the default sampler's, bit for bit.
-class LazySampler final : public Sampler {
-public:
-    explicit LazySampler(std::unique_ptr<Sampler> inner) : m_inner(std::move(inner)) {}
-    void start_sample(int pixel_x, int pixel_y, std::uint32_t sample_index) override {
-        m_x = pixel_x;
-        m_y = pixel_y;
-        m_index = sample_index;
-        m_started = false;
-    }
-    float next_1d() override { return started().next_1d(); }
-    Vec2 next_2d() override { return started().next_2d(); }
-    std::unique_ptr<Sampler> clone() const override { return std::make_unique<LazySampler>(m_inner->clone()); }
-
-private:
-    Sampler& started() {
-        if (!m_started) {
-            m_inner->start_sample(m_x, m_y, m_index);
-            m_started = true;
-        }
-        return *m_inner;
-    }
-    std::unique_ptr<Sampler> m_inner;
-    int m_x = 0, m_y = 0;
-    std::uint32_t m_index = 0;
-    bool m_started = false;
-};
-
-class RaycastIntegrator final : public FirstHitIntegrator {
+class RaycastIntegrator final : public Integrator {
 public:
     RaycastIntegrator(bool with_ambient, bool with_specular)
         : m_with_ambient(with_ambient), m_with_specular(with_specular) {}
 
-    Color radiance_from_hit(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler&) const override {
+    Color shade_camera_hit(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler&) const override {
         return shade(ray, found, scene, SceneLighting(scene));
     }
-    // No random numbers to position a sampler for, so a batch is shaded in
-    // one loop, with the scene's lights and ambient light looked up once.
-    // Hits of the most common kind (one colour, default finish, point
-    // lights) go lane-parallel through DiffusePointLanes, bit for bit the
-    // same as shade().
-    void radiance_from_hits(const CameraHits& batch, const RenderScene& scene, Sampler&,
-                            Color* radiance) const override {
+    // No random numbers, so no sample's stream is asked for, and a batch is
+    // shaded in one loop with the scene's lights and ambient light looked
+    // up once. Hits of the most common kind (one colour, default finish,
+    // point lights) go lane-parallel through DiffusePointLanes, bit for bit
+    // the same as shade().
+    void shade_camera_hits(const CameraHits& batch, const RenderScene& scene, Color* radiance) const override {
         const SceneLighting lighting(scene);
         const DiffusePointLanes lanes(lighting.lights, lighting.ambient_light, m_with_ambient);
         constexpr int kLanes = DiffusePointLanes::kLanes;
@@ -94,13 +61,13 @@ public:
                     shaded[k] ? lane_radiance[k] : shade(*lane_ray[k], lane_hit[k], scene, lighting);
             waiting = 0;
         };
-        for (int i = 0; i < batch.count; ++i) {
+        for (int i = 0; i < batch.count(); ++i) {
             const Hit* hit = batch.hit(i);
             if (!lanes.usable() || !hit || !DiffusePointLanes::covers(*hit)) {
-                radiance[i] = shade(batch.rays[i], hit, scene, lighting);
+                radiance[i] = shade(batch.ray(i), hit, scene, lighting);
                 continue;
             }
-            lane_ray[waiting] = &batch.rays[i];
+            lane_ray[waiting] = &batch.ray(i);
             lane_hit[waiting] = hit;
             lane_sample[waiting++] = i;
             if (waiting == kLanes) shade_lanes();
@@ -109,9 +76,6 @@ public:
     }
 
     bool is_deterministic() const override { return true; }
-    std::unique_ptr<Sampler> make_sampler(std::uint64_t seed) const override {
-        return std::make_unique<LazySampler>(Integrator::make_sampler(seed));
-    }
 
 private:
     struct SceneLighting {

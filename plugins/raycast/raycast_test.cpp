@@ -1,12 +1,13 @@
-// raycast's lazy sampler and its batch shading (radiance_from_hits, in
-// raycast.cpp) change nothing in the image: at one sample per pixel and
-// with several, where the host jitters camera rays with the sampler's
-// values, the film is bit for bit the one that radiance() ray by ray with
-// the default sampler gives.
+// raycast's batch shading (shade_camera_hits in raycast.cpp, lane by lane
+// through DiffusePointLanes) changes nothing in the image: at one sample
+// per pixel and with several, where the host jitters camera rays with the
+// sampler's values, the film is bit for bit the one shade_camera_hit() hit
+// by hit (the SDK's default batch) gives.
 #include <memory>
 
 #include <gtest/gtest.h>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
 #include "lancer/scene_graph.h"
@@ -14,12 +15,13 @@
 namespace lancer::test {
 namespace {
 
-// raycast's radiance with the Integrator's default sampler.
-class WithDefaultSampler final : public Integrator {
+// raycast's shading hit by hit, through the SDK's default batch.
+class HitByHit final : public Integrator {
 public:
-    explicit WithDefaultSampler(const Integrator& inner) : m_inner(inner) {}
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const override {
-        return m_inner.radiance(ray, scene, sampler);
+    explicit HitByHit(const Integrator& inner) : m_inner(inner) {}
+    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
+                           Sampler& sampler) const override {
+        return m_inner.shade_camera_hit(ray, hit, scene, sampler);
     }
     bool is_deterministic() const override { return m_inner.is_deterministic(); }
 
@@ -66,11 +68,11 @@ sg::SceneGraph sphere_scene() {
     return graph;
 }
 
-TEST(RaycastSampler, ImageIsTheDefaultSamplersRayByRayBitForBit) {
+TEST(RaycastBatch, ImageIsHitByHitShadingsBitForBit) {
     Plugin plugin = load_plugin("raycast");
     const auto raycast = plugin.descriptor->create(resolve_parameters(*plugin.descriptor, {}, {}));
-    const WithDefaultSampler reference(*raycast);
-    const auto scene = RenderScene::compile(sphere_scene());
+    const HitByHit reference(*raycast);
+    const auto scene = compile_scene(sphere_scene());
     for (const std::uint32_t samples : {1u, 4u}) {
         SCOPED_TRACE(samples);
         RenderOptions options;
@@ -79,21 +81,23 @@ TEST(RaycastSampler, ImageIsTheDefaultSamplersRayByRayBitForBit) {
         options.samples_per_pixel = samples;
         options.threads = 2;
         options.progress = ProgressMode::Quiet;
-        Film lazy(24, 24), plain(24, 24);
-        render_image(*scene, *raycast, options, lazy);
+        Film batch(24, 24), plain(24, 24);
+        render_image(*scene, *raycast, options, batch);
         render_image(*scene, reference, options, plain);
         int lit_pixels = 0, edge_pixels = 0;  // antialiased: the jitter did reach the image
         for (int y = 0; y < 24; ++y)
             for (int x = 0; x < 24; ++x) {
-                const Color a = lazy.mean(x, y), b = plain.mean(x, y);
+                const Color a = batch.mean(x, y), b = plain.mean(x, y);
                 EXPECT_EQ(a.r, b.r) << x << "," << y;
                 EXPECT_EQ(a.g, b.g) << x << "," << y;
                 EXPECT_EQ(a.b, b.b) << x << "," << y;
                 if (a.r > 0.0f) ++lit_pixels;
-                if (a.r > 0.0f && lazy.variance_of_mean(x, y).r > 0.0f) ++edge_pixels;
+                if (a.r > 0.0f && batch.variance_of_mean(x, y).r > 0.0f) ++edge_pixels;
             }
         EXPECT_GT(lit_pixels, 50);
-        if (samples > 1) EXPECT_GT(edge_pixels, 0);
+        if (samples > 1) {
+            EXPECT_GT(edge_pixels, 0);
+        }
     }
 }
 

@@ -41,12 +41,12 @@ namespace {
 
 using namespace lancer;
 
-class ShadowIntegrator final : public FirstHitIntegrator {
+class ShadowIntegrator final : public Integrator {
 public:
     ShadowIntegrator(int area_samples, bool with_ambient)
         : m_area_samples(area_samples), m_with_ambient(with_ambient) {}
 
-    Color radiance_from_hit(const Ray& ray, const Hit* found, const RenderScene& scene,
+    Color shade_camera_hit(const Ray& ray, const Hit* found, const RenderScene& scene,
                             Sampler& sampler) const override {
         if (!found) return scene.background(ray);
         const Hit& hit = *found;

@@ -1,4 +1,5 @@
 // The shadow integrator against scenes whose shadows geometry predicts.
+#include "lancer/host/scene_compiler.h"
 #include <cmath>
 
 #include "../seed_integrators_test.h"
@@ -44,7 +45,7 @@ float lit_ground_radiance(double x) {
 }
 
 TEST(ShadowIntegrator, GroundBelowFloatingSphereIsInFullShadow) {
-    const auto scene = RenderScene::compile(floating_sphere_scene());
+    const auto scene = compile_scene(floating_sphere_scene());
     const auto shadow = load_integrator("shadow", *scene);
     const Color below = mean_radiance(*shadow, *scene, ray_to_ground(0.0));
     // Only the ambient term remains: 0.1 * white * ambient_light 1.
@@ -54,7 +55,7 @@ TEST(ShadowIntegrator, GroundBelowFloatingSphereIsInFullShadow) {
 }
 
 TEST(ShadowIntegrator, ShadowEdgeLiesWhereGeometrySays) {
-    const auto scene = RenderScene::compile(floating_sphere_scene());
+    const auto scene = compile_scene(floating_sphere_scene());
     const auto shadow = load_integrator("shadow", *scene);
     const double edge = analytic_shadow_radius();  // 1.690 for these sizes
     for (double side : {-1.0, 1.0}) {
@@ -68,7 +69,7 @@ TEST(ShadowIntegrator, ShadowEdgeLiesWhereGeometrySays) {
 }
 
 TEST(ShadowIntegrator, EqualsRaycastWhereNothingOccludes) {
-    const auto scene = RenderScene::compile(floating_sphere_scene());
+    const auto scene = compile_scene(floating_sphere_scene());
     const auto shadow = load_integrator("shadow", *scene);
     const auto raycast = load_integrator("raycast", *scene);
     for (double x : {2.0, 3.5, -6.0}) {
@@ -82,7 +83,7 @@ TEST(ShadowIntegrator, EqualsRaycastWhereNothingOccludes) {
 TEST(ShadowIntegrator, FullyTransmittingBlockerCastsNoShadow) {
     sg::SceneGraph graph = floating_sphere_scene();
     graph.objects[1].material = material([](sg::Material& m) { m.pigment.color.transmit = 1.0; });
-    const auto scene = RenderScene::compile(graph);
+    const auto scene = compile_scene(graph);
     const auto shadow = load_integrator("shadow", *scene);
     EXPECT_NEAR(mean_radiance(*shadow, *scene, ray_to_ground(0.0)).g, lit_ground_radiance(0.0), 1e-4f);
 }
@@ -95,8 +96,8 @@ TEST(ShadowIntegrator, AreaSamplesSoftenTheShadowEdge) {
     graph.lights = {square_light({0.0, kLightHeight, 0.0}, 2.0, sg::Vec3(kLightColor))};
     sg::SceneGraph unoccluded_graph = graph;
     unoccluded_graph.objects.pop_back();  // the sphere
-    const auto scene = RenderScene::compile(graph);
-    const auto unoccluded = RenderScene::compile(unoccluded_graph);
+    const auto scene = compile_scene(graph);
+    const auto unoccluded = compile_scene(unoccluded_graph);
     const auto hard = load_integrator("shadow", *scene);
     const auto soft = load_integrator("shadow", *scene, {{"area_samples", "16"}});
     EXPECT_TRUE(hard->is_deterministic());
@@ -122,7 +123,7 @@ TEST(ShadowIntegrator, AreaSamplesConvergeToTheLampsDirectLight) {
     sg::SceneGraph graph;
     graph.objects.push_back(plane({0.0, 1.0, 0.0}, 0.0, default_material()));
     graph.lights.push_back(square_light({0.0, 1.0, 0.0}, 1.0, sg::Vec3(10.0)));
-    const auto scene = RenderScene::compile(graph);
+    const auto scene = compile_scene(graph);
     const auto soft = load_integrator("shadow", *scene, {{"area_samples", "16"}});
     const double x = 0.5 / 1.0;  // half side over height
     const double corner = 2.0 * x / std::sqrt(1.0 + x * x) * std::atan(x / std::sqrt(1.0 + x * x)) / (2.0 * M_PI);

@@ -66,7 +66,8 @@ public:
         m_options.min_weight = scene.options().adc_bailout;
     }
 
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const override {
+    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
+                           Sampler& sampler) const override {
         const auto lights_with_shadows = [&scene](const ShadingContext& at, const Color& diffuse_scale,
                                                   Sampler&) {
             // A perfect mirror without highlights needs no shadow rays.
@@ -75,7 +76,7 @@ public:
             local.diffuse += opaque_ambient(scene, at);
             return local;
         };
-        return trace_specular(ray, scene, sampler, m_options, lights_with_shadows);
+        return shade_specular(ray, hit, scene, sampler, m_options, lights_with_shadows);
     }
 
     bool is_deterministic() const override { return true; }

@@ -1,5 +1,6 @@
 // The whitted integrator on scenes with known answers: invisible glass,
 // mirrors, total internal reflection, POV-Ray's depth and bailout limits.
+#include "lancer/host/scene_compiler.h"
 #include <cmath>
 
 #include "../seed_integrators_test.h"
@@ -35,8 +36,8 @@ TEST(WhittedIntegrator, FullyTransmittingSphereWithIorOneIsInvisible) {
         m.pigment.color.transmit = 1.0;
         m.interior.ior = 1.0;
     }));
-    const auto with_sphere = RenderScene::compile(room(glass));
-    const auto without_sphere = RenderScene::compile(room(std::nullopt));
+    const auto with_sphere = compile_scene(room(glass));
+    const auto without_sphere = compile_scene(room(std::nullopt));
     const auto whitted = load_integrator("whitted", *with_sphere);
     const Film seen = render_small(*with_sphere, *whitted, 32, 24);
     const Film reference = render_small(*without_sphere, *whitted, 32, 24);
@@ -61,7 +62,7 @@ sg::SceneGraph mirror_facing_wall(sg::MaterialRef mirror) {
 const Ray kDownAt45 = ray_towards(Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 0.0f, 1.0f));
 
 TEST(WhittedIntegrator, MirrorShowsWallColourTimesReflectance) {
-    const auto scene = RenderScene::compile(mirror_facing_wall(material([](sg::Material& m) {
+    const auto scene = compile_scene(mirror_facing_wall(material([](sg::Material& m) {
         m.finish.diffuse = 0.0;
         m.finish.ambient = sg::Vec3(0.0);
         m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.7);
@@ -74,7 +75,7 @@ TEST(WhittedIntegrator, MirrorShowsWallColourTimesReflectance) {
 TEST(WhittedIntegrator, MirrorShowsNoDiffuse) {
     // reflection 1 with POV's default diffuse 0.6 and ambient 0.1, lit from
     // above: the seed's mirror shows only the wall.
-    const auto scene = RenderScene::compile(mirror_facing_wall(material([](sg::Material& m) {
+    const auto scene = compile_scene(mirror_facing_wall(material([](sg::Material& m) {
         m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(1.0);
     })));
     const auto whitted = load_integrator("whitted", *scene);
@@ -105,7 +106,7 @@ sg::SceneGraph glass_slab() {
 }
 
 TEST(WhittedIntegrator, TotalInternalReflectionAtGrazingAngle) {
-    const auto scene = RenderScene::compile(glass_slab());
+    const auto scene = compile_scene(glass_slab());
     for (const char* fresnel : {"false", "true"}) {
         const auto whitted = load_integrator("whitted", *scene, {{"fresnel", fresnel}});
         // sin(incidence) = 0.995 > 1/1.5: no light crosses the top face.
@@ -117,7 +118,7 @@ TEST(WhittedIntegrator, TotalInternalReflectionAtGrazingAngle) {
 }
 
 TEST(WhittedIntegrator, SteepRayLeavesTheDenseMedium) {
-    const auto scene = RenderScene::compile(glass_slab());
+    const auto scene = compile_scene(glass_slab());
     const Ray steep{Vec3(0.0f, -0.5f, 0.0f), glm::normalize(Vec3(0.5f, 1.0f, 0.0f))};
     // Fixed coefficients: all of the transparency passes into the sky.
     const auto fixed = load_integrator("whitted", *scene);
@@ -143,7 +144,7 @@ TEST(WhittedIntegrator, FresnelGlassWithFresnelReflectionReflectsOnce) {
         m.interior.ior = 1.5;
     })));
     graph.objects.push_back(plane({0.0, 1.0, 0.0}, -2.0, flat_colour({0.0, 0.0, 0.0})));
-    const auto scene = RenderScene::compile(graph);
+    const auto scene = compile_scene(graph);
     const auto whitted = load_integrator("whitted", *scene, {{"fresnel", "true"}});
     const Ray straight_down{Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, -1.0f, 0.0f)};
     const float f = fresnel_dielectric(1.0f, 1.0f / 1.5f);  // 0.04
@@ -171,7 +172,7 @@ sg::SceneGraph facing_half_mirrors(double adc_bailout) {
 const Ray kAlongZ{Vec3(0.0f), Vec3(0.0f, 0.0f, 1.0f)};
 
 TEST(WhittedIntegrator, DepthFollowsPovRayLevels) {
-    const auto scene = RenderScene::compile(facing_half_mirrors(1e-6));
+    const auto scene = compile_scene(facing_half_mirrors(1e-6));
     // Default: the scene's max_trace_level 5 (camera ray = level 1).
     EXPECT_NEAR(mean_radiance(*load_integrator("whitted", *scene), *scene, kAlongZ).g, 1.0f - 1.0f / 32.0f, 1e-5f);
     EXPECT_NEAR(mean_radiance(*load_integrator("whitted", *scene, {{"max_depth", "1"}}), *scene, kAlongZ).g, 0.5f,
@@ -182,7 +183,7 @@ TEST(WhittedIntegrator, DepthFollowsPovRayLevels) {
 
 TEST(WhittedIntegrator, StopsWhenPathWeightFallsUnderAdcBailout) {
     // Weights 1, 1/2, 1/4, 1/8: with adc_bailout 0.2 the fourth level is not traced.
-    const auto scene = RenderScene::compile(facing_half_mirrors(0.2));
+    const auto scene = compile_scene(facing_half_mirrors(0.2));
     EXPECT_NEAR(mean_radiance(*load_integrator("whitted", *scene), *scene, kAlongZ).g, 0.875f, 1e-5f);
 }
 

@@ -20,10 +20,9 @@ class Silhouette final : public lancer::Integrator {
 public:
     explicit Silhouette(float level) : m_level(level) {}
 
-    lancer::Color radiance(const lancer::Ray& ray, const lancer::RenderScene& scene,
-                           lancer::Sampler&) const override {
-        lancer::Hit hit;
-        return scene.intersect(ray, hit) ? lancer::Color(m_level) : scene.background(ray);
+    lancer::Color shade_camera_hit(const lancer::Ray& ray, const lancer::Hit* hit,
+                                   const lancer::RenderScene& scene, lancer::Sampler&) const override {
+        return hit != nullptr ? lancer::Color(m_level) : scene.background(ray);
     }
 
     bool is_deterministic() const override { return true; }

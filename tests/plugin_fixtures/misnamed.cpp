@@ -6,7 +6,8 @@ namespace {
 
 class Black final : public lancer::Integrator {
 public:
-    lancer::Color radiance(const lancer::Ray&, const lancer::RenderScene&, lancer::Sampler&) const override {
+    lancer::Color shade_camera_hit(const lancer::Ray&, const lancer::Hit*, const lancer::RenderScene&,
+                                   lancer::Sampler&) const override {
         return lancer::Color(0.0f);
     }
 };

@@ -1,8 +1,9 @@
 // The integrator plugin ABI. A plugin is one shared library exporting
 //     extern "C" const lancer::IntegratorDescriptor* lancer_integrator_descriptor();
 // (write LANCER_EXPORT_INTEGRATOR(descriptor) at the end of the .cpp). The
-// host owns the pixel loop, film, threads, progress and output; a plugin
-// only supplies the radiance carried by one camera ray.
+// host owns the pixel loop, film, threads, progress and output; it traces
+// the camera rays and hands the plugin their hits, in batches; the plugin
+// supplies the radiance each camera ray carries (docs/plugins.md).
 #pragma once
 
 #include <cstddef>
@@ -18,91 +19,71 @@ namespace lancer {
 
 // Bump whenever a header a plugin compiles against changes layout or
 // virtual tables; the host refuses any other version.
-inline constexpr std::uint32_t kPluginAbiVersion = 4;
+inline constexpr std::uint32_t kPluginAbiVersion = 5;
 
-// One camera sample: its pixel and its index among the pixel's samples
-// (which selects its random stream).
-struct CameraSample {
-    int x = 0, y = 0;
-    std::uint32_t index = 0;
+// The random numbers of one camera sample, which the host positions: each
+// sample has a stream of its own (a function of seed, pixel and sample
+// index only), already past the host's own draws for the film point.
+class CameraSampleStreams {
+public:
+    virtual Sampler& stream(int sample) const = 0;
+
+protected:
+    ~CameraSampleStreams() = default;
 };
 
-// Camera samples whose nearest hits the host found together: sample i's
-// ray is rays[i], and its hit hits[i] when found[i] (else it escaped).
-struct CameraHits {
-    int count = 0;
-    const CameraSample* samples = nullptr;
-    const Ray* rays = nullptr;
-    const Hit* hits = nullptr;
-    const bool* found = nullptr;
-    bool camera_drew_jitter = false;  // the camera took one next_2d() of each stream
+// Camera rays the host traced together, with their nearest hits: sample i
+// looks along ray(i) and finds hit(i), null when the ray escaped.
+class CameraHits {
+public:
+    CameraHits(int count, const Ray* rays, const Hit* hits, const bool* found,
+               const CameraSampleStreams& streams)
+        : m_count(count), m_rays(rays), m_hits(hits), m_found(found), m_streams(&streams) {}
 
-    const Hit* hit(int i) const { return found[i] ? &hits[i] : nullptr; }
-    // Positions `sampler` where radiance() would find sample i's stream:
-    // started, and past the camera's jitter.
-    void position(Sampler& sampler, int i) const {
-        sampler.start_sample(samples[i].x, samples[i].y, samples[i].index);
-        if (camera_drew_jitter) sampler.next_2d();
-    }
+    int count() const { return m_count; }
+    const Ray& ray(int i) const { return m_rays[i]; }
+    const Hit* hit(int i) const { return m_found[i] ? &m_hits[i] : nullptr; }
+    // Sample i's random numbers. Positioning a stream costs a hash: an
+    // integrator that draws no random numbers should not ask for it.
+    Sampler& sampler(int i) const { return m_streams->stream(i); }
+
+private:
+    int m_count;
+    const Ray* m_rays;
+    const Hit* m_hits;
+    const bool* m_found;
+    const CameraSampleStreams* m_streams;
 };
 
 class Integrator {
 public:
     virtual ~Integrator() = default;
-    // Once per render, before any radiance() call (precomputation).
+    // Once per render, before any shading (precomputation). The scene is the
+    // one every later call receives.
     virtual void prepare(const RenderScene& scene) {}
-    // Radiance arriving at the camera along `ray`. Called concurrently from
-    // many threads: must not mutate the integrator. Use only `sampler` for
+    // Radiance arriving at the camera along `ray`, whose nearest hit the
+    // host found (null: the ray escaped). Called concurrently from many
+    // threads: must not mutate the integrator. Use only `sampler` for
     // randomness.
-    virtual Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const = 0;
-    // Opt-in for integrators whose radiance() begins by finding the ray's
-    // nearest hit: when true, the host finds the camera rays' hits itself,
-    // tracing neighbouring rays together (RenderScene::intersect_coherent,
-    // faster than one by one), and calls radiance_from_hit() instead of
-    // radiance(). radiance() must still work and give the same result.
-    virtual bool shades_camera_hits() const { return false; }
-    // Radiance arriving at the camera along `ray`, given its nearest hit
-    // (null: the ray hit nothing). The sampler is positioned exactly as it
-    // would be for radiance(). Same threading rules as radiance().
-    virtual Color radiance_from_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
-                                    Sampler& sampler) const {
-        return radiance(ray, scene, sampler);
+    virtual Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
+                                   Sampler& sampler) const = 0;
+    // What the host calls: radiance[i] for each sample of a batch of camera
+    // hits (up to a few hundred neighbouring samples). The default is
+    // shade_camera_hit() for each, with its own stream. An integrator may
+    // override it to shade the batch in one loop (raycast shades many hits
+    // lane by lane); the result must equal shade_camera_hit()'s bit for bit.
+    virtual void shade_camera_hits(const CameraHits& batch, const RenderScene& scene,
+                                   Color* radiance) const {
+        for (int i = 0; i < batch.count(); ++i)
+            radiance[i] = shade_camera_hit(batch.ray(i), batch.hit(i), scene, batch.sampler(i));
     }
-    // What the host calls for a batch of camera hits (up to a tile's):
-    // radiance[i] for sample i. The default positions the sampler and calls
-    // radiance_from_hit() for each; an integrator that draws no random
-    // numbers may override it to shade the batch in one loop, with no
-    // virtual call or sampler positioning per hit. The result must equal
-    // radiance_from_hit()'s bit for bit.
-    virtual void radiance_from_hits(const CameraHits& batch, const RenderScene& scene, Sampler& sampler,
-                                    Color* radiance) const {
-        for (int i = 0; i < batch.count; ++i) {
-            batch.position(sampler, i);
-            radiance[i] = radiance_from_hit(batch.rays[i], batch.hit(i), scene, sampler);
-        }
-    }
-    // True if radiance() uses no randomness: at one sample per pixel the host
+    // True if shading uses no randomness: at one sample per pixel the host
     // then traces the pixel centre; more samples antialias.
     virtual bool is_deterministic() const { return false; }
-    // The sampler the host gives radiance(); one per thread, cloned.
+    // The kind of sampler behind every stream; one per thread, cloned.
     virtual std::unique_ptr<Sampler> make_sampler(std::uint64_t seed) const {
         return make_independent_sampler(seed);
     }
-};
-
-// Base for integrators that shade the camera ray's nearest hit: radiance()
-// is intersect() then radiance_from_hit(), so the host's batched path and
-// the ray-by-ray path agree by construction. Implement radiance_from_hit().
-class FirstHitIntegrator : public Integrator {
-public:
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const final {
-        Hit hit;
-        const bool found = scene.intersect(ray, hit);
-        return radiance_from_hit(ray, found ? &hit : nullptr, scene, sampler);
-    }
-    bool shades_camera_hits() const override { return true; }
-    Color radiance_from_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
-                            Sampler& sampler) const override = 0;
 };
 
 struct IntegratorDescriptor {

@@ -4,6 +4,7 @@
 // is inverse-square unless the scene gives POV's fade_distance/fade_power.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "lancer/hit.h"
@@ -50,13 +51,78 @@ public:
     // directional lights are their own proxy.
     virtual const Light& proxy() const { return *this; }
 
-    // True for a point light without fade or pattern whose sample() at any
-    // p with squared distance d2 in (kPlainRangeLow, kPlainRangeHigh) is, in
-    // float: wi = (position - p) / sqrt(d2), radiance = intensity * (1 /
-    // sqrt(d2))^2, pdf 1. Lets an integrator evaluate many such samples at
-    // once, bit for bit as sample() would.
-    virtual bool inverse_square_point(Vec3& position, Color& intensity) const { return false; }
-    static constexpr float kPlainRangeLow = 1e-30f, kPlainRangeHigh = 1e30f;
+    // This light's parameters as `Parameters` (PointLightParameters,
+    // DirectionalLightParameters, RectangleLightParameters,
+    // SphereLightParameters, below), or null when the light is of another
+    // kind. For integrators that evaluate a kind of light themselves; new
+    // kinds of light add a parameter struct, not a method.
+    template <class Parameters>
+    const Parameters* parameters() const {
+        return static_cast<const Parameters*>(parameters_of(Parameters::kKind));
+    }
+
+protected:
+    // The parameter struct of `kind` when this light is of that kind.
+    virtual const void* parameters_of(Kind kind) const { return nullptr; }
 };
+
+// POV's point light; also the proxy of every area light and emitter.
+struct PointLightParameters {
+    static constexpr Light::Kind kKind = Light::Kind::Point;
+    Vec3 position{0.0f};
+    Color intensity{0.0f};       // radiant intensity (W/sr) on the pattern's axis
+    float fade_distance = 0.0f;  // POV's fade; 0: inverse-square falloff
+    float fade_power = 0.0f;
+    Vec3 pattern_axis{0.0f};     // non-zero: a cosine pattern about it (proxies of flat emitters)
+    bool one_sided = false;      // pattern max(0, cos) rather than |cos|
+
+    // Falls off as 1/d^2 in every direction: sample() is plain_point_incidence's
+    // arithmetic wherever in_plain_point_range(d^2).
+    bool is_plain_inverse_square() const { return fade_distance == 0.0f && pattern_axis == Vec3(0.0f); }
+};
+
+// POV's `parallel` light: the same irradiance from one direction everywhere.
+struct DirectionalLightParameters {
+    static constexpr Light::Kind kKind = Light::Kind::Directional;
+    Vec3 to_light{0.0f, 1.0f, 0.0f};  // unit
+    Color irradiance{0.0f};           // on a surface facing the light
+};
+
+// lancer's physical rectangle lamp: centre +- axis1/2 +- axis2/2, emitting
+// on the side of axis1 x axis2.
+struct RectangleLightParameters {
+    static constexpr Light::Kind kKind = Light::Kind::Rectangle;
+    Vec3 center{0.0f};
+    Vec3 axis1{0.0f};
+    Vec3 axis2{0.0f};
+    Color radiance{0.0f};
+};
+
+// lancer's physical sphere lamp.
+struct SphereLightParameters {
+    static constexpr Light::Kind kKind = Light::Kind::Sphere;
+    Vec3 center{0.0f};
+    float radius = 0.0f;
+    Color radiance{0.0f};
+};
+
+// A plain inverse-square point light at squared distance d2 from the
+// shading point, in float: the one copy of the arithmetic, which
+// PointLight::sample and lane-parallel shading (plugins/raycast) both use,
+// so they agree bit for bit. Float is exact enough, and cannot overflow,
+// only inside in_plain_point_range(d2); elsewhere sample() works in double.
+struct PointIncidence {
+    float distance;
+    float inverse_distance;  // wi = (position - p) * inverse_distance
+    float falloff;           // radiance = intensity * falloff
+};
+inline bool in_plain_point_range(float distance_squared) {
+    return distance_squared > 1e-30f && distance_squared < 1e30f;
+}
+inline PointIncidence plain_point_incidence(float distance_squared) {
+    const float distance = std::sqrt(distance_squared);
+    const float inverse_distance = 1.0f / distance;
+    return {distance, inverse_distance, inverse_distance * inverse_distance};
+}
 
 }  // namespace lancer

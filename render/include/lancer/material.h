@@ -53,6 +53,14 @@ struct MaterialParameters {
     float ior = 1.0f;
 };
 
+// The diffuse lobe's weight on the pigment: diffuse * opacity / pi * shape
+// (shape is brilliance's cos^(brilliance-1)). The one copy of the
+// arithmetic, shared by Material::diffuse_brdf and lane-parallel shading
+// (plugins/raycast), so they agree bit for bit.
+inline float diffuse_lobe_weight(float diffuse, float opacity, float shape) {
+    return diffuse * opacity * (1.0f / kPi) * shape;
+}
+
 class Material {
 public:
     explicit Material(const MaterialParameters& parameters);
@@ -94,7 +102,7 @@ public:
         const float opacity = 1.0f - transparency(surface);
         float shape = 1.0f;
         if (m_params.brilliance != 1.0f) shape = std::pow(cos_i, m_params.brilliance - 1.0f);
-        return m_params.diffuse * opacity * (1.0f / kPi) * shape * surface.pigment;
+        return diffuse_lobe_weight(m_params.diffuse, opacity, shape) * surface.pigment;
     }
     // The glossy part alone (phong + specular).
     Color glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo,

@@ -1,6 +1,7 @@
 // The compiled, world-space scene integrators query: geometry (Embree behind
 // the scenes), materials, lights with their proxies, camera, background.
-// Built once per render from the scene graph; immutable and thread-safe.
+// The host compiles it once per render (lancer/host/scene_compiler.h);
+// integrators only query it. Immutable and thread-safe.
 #pragma once
 
 #include <memory>
@@ -14,10 +15,6 @@
 
 namespace lancer {
 
-namespace sg {
-struct SceneGraph;
-}
-
 struct Bounds {
     Vec3 lower{kInfinity};
     Vec3 upper{-kInfinity};
@@ -30,21 +27,20 @@ struct SceneOptions {
     Color ambient_light{1.0f};
 };
 
+enum class RayCoherence { Incoherent, Coherent };
+
 class RenderScene {
 public:
-    // Builds everything the scene uses and nothing else. Throws
-    // lancer::SceneError (render/errors.h) with a source location on bad
-    // input (unreadable image, degenerate geometry that cannot be rendered).
-    static std::unique_ptr<RenderScene> compile(const sg::SceneGraph& graph);
     virtual ~RenderScene() = default;
 
     // Nearest hit along the ray within [t_min, t_max]; false if none.
     virtual bool intersect(const Ray& ray, Hit& hit) const = 0;
     // intersect() for `count` rays at once; found[i] tells whether hits[i]
-    // was filled. Coherent rays (neighbouring camera rays) are traced
-    // together, which is faster than one by one; the results are the same.
-    // The default asks intersect() ray by ray.
-    virtual void intersect_coherent(const Ray* rays, int count, Hit* hits, bool* found) const {
+    // was filled. The results are intersect()'s, bit for bit. Coherent rays
+    // (neighbouring camera rays, nearly parallel) are traced in packets,
+    // which is faster than one by one; incoherent ones (bounces) one by one.
+    virtual void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found,
+                                 RayCoherence coherence) const {
         for (int i = 0; i < count; ++i) found[i] = intersect(rays[i], hits[i]);
     }
     // True if any shadow-casting surface lies within [t_min, t_max]. Area

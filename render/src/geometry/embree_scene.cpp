@@ -21,6 +21,7 @@
 #include "lancer/scene_error.h"
 #include "lancer/scene_graph.h"
 #include "host/scene_builder.h"
+#include "lancer/host/scene_compiler.h"
 
 namespace lancer {
 namespace {
@@ -234,7 +235,7 @@ void analytic_bounds(const RTCBoundsFunctionArguments* args) {
 }
 
 // Embree calls these with one ray, or with a packet of N when rays are
-// traced together (intersect_coherent); valid[i] says which lanes are live.
+// traced together (intersect_batch); valid[i] says which lanes are live.
 void analytic_intersect(const RTCIntersectFunctionNArguments* args) {
     const auto* group = static_cast<const AnalyticGroup*>(args->geometryUserPtr);
     const Instance& instance = group->data->instances[group->instances[args->primID]];
@@ -330,7 +331,8 @@ public:
     }
 
     bool intersect(const Ray& ray, Hit& hit) const override;
-    void intersect_coherent(const Ray* rays, int count, Hit* hits, bool* found) const override;
+    void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found,
+                         RayCoherence coherence) const override;
     bool occluded(const Ray& ray) const override;
     const std::vector<const Light*>& lights() const override { return m_data->lights; }
     const std::vector<const Light*>& local_lights() const override { return m_data->local_lights; }
@@ -342,7 +344,7 @@ public:
 private:
     void build();
     RTCGeometry make_triangles(const MeshData& mesh, const std::vector<float>& positions);
-    // intersect_coherent's stages (see there); packets of kPacketLanes rays.
+    // intersect_batch's stages for coherent rays (see there); packets of kPacketLanes rays.
     static constexpr int kPacketLanes = kMaxLanes;
     void trace_packet(const Ray* rays, int lanes, PacketAnswers& answers) const;
     void prefetch_corner_indices(const PacketAnswers& answers, int lanes) const;
@@ -468,8 +470,7 @@ void EmbreeScene::build() {
         if (mesh.indices.empty()) continue;
         if (instance.mesh_in_world) {
             attach(make_triangles(mesh, instance.world_positions), GeometryEntry{nullptr, index});
-            const sg::TriangleMesh& source = *mesh.source;
-            if (m_faces_are_triangles[index] && source.normals.empty() && source.uvs.empty() &&
+            if (m_faces_are_triangles[index] && mesh.normals.empty() && mesh.uvs.empty() &&
                 instance.face_materials.empty()) {
                 const unsigned id = unsigned(m_geometries.size() - 1);
                 if (m_plain_triangles.size() <= id) m_plain_triangles.resize(id + 1);
@@ -530,7 +531,6 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
 void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_triangles, std::uint32_t primitive,
                                     float u, float v, Hit& hit) const {
     const MeshData& mesh = *instance.mesh;
-    const sg::TriangleMesh& source = *mesh.source;
     // Skipping the lookup when triangle i is face i saves one more cold load.
     const std::uint32_t face_index = faces_are_triangles ? primitive : mesh.face_of_triangle[primitive];
     const std::vector<float>& positions = traced_positions(instance);
@@ -566,14 +566,14 @@ void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_tri
     // The source face (40 bytes a triangle, cold in cache: Embree traces its
     // own copies of the vertices) is read only when the mesh has per-vertex
     // normals or texture coordinates to interpolate.
-    const bool has_normals = !source.normals.empty(), has_uvs = !source.uvs.empty();
-    const sg::TriangleMesh::Face* face = has_normals || has_uvs ? &source.faces[face_index] : nullptr;
+    const bool has_normals = !mesh.normals.empty(), has_uvs = !mesh.uvs.empty();
+    const sg::TriangleMesh::Face* face = has_normals || has_uvs ? &mesh.faces[face_index] : nullptr;
     if (has_normals && face->normal[0] >= 0) {
         DVec3 interpolated(0.0);
         const double weight[3] = {b0, b1, b2};
         for (int k = 0; k < 3; ++k) {
             const int n = face->normal[k];
-            if (n >= 0 && std::size_t(n) < source.normals.size()) interpolated += weight[k] * source.normals[n];
+            if (n >= 0 && std::size_t(n) < mesh.normals.size()) interpolated += weight[k] * mesh.normals[n];
         }
         if (glm::length(interpolated) > 0.0) {
             const Vec3 shading(instance.placement.normal_to_world_unit(interpolated));
@@ -587,7 +587,7 @@ void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_tri
         const double weight[3] = {b0, b1, b2};
         for (int k = 0; k < 3; ++k) {
             const int index = face->uv[k];
-            if (index >= 0 && std::size_t(index) < source.uvs.size()) uv += weight[k] * source.uvs[index];
+            if (index >= 0 && std::size_t(index) < mesh.uvs.size()) uv += weight[k] * mesh.uvs[index];
         }
         hit.uv = Vec2(uv);
     } else {
@@ -679,7 +679,13 @@ void EmbreeScene::prefetch_corners(const PacketAnswers& answers, int lanes) cons
     }
 }
 
-void EmbreeScene::intersect_coherent(const Ray* rays, int count, Hit* hits, bool* found) const {
+void EmbreeScene::intersect_batch(const Ray* rays, int count, Hit* hits, bool* found,
+                                  RayCoherence coherence) const {
+    // Incoherent rays share too few BVH nodes for packets to pay.
+    if (coherence == RayCoherence::Incoherent) {
+        for (int i = 0; i < count; ++i) found[i] = intersect(rays[i], hits[i]);
+        return;
+    }
     // A mesh hit needs its triangle's corner indices, then the corners: two
     // dependent loads, cold in cache (Embree traverses its own copy of the
     // vertices), which would stall completion for most of a memory latency
@@ -807,7 +813,7 @@ bool EmbreeScene::occluded(const Ray& ray) const {
 
 }  // namespace
 
-std::unique_ptr<RenderScene> RenderScene::compile(const sg::SceneGraph& graph) {
+std::unique_ptr<RenderScene> compile_scene(sg::SceneGraph graph) {
     return std::make_unique<EmbreeScene>(build_scene_data(graph));
 }
 

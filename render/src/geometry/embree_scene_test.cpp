@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/render_scene.h"
 #include "lancer/scene_error.h"
 #include "scene_test_helpers.h"
@@ -18,7 +19,7 @@ using namespace lancer::testing;
 std::unique_ptr<RenderScene> compile_objects(std::vector<sg::Object> objects) {
     sg::SceneGraph graph;
     graph.objects = std::move(objects);
-    return RenderScene::compile(graph);
+    return compile_scene(graph);
 }
 
 TEST(EmbreeScene, SphereHitNormalAndUv) {
@@ -175,7 +176,7 @@ void expect_batches_find_what_single_rays_find(const RenderScene& scene, int bat
         const int count = int(std::min<std::size_t>(batch_size, rays.size() - first));
         std::vector<Hit> batch(count);
         std::unique_ptr<bool[]> found(new bool[count]);
-        scene.intersect_coherent(&rays[first], count, batch.data(), found.get());
+        scene.intersect_batch(&rays[first], count, batch.data(), found.get(), RayCoherence::Coherent);
         for (int i = 0; i < count; ++i) {
             Hit single;
             const bool single_found = scene.intersect(rays[first + i], single);
@@ -220,7 +221,7 @@ TEST(EmbreeScene, CoherentBatchesFindWhatSingleRaysFind) {
 }
 
 // Without planes, packet lanes on plain world meshes take the lane-parallel
-// completion, and long batches go through intersect_coherent's pipeline.
+// completion, and long batches go through intersect_batch's pipeline.
 TEST(EmbreeScene, CoherentBatchesWithoutPlanesFindWhatSingleRaysFind) {
     const auto scene = compile_objects(shapes_of_every_kind(false));
     expect_batches_find_what_single_rays_find(*scene, 37);
@@ -257,7 +258,7 @@ TEST(EmbreeScene, AreaLightsAreVisibleEmitters) {
     rectangle.axis2 = {0, 0, 2};
     rectangle.color = {1, 1, 1};
     graph.lights.push_back(rectangle);
-    auto scene = RenderScene::compile(graph);
+    auto scene = compile_scene(graph);
     ASSERT_EQ(scene->lights().size(), 1u);
     ASSERT_EQ(scene->local_lights().size(), 1u);
     EXPECT_EQ(scene->lights()[0]->kind(), Light::Kind::Rectangle);
@@ -306,7 +307,7 @@ TEST(EmbreeScene, OptionsBackgroundAndDefaultCamera) {
     sg::SceneGraph graph;
     graph.background = {0.1, 0.2, 0.3};
     graph.global.max_trace_level = 9;
-    auto scene = RenderScene::compile(graph);
+    auto scene = compile_scene(graph);
     EXPECT_EQ(scene->options().max_trace_level, 9);
     EXPECT_NEAR(scene->background(Ray{}).b, 0.3f, 1e-7f);
     EXPECT_NEAR(scene->camera().right().x, 1.33f, 1e-7f);

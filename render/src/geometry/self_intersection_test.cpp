@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/render_scene.h"
 #include "scene_test_helpers.h"
 
@@ -74,7 +75,7 @@ TEST_P(SelfIntersection, Sphere) {
     const glm::dvec3 centre = s * glm::dvec3(0.3, -0.2, 0.5);
     sg::SceneGraph graph;
     graph.objects.push_back(sphere_object(centre, s));
-    check_scene(*RenderScene::compile(graph), centre, s, true, "sphere at scale " + std::to_string(s));
+    check_scene(*compile_scene(graph), centre, s, true, "sphere at scale " + std::to_string(s));
 }
 
 TEST_P(SelfIntersection, RotatedScaledBox) {
@@ -86,7 +87,7 @@ TEST_P(SelfIntersection, RotatedScaledBox) {
                              glm::scale(glm::dmat4(1.0), glm::dvec3(s));
     sg::SceneGraph graph;
     graph.objects.push_back(box);
-    check_scene(*RenderScene::compile(graph), centre, s, true, "box at scale " + std::to_string(s));
+    check_scene(*compile_scene(graph), centre, s, true, "box at scale " + std::to_string(s));
 }
 
 TEST_P(SelfIntersection, WorldSpaceTriangle) {
@@ -96,7 +97,7 @@ TEST_P(SelfIntersection, WorldSpaceTriangle) {
     graph.objects.push_back(mesh_object(triangle_mesh(centre + s * glm::dvec3(-3, -2, 0.5),
                                                       centre + s * glm::dvec3(3, -1, -0.4),
                                                       centre + s * glm::dvec3(0.2, 3, 0.1))));
-    check_scene(*RenderScene::compile(graph), centre, s, false, "triangle at scale " + std::to_string(s));
+    check_scene(*compile_scene(graph), centre, s, false, "triangle at scale " + std::to_string(s));
 }
 
 TEST_P(SelfIntersection, InstancedTriangle) {
@@ -110,7 +111,7 @@ TEST_P(SelfIntersection, InstancedTriangle) {
     graph.objects.push_back(mesh_object(mesh, nullptr, place));
     // A second use far away makes it an Embree instance.
     graph.objects.push_back(mesh_object(mesh, nullptr, glm::translate(glm::dmat4(1.0), glm::dvec3(1e3 * s))));
-    check_scene(*RenderScene::compile(graph), centre, s, false, "instance at scale " + std::to_string(s));
+    check_scene(*compile_scene(graph), centre, s, false, "instance at scale " + std::to_string(s));
 }
 
 // Shadow rays towards a point light lying exactly on a plane (analytic and
@@ -125,7 +126,7 @@ TEST_P(SelfIntersection, LightOnASurfaceIsNotShadowedByIt) {
             graph.objects.push_back(
                 mesh_object(triangle_mesh(s * glm::dvec3(-100, 0, -100), s * glm::dvec3(100, 0, -100),
                                           s * glm::dvec3(0, 0, 200))));
-        auto scene = RenderScene::compile(graph);
+        auto scene = compile_scene(graph);
         std::mt19937 rng(7);
         std::uniform_real_distribution<float> u(-5.0f, 5.0f);
         int blocked = 0;
@@ -157,7 +158,7 @@ TEST_P(SelfIntersection, AreaLightSamplesAreNotSelfShadowed) {
     rectangle.axis2 = s * glm::dvec3(0, 0.3, 1);
     graph.lights.push_back(rectangle);
     graph.objects.push_back(plane_object({0, 1, 0}, -s));
-    auto scene = RenderScene::compile(graph);
+    auto scene = compile_scene(graph);
     std::mt19937 rng(99);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     int blocked = 0, tried = 0;
@@ -183,14 +184,14 @@ TEST(SelfIntersectionFarFromOrigin, SphereBoxTriangleAtOffset1e5) {
     const glm::dvec3 centre(1e5, -1e5, 1e5);
     sg::SceneGraph sphere_graph;
     sphere_graph.objects.push_back(sphere_object(centre, 1.0));
-    check_scene(*RenderScene::compile(sphere_graph), centre, 1.0, true, "sphere at 1e5");
+    check_scene(*compile_scene(sphere_graph), centre, 1.0, true, "sphere at 1e5");
     sg::SceneGraph box_graph;
     box_graph.objects.push_back(box_object(centre - glm::dvec3(1.0), centre + glm::dvec3(1.0, 0.5, 2.0)));
-    check_scene(*RenderScene::compile(box_graph), centre, 1.0, true, "box at 1e5");
+    check_scene(*compile_scene(box_graph), centre, 1.0, true, "box at 1e5");
     sg::SceneGraph triangle_graph;
     triangle_graph.objects.push_back(mesh_object(
         triangle_mesh(centre + glm::dvec3(-3, -2, 0.5), centre + glm::dvec3(3, -1, -0.4), centre + glm::dvec3(0.2, 3, 0.1))));
-    check_scene(*RenderScene::compile(triangle_graph), centre, 1.0, false, "triangle at 1e5");
+    check_scene(*compile_scene(triangle_graph), centre, 1.0, false, "triangle at 1e5");
 }
 
 }  // namespace

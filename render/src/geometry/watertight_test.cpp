@@ -15,6 +15,7 @@
 #include <random>
 #include <tuple>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/render_scene.h"
 #include "scene_test_helpers.h"
 
@@ -111,7 +112,7 @@ TEST_P(Watertight, RaysAtSharedEdgesNeverLeaveAClosedMesh) {
     if (instanced)
         graph.objects.push_back(mesh_object(mesh, solid_material(glm::dvec3(0.5)),
                                             glm::translate(glm::dmat4(1.0), centre + glm::dvec3(100.0 * scale))));
-    const auto scene = RenderScene::compile(graph);
+    const auto scene = compile_scene(graph);
     const Leaks leaks = shoot(*scene, *mesh, placement, instanced ? glm::dvec3(0.0) : centre, scale);
     EXPECT_EQ(leaks.edge_leaks, 0) << "of " << leaks.edge_rays << " rays aimed at shared edges";
     // Exactly at a vertex Embree's robust test can still let a ray through:

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <thread>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/host/checkpoint.h"
 #include "lancer/host/counting_scene.h"
 #include "lancer/host/estimate.h"
@@ -25,12 +26,11 @@ using namespace lancer::testing;
 namespace fs = std::filesystem;
 
 // Noise whose amplitude depends on the pixel: constant on the left half of
-// the image, very noisy on the right. One ray query per sample.
+// the image, very noisy on the right. One ray query per sample: the
+// host's camera ray.
 class HalfNoisyIntegrator final : public Integrator {
 public:
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const override {
-        Hit hit;
-        scene.intersect(ray, hit);
+    Color shade_camera_hit(const Ray& ray, const Hit*, const RenderScene&, Sampler& sampler) const override {
         const float u = sampler.next_1d();
         if (ray.direction.x < 0.0f) return Color(0.5f);
         return Color(0.5f + 0.45f * (2.0f * u - 1.0f));
@@ -40,7 +40,7 @@ public:
 // Slow on purpose, so that time budgets are measurable.
 class SlowIntegrator final : public Integrator {
 public:
-    Color radiance(const Ray&, const RenderScene&, Sampler& sampler) const override {
+    Color shade_camera_hit(const Ray&, const Hit*, const RenderScene&, Sampler& sampler) const override {
         std::this_thread::sleep_for(std::chrono::microseconds(200));
         return Color(sampler.next_1d());
     }
@@ -50,7 +50,7 @@ std::unique_ptr<RenderScene> small_scene() {
     sg::SceneGraph graph;
     graph.objects.push_back(sphere_object({0, 0, 5}, 1.0));
     graph.objects.push_back(plane_object({0, 1, 0}, -1.0));
-    return RenderScene::compile(graph);
+    return compile_scene(graph);
 }
 
 RenderOptions quiet_options(int width, int height) {
@@ -175,12 +175,14 @@ TEST(Progressive, CountingSceneCountsEveryQuery) {
     options.samples_per_pixel = 4;
     options.threads = 2;
     Film film(20, 10);
+    options.ray_counter = &scene;
     const RenderStats stats = render_image(scene, integrator, options, film);
     EXPECT_EQ(stats.rays, 20u * 10u * 4u);
     EXPECT_EQ(scene.rays(), 20u * 10u * 4u);
     EXPECT_GT(stats.rays_per_second, 0.0);
     // Without the wrapper nothing is counted.
     Film plain(20, 10);
+    options.ray_counter = nullptr;
     EXPECT_EQ(render_image(*inner, integrator, options, plain).rays, 0u);
 }
 

@@ -290,10 +290,18 @@ private:
 
 // Camera samples waiting to be traced together, added in 4x4 blocks of
 // pixels: a 16x16 tile at one sample each fills it. Long batches let
-// RenderScene::intersect_coherent overlap one packet's memory accesses with
+// RenderScene::intersect_batch overlap one packet's memory accesses with
 // the next packet's tracing, and the rays are generated all at once
-// (Camera::generate_rays) from the film points.
-struct CameraBatch {
+// (Camera::generate_rays) from the film points. It positions each sample's
+// random stream when the integrator asks for it: a sample's stream starts
+// at (pixel, index) and, when the host jittered the film point, continues
+// past that draw.
+struct CameraSample {
+    int x = 0, y = 0;
+    std::uint32_t index = 0;  // among the pixel's samples: selects its stream
+};
+
+struct CameraBatch final : CameraSampleStreams {
     static constexpr int kBlock = 4;
     static constexpr int kCapacity = 16 * kBlock * kBlock;
     CameraSample samples[kCapacity];
@@ -303,6 +311,8 @@ struct CameraBatch {
     bool found[kCapacity];
     Color radiance[kCapacity];
     int size = 0;
+    Sampler* sampler = nullptr;
+    bool jittered = false;
 
     void add(int x, int y, std::uint32_t index, const Vec2& film_point) {
         samples[size] = CameraSample{x, y, index};
@@ -311,8 +321,13 @@ struct CameraBatch {
         ++size;
     }
     bool full() const { return size == kCapacity; }
-};
 
+    Sampler& stream(int i) const override {
+        sampler->start_sample(samples[i].x, samples[i].y, samples[i].index);
+        if (jittered) sampler->next_2d();
+        return *sampler;
+    }
+};
 }  // namespace
 
 RenderStats render_image(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options,
@@ -332,7 +347,7 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
     // integrator, spread over the pixel and antialias.
     const bool pixel_centre = deterministic && planner.cap() == 1;
     const Camera& camera = scene.camera();
-    const auto* counting = dynamic_cast<const CountingScene*>(&scene);
+    const CountingScene* counting = options.ray_counter;
     const std::uint64_t rays_before = counting ? counting->rays() : 0;
 
     const std::unique_ptr<Sampler> prototype = integrator.make_sampler(options.seed);
@@ -370,10 +385,8 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
     };
     double stopped_fraction = 0.0;
 
-    // Integrators that shade host-found hits get their camera rays traced
-    // in batches of neighbouring pixels (4x4 blocks of the tile), which
-    // Embree traverses together; the rest trace ray by ray themselves.
-    const bool batched = integrator.shades_camera_hits();
+    // Camera rays are traced in batches of neighbouring pixels (4x4 blocks
+    // of the tile), which Embree traverses together.
     // One batch per thread for the whole render: its 41 KB of rays and hits
     // are initialised once, not once per tile.
     tbb::enumerable_thread_specific<std::unique_ptr<CameraBatch>> batches(
@@ -386,26 +399,21 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
         std::uint64_t taken = 0;
         // The k-th sample of a pixel always uses stream k.
         auto film_point = [&](int x, int y, std::uint32_t s) {
-            if (pixel_centre && batched)  // radiance_from_hits positions the sampler itself
-                return Vec2(float(x) + 0.5f, float(y) + 0.5f);
+            if (pixel_centre) return Vec2(float(x) + 0.5f, float(y) + 0.5f);
             sampler.start_sample(x, y, s);
-            const Vec2 jitter = pixel_centre ? Vec2(0.5f) : sampler.next_2d();
+            const Vec2 jitter = sampler.next_2d();
             return Vec2(float(x) + jitter.x, float(y) + jitter.y);
         };
         CameraBatch& batch = *batches.local();
         batch.size = 0;
+        batch.sampler = &sampler;
+        batch.jittered = !pixel_centre;
         auto shade_batch = [&] {
             if (batch.size == 0) return;
             camera.generate_rays(batch.film_x, batch.film_y, batch.size, width, height, batch.rays);
-            scene.intersect_coherent(batch.rays, batch.size, batch.hits, batch.found);
-            CameraHits traced;
-            traced.count = batch.size;
-            traced.samples = batch.samples;
-            traced.rays = batch.rays;
-            traced.hits = batch.hits;
-            traced.found = batch.found;
-            traced.camera_drew_jitter = !pixel_centre;
-            integrator.radiance_from_hits(traced, scene, sampler, batch.radiance);
+            scene.intersect_batch(batch.rays, batch.size, batch.hits, batch.found, RayCoherence::Coherent);
+            const CameraHits traced(batch.size, batch.rays, batch.hits, batch.found, batch);
+            integrator.shade_camera_hits(traced, scene, batch.radiance);
             for (int i = 0; i < batch.size; ++i)
                 film.add_sample(batch.samples[i].x, batch.samples[i].y, batch.radiance[i]);
             batch.size = 0;
@@ -424,11 +432,6 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
                         const std::uint32_t count = planner.planned(x - window.x0, y - window.y0, first);
                         for (std::uint32_t s = first; s < first + count; ++s) {
                             const Vec2 point = film_point(x, y, s);
-                            if (!batched) {
-                                const Ray ray = camera.generate_ray(point.x, point.y, width, height);
-                                film.add_sample(x, y, integrator.radiance(ray, scene, sampler));
-                                continue;
-                            }
                             film.prefetch(x, y);
                             batch.add(x, y, s, point);
                             if (batch.full()) shade_batch();

@@ -10,8 +10,10 @@
 #include <OpenImageIO/imageio.h>
 
 #include "image_compare.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/host/film.h"
 #include "lancer/host/image_io.h"
+#include "lancer/host/camera_ray.h"
 #include "lancer/host/renderer.h"
 #include "scene_test_helpers.h"
 
@@ -25,31 +27,15 @@ namespace fs = std::filesystem;
 // dependence on thread or tile order would show.
 class NoisyIntegrator final : public Integrator {
 public:
-    Color radiance(const Ray& ray, const RenderScene& scene, Sampler& sampler) const override {
-        Hit hit;
-        const float depth = scene.intersect(ray, hit) ? hit.t : 0.0f;
-        return Color(sampler.next_1d(), sampler.next_1d() * depth, ray.direction.x);
-    }
-};
-
-// NoisyIntegrator's image again, through the host's batched camera hits
-// when `batched`: the two paths must agree bit for bit.
-class NoisyHitIntegrator final : public FirstHitIntegrator {
-public:
-    explicit NoisyHitIntegrator(bool batched) : m_batched(batched) {}
-    bool shades_camera_hits() const override { return m_batched; }
-    Color radiance_from_hit(const Ray& ray, const Hit* hit, const RenderScene&, Sampler& sampler) const override {
+    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene&, Sampler& sampler) const override {
         const float depth = hit ? hit->t : 0.0f;
         return Color(sampler.next_1d(), sampler.next_1d() * depth, ray.direction.x);
     }
-
-private:
-    bool m_batched;
 };
 
 class NanIntegrator final : public Integrator {
 public:
-    Color radiance(const Ray&, const RenderScene&, Sampler& sampler) const override {
+    Color shade_camera_hit(const Ray&, const Hit*, const RenderScene&, Sampler& sampler) const override {
         return sampler.next_1d() < 0.5f ? Color(NAN) : Color(1.0f);
     }
 };
@@ -58,7 +44,7 @@ std::unique_ptr<RenderScene> small_scene() {
     sg::SceneGraph graph;
     graph.objects.push_back(sphere_object({0, 0, 5}, 1.0));
     graph.objects.push_back(plane_object({0, 1, 0}, -1.0));
-    return RenderScene::compile(graph);
+    return compile_scene(graph);
 }
 
 TEST(Renderer, BitIdenticalForOneAndTwoThreads) {
@@ -100,9 +86,21 @@ TEST(Renderer, BatchedCameraHitsGiveTheSameImage) {
     options.tile_size = 7;  // blocks of 4x4 pixels cut by tile edges
     options.threads = 2;
     options.progress = ProgressMode::Quiet;
+    // The host traces batches of camera rays in packets and positions each
+    // sample's stream; the same samples one by one (intersect(), the
+    // stream started here and past the jitter) must give the same film.
+    const NoisyIntegrator integrator;
     Film one_by_one(37, 23), batched(37, 23);
-    render_image(*scene, NoisyHitIntegrator(false), options, one_by_one);
-    const RenderStats stats = render_image(*scene, NoisyHitIntegrator(true), options, batched);
+    const std::unique_ptr<Sampler> sampler = integrator.make_sampler(options.seed);
+    for (int y = 0; y < 23; ++y)
+        for (int x = 0; x < 37; ++x)
+            for (std::uint32_t s = 0; s < 3; ++s) {
+                sampler->start_sample(x, y, s);
+                const Vec2 jitter = sampler->next_2d();
+                const Ray ray = scene->camera().generate_ray(float(x) + jitter.x, float(y) + jitter.y, 37, 23);
+                one_by_one.add_sample(x, y, shade_camera_ray(integrator, ray, *scene, *sampler));
+            }
+    const RenderStats stats = render_image(*scene, integrator, options, batched);
     EXPECT_EQ(stats.samples, 37u * 23u * 3u);
     for (int y = 0; y < 23; ++y)
         for (int x = 0; x < 37; ++x) {

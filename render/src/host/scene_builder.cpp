@@ -57,7 +57,7 @@ void world_bounds(const Placement& placement, const DVec3& lower, const DVec3& u
 
 class Builder {
 public:
-    explicit Builder(const sg::SceneGraph& graph) : m_graph(graph), m_data(std::make_unique<SceneData>()) {
+    explicit Builder(sg::SceneGraph& graph) : m_graph(graph), m_data(std::make_unique<SceneData>()) {
         m_data->texture_factory = std::make_unique<TextureFactory>(m_data->texture_spaces);
     }
 
@@ -73,6 +73,7 @@ public:
         add_area_light_surfaces();
         compute_bounds();
         add_sg_lights();
+        take_mesh_hit_data();
         return std::move(m_data);
     }
 
@@ -389,7 +390,29 @@ private:
         }
     }
 
-    const sg::SceneGraph& m_graph;
+    // Moves what hits read out of each mesh when the graph being consumed
+    // holds every reference to it (always, for a parsed scene); a mesh the
+    // caller shares elsewhere is copied, so the caller's copy stays whole.
+    void take_mesh_hit_data() {
+        for (const std::unique_ptr<MeshData>& mesh : m_data->meshes) {
+            const long held_by_graph = m_mesh_uses[mesh->source.get()];
+            const bool graph_alone = mesh->source.use_count() == held_by_graph + 1;  // + MeshData's own
+            // The graph is ours to consume (build_scene_data's contract).
+            auto& source = const_cast<sg::TriangleMesh&>(*mesh->source);
+            if (graph_alone) {
+                mesh->normals = std::move(source.normals);
+                mesh->uvs = std::move(source.uvs);
+                mesh->faces = std::move(source.faces);
+            } else {
+                mesh->normals = source.normals;
+                mesh->uvs = source.uvs;
+                mesh->faces = source.faces;
+            }
+            mesh->source.reset();
+        }
+    }
+
+    sg::SceneGraph& m_graph;
     std::unique_ptr<SceneData> m_data;
     std::map<const sg::TriangleMesh*, int> m_mesh_uses;
     std::map<const sg::TriangleMesh*, const MeshData*> m_meshes;
@@ -399,6 +422,6 @@ private:
 
 }  // namespace
 
-std::unique_ptr<SceneData> build_scene_data(const sg::SceneGraph& graph) { return Builder(graph).run(); }
+std::unique_ptr<SceneData> build_scene_data(sg::SceneGraph& graph) { return Builder(graph).run(); }
 
 }  // namespace lancer

@@ -18,9 +18,15 @@ namespace lancer {
 
 enum class ShapeKind { Sphere, Box, Plane, Rectangle, Mesh };
 
-// One distinct sg::TriangleMesh, in its own object space.
+// One distinct sg::TriangleMesh, in its own object space. The render scene
+// owns everything hits read: once compiled, nothing refers to the graph.
 struct MeshData {
-    sg::MeshRef source;
+    sg::MeshRef source;  // while compiling only; null afterwards
+    // What hit completion interpolates (per-vertex normals and texture
+    // coordinates, and the faces that index them), moved out of the graph.
+    std::vector<sg::Vec3> normals;
+    std::vector<sg::Vec2> uvs;
+    std::vector<sg::TriangleMesh::Face> faces;
     std::vector<float> object_positions;      // xyz per vertex, plus one padding float
     std::vector<std::uint32_t> indices;       // three per triangle
     std::vector<std::uint32_t> face_of_triangle;
@@ -65,7 +71,8 @@ struct SceneData {
 };
 
 // Throws lancer::SceneError for what the user can fix (unreadable image,
-// mesh index out of range).
-std::unique_ptr<SceneData> build_scene_data(const sg::SceneGraph& graph);
+// mesh index out of range). Consumes the graph: a mesh that only the graph
+// holds is moved into the scene data, not copied.
+std::unique_ptr<SceneData> build_scene_data(sg::SceneGraph& graph);
 
 }  // namespace lancer

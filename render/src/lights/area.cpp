@@ -56,6 +56,7 @@ RectangleLight::RectangleLight(const AnalyticRectangle& rectangle, const Color& 
     m_radiance = Color(kPiD * glm::dvec3(color) / m_area);
     m_proxy = std::make_unique<PointLight>(Vec3(rectangle.center), kPi * color, 0.0f, 0.0f, Vec3(m_normal),
                                            /*one_sided=*/true);
+    m_parameters = {Vec3(rectangle.center), Vec3(rectangle.axis1), Vec3(rectangle.axis2), m_radiance};
 }
 
 LightSample RectangleLight::sample(const Vec3& p, const Vec2& u) const {
@@ -148,6 +149,7 @@ SphereLight::SphereLight(const DVec3& center, double radius, const Color& color)
     // Intensity Le * pi R^2 = pi * C in every direction.
     m_radiance = Color(glm::dvec3(color) / (radius * radius));
     m_proxy = std::make_unique<PointLight>(Vec3(center), kPi * color);
+    m_parameters = {Vec3(center), float(radius), m_radiance};
 }
 
 LightSample SphereLight::sample(const Vec3& p, const Vec2& u) const {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/render_scene.h"
 #include "scene_test_helpers.h"
 
@@ -26,7 +27,7 @@ std::unique_ptr<RenderScene> compile_lights(std::vector<sg::Light> lights, std::
     sg::SceneGraph graph;
     graph.lights = std::move(lights);
     graph.objects = std::move(objects);
-    return RenderScene::compile(graph);
+    return compile_scene(graph);
 }
 
 TEST(Lights, PointLightIsInverseSquareWithIntensityPiC) {

@@ -23,21 +23,15 @@ public:
     Kind kind() const override { return Kind::Point; }
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     Color power() const override;
-    const Vec3& position() const { return m_position; }
-    const Color& intensity() const { return m_intensity; }
-    bool inverse_square_point(Vec3& position, Color& intensity) const override {
-        position = m_position;
-        intensity = m_intensity;
-        return m_plain_inverse_square;
-    }
+    const Vec3& position() const { return m_parameters.position; }
+    const Color& intensity() const { return m_parameters.intensity; }
+
+protected:
+    const void* parameters_of(Kind kind) const override { return kind == kKind ? &m_parameters : nullptr; }
 
 private:
-    Vec3 m_position;
-    Color m_intensity;
-    float m_fade_distance;
-    float m_fade_power;
-    Vec3 m_pattern_axis;
-    bool m_one_sided;
+    static constexpr Kind kKind = PointLightParameters::kKind;
+    PointLightParameters m_parameters;
     // Inverse-square without a pattern: sample()'s float path applies.
     bool m_plain_inverse_square;
 };
@@ -51,9 +45,13 @@ public:
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     Color power() const override;
 
+protected:
+    const void* parameters_of(Kind kind) const override {
+        return kind == DirectionalLightParameters::kKind ? &m_parameters : nullptr;
+    }
+
 private:
-    Vec3 m_to_light;
-    Color m_irradiance;
+    DirectionalLightParameters m_parameters;
     Vec3 m_scene_center;
     float m_scene_radius;
 };
@@ -75,7 +73,13 @@ public:
     const AnalyticRectangle& rectangle() const { return m_rectangle; }
     bool emits_towards(const glm::dvec3& from_surface) const { return glm::dot(m_normal, from_surface) > 0.0; }
 
+protected:
+    const void* parameters_of(Kind kind) const override {
+        return kind == RectangleLightParameters::kKind ? &m_parameters : nullptr;
+    }
+
 private:
+    RectangleLightParameters m_parameters;
     AnalyticRectangle m_rectangle;
     glm::dvec3 m_normal;
     double m_area;
@@ -114,7 +118,13 @@ public:
     const Light& proxy() const override { return *m_proxy; }
     const Color& radiance() const { return m_radiance; }
 
+protected:
+    const void* parameters_of(Kind kind) const override {
+        return kind == SphereLightParameters::kKind ? &m_parameters : nullptr;
+    }
+
 private:
+    SphereLightParameters m_parameters;
     DVec3 m_center;
     double m_radius;
     Color m_radiance;

@@ -8,24 +8,23 @@ namespace lancer {
 
 PointLight::PointLight(const Vec3& position, const Color& intensity, float fade_distance, float fade_power,
                        const Vec3& pattern_axis, bool one_sided)
-    : m_position(position), m_intensity(intensity), m_fade_distance(fade_distance), m_fade_power(fade_power),
-      m_pattern_axis(pattern_axis), m_one_sided(one_sided),
-      m_plain_inverse_square(fade_distance == 0.0f && pattern_axis == Vec3(0.0f)) {}
+    : m_parameters{position, intensity, fade_distance, fade_power, pattern_axis, one_sided},
+      m_plain_inverse_square(m_parameters.is_plain_inverse_square()) {}
 
 LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     // Float where nothing can overflow or underflow: a squared distance
     // well inside float's range. Every shading point of an ordinary scene
     // takes this path; it is half the cost of the double one below.
-    const Vec3 to_light_float = m_position - p;
+    const PointLightParameters& light = m_parameters;
+    const Vec3 to_light_float = light.position - p;
     const float distance_squared = glm::dot(to_light_float, to_light_float);
-    if (m_plain_inverse_square && distance_squared > kPlainRangeLow && distance_squared < kPlainRangeHigh) {
-        const float distance = std::sqrt(distance_squared);
-        const float inverse_distance = 1.0f / distance;
+    if (m_plain_inverse_square && in_plain_point_range(distance_squared)) {
+        const PointIncidence incidence = plain_point_incidence(distance_squared);
         LightSample s;
-        s.radiance = m_intensity * (inverse_distance * inverse_distance);
-        s.wi = to_light_float * inverse_distance;
-        s.distance = distance;
-        s.point = m_position;
+        s.radiance = light.intensity * incidence.falloff;
+        s.wi = to_light_float * incidence.inverse_distance;
+        s.distance = incidence.distance;
+        s.point = light.position;
         s.pdf = 1.0f;
         s.is_delta = true;
         return s;
@@ -33,26 +32,26 @@ LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     LightSample s;
     // Difference in double: at large offsets the float subtraction is
     // exact anyway, but the length must not overflow for huge scenes.
-    const glm::dvec3 to_light = glm::dvec3(m_position) - glm::dvec3(p);
+    const glm::dvec3 to_light = glm::dvec3(light.position) - glm::dvec3(p);
     const double distance = glm::length(to_light);
     if (!(distance > 0.0) || !std::isfinite(distance)) return s;  // pdf 0: no sample
     const glm::dvec3 wi = to_light / distance;
     double attenuation;
-    if (m_fade_distance > 0.0f)
-        attenuation = 2.0 / (1.0 + std::pow(distance / m_fade_distance, double(m_fade_power)));
+    if (light.fade_distance > 0.0f)
+        attenuation = 2.0 / (1.0 + std::pow(distance / light.fade_distance, double(light.fade_power)));
     else
         attenuation = 1.0 / (distance * distance);
     double pattern = 1.0;
-    if (m_pattern_axis != Vec3(0.0f)) {
-        const double cos_emitted = -glm::dot(glm::dvec3(m_pattern_axis), wi);  // light -> p
-        pattern = m_one_sided ? std::max(0.0, cos_emitted) : std::fabs(cos_emitted);
+    if (light.pattern_axis != Vec3(0.0f)) {
+        const double cos_emitted = -glm::dot(glm::dvec3(light.pattern_axis), wi);  // light -> p
+        pattern = light.one_sided ? std::max(0.0, cos_emitted) : std::fabs(cos_emitted);
     }
-    const glm::dvec3 radiance = glm::dvec3(m_intensity) * (attenuation * pattern);
+    const glm::dvec3 radiance = glm::dvec3(light.intensity) * (attenuation * pattern);
     s.radiance = Color(radiance);
     if (!std::isfinite(max_component(s.radiance))) s.radiance = Color(std::numeric_limits<float>::max());
     s.wi = Vec3(wi);
     s.distance = float(distance);
-    s.point = m_position;
+    s.point = light.position;
     s.pdf = 1.0f;
     s.is_delta = true;
     return s;
@@ -61,30 +60,32 @@ LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
 Color PointLight::power() const {
     // Integral of the pattern over the sphere: 4 pi isotropic, 2 pi for
     // |cos|, pi for max(0, cos).
-    const float solid_angle = m_pattern_axis == Vec3(0.0f) ? 4.0f * kPi : m_one_sided ? kPi : 2.0f * kPi;
-    return solid_angle * m_intensity;
+    const PointLightParameters& light = m_parameters;
+    const float solid_angle = light.pattern_axis == Vec3(0.0f) ? 4.0f * kPi : light.one_sided ? kPi : 2.0f * kPi;
+    return solid_angle * light.intensity;
 }
 
 DirectionalLight::DirectionalLight(const Vec3& travel, const Color& irradiance, const Vec3& scene_center,
                                    float scene_radius)
-    : m_irradiance(irradiance), m_scene_center(scene_center), m_scene_radius(scene_radius) {
+    : m_scene_center(scene_center), m_scene_radius(scene_radius) {
     const float length = glm::length(travel);
-    m_to_light = length > 0.0f ? -travel / length : Vec3(0.0f, 1.0f, 0.0f);
+    m_parameters.to_light = length > 0.0f ? -travel / length : Vec3(0.0f, 1.0f, 0.0f);
+    m_parameters.irradiance = irradiance;
 }
 
 LightSample DirectionalLight::sample(const Vec3& p, const Vec2&) const {
     LightSample s;
-    s.radiance = m_irradiance;
-    s.wi = m_to_light;
+    s.radiance = m_parameters.irradiance;
+    s.wi = m_parameters.to_light;
     s.distance = kInfinity;
     // A target past every object: the shadow ray sees the whole scene.
     const float reach = 2.0f * m_scene_radius + glm::length(p - m_scene_center);
-    s.point = p + reach * m_to_light;
+    s.point = p + reach * m_parameters.to_light;
     s.pdf = 1.0f;
     s.is_delta = true;
     return s;
 }
 
-Color DirectionalLight::power() const { return kPi * m_scene_radius * m_scene_radius * m_irradiance; }
+Color DirectionalLight::power() const { return kPi * m_scene_radius * m_scene_radius * m_parameters.irradiance; }
 
 }  // namespace lancer

@@ -5,6 +5,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/render_scene.h"
 #include "lancer/scene_error.h"
 #include "scene_test_helpers.h"
@@ -28,7 +29,7 @@ TEST(Textures, CheckerAlternatesUnitCellsInPatternSpace) {
     m->pigment.checker[1].rgb = {0, 1, 0};
     sg::SceneGraph graph;
     graph.objects.push_back(plane_object({0, 1, 0}, 0.0, m));
-    auto scene = RenderScene::compile(graph);
+    auto scene = compile_scene(graph);
     const Vec3 down(0, -1, 0);
     EXPECT_EQ(pigment_at(*scene, make_ray(Vec3(0.5f, 1, 0.5f), down)), Color(1, 1, 1));
     EXPECT_EQ(pigment_at(*scene, make_ray(Vec3(1.5f, 1, 0.5f), down)), Color(0, 1, 0));
@@ -42,7 +43,7 @@ TEST(Textures, CheckerAlternatesUnitCellsInPatternSpace) {
     plane.parent_from_object = glm::translate(glm::dmat4(1.0), glm::dvec3(1, 0, 0));
     sg::SceneGraph moved;
     moved.objects.push_back(plane);
-    scene = RenderScene::compile(moved);
+    scene = compile_scene(moved);
     EXPECT_EQ(pigment_at(*scene, make_ray(Vec3(2.5f, 1, 0.5f), down)), Color(1, 1, 1));
     EXPECT_EQ(pigment_at(*scene, make_ray(Vec3(3.5f, 1, 0.5f), down)), Color(0, 1, 0));
 }
@@ -69,7 +70,7 @@ TEST(Textures, ImageMapThroughUvDecodesSrgb) {
     sg::SceneGraph graph;
     // Box face -z at z = 0 maps (x, y) in [0,1]^2; v = 1 is the image's top.
     graph.objects.push_back(box_object({0, 0, 0}, {1, 1, 1}, m));
-    auto scene = RenderScene::compile(graph);
+    auto scene = compile_scene(graph);
     const Vec3 forward(0, 0, 1);
     const Color top_left = pigment_at(*scene, make_ray(Vec3(0.25f, 0.75f, -1), forward));
     const Color top_right = pigment_at(*scene, make_ray(Vec3(0.75f, 0.75f, -1), forward));
@@ -92,7 +93,7 @@ TEST(Textures, MissingImageIsASceneErrorAtTheImageMap) {
     sg::SceneGraph graph;
     graph.objects.push_back(sphere_object({0, 0, 0}, 1.0, m));
     try {
-        RenderScene::compile(graph);
+        compile_scene(graph);
         FAIL() << "expected a SceneError";
     } catch (const SceneError& e) {
         EXPECT_EQ(e.location().line, 42);

@@ -4,6 +4,7 @@
 // remember their prepared scene see the same object:
 //     CountingScene counted(*scene);
 //     integrator->prepare(counted);
+//     options.ray_counter = &counted;
 //     render_image(counted, *integrator, options, film);  // stats.rays set
 #pragma once
 
@@ -24,9 +25,10 @@ public:
         count();
         return m_inner.intersect(ray, hit);
     }
-    void intersect_coherent(const Ray* rays, int count, Hit* hits, bool* found) const override {
+    void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found,
+                         RayCoherence coherence) const override {
         this->count(std::uint64_t(count));
-        m_inner.intersect_coherent(rays, count, hits, found);
+        m_inner.intersect_batch(rays, count, hits, found, coherence);
     }
     bool occluded(const Ray& ray) const override {
         count();

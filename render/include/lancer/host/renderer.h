@@ -30,6 +30,7 @@ struct CropWindow {
 };
 
 struct RenderStats;
+class CountingScene;
 
 struct RenderOptions {
     int width = 640;
@@ -59,6 +60,9 @@ struct RenderOptions {
     // When it becomes true (e.g. from a signal handler) the render abandons
     // its remaining pixels quickly and returns with stats.interrupted set.
     const std::atomic<bool>* cancel = nullptr;
+    // The counting wrapper the scene is rendered through, if any: its count
+    // over the call becomes stats.rays. Pass the same object as the scene.
+    const CountingScene* ray_counter = nullptr;
 };
 
 inline constexpr int kDefaultAdaptiveCap = 4096;
@@ -67,7 +71,7 @@ struct RenderStats {
     double seconds = 0.0;                  // wall time of render_image
     std::uint64_t samples = 0;             // samples taken by this call
     std::uint64_t nonfinite_samples = 0;   // of those, NaN or infinite (dropped)
-    // Ray queries (intersect + occluded) when the scene is a CountingScene
+    // Ray queries (intersect + occluded) counted by options.ray_counter
     // (counting_scene.h), else 0.
     std::uint64_t rays = 0;
     double rays_per_second = 0.0;

@@ -79,9 +79,16 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
 template <class LocalTerm>
 Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler,
                      const SpecularOptions& options, const LocalTerm& local_term, int level = 1,
+                     float weight = 1.0f);
+
+// trace_specular() for a ray whose nearest hit is known (null: it escaped),
+// such as a camera ray the host traced.
+template <class LocalTerm>
+Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler& sampler,
+                     const SpecularOptions& options, const LocalTerm& local_term, int level = 1,
                      float weight = 1.0f) {
-    Hit hit;
-    if (!scene.intersect(ray, hit)) return scene.background(ray);
+    if (found == nullptr) return scene.background(ray);
+    const Hit& hit = *found;
     const ShadingContext at = make_shading_context(hit, ray);
     const SpecularSplit split = split_specular(at, options);
 
@@ -98,6 +105,14 @@ Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler,
     follow(split.reflection, split.reflected);
     follow(split.transmission, split.refracted);
     return radiance;
+}
+
+template <class LocalTerm>
+Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler,
+                     const SpecularOptions& options, const LocalTerm& local_term, int level, float weight) {
+    Hit hit;
+    const bool found = scene.intersect(ray, hit);
+    return shade_specular(ray, found ? &hit : nullptr, scene, sampler, options, local_term, level, weight);
 }
 
 }  // namespace lancer
