@@ -32,6 +32,7 @@
 #include "lancer/host/image_io.h"
 #include "lancer/parser.h"
 #include "lancer/host/plugin_host.h"
+#include "render_job.h"
 #include "render_report.h"
 #include "lancer/host/renderer.h"
 #include "lancer/scene_error.h"
@@ -41,7 +42,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kDefaultIntegrator = "raycast";
 constexpr int kDefaultWidth = 640;
 constexpr int kDefaultHeight = 480;
 
@@ -243,20 +243,17 @@ int run_render(const RenderArguments& arguments) {
     };
     if (const int status = check_arguments(arguments)) return status;
 
-    // Parse; the command line's size is what POV's image_width/height read.
-    ParseOptions parse_options;
-    parse_options.include_path = default_include_path();
-    parse_options.safe = arguments.safe;
+    // Parse once; the command line's size is what POV's image_width/height read.
+    SceneRequest request;
+    request.path = arguments.scene;
+    request.safe = arguments.safe;
     if (arguments.width_option->count() && arguments.height_option->count()) {
-        parse_options.image_width = arguments.width;
-        parse_options.image_height = arguments.height;
-        parse_options.image_size_from_command_line = true;
+        request.image_width = arguments.width;
+        request.image_height = arguments.height;
     }
-    ParseResult parsed = parse_scene_file(arguments.scene, parse_options);
-    for (const auto& diagnostic : parsed.diagnostics) print_diagnostic(diagnostic);
-    if (!parsed.ok()) return kExitBadInput;
-    const sg::SceneGraph& graph = *parsed.scene;
-    const sg::RenderSettings& settings = graph.render;
+    std::optional<sg::SceneGraph> graph = parse_job_scene(request);
+    if (!graph) return kExitBadInput;
+    const sg::RenderSettings settings = graph->render;
 
     // Settings: command line, then the scene's render_settings, then defaults.
     RenderOptions options;
@@ -316,40 +313,23 @@ int run_render(const RenderArguments& arguments) {
         return kExitBadInput;
     }
 
-    // The integrator and its parameters. Scene parameters belong to the
-    // scene's integrator; if -i picks another one they do not apply.
-    const std::string integrator_name =
-        !arguments.integrator.empty() ? arguments.integrator : settings.integrator.value_or(kDefaultIntegrator);
-    std::map<std::string, sg::ParameterValue> scene_parameters = settings.parameters;
-    if (settings.integrator && *settings.integrator != integrator_name && !scene_parameters.empty()) {
-        Diagnostic warning;
-        warning.severity = Diagnostic::Severity::Warning;
-        warning.location = settings.location;
-        warning.message = "render_settings parameters are for integrator '" + *settings.integrator +
-                          "'; ignored because -i chose '" + integrator_name + "'";
-        print_diagnostic(warning);
-        scene_parameters.clear();
-    }
-    // `plugin` must outlive `integrator`: its code lives in the plugin's library.
-    Plugin plugin;
-    ParameterSet parameters;
+    // The integrator and its parameters (the scene's only for the scene's
+    // own integrator: -i choosing another one warns that they are dropped).
+    JobIntegrator chosen;
     try {
-        plugin = load_plugin(integrator_name);
-        parameters = resolve_parameters(*plugin.descriptor, scene_parameters, arguments.parameters);
+        chosen = load_job_integrator(settings, arguments.integrator, arguments.parameters);
     } catch (const SceneError& error) {
         print_scene_error(error);
         return kExitBadInput;
-    } catch (const PluginError& error) {
+    } catch (const std::exception& error) {
         print_error(error.what());
         return kExitBadInput;
     }
+    const std::string& integrator_name = chosen.name;
+    const ParameterSet& parameters = chosen.parameters;
+    Integrator* const integrator = chosen.integrator.get();
 
     try {
-        std::unique_ptr<Integrator> integrator = plugin.descriptor->create(parameters);
-        if (!integrator) {
-            print_error("plugin '" + plugin.path + "' created no integrator");
-            return kExitBadInput;
-        }
         // Samples: a fixed count, or with --time/--noise the per-pixel cap
         // (only if --spp says so). A deterministic integrator is exact with
         // one sample per pixel and ignores --time and --noise.
@@ -369,12 +349,8 @@ int run_render(const RenderArguments& arguments) {
 
         const std::string checkpoint_path = checkpoint_path_for(output);
         const CheckpointIdentity identity = checkpoint_identity(arguments, options, integrator_name, parameters);
-        const std::unique_ptr<RenderScene> compiled = compile_scene(graph);
-        // Prepared and rendered through the same counting wrapper: rays are
-        // counted, and integrators that remember their scene see one object.
-        CountingScene scene(*compiled);
-        options.ray_counter = &scene;
-        integrator->prepare(scene);
+        const JobScene scene = compile_job_scene(arguments.scene, std::move(*graph));
+        graph.reset();
         Film film(options.width, options.height);
         // A render killed before its first checkpoint has nothing to resume:
         // it starts over, so `--resume` after a kill at any moment works.
@@ -404,7 +380,7 @@ int run_render(const RenderArguments& arguments) {
 
         InterruptHandlers handlers;
         options.cancel = &g_interrupt_requested;
-        const RenderStats stats = render_image(scene, *integrator, options, film);
+        const RenderStats stats = render_job(*scene.scene, *integrator, options, film);
         const int signal_number = g_interrupt_signal.load();
 
         // Report and write: image (with per-pixel sample counts in EXR when

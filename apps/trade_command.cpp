@@ -22,8 +22,6 @@
 
 #include "cli_output.h"
 #include "commands.h"
-#include "lancer/host/scene_compiler.h"
-#include "lancer/host/counting_scene.h"
 #include "image_metrics.h"
 #include "lancer/parser.h"
 #include "lancer/host/plugin_host.h"
@@ -31,6 +29,7 @@
 #include "lancer/host/rgb_image.h"
 #include "lancer/scene_error.h"
 #include "reference_cache.h"
+#include "render_job.h"
 #include "trade_ladder.h"
 #include "trade_report.h"
 
@@ -161,33 +160,29 @@ int power_of_two_floor(double value) {
     return result;
 }
 
-// The scene parsed at the size trade renders, compiled once for every render.
+// The scene, parsed and compiled once for every render of the trade.
 struct PreparedScene {
-    sg::SceneGraph graph;
-    std::unique_ptr<RenderScene> scene;
+    JobScene job;
     int width = 0;
     int height = 0;
 };
 
-// Size: --width/--height, else the scene's aspect at about 160×120 pixels
-// for --quick or at most 320 wide otherwise (trade renders dozens of images).
+// Size: --width/--height, else the scene's aspect at about 160x120 pixels
+// for --quick or at most 320 wide otherwise (trade renders dozens of
+// images). The scene is parsed once: with --width/--height its
+// image_width/image_height read them, as `lancer render`'s do; otherwise
+// they read the scene's own size, whose aspect trade keeps.
 bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
-    auto print_diagnostics = [](const ParseResult& parsed) {
-        for (const Diagnostic& diagnostic : parsed.diagnostics) {
-            std::string text = format_diagnostic(diagnostic);
-            if (text.empty() || text.back() != '\n') text += '\n';
-            std::fputs(text.c_str(), stderr);
-        }
-    };
-    ParseOptions options;
-    options.include_path = default_include_path();
-    ParseResult first = parse_scene_file(arguments.scene, options);
-    if (!first.ok()) {
-        print_diagnostics(first);
-        return false;
+    SceneRequest request;
+    request.path = arguments.scene;
+    if (arguments.width_option->count()) {
+        request.image_width = arguments.width;
+        request.image_height = arguments.height;
     }
-    const int scene_width = first.scene->render.width.value_or(640);
-    const int scene_height = first.scene->render.height.value_or(480);
+    std::optional<sg::SceneGraph> graph = parse_job_scene(request);
+    if (!graph) return false;
+    const int scene_width = graph->render.width.value_or(640);
+    const int scene_height = graph->render.height.value_or(480);
     if (arguments.width_option->count()) {
         prepared.width = arguments.width;
         prepared.height = arguments.height;
@@ -197,25 +192,15 @@ bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
                                          : std::min(scene_width, kMaxDefaultWidth);
         prepared.height = std::max(1, int(std::lround(prepared.width / aspect)));
     }
-    // Again at the chosen size, which the scene may read as image_width.
-    options.image_width = prepared.width;
-    options.image_height = prepared.height;
-    options.image_size_from_command_line = true;
-    ParseResult parsed = parse_scene_file(arguments.scene, options);
-    print_diagnostics(parsed);
-    if (!parsed.ok()) return false;
-    prepared.graph = std::move(*parsed.scene);
-    prepared.scene = compile_scene(prepared.graph);
+    prepared.job = compile_job_scene(arguments.scene, std::move(*graph));
     return true;
 }
 
 // The plugin's parameters: the scene's (when the scene names this
-// integrator) under `parameters`.
+// integrator, the rule `lancer render` follows) under `parameters`.
 ParameterSet resolve_for(const PreparedScene& prepared, const Plugin& plugin,
                          const std::vector<std::string>& parameters) {
-    const sg::RenderSettings& settings = prepared.graph.render;
-    std::map<std::string, sg::ParameterValue> scene_parameters;
-    if (settings.integrator && *settings.integrator == plugin.descriptor->name) scene_parameters = settings.parameters;
+    const auto scene_parameters = scene_parameters_for(prepared.job.settings, plugin.descriptor->name, nullptr);
     return resolve_parameters(*plugin.descriptor, scene_parameters, parameters);
 }
 
@@ -241,10 +226,8 @@ TimedRender render_setting(const PreparedScene& prepared, const Plugin& plugin,
     const double cpu_start = process_cpu_seconds();
     std::unique_ptr<Integrator> integrator = plugin.descriptor->create(resolved);
     if (!integrator) throw PluginError("plugin '" + plugin.path + "' created no integrator");
-    // Prepared and rendered through one counting wrapper, as `lancer render`
-    // does: rays are counted and the cost includes the counting.
-    const CountingScene scene(*prepared.scene);
-    integrator->prepare(scene);
+    // Rendered as `lancer render` renders (render_job): rays are counted
+    // and the cost includes the counting.
     RenderOptions options;
     options.width = prepared.width;
     options.height = prepared.height;
@@ -256,9 +239,8 @@ TimedRender render_setting(const PreparedScene& prepared, const Plugin& plugin,
     options.seed = seed;
     options.threads = threads;
     options.progress = ProgressMode::Quiet;
-    options.ray_counter = &scene;
     Film film(prepared.width, prepared.height);
-    const RenderStats stats = render_image(scene, *integrator, options, film);
+    const RenderStats stats = render_job(*prepared.job.scene, *integrator, options, film);
 
     TimedRender render;
     render.seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -326,8 +308,19 @@ int run_trade(const TradeArguments& arguments) {
     try {
         PreparedScene prepared;
         if (!prepare_scene(arguments, prepared)) return kExitBadInput;
+        // The scene's parameters apply to its own integrator only, as in
+        // `lancer render`; say so once rather than for every other rung.
+        if (const sg::RenderSettings& settings = prepared.job.settings;
+            settings.integrator && !settings.parameters.empty()) {
+            Diagnostic note;
+            note.severity = Diagnostic::Severity::Warning;
+            note.location = settings.location;
+            note.message = "render_settings parameters are for integrator '" + *settings.integrator +
+                           "'; trade applies them to it only";
+            print_diagnostic(note);
+        }
         const std::uint64_t seed =
-            arguments.seed_option->count() ? arguments.seed : prepared.graph.render.seed.value_or(0);
+            arguments.seed_option->count() ? arguments.seed : prepared.job.settings.seed.value_or(0);
         const fs::path out(arguments.out);
         fs::create_directories(out / "renders");
         fs::create_directories(out / "heatmaps");

@@ -1,0 +1,71 @@
+#include "render_job.h"
+
+#include <stdexcept>
+#include <utility>
+
+#include "cli_output.h"
+#include "lancer/host/counting_scene.h"
+#include "lancer/host/scene_compiler.h"
+
+namespace lancer::app {
+
+std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request) {
+    ParseOptions options;
+    options.include_path = default_include_path();
+    options.safe = request.safe;
+    if (request.image_width && request.image_height) {
+        options.image_width = *request.image_width;
+        options.image_height = *request.image_height;
+        options.image_size_from_command_line = true;
+    }
+    ParseResult parsed = parse_scene_file(request.path, options);
+    for (const Diagnostic& diagnostic : parsed.diagnostics) print_diagnostic(diagnostic);
+    if (!parsed.ok()) return std::nullopt;
+    return std::move(parsed.scene);
+}
+
+JobScene compile_job_scene(const std::string& path, sg::SceneGraph graph) {
+    JobScene job;
+    job.path = path;
+    job.settings = graph.render;
+    job.scene = compile_scene(std::move(graph));
+    return job;
+}
+
+std::map<std::string, sg::ParameterValue> scene_parameters_for(const sg::RenderSettings& settings,
+                                                               const std::string& integrator,
+                                                               std::optional<Diagnostic>* ignored) {
+    if (!settings.integrator || *settings.integrator == integrator) return settings.parameters;
+    if (ignored && !settings.parameters.empty()) {
+        Diagnostic warning;
+        warning.severity = Diagnostic::Severity::Warning;
+        warning.location = settings.location;
+        warning.message = "render_settings parameters are for integrator '" + *settings.integrator +
+                          "'; ignored for '" + integrator + "'";
+        *ignored = warning;
+    }
+    return {};
+}
+
+JobIntegrator load_job_integrator(const sg::RenderSettings& settings, const std::string& name,
+                                  const std::vector<std::string>& assignments) {
+    JobIntegrator job;
+    job.name = !name.empty() ? name : settings.integrator.value_or(kDefaultIntegrator);
+    std::optional<Diagnostic> ignored;
+    const auto scene_parameters = scene_parameters_for(settings, job.name, &ignored);
+    if (ignored) print_diagnostic(*ignored);
+    job.plugin = load_plugin(job.name);
+    job.parameters = resolve_parameters(*job.plugin.descriptor, scene_parameters, assignments);
+    job.integrator = job.plugin.descriptor->create(job.parameters);
+    if (!job.integrator) throw PluginError("plugin '" + job.plugin.path + "' created no integrator");
+    return job;
+}
+
+RenderStats render_job(const RenderScene& scene, Integrator& integrator, RenderOptions options, Film& film) {
+    CountingScene counted(scene);
+    integrator.prepare(counted);
+    options.ray_counter = &counted;
+    return render_image(counted, integrator, options, film);
+}
+
+}  // namespace lancer::app
