@@ -209,7 +209,7 @@ struct BenchScene {
         auto material = std::make_shared<sg::Material>();
         material->pigment.color.rgb = sg::Vec3(0.8);
         object.material = material;
-        graph.objects.push_back(object);
+        graph.objects.push_back(std::move(object));
 
         const bool peak_reset = reset_peak_rss();
         const long rss_before = status_kilobytes("VmRSS:");

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git ca-certificates
+  build-essential cmake ninja-build pkg-config git ca-certificates clang-format
   flex bison
   libglm-dev libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools

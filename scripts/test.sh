@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
-# Quick start, part two: the whole test suite (installs dependencies and
-# builds first, so it works on a fresh machine), then a sanitizer stage: a
+# Quick start, part two: the whole test suite (installs dependencies,
+# checks the C++ formatting, and builds with warnings as errors first, so it
+# works on a fresh machine), then a sanitizer stage: a
 # subset of the suite built with AddressSanitizer + UBSan in build-asan
 # (tests/sanitize/CMakeLists.txt lists it; docs/robustness.md says why).
 # LANCER_SKIP_SANITIZE=1 skips that stage.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup-deps.sh
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+scripts/check-format.sh
+# Warnings are errors here, so a new one fails the suite (a plain build
+# only prints them).
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DLANCER_WARNINGS_AS_ERRORS=ON
 cmake --build build
 ctest --test-dir build --output-on-failure -j "$(nproc)"
 
