@@ -13,6 +13,7 @@ using Color = glm::vec3;  // linear RGB radiance or reflectance
 
 inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 inline constexpr float kPi = 3.14159265358979323846f;
+inline constexpr double kPiD = 3.141592653589793238463;
 
 // A ray is the half-line origin + t * direction for t in [t_min, t_max].
 // direction need not be unit length, but every ray the host and the shared

@@ -11,7 +11,6 @@
 namespace lancer {
 namespace {
 
-constexpr double kPiD = 3.141592653589793238463;
 
 MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment) {
     MaterialParameters p;

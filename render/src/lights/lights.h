@@ -87,6 +87,11 @@ private:
     std::unique_ptr<PointLight> m_proxy;
 };
 
+// The sample of a point on an emitting surface (lifted off it towards p),
+// seen from p; pdf 0 (no sample) when degenerate.
+LightSample area_light_sample(const DVec3& p, const DVec3& surface_point, const DVec3& normal,
+                              const Color& radiance, float pdf);
+
 // Solid-angle density of a point sampled on a surface with area density
 // pdf_area, seen from p: pdf_area * d^2 / |cos at the light|; 0 when
 // degenerate (p on the surface's plane or at the point).

@@ -41,6 +41,15 @@ private:
     std::shared_ptr<ImageTextureSystem> m_images;
 };
 
+// One constructor per pattern family, each in a file of its own; the
+// factory picks one by the pigment's kind. A new pattern adds a file and a
+// line here and in TextureFactory::make.
+std::unique_ptr<Texture> make_solid_texture(const TextureSample& value);
+std::unique_ptr<Texture> make_checker_texture(const sg::Pigment& pigment, const TextureSpaces& spaces);
+// Creates the shared TextureSystem on first use.
+std::unique_ptr<Texture> make_image_texture(const sg::Pigment& pigment, const TextureSpaces& spaces,
+                                            std::shared_ptr<ImageTextureSystem>& images);
+
 // POV-Ray map_type projections of a pattern-space point to (u,v), v up.
 Vec2 planar_map(const glm::dvec3& p);
 Vec2 spherical_map(const glm::dvec3& p);

@@ -1,74 +1,22 @@
-// Pigments: solid, POV checker, image_map through OpenImageIO's
-// TextureSystem.
+// POV-Ray's image_map through OpenImageIO's TextureSystem, with POV's
+// map_type projections.
 #include <cmath>
 #include <string>
 
 #include <OpenImageIO/texture.h>
 
 #include "lancer/scene_error.h"
-#include "materials/textures.h"
+#include "materials/pattern_space.h"
 
 namespace lancer {
-
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925;
-constexpr double kPiD = 3.141592653589793238463;
-
-TextureSample to_sample(const sg::Color& c) {
-    return {Color(c.rgb), float(c.filter), float(c.transmit)};
-}
 
 float srgb_decode(float encoded) {
     if (encoded <= 0.04045f) return encoded / 12.92f;
     return std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
-
-// Pattern-space point of a hit: world -> texture-owner object -> pattern.
-glm::dvec3 pattern_point(const Hit& hit, const TextureSpaces& spaces, const glm::dmat4& pattern_from_object) {
-    glm::dvec4 p(glm::dvec3(hit.position), 1.0);
-    if (hit.object_id < spaces.size()) p = spaces[hit.object_id] * p;
-    return glm::dvec3(pattern_from_object * p);
-}
-
-class SolidTexture final : public Texture {
-public:
-    explicit SolidTexture(const TextureSample& value) : m_value(value) {}
-    TextureSample evaluate(const Hit&) const override { return m_value; }
-    TextureSample average() const override { return m_value; }
-    const TextureSample* constant() const override { return &m_value; }
-
-private:
-    TextureSample m_value;
-};
-
-// POV-Ray's checker: unit cubes in pattern space alternate between the two
-// colours; POV's small tolerance keeps a plane at an integer coordinate on
-// one side.
-class CheckerTexture final : public Texture {
-public:
-    CheckerTexture(const sg::Pigment& pigment, const TextureSpaces& spaces)
-        : m_first(to_sample(pigment.checker[0])), m_second(to_sample(pigment.checker[1])),
-          m_pattern_from_object(pigment.pattern_from_object), m_spaces(spaces) {}
-
-    TextureSample evaluate(const Hit& hit) const override {
-        constexpr double kTolerance = 1e-6;  // POV: Small_Tolerance, relative to a unit cell
-        const glm::dvec3 p = pattern_point(hit, m_spaces, m_pattern_from_object);
-        const double cells = std::floor(p.x + kTolerance) + std::floor(p.y + kTolerance) +
-                             std::floor(p.z + kTolerance);
-        const bool odd = std::fmod(std::fabs(cells), 2.0) == 1.0;
-        return odd ? m_second : m_first;
-    }
-    TextureSample average() const override {
-        return {0.5f * (m_first.rgb + m_second.rgb), 0.5f * (m_first.filter + m_second.filter),
-                0.5f * (m_first.transmit + m_second.transmit)};
-    }
-
-private:
-    TextureSample m_first, m_second;
-    glm::dmat4 m_pattern_from_object;
-    const TextureSpaces& m_spaces;
-};
 
 }  // namespace
 
@@ -190,22 +138,10 @@ private:
 
 }  // namespace
 
-TextureFactory::TextureFactory(const TextureSpaces& spaces) : m_spaces(spaces) {}
-TextureFactory::~TextureFactory() = default;
-
-std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
-    switch (pigment.kind) {
-    case sg::Pigment::Kind::Checker: return std::make_unique<CheckerTexture>(pigment, m_spaces);
-    case sg::Pigment::Kind::Image:
-        if (!m_images) m_images = std::make_shared<ImageTextureSystem>();
-        return std::make_unique<ImageTexture>(pigment, m_spaces, m_images);
-    case sg::Pigment::Kind::Solid:
-    default: return std::make_unique<SolidTexture>(to_sample(pigment.color));
-    }
-}
-
-std::unique_ptr<Texture> TextureFactory::make_solid(const Color& rgb, float filter, float transmit) {
-    return std::make_unique<SolidTexture>(TextureSample{rgb, filter, transmit});
+std::unique_ptr<Texture> make_image_texture(const sg::Pigment& pigment, const TextureSpaces& spaces,
+                                            std::shared_ptr<ImageTextureSystem>& images) {
+    if (!images) images = std::make_shared<ImageTextureSystem>();
+    return std::make_unique<ImageTexture>(pigment, spaces, images);
 }
 
 }  // namespace lancer

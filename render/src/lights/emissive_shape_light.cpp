@@ -8,7 +8,6 @@
 namespace lancer {
 namespace {
 
-constexpr double kPiD = 3.141592653589793238463;
 
 
 }  // namespace

@@ -1,0 +1,99 @@
+// Boxes: slab intersection, face surfaces, and sampling by world area
+// (six parallelograms) for emissive boxes.
+#include "geometry/shapes.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "geometry/polygon_sampler.h"
+
+namespace lancer {
+
+bool intersect_box(const AnalyticBox& b, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t,
+                   int& face) {
+    double t_enter = -INFINITY, t_exit = INFINITY;
+    int face_enter = -1, face_exit = -1;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (d[axis] == 0.0) {
+            if (o[axis] < b.lower[axis] || o[axis] > b.upper[axis]) return false;
+            continue;
+        }
+        const double inverse = 1.0 / d[axis];
+        double t_lower = (b.lower[axis] - o[axis]) * inverse;
+        double t_upper = (b.upper[axis] - o[axis]) * inverse;
+        int f_lower = 2 * axis, f_upper = 2 * axis + 1;
+        if (t_lower > t_upper) {
+            std::swap(t_lower, t_upper);
+            std::swap(f_lower, f_upper);
+        }
+        if (t_lower > t_enter) {
+            t_enter = t_lower;
+            face_enter = f_lower;
+        }
+        if (t_upper < t_exit) {
+            t_exit = t_upper;
+            face_exit = f_upper;
+        }
+        if (t_enter > t_exit) return false;
+    }
+    if (t_enter > t_min && t_enter < t_max && face_enter >= 0) {
+        t = t_enter;
+        face = face_enter;
+        return true;
+    }
+    if (t_exit > t_min && t_exit < t_max && face_exit >= 0) {
+        t = t_exit;
+        face = face_exit;
+        return true;
+    }
+    return false;
+}
+
+SurfaceGeometry box_surface(const AnalyticBox& b, const DVec3& p, int face) {
+    SurfaceGeometry g;
+    const int axis = face / 2;
+    const bool upper = face % 2 == 1;
+    g.point = glm::clamp(p, b.lower, b.upper);
+    g.point[axis] = upper ? b.upper[axis] : b.lower[axis];
+    g.normal = DVec3(0.0);
+    g.normal[axis] = upper ? 1.0 : -1.0;
+    // Per face: x faces map (z, y), y faces (x, z), z faces (x, y); each
+    // spans [0,1]^2 over the face.
+    const int u_axis = axis == 0 ? 2 : 0;
+    const int v_axis = axis == 1 ? 2 : 1;
+    const DVec3 extent = b.upper - b.lower;
+    auto fraction = [&](int a) {
+        return extent[a] > 0.0 ? (g.point[a] - b.lower[a]) / extent[a] : 0.0;
+    };
+    g.uv = Vec2(float(fraction(u_axis)), float(fraction(v_axis)));
+    return g;
+}
+
+std::unique_ptr<SurfaceSampler> make_box_sampler(const AnalyticBox& b, const Placement& placement,
+                                                 const Material* material) {
+    std::vector<PolygonSampler::Polygon> faces;
+    for (int face = 0; face < 6; ++face) {
+        const int axis = face / 2;
+        const int u_axis = axis == 0 ? 2 : 0;
+        const int v_axis = axis == 1 ? 2 : 1;
+        DVec3 corner = b.lower;
+        corner[axis] = face % 2 == 1 ? b.upper[axis] : b.lower[axis];
+        DVec3 along_u(0.0), along_v(0.0);
+        along_u[u_axis] = b.upper[u_axis] - b.lower[u_axis];
+        along_v[v_axis] = b.upper[v_axis] - b.lower[v_axis];
+        PolygonSampler::Polygon p;
+        p.origin = placement.point_to_world(corner);
+        p.edge1 = placement.point_to_world(corner + along_u) - p.origin;
+        p.edge2 = placement.point_to_world(corner + along_v) - p.origin;
+        p.uv0 = Vec2(0.0f, 0.0f);
+        p.uv1 = Vec2(1.0f, 0.0f);
+        p.uv2 = Vec2(0.0f, 1.0f);
+        p.parallelogram = true;
+        p.material = material;
+        faces.push_back(p);
+    }
+    return std::make_unique<PolygonSampler>(std::move(faces), true);
+}
+
+}  // namespace lancer
