@@ -85,188 +85,16 @@ struct CameraBatch final : CameraSampleStreams {
         return *sampler;
     }
 };
-}  // namespace
+// Samples per pixel over a window: their sum, least and most.
+struct SampleCounts {
+    std::uint64_t sum = 0;
+    std::uint32_t least = std::numeric_limits<std::uint32_t>::max(), most = 0;
+};
 
-RenderStats render_image(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options,
-                         Film& film) {
-    const auto start = Clock::now();
-    const int width = film.width(), height = film.height();
-    const CropWindow window = clamped_window(options, width, height);
-    const int tile = std::max(options.tile_size, 1);
-    const int tiles_x = (window.x1 - window.x0 + tile - 1) / tile;
-    const int tiles_y = (window.y1 - window.y0 + tile - 1) / tile;
-    const int tiles = tiles_x * tiles_y;
-    const std::uint64_t window_pixels = std::uint64_t(window.x1 - window.x0) * std::uint64_t(window.y1 - window.y0);
-    const bool deterministic = integrator.is_deterministic();
-    PassPlanner planner(options, deterministic, window);
-    // One sample of a deterministic integrator goes through the pixel centre
-    // (POV-Ray's picture without antialiasing); more samples, of any
-    // integrator, spread over the pixel and antialias.
-    const bool pixel_centre = deterministic && planner.cap() == 1;
-    const Camera& camera = scene.camera();
-    const CountingScene* counting = options.ray_counter;
-    const std::uint64_t rays_before = counting ? counting->rays() : 0;
-
-    const std::unique_ptr<Sampler> prototype = integrator.make_sampler(options.seed);
-    tbb::enumerable_thread_specific<std::unique_ptr<Sampler>> samplers([&] { return prototype->clone(); });
-    const std::uint64_t nonfinite_before = film.nonfinite_samples();
-    Progress progress(options.progress);
-
-    // Budget mode stops at the deadline even mid-pass; the planner keeps
-    // passes short enough that this is only a backstop.
-    const bool has_deadline = planner.mode() == PassMode::Budget ||
-                              (planner.mode() == PassMode::Adaptive && options.time_budget_seconds > 0.0);
-    const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
-                                      std::chrono::duration<double>(std::max(options.time_budget_seconds, 0.0)));
-    std::atomic<bool> stop{false};
-    auto should_stop = [&] {
-        if (stop.load(std::memory_order_relaxed)) return true;
-        if ((options.cancel && options.cancel->load(std::memory_order_relaxed)) ||
-            (has_deadline && Clock::now() >= deadline)) {
-            stop.store(true, std::memory_order_relaxed);
-            return true;
-        }
-        return false;
-    };
-
-    // Progress: samples against the fixed total, else time against the
-    // budget, else (adaptive alone) the share of pixels that stopped.
-    std::atomic<std::uint64_t> samples_taken{0};
-    std::uint64_t already_taken = 0;  // e.g. resumed from a checkpoint; set by the first plan
-    const double fixed_total = double(window_pixels) * planner.cap();
-    auto fraction_done = [&](double stopped_pixels_fraction) {
-        if (planner.mode() == PassMode::Fixed)
-            return fixed_total > 0 ? double(already_taken + samples_taken) / fixed_total : 1.0;
-        if (has_deadline) return seconds_since(start) / options.time_budget_seconds;
-        return stopped_pixels_fraction;
-    };
-    double stopped_fraction = 0.0;
-
-    // Camera rays are traced in batches of neighbouring pixels (4x4 blocks
-    // of the tile), which Embree traverses together.
-    // One batch per thread for the whole render: its 41 KB of rays and hits
-    // are initialised once, not once per tile.
-    tbb::enumerable_thread_specific<std::unique_ptr<CameraBatch>> batches(
-        [] { return std::make_unique<CameraBatch>(); });
-    auto render_tile = [&](int tile_index) {
-        Sampler& sampler = *samplers.local();
-        const int tx = tile_index % tiles_x, ty = tile_index / tiles_x;
-        const int x_begin = window.x0 + tx * tile, y_begin = window.y0 + ty * tile;
-        const int x_end = std::min(x_begin + tile, window.x1), y_end = std::min(y_begin + tile, window.y1);
-        std::uint64_t taken = 0;
-        // The k-th sample of a pixel always uses stream k.
-        auto film_point = [&](int x, int y, std::uint32_t s) {
-            if (pixel_centre) return Vec2(float(x) + 0.5f, float(y) + 0.5f);
-            sampler.start_sample(x, y, s);
-            const Vec2 jitter = sampler.next_2d();
-            return Vec2(float(x) + jitter.x, float(y) + jitter.y);
-        };
-        CameraBatch& batch = *batches.local();
-        batch.size = 0;
-        batch.sampler = &sampler;
-        batch.jittered = !pixel_centre;
-        auto shade_batch = [&] {
-            if (batch.size == 0) return;
-            camera.generate_rays(batch.film_x, batch.film_y, batch.size, width, height, batch.rays);
-            scene.intersect_batch(batch.rays, batch.size, batch.hits, batch.found, RayCoherence::Coherent);
-            const CameraHits traced(batch.size, batch.rays, batch.hits, batch.found, batch);
-            integrator.shade_camera_hits(traced, scene, batch.radiance);
-            for (int i = 0; i < batch.size; ++i)
-                film.add_sample(batch.samples[i].x, batch.samples[i].y, batch.radiance[i]);
-            batch.size = 0;
-        };
-        constexpr int kBlock = CameraBatch::kBlock;
-        for (int block_y = y_begin; block_y < y_end; block_y += kBlock)
-            for (int block_x = x_begin; block_x < x_end; block_x += kBlock) {
-                if (should_stop()) {
-                    shade_batch();
-                    samples_taken += taken;
-                    return;
-                }
-                for (int y = block_y; y < std::min(block_y + kBlock, y_end); ++y)
-                    for (int x = block_x; x < std::min(block_x + kBlock, x_end); ++x) {
-                        const std::uint32_t first = film.samples_taken(x, y);
-                        const std::uint32_t count = planner.planned(x - window.x0, y - window.y0, first);
-                        for (std::uint32_t s = first; s < first + count; ++s) {
-                            const Vec2 point = film_point(x, y, s);
-                            film.prefetch(x, y);
-                            batch.add(x, y, s, point);
-                            if (batch.full()) shade_batch();
-                        }
-                        taken += count;
-                    }
-            }
-        shade_batch();
-        samples_taken += taken;
-        progress.report(fraction_done(stopped_fraction));
-    };
-
-    RenderStats stats;
-    tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-    double seconds_per_sample = 0.0;  // measured on the last pass
-    auto last_checkpoint = start;
-    arena.execute([&] {
-        while (!should_stop()) {
-            // Plan the pass; under a time budget, only what fits in 90% of
-            // the time left at the last pass's cost per sample.
-            std::uint64_t planned = planner.plan_unlimited(film);
-            if (stats.passes == 0) already_taken = planner.taken_at_plan();
-            if (planned == 0) break;
-            if (has_deadline && seconds_per_sample > 0.0) {
-                const double remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
-                const double affordable = 0.9 * remaining / seconds_per_sample;
-                // A pass for a sliver of the pixels costs more in overhead
-                // than it refines.
-                if (affordable < double(planner.pixels_wanting()) / 32.0) break;
-                planned = planner.limit_to(std::uint64_t(affordable));
-                if (planned == 0) break;
-            }
-            // A fixed render that checkpoints keeps passes within the
-            // interval, so a kill loses at most about that much work.
-            if (planner.mode() == PassMode::Fixed && options.checkpoint_interval_seconds > 0.0 &&
-                seconds_per_sample > 0.0) {
-                const double affordable = options.checkpoint_interval_seconds / seconds_per_sample;
-                planned = planner.limit_to(std::max(std::uint64_t(affordable), planner.pixels_wanting()));
-            }
-            stopped_fraction = 1.0 - double(planner.pixels_wanting()) / double(std::max<std::uint64_t>(window_pixels, 1));
-
-            // Render it.
-            const auto pass_start = Clock::now();
-            const std::uint64_t before = samples_taken;
-            tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& range) {
-                for (int t = range.begin(); t != range.end(); ++t) render_tile(t);
-            });
-            ++stats.passes;
-            const std::uint64_t done = samples_taken - before;
-            if (done > 0) seconds_per_sample = seconds_since(pass_start) / double(done);
-            const bool finished = done == planned && planner.plan_completes();
-
-            // Checkpoint between passes, when the film is consistent.
-            if (options.on_checkpoint && options.checkpoint_interval_seconds > 0.0 && !stop &&
-                seconds_since(last_checkpoint) >= options.checkpoint_interval_seconds) {
-                options.on_checkpoint(film);
-                last_checkpoint = Clock::now();
-            }
-            if (finished) break;
-        }
-    });
-    progress.report(1.0);
-    progress.finish();
-
-    // What the render did.
-    stats.seconds = seconds_since(start);
-    stats.samples = samples_taken;
-    stats.nonfinite_samples = film.nonfinite_samples() - nonfinite_before;
-    stats.interrupted = options.cancel && options.cancel->load();
-    if (counting) stats.rays = counting->rays() - rays_before;
-    stats.rays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds : 0.0;
-    struct Counts {
-        std::uint64_t sum = 0;
-        std::uint32_t least = std::numeric_limits<std::uint32_t>::max(), most = 0;
-    };
-    const Counts counts = arena.execute([&] { return tbb::parallel_reduce(
-        tbb::blocked_range<int>(window.y0, window.y1), Counts{},
-        [&](const tbb::blocked_range<int>& rows, Counts c) {
+SampleCounts count_samples(const Film& film, const CropWindow& window) {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<int>(window.y0, window.y1), SampleCounts{},
+        [&](const tbb::blocked_range<int>& rows, SampleCounts c) {
             for (int y = rows.begin(); y < rows.end(); ++y)
                 for (int x = window.x0; x < window.x1; ++x) {
                     const std::uint32_t taken = film.samples_taken(x, y);
@@ -276,21 +104,237 @@ RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
                 }
             return c;
         },
-        [](Counts a, const Counts& b) {
+        [](SampleCounts a, const SampleCounts& b) {
             a.sum += b.sum;
             a.least = std::min(a.least, b.least);
             a.most = std::max(a.most, b.most);
             return a;
-        }); });
-    const std::uint64_t sum = counts.sum;
-    const std::uint32_t least = counts.least, most = counts.most;
-    stats.mean_samples_per_pixel = window_pixels > 0 ? double(sum) / double(window_pixels) : 0.0;
-    stats.min_samples_per_pixel = window_pixels > 0 ? least : 0;
-    stats.max_samples_per_pixel = most;
-    if (!deterministic && window_pixels > 0)
-        stats.estimated_rel_rmse =
-            estimated_relative_rmse(film, PixelWindow{window.x0, window.y0, window.x1, window.y1});
-    return stats;
+        });
+}
+
+// One call of render_image: the passes, each a parallel sweep of the
+// window's tiles, and what the render did.
+class ImageRender {
+public:
+    ImageRender(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options, Film& film)
+        : m_scene(scene), m_integrator(integrator), m_options(options), m_film(film), m_start(Clock::now()),
+          m_window(clamped_window(options, film.width(), film.height())),
+          m_tile(std::max(options.tile_size, 1)),
+          m_tiles_x((m_window.x1 - m_window.x0 + m_tile - 1) / m_tile),
+          m_tiles((m_window.y1 - m_window.y0 + m_tile - 1) / m_tile * m_tiles_x),
+          m_window_pixels(std::uint64_t(m_window.x1 - m_window.x0) * std::uint64_t(m_window.y1 - m_window.y0)),
+          m_planner(options, integrator.is_deterministic(), m_window),
+          // One sample of a deterministic integrator goes through the pixel
+          // centre (POV-Ray's picture without antialiasing); more samples,
+          // of any integrator, spread over the pixel and antialias.
+          m_pixel_centre(integrator.is_deterministic() && m_planner.cap() == 1),
+          m_prototype(integrator.make_sampler(options.seed)),
+          m_samplers([this] { return m_prototype->clone(); }),
+          // One batch per thread for the whole render: its 41 KB of rays
+          // and hits are initialised once, not once per tile.
+          m_batches([] { return std::make_unique<CameraBatch>(); }),
+          m_progress(options.progress),
+          // Budget mode stops at the deadline even mid-pass; the planner
+          // keeps passes short enough that this is only a backstop.
+          m_has_deadline(m_planner.mode() == PassMode::Budget ||
+                         (m_planner.mode() == PassMode::Adaptive && options.time_budget_seconds > 0.0)),
+          m_deadline(m_start + std::chrono::duration_cast<Clock::duration>(
+                                   std::chrono::duration<double>(std::max(options.time_budget_seconds, 0.0)))) {}
+
+    RenderStats run() {
+        const CountingScene* counting = m_options.ray_counter;
+        const std::uint64_t rays_before = counting ? counting->rays() : 0;
+        const std::uint64_t nonfinite_before = m_film.nonfinite_samples();
+        tbb::task_arena arena(m_options.threads > 0 ? m_options.threads : tbb::task_arena::automatic);
+        RenderStats stats;
+        arena.execute([&] { stats.passes = run_passes(); });
+        m_progress.report(1.0);
+        m_progress.finish();
+
+        stats.seconds = seconds_since(m_start);
+        stats.samples = m_samples_taken;
+        stats.nonfinite_samples = m_film.nonfinite_samples() - nonfinite_before;
+        stats.interrupted = m_options.cancel && m_options.cancel->load();
+        if (counting) stats.rays = counting->rays() - rays_before;
+        stats.rays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds : 0.0;
+        const SampleCounts counts = arena.execute([&] { return count_samples(m_film, m_window); });
+        stats.mean_samples_per_pixel = m_window_pixels > 0 ? double(counts.sum) / double(m_window_pixels) : 0.0;
+        stats.min_samples_per_pixel = m_window_pixels > 0 ? counts.least : 0;
+        stats.max_samples_per_pixel = counts.most;
+        if (!m_integrator.is_deterministic() && m_window_pixels > 0)
+            stats.estimated_rel_rmse =
+                estimated_relative_rmse(m_film, PixelWindow{m_window.x0, m_window.y0, m_window.x1, m_window.y1});
+        return stats;
+    }
+
+private:
+    // Passes until the plan is done, the deadline passes or the render is
+    // cancelled; returns how many ran.
+    int run_passes() {
+        int passes = 0;
+        double seconds_per_sample = 0.0;  // measured on the last pass
+        auto last_checkpoint = m_start;
+        while (!should_stop()) {
+            const std::uint64_t planned = plan_pass(passes, seconds_per_sample);
+            if (planned == 0) break;
+            m_stopped_fraction =
+                1.0 - double(m_planner.pixels_wanting()) / double(std::max<std::uint64_t>(m_window_pixels, 1));
+
+            const auto pass_start = Clock::now();
+            const std::uint64_t before = m_samples_taken;
+            tbb::parallel_for(tbb::blocked_range<int>(0, m_tiles, 1), [&](const tbb::blocked_range<int>& range) {
+                for (int t = range.begin(); t != range.end(); ++t) render_tile(t);
+            });
+            ++passes;
+            const std::uint64_t done = m_samples_taken - before;
+            if (done > 0) seconds_per_sample = seconds_since(pass_start) / double(done);
+            const bool finished = done == planned && m_planner.plan_completes();
+
+            // Checkpoint between passes, when the film is consistent.
+            if (m_options.on_checkpoint && m_options.checkpoint_interval_seconds > 0.0 && !m_stop &&
+                seconds_since(last_checkpoint) >= m_options.checkpoint_interval_seconds) {
+                m_options.on_checkpoint(m_film);
+                last_checkpoint = Clock::now();
+            }
+            if (finished) break;
+        }
+        return passes;
+    }
+
+    // Plans the next pass and returns its samples (0: none is worth
+    // running). Under a time budget, only what fits in 90% of the time left
+    // at the last pass's cost per sample.
+    std::uint64_t plan_pass(int passes_so_far, double seconds_per_sample) {
+        std::uint64_t planned = m_planner.plan_unlimited(m_film);
+        if (passes_so_far == 0) m_already_taken = m_planner.taken_at_plan();
+        if (planned == 0) return 0;
+        if (m_has_deadline && seconds_per_sample > 0.0) {
+            const double remaining = std::chrono::duration<double>(m_deadline - Clock::now()).count();
+            const double affordable = 0.9 * remaining / seconds_per_sample;
+            // A pass for a sliver of the pixels costs more in overhead than
+            // it refines.
+            if (affordable < double(m_planner.pixels_wanting()) / 32.0) return 0;
+            planned = m_planner.limit_to(std::uint64_t(affordable));
+            if (planned == 0) return 0;
+        }
+        // A fixed render that checkpoints keeps passes within the interval,
+        // so a kill loses at most about that much work.
+        if (m_planner.mode() == PassMode::Fixed && m_options.checkpoint_interval_seconds > 0.0 &&
+            seconds_per_sample > 0.0) {
+            const double affordable = m_options.checkpoint_interval_seconds / seconds_per_sample;
+            planned = m_planner.limit_to(std::max(std::uint64_t(affordable), m_planner.pixels_wanting()));
+        }
+        return planned;
+    }
+
+    bool should_stop() {
+        if (m_stop.load(std::memory_order_relaxed)) return true;
+        if ((m_options.cancel && m_options.cancel->load(std::memory_order_relaxed)) ||
+            (m_has_deadline && Clock::now() >= m_deadline)) {
+            m_stop.store(true, std::memory_order_relaxed);
+            return true;
+        }
+        return false;
+    }
+
+    // Progress: samples against the fixed total, else time against the
+    // budget, else (adaptive alone) the share of pixels that stopped.
+    double fraction_done() const {
+        if (m_planner.mode() == PassMode::Fixed) {
+            const double fixed_total = double(m_window_pixels) * m_planner.cap();
+            return fixed_total > 0 ? double(m_already_taken + m_samples_taken) / fixed_total : 1.0;
+        }
+        if (m_has_deadline) return seconds_since(m_start) / m_options.time_budget_seconds;
+        return m_stopped_fraction;
+    }
+
+    // The k-th sample of a pixel always uses stream k.
+    Vec2 film_point(Sampler& sampler, int x, int y, std::uint32_t s) const {
+        if (m_pixel_centre) return Vec2(float(x) + 0.5f, float(y) + 0.5f);
+        sampler.start_sample(x, y, s);
+        const Vec2 jitter = sampler.next_2d();
+        return Vec2(float(x) + jitter.x, float(y) + jitter.y);
+    }
+
+    // Camera rays for the batch's film points, their hits traced together,
+    // shaded by the integrator, added to the film.
+    void shade_batch(CameraBatch& batch) {
+        if (batch.size == 0) return;
+        m_scene.camera().generate_rays(batch.film_x, batch.film_y, batch.size, m_film.width(), m_film.height(),
+                                       batch.rays);
+        m_scene.intersect_batch(batch.rays, batch.size, batch.hits, batch.found, RayCoherence::Coherent);
+        const CameraHits traced(batch.size, batch.rays, batch.hits, batch.found, batch);
+        m_integrator.shade_camera_hits(traced, m_scene, batch.radiance);
+        for (int i = 0; i < batch.size; ++i)
+            m_film.add_sample(batch.samples[i].x, batch.samples[i].y, batch.radiance[i]);
+        batch.size = 0;
+    }
+
+    // This pass's samples of one tile, in 4x4 blocks of pixels (neighbours
+    // in one batch), checking for a stop between blocks.
+    void render_tile(int tile_index) {
+        Sampler& sampler = *m_samplers.local();
+        const int tx = tile_index % m_tiles_x, ty = tile_index / m_tiles_x;
+        const int x_begin = m_window.x0 + tx * m_tile, y_begin = m_window.y0 + ty * m_tile;
+        const int x_end = std::min(x_begin + m_tile, m_window.x1), y_end = std::min(y_begin + m_tile, m_window.y1);
+        std::uint64_t taken = 0;
+        CameraBatch& batch = *m_batches.local();
+        batch.size = 0;
+        batch.sampler = &sampler;
+        batch.jittered = !m_pixel_centre;
+        constexpr int kBlock = CameraBatch::kBlock;
+        for (int block_y = y_begin; block_y < y_end; block_y += kBlock)
+            for (int block_x = x_begin; block_x < x_end; block_x += kBlock) {
+                if (should_stop()) {
+                    shade_batch(batch);
+                    m_samples_taken += taken;
+                    return;
+                }
+                for (int y = block_y; y < std::min(block_y + kBlock, y_end); ++y)
+                    for (int x = block_x; x < std::min(block_x + kBlock, x_end); ++x) {
+                        const std::uint32_t first = m_film.samples_taken(x, y);
+                        const std::uint32_t count = m_planner.planned(x - m_window.x0, y - m_window.y0, first);
+                        for (std::uint32_t s = first; s < first + count; ++s) {
+                            const Vec2 point = film_point(sampler, x, y, s);
+                            m_film.prefetch(x, y);
+                            batch.add(x, y, s, point);
+                            if (batch.full()) shade_batch(batch);
+                        }
+                        taken += count;
+                    }
+            }
+        shade_batch(batch);
+        m_samples_taken += taken;
+        m_progress.report(fraction_done());
+    }
+
+    const RenderScene& m_scene;
+    const Integrator& m_integrator;
+    const RenderOptions& m_options;
+    Film& m_film;
+    const Clock::time_point m_start;
+    const CropWindow m_window;
+    const int m_tile, m_tiles_x, m_tiles;
+    const std::uint64_t m_window_pixels;
+    PassPlanner m_planner;
+    const bool m_pixel_centre;
+    const std::unique_ptr<Sampler> m_prototype;
+    tbb::enumerable_thread_specific<std::unique_ptr<Sampler>> m_samplers;
+    tbb::enumerable_thread_specific<std::unique_ptr<CameraBatch>> m_batches;
+    Progress m_progress;
+    const bool m_has_deadline;
+    const Clock::time_point m_deadline;
+    std::atomic<bool> m_stop{false};
+    std::atomic<std::uint64_t> m_samples_taken{0};
+    std::uint64_t m_already_taken = 0;  // e.g. resumed from a checkpoint; set by the first plan
+    double m_stopped_fraction = 0.0;
+};
+
+}  // namespace
+
+RenderStats render_image(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options,
+                         Film& film) {
+    return ImageRender(scene, integrator, options, film).run();
 }
 
 }  // namespace lancer
