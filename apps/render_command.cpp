@@ -235,28 +235,10 @@ double process_age_seconds() {
     return 0.0;
 }
 
-int run_render(const RenderArguments& arguments) {
-    const auto started = std::chrono::steady_clock::now();
-    const double age_at_start = process_age_seconds();
-    auto seconds_so_far = [&] {
-        return age_at_start + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    };
-    if (const int status = check_arguments(arguments)) return status;
-
-    // Parse once; the command line's size is what POV's image_width/height read.
-    SceneRequest request;
-    request.path = arguments.scene;
-    request.safe = arguments.safe;
-    if (arguments.width_option->count() && arguments.height_option->count()) {
-        request.image_width = arguments.width;
-        request.image_height = arguments.height;
-    }
-    std::optional<sg::SceneGraph> graph = parse_job_scene(request);
-    if (!graph) return kExitBadInput;
-    const sg::RenderSettings settings = graph->render;
-
-    // Settings: command line, then the scene's render_settings, then defaults.
-    RenderOptions options;
+// Size, seed, threads, progress and crop: the command line, then the
+// scene's render_settings, then defaults. Returns an exit status on error.
+int settle_image_options(const RenderArguments& arguments, const sg::RenderSettings& settings,
+                         RenderOptions& options) {
     options.width = arguments.width_option->count() ? arguments.width : settings.width.value_or(kDefaultWidth);
     options.height =
         arguments.height_option->count() ? arguments.height : settings.height.value_or(kDefaultHeight);
@@ -283,26 +265,92 @@ int run_render(const RenderArguments& arguments) {
         }
         options.crop = crop;
     }
+    return 0;
+}
 
-    // Memory before anything is allocated: the film holds one Accumulator per
-    // pixel and writing the image needs a float RGBA copy. Refuse what the
-    // machine cannot hold; announce a big one (docs/robustness.md).
-    {
-        const double bytes = double(options.width) * double(options.height) *
-                             double(sizeof(Film::Accumulator) + 4 * sizeof(float));
-        const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
-        const double gib = double(1ull << 30);
-        char estimate[160];
-        std::snprintf(estimate, sizeof estimate, "render needs ~%.1f GiB for the film (%dx%d pixels)", bytes / gib,
-                      options.width, options.height);
-        if (physical > 0 && bytes > 0.8 * physical) {
-            char machine[80];
-            std::snprintf(machine, sizeof machine, ", more than this machine's %.1f GiB of memory allows", physical / gib);
-            print_error(std::string(estimate) + machine);
-            return kExitBadInput;
-        }
-        if (bytes >= double(256ull << 20)) std::fprintf(stderr, "lancer: %s\n", estimate);
+// Memory before anything is allocated: the film holds one Accumulator per
+// pixel and writing the image needs a float RGBA copy. Refuses what the
+// machine cannot hold; announces a big one (docs/robustness.md).
+int check_film_fits(const RenderOptions& options) {
+    const double bytes = double(options.width) * double(options.height) *
+                         double(sizeof(Film::Accumulator) + 4 * sizeof(float));
+    const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+    const double gib = double(1ull << 30);
+    char estimate[160];
+    std::snprintf(estimate, sizeof estimate, "render needs ~%.1f GiB for the film (%dx%d pixels)", bytes / gib,
+                  options.width, options.height);
+    if (physical > 0 && bytes > 0.8 * physical) {
+        char machine[80];
+        std::snprintf(machine, sizeof machine, ", more than this machine's %.1f GiB of memory allows", physical / gib);
+        print_error(std::string(estimate) + machine);
+        return kExitBadInput;
     }
+    if (bytes >= double(256ull << 20)) std::fprintf(stderr, "lancer: %s\n", estimate);
+    return 0;
+}
+
+// Samples: a fixed count, or with --time/--noise the per-pixel cap (only if
+// --spp says so). A deterministic integrator is exact with one sample per
+// pixel and ignores --time and --noise. Returns an exit status on error.
+int settle_samples(const RenderArguments& arguments, const sg::RenderSettings& settings, bool deterministic,
+                   RenderOptions& options) {
+    const bool progressive = arguments.time_option->count() || arguments.noise_option->count();
+    options.samples_per_pixel =
+        arguments.spp_option->count() ? arguments.spp : settings.samples.value_or(deterministic ? 1 : 16);
+    if (options.samples_per_pixel <= 0) {
+        Diagnostic diagnostic;
+        diagnostic.location = settings.location;
+        diagnostic.message = "samples must be at least 1, got " + std::to_string(options.samples_per_pixel);
+        print_diagnostic(diagnostic);
+        return kExitBadInput;
+    }
+    if (progressive && arguments.spp_option->count()) options.max_samples_per_pixel = arguments.spp;
+    if (arguments.noise_option->count()) options.noise_target = arguments.noise;
+    return 0;
+}
+
+RenderReport make_report(const RenderArguments& arguments, const std::string& output, const JobIntegrator& chosen,
+                         const RenderOptions& options, const RenderStats& stats) {
+    const bool progressive = arguments.time_option->count() || arguments.noise_option->count();
+    RenderReport report;
+    report.scene = arguments.scene;
+    report.output = output;
+    report.integrator = chosen.name;
+    report.parameters = parameter_list(chosen.parameters);
+    report.width = options.width;
+    report.height = options.height;
+    report.seed = options.seed;
+    report.samples_per_pixel = progressive ? options.max_samples_per_pixel : options.samples_per_pixel;
+    report.time_budget_seconds = arguments.time_option->count() ? arguments.time_budget : 0.0;
+    report.noise_target = options.noise_target;
+    report.stats = stats;
+    return report;
+}
+
+int run_render(const RenderArguments& arguments) {
+    const auto started = std::chrono::steady_clock::now();
+    const double age_at_start = process_age_seconds();
+    auto seconds_so_far = [&] {
+        return age_at_start + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    };
+    if (const int status = check_arguments(arguments)) return status;
+
+    // Parse once; the command line's size is what POV's image_width/height read.
+    SceneRequest request;
+    request.path = arguments.scene;
+    request.safe = arguments.safe;
+    if (arguments.width_option->count() && arguments.height_option->count()) {
+        request.image_width = arguments.width;
+        request.image_height = arguments.height;
+    }
+    std::optional<sg::SceneGraph> graph = parse_job_scene(request);
+    if (!graph) return kExitBadInput;
+    const sg::RenderSettings settings = graph->render;
+
+    RenderOptions options;
+    if (const int status = settle_image_options(arguments, settings, options)) return status;
+
+    if (const int status = check_film_fits(options)) return status;
 
     // Output: the scene's stem in the current folder unless named.
     const std::string output =
@@ -330,22 +378,8 @@ int run_render(const RenderArguments& arguments) {
     Integrator* const integrator = chosen.integrator.get();
 
     try {
-        // Samples: a fixed count, or with --time/--noise the per-pixel cap
-        // (only if --spp says so). A deterministic integrator is exact with
-        // one sample per pixel and ignores --time and --noise.
-        const bool progressive = arguments.time_option->count() || arguments.noise_option->count();
-        options.samples_per_pixel = arguments.spp_option->count()
-                                        ? arguments.spp
-                                        : settings.samples.value_or(integrator->is_deterministic() ? 1 : 16);
-        if (options.samples_per_pixel <= 0) {
-            Diagnostic diagnostic;
-            diagnostic.location = settings.location;
-            diagnostic.message = "samples must be at least 1, got " + std::to_string(options.samples_per_pixel);
-            print_diagnostic(diagnostic);
-            return kExitBadInput;
-        }
-        if (progressive && arguments.spp_option->count()) options.max_samples_per_pixel = arguments.spp;
-        if (arguments.noise_option->count()) options.noise_target = arguments.noise;
+        if (const int status = settle_samples(arguments, settings, integrator->is_deterministic(), options))
+            return status;
 
         const std::string checkpoint_path = checkpoint_path_for(output);
         const CheckpointIdentity identity = checkpoint_identity(arguments, options, integrator_name, parameters);
@@ -385,18 +419,7 @@ int run_render(const RenderArguments& arguments) {
 
         // Report and write: image (with per-pixel sample counts in EXR when
         // they vary), stats, and on interruption a checkpoint to resume.
-        RenderReport report;
-        report.scene = arguments.scene;
-        report.output = output;
-        report.integrator = integrator_name;
-        report.parameters = parameter_list(parameters);
-        report.width = options.width;
-        report.height = options.height;
-        report.seed = options.seed;
-        report.samples_per_pixel = progressive ? options.max_samples_per_pixel : options.samples_per_pixel;
-        report.time_budget_seconds = arguments.time_option->count() ? arguments.time_budget : 0.0;
-        report.noise_target = options.noise_target;
-        report.stats = stats;
+        RenderReport report = make_report(arguments, output, chosen, options, stats);
         ImageWriteOptions write_options;
         write_options.sample_count_channel =
             stats.interrupted || stats.min_samples_per_pixel != stats.max_samples_per_pixel;
