@@ -7,9 +7,7 @@
 // channels (use EXR or HDR to keep it), and a ray that hits nothing is 0,
 // which no hit can be.
 //
-// | parameter      | type  | default | meaning                                             |
-// |----------------|-------|---------|-----------------------------------------------------|
-// | `max_distance` | float | 0       | distance shown as white; 0 writes the raw distance |
+// Parameters: documented by `lancer plugins` / docs/integrators.md (from kParameters below).
 //
 // Example:
 //     lancer render scenes/demo.pov -i depth -p max_distance=20 -o demo_depth.png

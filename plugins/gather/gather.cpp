@@ -41,16 +41,10 @@
 // missing multiple bounces in closed rooms, hot spots near lamp proxies,
 // no caustics).
 //
-// | parameter             | type  | default | meaning                                              |
-// |-----------------------|-------|---------|------------------------------------------------------|
-// | `n`                   | int   | 64      | points on the sphere: gathered rays per diffuse hit |
-// | `jitter`              | float | 1       | in [0, 1]: how far each hit moves the points (1: exact cosine distribution, 0: fixed lattice) |
-// | `max_depth`           | int   | 0       | deepest mirror/refraction level (camera ray = 1); 0: the scene's max_trace_level; at most 256 |
-// | `fresnel`             | bool  | false   | Fresnel split of transparent surfaces, as whitted   |
-// | `additive_reflection` | bool  | false   | POV-Ray's sum: reflection does not remove the diffuse term |
+// Parameters: documented by `lancer plugins` / docs/integrators.md (from kParameters below).
 //
 // Example:
-//     lancer render scenes/cornell_box.pov -i gather -p n=100 -s 16 -o cornell_gather.png
+//     lancer render scenes/cornell_box.pov -i gather -p n=100 --spp 16 -o cornell_gather.png
 // or in the scene:
 //     render_settings { integrator "gather" { n 100 jitter 1 } samples 16 }
 #include <algorithm>
@@ -154,7 +148,7 @@ const ParameterDecl kParameters[] = {
     {"jitter", ParameterType::Float, "1",
      "in [0,1]: how far each hit moves the points (1: exact cosine distribution, 0: fixed lattice)"},
     {"max_depth", ParameterType::Int, "0",
-     "deepest mirror/refraction level (camera ray = 1); 0: the scene's max_trace_level"},
+     "deepest mirror/refraction level (camera ray = 1), at most 256; 0: the scene's max_trace_level"},
     {"fresnel", ParameterType::Bool, "false", "Fresnel split of transparent surfaces, as whitted"},
     {"additive_reflection", ParameterType::Bool, "false",
      "POV-Ray's sum: reflection does not remove the diffuse term"},

@@ -6,9 +6,7 @@
 // Useful to debug geometry and normals, and as a denoiser's guide channel
 // (write EXR to keep the values linear).
 //
-// | parameter | type | default | meaning                                              |
-// |-----------|------|---------|------------------------------------------------------|
-// | `shading` | bool | true    | the interpolated shading normal; false: the geometric normal |
+// Parameters: documented by `lancer plugins` / docs/integrators.md (from kParameters below).
 //
 // Example:
 //     lancer render scenes/demo.pov -i normal -o demo_normal.png

@@ -20,23 +20,15 @@
 // Camera rays that hit a light see its emission; rays that escape see the
 // background (not importance sampled).
 //
-// | parameter        | type   | default       | meaning                                                        |
-// |------------------|--------|---------------|----------------------------------------------------------------|
-// | `max_depth`      | int    | 16            | bounces: 0 emission only, 1 direct light only; < 0 unlimited   |
-// | `rr_depth`       | int    | 3             | bounces before Russian roulette starts                         |
-// | `clamp`          | float  | 0             | cap on a sample's max component (biased firefly control); 0 off |
-// | `sampler`        | string | "independent" | "independent" or "sobol" (Owen-scrambled; use 2^k samples)     |
-// | `light_sampling` | string | "power"       | light per NEE: "power" (by emitted power), "uniform", or "all" |
-// | `strategy`       | string | "mis"         | "mis", "nee" (light sampling only), "bsdf" (BSDF sampling only) |
-// | `additive_reflection` | bool | false       | POV-Ray's sum: a mirror keeps its diffuse term (as whitted's)   |
+// Parameters: documented by `lancer plugins` / docs/integrators.md (from kParameters below).
 //
 // `strategy` exists to test the estimator: the three converge to the same
 // image (delta lights are always sampled by NEE, the only way to reach them).
 //
 // Example:
-//     lancer render scenes/cornell.pov -i path -s 256 -p sampler=sobol -o cornell.exr
+//     lancer render scenes/cornell_box.pov -i path --spp 256 -p sampler=sobol -o cornell.exr
 // or in the scene:
-//     render_settings { integrator "path" max_depth 8 sampler "sobol" }
+//     render_settings { integrator "path" { max_depth 8 sampler "sobol" } }
 #include <algorithm>
 #include <cmath>
 #include <iterator>

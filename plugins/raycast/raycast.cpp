@@ -12,10 +12,7 @@
 // and gather, so all four agree wherever nothing is occluded. No
 // randomness: one sample per pixel is exact (more only anti-alias).
 //
-// | parameter  | type | default | meaning                                          |
-// |------------|------|---------|--------------------------------------------------|
-// | `ambient`  | bool | true    | add POV's ambient term (ambient × pigment × ambient_light × opacity) |
-// | `specular` | bool | true    | include the glossy lobes (phong, specular); false: diffuse only |
+// Parameters: documented by `lancer plugins` / docs/integrators.md (from kParameters below).
 //
 // Example:
 //     lancer render scenes/demo.pov -i raycast -p specular=false -o demo_diffuse.png
@@ -104,7 +101,7 @@ private:
 
 const ParameterDecl kParameters[] = {
     {"ambient", ParameterType::Bool, "true",
-     "add POV's ambient term (ambient x pigment x ambient_light)"},
+     "add POV's ambient term (ambient x pigment x ambient_light x opacity)"},
     {"specular", ParameterType::Bool, "true",
      "include the glossy lobes (phong, specular); false: diffuse only"},
 };

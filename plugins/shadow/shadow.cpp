@@ -18,16 +18,13 @@
 // the exact direct light of the lamp as N and the pixel samples grow. Point
 // and directional lights stay hard.
 //
-// | parameter      | type | default | meaning                                               |
-// |----------------|------|---------|-------------------------------------------------------|
-// | `area_samples` | int  | 0       | 0: area lights through their point proxy (hard shadows); N > 0: N samples of each area light's surface per hit (soft shadows) |
-// | `ambient`      | bool | true    | add POV's ambient term (ambient × pigment × ambient_light × opacity) |
+// Parameters: documented by `lancer plugins` / docs/integrators.md (from kParameters below).
 //
 // Deterministic when area_samples = 0 (one sample per pixel is exact).
 //
 // Example:
 //     lancer render scenes/hard_shadows.pov -i shadow -o shadows.png
-//     lancer render scenes/demo.pov -i shadow -p area_samples=16 -s 4 -o soft.png
+//     lancer render scenes/demo.pov -i shadow -p area_samples=16 --spp 4 -o soft.png
 // or in the scene:
 //     render_settings { integrator "shadow" { area_samples 16 } }
 #include <iterator>

@@ -25,11 +25,7 @@
 // path weight (product of the weights that led to it) falls under the
 // scene's adc_bailout is not traced either.
 //
-// | parameter             | type  | default | meaning                                              |
-// |-----------------------|-------|---------|------------------------------------------------------|
-// | `max_depth`           | int   | 0       | deepest ray level (camera ray = 1); 0: the scene's max_trace_level; at most 256 |
-// | `fresnel`             | bool  | false   | Fresnel split of transparent surfaces (reflect F, transmit 1 - F); false: the material's fixed coefficients |
-// | `additive_reflection` | bool  | false   | POV-Ray's sum: reflection does not remove the diffuse term |
+// Parameters: documented by `lancer plugins` / docs/integrators.md (from kParameters below).
 //
 // Deterministic: one sample per pixel is exact (more only anti-alias).
 //
@@ -88,7 +84,7 @@ private:
 
 const ParameterDecl kParameters[] = {
     {"max_depth", ParameterType::Int, "0",
-     "deepest ray level (camera ray = 1); 0: the scene's max_trace_level"},
+     "deepest ray level (camera ray = 1), at most 256; 0: the scene's max_trace_level"},
     {"fresnel", ParameterType::Bool, "false",
      "Fresnel split of transparent surfaces (reflect F, transmit 1-F); false: fixed coefficients"},
     {"additive_reflection", ParameterType::Bool, "false",
