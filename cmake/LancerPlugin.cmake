@@ -7,8 +7,20 @@
 # beside liblancer.so; out of tree they build in the project's own binary
 # folder and install to <prefix>/lib/lancer/plugins (put that folder in
 # LANCER_PLUGIN_PATH, or install into lancer's own prefix).
+#
+# A project that sets no CMAKE_BUILD_TYPE (with a single-configuration
+# generator such as Ninja or Makefiles) builds its plugins in Release: an
+# unoptimised integrator is many times slower, and lancer itself is built in
+# Release by default too. Pass -DCMAKE_BUILD_TYPE=Debug (or any other) to
+# choose; in lancer's own tree the top-level CMakeLists.txt has already set it.
 include_guard(GLOBAL)
 include(GNUInstallDirs)
+
+get_property(lancer_multi_config GLOBAL PROPERTY GENERATOR_IS_MULTI_CONFIG)
+if(NOT CMAKE_BUILD_TYPE AND NOT lancer_multi_config)
+  set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type (lancer plugins default to Release)" FORCE)
+  message(STATUS "lancer: CMAKE_BUILD_TYPE not set, building plugins in Release")
+endif()
 
 function(lancer_add_integrator name)
   add_library(lancer_integrator_${name} MODULE ${ARGN})

@@ -4,9 +4,7 @@
 // show the scene's background. Built with find_package(lancer) and loaded
 // through LANCER_PLUGIN_PATH by tests/out_of_tree_plugin_test.cpp.
 //
-// | parameter | type  | default | meaning                        |
-// |-----------|-------|---------|--------------------------------|
-// | `level`   | float | 1       | grey level of every hit surface |
+// Parameters: documented by `lancer plugins` (generated from kParameters below).
 //
 // Example:
 //     LANCER_PLUGIN_PATH=build lancer render scene.pov -i silhouette -p level=0.5
