@@ -9,7 +9,7 @@
 // The bare scenes are built with the same build quality as lancer's
 // (kLancerBuildQuality mirrors embree_scene.cpp). BM_BareEmbreeRobustPrimaryRays
 // is the bare loop with RTC_SCENE_FLAG_ROBUST, which lancer's scene sets for
-// watertight meshes (render/src/watertight_test.cpp): the flag's own cost.
+// watertight meshes (render/src/geometry/watertight_test.cpp): the flag's own cost.
 // BM_HostIntersectOnlyPrimaryRays runs the host with an integrator that only
 // reports the hit the host found, to tell the host's and RenderScene's
 // share from raycast's shading. BM_ScenePackets calls

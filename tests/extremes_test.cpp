@@ -2,7 +2,7 @@
 // against and states the expected result. Scenes are written in the scene
 // language (parse_scene_string) so they read like user scenes; images are
 // tiny. Self-intersection across 1e-6..1e6 lives in
-// render/src/self_intersection_test.cpp.
+// render/src/geometry/self_intersection_test.cpp.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -52,7 +52,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        LIGHT_ID "light_source identifier" TRANSFORM_ID "transform identifier"
        UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" UNSUPPORTED "unsupported keyword"
 
-/* Keywords: the alias is the spelling; keywords.cpp builds its table from these. */
+/* Keywords: the alias is the spelling; token_stream.cpp (keyword_table) builds its table from these. */
 %token SPHERE "sphere" PLANE "plane" BOX "box" TRIANGLE "triangle" SMOOTH_TRIANGLE "smooth_triangle"
        MESH "mesh" MESH2 "mesh2" UNION "union" MERGE "merge" DIFFERENCE "difference"
        INTERSECTION "intersection" OBJECT "object" OBJ_MESH "obj_mesh"

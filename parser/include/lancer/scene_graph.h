@@ -1,6 +1,7 @@
 // The scene graph: what a scene file means, after every directive has run and
-// every expression has been folded. The evaluator builds it; render/ compiles
-// it into a RenderScene. It knows nothing of Embree, plugins or the AST.
+// every expression has been folded. The evaluator builds it as it parses (there
+// is no AST); the host compiles it into a RenderScene (compile_scene,
+// lancer/host/scene_compiler.h). It knows nothing of Embree or plugins.
 //
 // Conventions (POV-Ray's): left-handed, +y up, lengths in scene units,
 // colours linear RGB. Every node carries the source location it came from so

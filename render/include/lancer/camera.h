@@ -1,5 +1,5 @@
 // The camera, resolved from the scene graph as POV-Ray 3.7 frames it
-// (reference/pov-3.7-semantics.md §1).
+// (pov-3.7-semantics.md §1, the POV-Ray reference kept outside this repository).
 #pragma once
 
 #include <cmath>

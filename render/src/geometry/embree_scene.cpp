@@ -36,7 +36,7 @@ constexpr RTCBuildQuality kBuildQuality = RTC_BUILD_QUALITY_MEDIUM;
 // conservative box tests and its Pluecker triangle test, whose edge tests
 // agree exactly between the two triangles sharing an edge. Without it, rays
 // aimed at shared edges of a closed mesh leak through it (3-7% of them,
-// render/src/watertight_test.cpp and bench/README.md), which shows as
+// render/src/geometry/watertight_test.cpp and bench/README.md), which shows as
 // speckles of background or of what lies behind in any image. It costs
 // traversal speed, measured by lancer_bench (BM_BareEmbreeRobustPrimaryRays).
 constexpr RTCSceneFlags kSceneFlags = RTC_SCENE_FLAG_ROBUST;
