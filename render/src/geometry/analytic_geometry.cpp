@@ -1,0 +1,103 @@
+// Analytic shapes (spheres, boxes, rectangle lights, planes) as Embree
+// user geometry: bounds, intersection of single rays and packets, shadow
+// queries, and the filter that lets shadow rays pass no_shadow meshes.
+#include <cmath>
+
+#include "geometry/embree_scene.h"
+
+namespace lancer::embree {
+
+// Ray in an object's space, in double.
+void ray_to_object(const Instance& instance, const float org[3], const float dir[3], DVec3& o, DVec3& d) {
+    o = instance.placement.point_to_object(DVec3(org[0], org[1], org[2]));
+    d = instance.placement.vector_to_object(DVec3(dir[0], dir[1], dir[2]));
+}
+
+// Lane i of a packet of n rays in an object's space (a single ray is n = 1).
+static void ray_lane_to_object(const Instance& instance, RTCRayN* rays, unsigned n, unsigned i, DVec3& o, DVec3& d) {
+    const float org[3] = {RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
+    const float dir[3] = {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
+    ray_to_object(instance, org, dir, o, d);
+}
+
+bool intersect_analytic(const Instance& instance, const DVec3& o, const DVec3& d, double t_min, double t_max,
+                        double& t, int& face) {
+    face = 0;
+    switch (instance.kind) {
+    case ShapeKind::Sphere: return intersect_sphere(instance.sphere, o, d, t_min, t_max, t);
+    case ShapeKind::Box: return intersect_box(instance.box, o, d, t_min, t_max, t, face);
+    case ShapeKind::Rectangle: return intersect_rectangle(instance.rectangle, o, d, t_min, t_max, t);
+    case ShapeKind::Plane: return intersect_plane(instance.plane, o, d, t_min, t_max, t);
+    default: return false;
+    }
+}
+
+void analytic_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* group = static_cast<const AnalyticGroup*>(args->geometryUserPtr);
+    const Instance& instance = group->data->instances[group->instances[args->primID]];
+    *args->bounds_o = RTCBounds{instance.bounds_lower.x, instance.bounds_lower.y, instance.bounds_lower.z, 0.0f,
+                                instance.bounds_upper.x, instance.bounds_upper.y, instance.bounds_upper.z, 0.0f};
+}
+
+// Embree calls these with one ray, or with a packet of N when rays are
+// traced together (intersect_batch); valid[i] says which lanes are live.
+void analytic_intersect(const RTCIntersectFunctionNArguments* args) {
+    const auto* group = static_cast<const AnalyticGroup*>(args->geometryUserPtr);
+    const Instance& instance = group->data->instances[group->instances[args->primID]];
+    const unsigned n = args->N;
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, n);
+    RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
+    for (unsigned i = 0; i < n; ++i) {
+        if (!args->valid[i]) continue;
+        float& tfar = RTCRayN_tfar(rays, n, i);
+        DVec3 o, d;
+        ray_lane_to_object(instance, rays, n, i, o, d);
+        double t;
+        int face;
+        if (!intersect_analytic(instance, o, d, RTCRayN_tnear(rays, n, i), tfar, t, face)) continue;
+        const float t_float = float(t);
+        if (!(t_float < tfar)) continue;
+        tfar = t_float;
+        RTCHitN_u(hits, n, i) = float(face);
+        RTCHitN_v(hits, n, i) = 0.0f;
+        RTCHitN_Ng_x(hits, n, i) = 0.0f;
+        RTCHitN_Ng_y(hits, n, i) = 1.0f;
+        RTCHitN_Ng_z(hits, n, i) = 0.0f;
+        RTCHitN_primID(hits, n, i) = args->primID;
+        RTCHitN_geomID(hits, n, i) = args->geomID;
+        RTCHitN_instID(hits, n, i, 0) = args->context->instID[0];
+    }
+}
+
+void analytic_occluded(const RTCOccludedFunctionNArguments* args) {
+    const auto* group = static_cast<const AnalyticGroup*>(args->geometryUserPtr);
+    const Instance& instance = group->data->instances[group->instances[args->primID]];
+    if (!instance.casts_shadow) return;
+    const unsigned n = args->N;
+    RTCRayN* rays = args->ray;
+    for (unsigned i = 0; i < n; ++i) {
+        if (!args->valid[i]) continue;
+        DVec3 o, d;
+        ray_lane_to_object(instance, rays, n, i, o, d);
+        double t;
+        int face;
+        if (intersect_analytic(instance, o, d, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t, face))
+            RTCRayN_tfar(rays, n, i) = -INFINITY;
+    }
+}
+
+// Rejects hits on meshes of no_shadow objects during occluded().
+void skip_no_shadow(const RTCFilterFunctionNArguments* args) {
+    const auto* context = reinterpret_cast<const ShadowContext*>(args->context);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (!args->valid[i]) continue;
+        unsigned top = RTCHitN_instID(args->hit, args->N, i, 0);
+        if (top == kInvalidId) top = RTCHitN_geomID(args->hit, args->N, i);
+        if (top >= context->geometries->size()) continue;
+        const GeometryEntry& entry = (*context->geometries)[top];
+        if (entry.group) continue;
+        if (!context->data->instances[entry.instance].casts_shadow) args->valid[i] = 0;
+    }
+}
+
+}  // namespace lancer::embree

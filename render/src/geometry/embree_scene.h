@@ -1,0 +1,162 @@
+// The RenderScene on Embree 3 (internal to liblancer), in four files: the
+// BVH build (embree_scene.cpp), the user geometry of analytic shapes
+// (analytic_geometry.cpp), ray queries with the camera-packet pipeline
+// (ray_queries.cpp) and hit completion (hit_completion.cpp). Only these
+// files talk to Embree.
+//
+// Geometry IDs index our own tables: analytic shapes (spheres, boxes,
+// rectangle lights) are one user geometry per kind whose primitive IDs index
+// the instance table; a mesh used once is a world-space triangle geometry;
+// a mesh used several times is built once in its own Embree scene and
+// instanced. Infinite planes live outside the BVH and are tested
+// analytically after it.
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "host/scene_builder.h"
+#include "lancer/render_scene.h"
+
+namespace lancer::embree {
+
+constexpr unsigned kInvalidId = RTC_INVALID_GEOMETRY_ID;
+// Lanes of a ray packet (rtcIntersect16).
+constexpr int kMaxLanes = 16;
+
+// One Embree user geometry's primitives: instance indices per primitive.
+struct AnalyticGroup {
+    const SceneData* data = nullptr;
+    ShapeKind kind = ShapeKind::Sphere;
+    std::vector<std::uint32_t> instances;
+};
+
+// What an Embree geometry id of the top-level scene stands for.
+struct GeometryEntry {
+    const AnalyticGroup* group = nullptr;  // analytic: primID indexes group->instances
+    std::uint32_t instance = 0;            // mesh or mesh instance
+};
+
+// occluded()'s context: lets the filter skip no_shadow meshes.
+struct ShadowContext {
+    RTCIntersectContext base;
+    const std::vector<GeometryEntry>* geometries;
+    const SceneData* data;
+};
+
+// Everything a hit on a mesh placed in world space needs, when its
+// triangles are its faces and it has no per-vertex normals, texture
+// coordinates or per-face materials (the common OBJ and mesh2 case): a hit
+// then reads this 40-byte record and the triangle's corners, nothing of
+// the Instance or the source mesh.
+struct PlainTriangles {
+    const float* positions = nullptr;  // null: not a plain world mesh
+    const std::uint32_t* indices = nullptr;
+    const Material* material = nullptr;
+    const Light* emitter = nullptr;
+    std::uint32_t object_id = 0;
+    bool casts_shadow = true;
+};
+
+// One ray's answer from Embree.
+struct EmbreeHit {
+    float tnear, tfar;
+    unsigned geometry, primitive, instance;
+    float u, v;
+};
+
+// A packet's answers, lane by lane, as Embree gives them.
+struct PacketAnswers {
+    float tnear[kMaxLanes], tfar[kMaxLanes];
+    unsigned geometry[kMaxLanes], primitive[kMaxLanes], instance[kMaxLanes];
+    float u[kMaxLanes], v[kMaxLanes];
+
+    EmbreeHit lane(int k) const { return EmbreeHit{tnear[k], tfar[k], geometry[k], primitive[k], instance[k], u[k], v[k]}; }
+};
+
+// The float vertices Embree traces for a mesh instance: world space for a
+// mesh used once, object space for an instanced one.
+inline const std::vector<float>& traced_positions(const Instance& instance) {
+    return instance.mesh_in_world ? instance.world_positions : instance.mesh->object_positions;
+}
+
+// Analytic shapes as Embree user geometry (analytic_geometry.cpp).
+void ray_to_object(const Instance& instance, const float org[3], const float dir[3], DVec3& o, DVec3& d);
+bool intersect_analytic(const Instance& instance, const DVec3& o, const DVec3& d, double t_min, double t_max,
+                        double& t, int& face);
+void analytic_bounds(const RTCBoundsFunctionArguments* args);
+void analytic_intersect(const RTCIntersectFunctionNArguments* args);
+void analytic_occluded(const RTCOccludedFunctionNArguments* args);
+void skip_no_shadow(const RTCFilterFunctionNArguments* args);
+
+// Hit completion on plain world meshes, lane by lane (hit_completion.cpp).
+void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const float* t, const unsigned* primitive,
+                                  const float* u, const float* v, int count, Hit* hits);
+
+class EmbreeScene final : public RenderScene {
+public:
+    // Throws std::runtime_error when Embree reports an error.
+    explicit EmbreeScene(std::unique_ptr<SceneData> data);
+    ~EmbreeScene() override;
+
+    bool intersect(const Ray& ray, Hit& hit) const override;
+    void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found,
+                         RayCoherence coherence) const override;
+    bool occluded(const Ray& ray) const override;
+    const std::vector<const Light*>& lights() const override { return m_data->lights; }
+    const std::vector<const Light*>& local_lights() const override { return m_data->local_lights; }
+    const Camera& camera() const override { return m_data->camera; }
+    Color background(const Ray&) const override { return m_data->background; }
+    const SceneOptions& options() const override { return m_data->options; }
+    Bounds bounds() const override { return m_data->bounds; }
+
+private:
+    void build();
+    RTCGeometry make_triangles(const MeshData& mesh, const std::vector<float>& positions);
+    // intersect_batch's stages for coherent rays (see there); packets of kPacketLanes rays.
+    static constexpr int kPacketLanes = kMaxLanes;
+    void trace_packet(const Ray* rays, int lanes, PacketAnswers& answers) const;
+    void prefetch_corner_indices(const PacketAnswers& answers, int lanes) const;
+    void prefetch_corners(const PacketAnswers& answers, int lanes) const;
+    void complete_packet(const Ray* rays, const PacketAnswers& answers, int lanes, Hit* hits, bool* found) const;
+    // The Hit from what Embree found for `ray` (and the planes outside it).
+    bool complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit) const;
+    // The mesh instance Embree's answer names, or null (analytic or no hit).
+    const Instance* mesh_instance_of(const EmbreeHit& found) const;
+    void complete_analytic_hit(const Instance& instance, const Ray& ray, float t, int face, Hit& hit) const;
+    void complete_mesh_hit(const Instance& instance, bool faces_are_triangles, std::uint32_t primitive, float b1,
+                           float b2, Hit& hit) const;
+
+    std::unique_ptr<SceneData> m_data;
+    RTCDevice m_device = nullptr;
+    RTCScene m_scene = nullptr;
+    std::vector<RTCScene> m_mesh_scenes;
+    std::map<const MeshData*, RTCScene> m_scene_of_mesh;
+    std::vector<std::unique_ptr<AnalyticGroup>> m_groups;
+    std::vector<GeometryEntry> m_geometries;  // by top-level geomID
+    std::vector<std::uint32_t> m_planes;      // instance indices
+    std::string m_device_error;
+    bool m_has_no_shadow_mesh = false;
+    // By instance: a mesh whose triangle i is its face i (no polygons split).
+    std::vector<std::uint8_t> m_faces_are_triangles;
+    // By top-level geometry id: plain world meshes (see PlainTriangles).
+    std::vector<PlainTriangles> m_plain_triangles;
+    // The emitter a hit on `instance` with `material` reports.
+    static const Light* emitter_of(const Instance& instance, const Material* material) {
+        if (instance.light) return instance.light;
+        return material && material->is_emissive() ? instance.emitter : nullptr;
+    }
+    // The plain world mesh Embree's answer names, or null.
+    const PlainTriangles* plain_triangles_of(unsigned geometry, unsigned instance) const {
+        if (instance != kInvalidId || geometry >= m_plain_triangles.size()) return nullptr;
+        const PlainTriangles& mesh = m_plain_triangles[geometry];
+        return mesh.positions ? &mesh : nullptr;
+    }
+};
+
+}  // namespace lancer::embree

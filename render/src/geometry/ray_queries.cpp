@@ -1,0 +1,165 @@
+// Ray queries on the Embree scene: one ray (intersect, occluded), and
+// batches of coherent camera rays traced in packets through a pipeline that
+// hides the memory latency of completing their hits.
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "geometry/embree_scene.h"
+
+namespace lancer::embree {
+namespace {
+
+void fill_embree_ray(const Ray& ray, RTCRay& out) {
+    out.org_x = ray.origin.x;
+    out.org_y = ray.origin.y;
+    out.org_z = ray.origin.z;
+    out.dir_x = ray.direction.x;
+    out.dir_y = ray.direction.y;
+    out.dir_z = ray.direction.z;
+    out.tnear = glm::max(ray.t_min, 0.0f);
+    out.tfar = glm::max(ray.t_max, out.tnear);
+    out.time = 0.0f;
+    out.mask = 0xffffffffu;
+    out.id = 0;
+    out.flags = 0;
+}
+
+}  // namespace
+
+bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayhit;
+    fill_embree_ray(ray, rayhit.ray);
+    rayhit.hit.geomID = kInvalidId;
+    rayhit.hit.primID = kInvalidId;
+    rayhit.hit.instID[0] = kInvalidId;
+    rayhit.hit.u = rayhit.hit.v = 0.0f;
+    rtcIntersect1(m_scene, &context, &rayhit);
+    const EmbreeHit found{rayhit.ray.tnear, rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
+                          rayhit.hit.instID[0], rayhit.hit.u,  rayhit.hit.v};
+    return complete_hit(ray, found, hit);
+}
+
+void EmbreeScene::trace_packet(const Ray* rays, int lanes, PacketAnswers& answers) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    alignas(64) int valid[kPacketLanes];
+    alignas(64) RTCRayHit16 packet;
+    for (int k = 0; k < kPacketLanes; ++k) {
+        valid[k] = k < lanes ? -1 : 0;
+        // Idle lanes repeat a live ray so every lane holds finite data.
+        const Ray& ray = rays[std::min(k, lanes - 1)];
+        packet.ray.org_x[k] = ray.origin.x;
+        packet.ray.org_y[k] = ray.origin.y;
+        packet.ray.org_z[k] = ray.origin.z;
+        packet.ray.dir_x[k] = ray.direction.x;
+        packet.ray.dir_y[k] = ray.direction.y;
+        packet.ray.dir_z[k] = ray.direction.z;
+        packet.ray.tnear[k] = glm::max(ray.t_min, 0.0f);  // as fill_embree_ray
+        packet.ray.tfar[k] = glm::max(ray.t_max, packet.ray.tnear[k]);
+        packet.ray.time[k] = 0.0f;
+        packet.ray.mask[k] = 0xffffffffu;
+        packet.ray.id[k] = 0;
+        packet.ray.flags[k] = 0;
+        packet.hit.geomID[k] = kInvalidId;
+        packet.hit.primID[k] = kInvalidId;
+        packet.hit.instID[0][k] = kInvalidId;
+        packet.hit.u[k] = packet.hit.v[k] = 0.0f;
+    }
+    rtcIntersect16(valid, m_scene, &context, &packet);
+    for (int k = 0; k < kPacketLanes; ++k) {
+        answers.tnear[k] = packet.ray.tnear[k];
+        answers.tfar[k] = packet.ray.tfar[k];
+        answers.geometry[k] = packet.hit.geomID[k];
+        answers.primitive[k] = packet.hit.primID[k];
+        answers.instance[k] = packet.hit.instID[0][k];
+        answers.u[k] = packet.hit.u[k];
+        answers.v[k] = packet.hit.v[k];
+    }
+}
+
+void EmbreeScene::prefetch_corner_indices(const PacketAnswers& answers, int lanes) const {
+    for (int k = 0; k < lanes; ++k) {
+        if (const PlainTriangles* mesh = plain_triangles_of(answers.geometry[k], answers.instance[k]))
+            __builtin_prefetch(&mesh->indices[3 * std::size_t(answers.primitive[k])]);
+        else if (const Instance* instance = mesh_instance_of(answers.lane(k)))
+            __builtin_prefetch(&instance->mesh->indices[3 * std::size_t(answers.primitive[k])]);
+    }
+}
+
+void EmbreeScene::prefetch_corners(const PacketAnswers& answers, int lanes) const {
+    for (int k = 0; k < lanes; ++k) {
+        const float* positions;
+        const std::uint32_t* corner;
+        if (const PlainTriangles* mesh = plain_triangles_of(answers.geometry[k], answers.instance[k])) {
+            positions = mesh->positions;
+            corner = &mesh->indices[3 * std::size_t(answers.primitive[k])];
+        } else if (const Instance* instance = mesh_instance_of(answers.lane(k))) {
+            positions = traced_positions(*instance).data();
+            corner = &instance->mesh->indices[3 * std::size_t(answers.primitive[k])];
+        } else {
+            continue;
+        }
+        for (int c = 0; c < 3; ++c) __builtin_prefetch(&positions[3 * std::size_t(corner[c])]);
+    }
+}
+
+void EmbreeScene::intersect_batch(const Ray* rays, int count, Hit* hits, bool* found,
+                                  RayCoherence coherence) const {
+    // Incoherent rays share too few BVH nodes for packets to pay.
+    if (coherence == RayCoherence::Incoherent) {
+        for (int i = 0; i < count; ++i) found[i] = intersect(rays[i], hits[i]);
+        return;
+    }
+    // A mesh hit needs its triangle's corner indices, then the corners: two
+    // dependent loads, cold in cache (Embree traverses its own copy of the
+    // vertices), which would stall completion for most of a memory latency
+    // each. So the packets go through a pipeline: after packet i is traced,
+    // its indices are requested, packet i-1's corners (indices now cached)
+    // are requested, and packet i-2 is completed; each packet's tracing
+    // hides the next stage's misses.
+    constexpr int kDepth = 3;
+    PacketAnswers answers[kDepth];
+    const int packets = (count + kPacketLanes - 1) / kPacketLanes;
+    auto lanes_of = [&](int packet) { return std::min(kPacketLanes, count - packet * kPacketLanes); };
+    for (int step = 0; step < packets + 2; ++step) {
+        if (step < packets) {
+            PacketAnswers& traced = answers[step % kDepth];
+            trace_packet(rays + step * kPacketLanes, lanes_of(step), traced);
+            prefetch_corner_indices(traced, lanes_of(step));
+        }
+        if (const int previous = step - 1; previous >= 0 && previous < packets)
+            prefetch_corners(answers[previous % kDepth], lanes_of(previous));
+        if (const int ready = step - 2; ready >= 0)
+            complete_packet(rays + ready * kPacketLanes, answers[ready % kDepth], lanes_of(ready),
+                            hits + ready * kPacketLanes, found + ready * kPacketLanes);
+    }
+}
+
+bool EmbreeScene::occluded(const Ray& ray) const {
+    ShadowContext context;
+    rtcInitIntersectContext(&context.base);
+    context.geometries = &m_geometries;
+    context.data = m_data.get();
+    if (m_has_no_shadow_mesh) context.base.filter = skip_no_shadow;
+    RTCRay shadow_ray;
+    fill_embree_ray(ray, shadow_ray);
+    rtcOccluded1(m_scene, &context.base, &shadow_ray);
+    if (shadow_ray.tfar == -INFINITY) return true;
+    for (std::uint32_t index : m_planes) {
+        const Instance& instance = m_data->instances[index];
+        if (!instance.casts_shadow) continue;
+        DVec3 o, d;
+        const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+        const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+        ray_to_object(instance, org, dir, o, d);
+        double t;
+        if (intersect_plane(instance.plane, o, d, glm::max(ray.t_min, 0.0f), ray.t_max, t)) return true;
+    }
+    return false;
+}
+
+}  // namespace lancer::embree
