@@ -21,16 +21,8 @@ const char* severity_name(Diagnostic::Severity severity) {
 
 std::string location_text(const sg::SourceLocation& where) {
     std::string text = where.file ? *where.file : std::string("<unknown>");
-    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict, its bug
-    // 105329) about ":" + std::to_string(...), and CI treats warnings as errors.
-    if (where.line > 0) {
-        text += ':';
-        text += std::to_string(where.line);
-    }
-    if (where.column > 0) {
-        text += ':';
-        text += std::to_string(where.column);
-    }
+    if (where.line > 0) text += ":" + std::to_string(where.line);
+    if (where.column > 0) text += ":" + std::to_string(where.column);
     return text;
 }
 
