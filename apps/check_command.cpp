@@ -28,12 +28,14 @@ Command add_check_command(CLI::App& app) {
     Command command;
     command.cli = app.add_subcommand("check", "Parse and evaluate a scene, print a summary");
     command.cli->add_option("scene", options->scene, "Scene file (.pov)")->required();
-    command.cli->add_option("-I,--include-path", options->include_path,
-                            "Folder searched for #include files (repeatable); searched before LANCER_INCLUDE_PATH")
+    command.cli
+        ->add_option("-I,--include-path", options->include_path,
+                     "Folder searched for #include files (repeatable); searched before LANCER_INCLUDE_PATH")
         ->take_last()
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     command.cli->add_option("--width", options->width, "Image width seen as image_width")->check(CLI::PositiveNumber);
-    command.cli->add_option("--height", options->height, "Image height seen as image_height")->check(CLI::PositiveNumber);
+    command.cli->add_option("--height", options->height, "Image height seen as image_height")
+        ->check(CLI::PositiveNumber);
     command.cli->add_flag("--safe", options->safe,
                           "Untrusted scene: read includes, OBJ/MTL and image files only from the scene's folder "
                           "and the include path");

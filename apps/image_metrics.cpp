@@ -127,13 +127,12 @@ RgbImage relative_error_map(const RgbImage& image, const RgbImage& reference) {
 Color heat_map_colour(double relative_error) {
     // Stops of a perceptually ordered dark-to-bright ramp (after matplotlib's
     // "inferno"), spaced evenly in log10 of the error.
-    static constexpr std::array<Color, 6> stops = {
-        Color(0.00f, 0.00f, 0.02f), Color(0.26f, 0.04f, 0.41f), Color(0.58f, 0.15f, 0.40f),
-        Color(0.87f, 0.32f, 0.23f), Color(0.99f, 0.65f, 0.04f), Color(0.99f, 1.00f, 0.64f)};
+    static constexpr std::array<Color, 6> stops = {Color(0.00f, 0.00f, 0.02f), Color(0.26f, 0.04f, 0.41f),
+                                                   Color(0.58f, 0.15f, 0.40f), Color(0.87f, 0.32f, 0.23f),
+                                                   Color(0.99f, 0.65f, 0.04f), Color(0.99f, 1.00f, 0.64f)};
     if (!(relative_error > kHeatMapMinimum)) return stops.front();  // also NaN
-    const double t = std::clamp(std::log10(relative_error / kHeatMapMinimum) /
-                                    std::log10(kHeatMapMaximum / kHeatMapMinimum),
-                                0.0, 1.0);
+    const double t = std::clamp(
+        std::log10(relative_error / kHeatMapMinimum) / std::log10(kHeatMapMaximum / kHeatMapMinimum), 0.0, 1.0);
     const double position = t * double(stops.size() - 1);
     const std::size_t i = std::min(std::size_t(position), stops.size() - 2);
     const float f = float(position - double(i));

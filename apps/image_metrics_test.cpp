@@ -25,7 +25,8 @@ RgbImage with_noise(const RgbImage& image, float sigma, unsigned seed) {
     std::mt19937 random(seed);
     std::normal_distribution<float> noise(0.0f, sigma);
     RgbImage noisy = image;
-    for (Color& pixel : noisy.pixels) pixel = glm::max(pixel + Color(noise(random), noise(random), noise(random)), 0.0f);
+    for (Color& pixel : noisy.pixels)
+        pixel = glm::max(pixel + Color(noise(random), noise(random), noise(random)), 0.0f);
     return noisy;
 }
 

@@ -22,22 +22,18 @@ namespace {
 
 const char* type_name(ParameterType type) {
     switch (type) {
-        case ParameterType::Int:
-            return "int";
-        case ParameterType::Float:
-            return "float";
-        case ParameterType::Bool:
-            return "bool";
-        case ParameterType::String:
-            return "string";
+    case ParameterType::Int: return "int";
+    case ParameterType::Float: return "float";
+    case ParameterType::Bool: return "bool";
+    case ParameterType::String: return "string";
     }
     return "?";
 }
 
 void print_plugin(const Plugin& plugin) {
     const IntegratorDescriptor& descriptor = *plugin.descriptor;
-    std::printf("%s\n    %s\n    file: %s\n", descriptor.name,
-                descriptor.description ? descriptor.description : "", plugin.path.c_str());
+    std::printf("%s\n    %s\n    file: %s\n", descriptor.name, descriptor.description ? descriptor.description : "",
+                plugin.path.c_str());
     if (descriptor.parameter_count == 0) {
         std::printf("    parameters: none\n");
         return;
@@ -46,16 +42,14 @@ void print_plugin(const Plugin& plugin) {
     std::size_t name_width = 4, default_width = 7;
     for (std::size_t i = 0; i < descriptor.parameter_count; ++i) {
         name_width = std::max(name_width, std::string(descriptor.parameters[i].name).size());
-        default_width =
-            std::max(default_width, std::string(descriptor.parameters[i].default_value).size());
+        default_width = std::max(default_width, std::string(descriptor.parameters[i].default_value).size());
     }
-    std::printf("    parameters:\n      %-*s  %-6s  %-*s  %s\n", int(name_width), "name", "type",
-                int(default_width), "default", "meaning");
+    std::printf("    parameters:\n      %-*s  %-6s  %-*s  %s\n", int(name_width), "name", "type", int(default_width),
+                "default", "meaning");
     for (std::size_t i = 0; i < descriptor.parameter_count; ++i) {
         const ParameterDecl& decl = descriptor.parameters[i];
-        std::printf("      %-*s  %-6s  %-*s  %s\n", int(name_width), decl.name,
-                    type_name(decl.type), int(default_width), decl.default_value,
-                    decl.meaning ? decl.meaning : "");
+        std::printf("      %-*s  %-6s  %-*s  %s\n", int(name_width), decl.name, type_name(decl.type),
+                    int(default_width), decl.default_value, decl.meaning ? decl.meaning : "");
     }
 }
 
@@ -97,9 +91,8 @@ void print_plugin_markdown(const Plugin& plugin) {
     std::printf("|-----------|------|---------|---------|\n");
     for (std::size_t i = 0; i < descriptor.parameter_count; ++i) {
         const ParameterDecl& decl = descriptor.parameters[i];
-        std::printf("| %s | %s | %s | %s |\n", markdown_code(decl.name).c_str(),
-                    type_name(decl.type), markdown_code(decl.default_value).c_str(),
-                    markdown_cell(decl.meaning).c_str());
+        std::printf("| %s | %s | %s | %s |\n", markdown_code(decl.name).c_str(), type_name(decl.type),
+                    markdown_code(decl.default_value).c_str(), markdown_cell(decl.meaning).c_str());
     }
     std::printf("\n");
 }
@@ -128,16 +121,13 @@ int run_plugins(const std::string& only, bool markdown) {
         }
         found = true;
     }
-    for (const auto& problem : problems)
-        std::fprintf(stderr, "lancer: warning: %s\n", problem.c_str());
+    for (const auto& problem : problems) std::fprintf(stderr, "lancer: warning: %s\n", problem.c_str());
     if (!only.empty() && !found) {
-        std::fprintf(stderr, "lancer: error: no integrator plugin '%s' in the search path\n",
-                     only.c_str());
+        std::fprintf(stderr, "lancer: error: no integrator plugin '%s' in the search path\n", only.c_str());
         return 1;
     }
     if (plugins.empty()) {
-        std::fprintf(stderr,
-                     "lancer: warning: no integrator plugins found (set LANCER_PLUGIN_PATH?)\n");
+        std::fprintf(stderr, "lancer: warning: no integrator plugins found (set LANCER_PLUGIN_PATH?)\n");
     }
     return 0;
 }
@@ -147,8 +137,7 @@ int run_plugins(const std::string& only, bool markdown) {
 Command add_plugins_command(CLI::App& app) {
     auto only = std::make_shared<std::string>();
     auto markdown = std::make_shared<bool>(false);
-    CLI::App* plugins = app.add_subcommand(
-        "plugins", "List integrator plugins with their descriptions and parameters");
+    CLI::App* plugins = app.add_subcommand("plugins", "List integrator plugins with their descriptions and parameters");
     plugins->add_option("name", *only, "Show only this plugin");
     plugins->add_flag("--markdown", *markdown,
                       "Print each plugin as a Markdown section (heading, description, parameter "

@@ -13,7 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 
 class Fnv1a {
-public:
+  public:
     void add(const std::string& bytes) {
         for (unsigned char c : bytes) {
             m_state ^= c;
@@ -29,7 +29,7 @@ public:
         return text;
     }
 
-private:
+  private:
     std::uint64_t m_state = 0xcbf29ce484222325ull;
 };
 
@@ -48,8 +48,7 @@ std::vector<std::string> quoted_strings(const std::string& text) {
         const std::size_t end = text.find('"', at + 1);
         if (end == std::string::npos) break;
         const std::string inside = text.substr(at + 1, end - at - 1);
-        if (!inside.empty() && inside.size() < 512 && inside.find('\n') == std::string::npos)
-            strings.push_back(inside);
+        if (!inside.empty() && inside.size() < 512 && inside.find('\n') == std::string::npos) strings.push_back(inside);
         at = end + 1;
     }
     return strings;
@@ -119,9 +118,12 @@ std::optional<CachedReference> ReferenceCache::find(const std::string& key) cons
     std::ifstream noise(entry_stem(m_folder, key, best_spp).replace_extension(".txt"));
     std::string word;
     while (noise >> word)
-        if (word.rfind("noise_rmse=", 0) == 0) reference.noise.rmse = std::atof(word.c_str() + 11);
-        else if (word.rfind("noise_rel_mse=", 0) == 0) reference.noise.rel_mse = std::atof(word.c_str() + 14);
-        else if (word.rfind("seconds=", 0) == 0) reference.render_seconds = std::atof(word.c_str() + 8);
+        if (word.rfind("noise_rmse=", 0) == 0)
+            reference.noise.rmse = std::atof(word.c_str() + 11);
+        else if (word.rfind("noise_rel_mse=", 0) == 0)
+            reference.noise.rel_mse = std::atof(word.c_str() + 14);
+        else if (word.rfind("seconds=", 0) == 0)
+            reference.render_seconds = std::atof(word.c_str() + 8);
     return reference;
 }
 
@@ -144,7 +146,8 @@ CachedReference ReferenceCache::store(const std::string& key, const RgbImage& im
 
 fs::path default_reference_cache_folder(const fs::path& fallback) {
     if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "lancer" / "references";
-    if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "lancer" / "references";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return fs::path(home) / ".cache" / "lancer" / "references";
     return fallback;
 }
 

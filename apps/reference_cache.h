@@ -42,7 +42,7 @@ struct CachedReference {
 // One folder; each entry is "<key>-spp<N>.exr" with a "<key>-spp<N>.txt"
 // beside it holding its noise. Several sample counts may sit under one key.
 class ReferenceCache {
-public:
+  public:
     explicit ReferenceCache(std::filesystem::path folder) : m_folder(std::move(folder)) {}
 
     const std::filesystem::path& folder() const { return m_folder; }
@@ -54,7 +54,7 @@ public:
     CachedReference store(const std::string& key, const RgbImage& image, int samples_per_pixel,
                           const ReferenceNoise& noise, double render_seconds) const;
 
-private:
+  private:
     std::filesystem::path m_folder;
 };
 

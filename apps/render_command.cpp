@@ -26,16 +26,16 @@
 
 #include "cli_output.h"
 #include "commands.h"
-#include "lancer/host/scene_compiler.h"
 #include "lancer/host/checkpoint.h"
 #include "lancer/host/counting_scene.h"
 #include "lancer/host/image_io.h"
-#include "lancer/parser.h"
 #include "lancer/host/plugin_host.h"
+#include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
+#include "lancer/parser.h"
+#include "lancer/scene_error.h"
 #include "render_job.h"
 #include "render_report.h"
-#include "lancer/host/renderer.h"
-#include "lancer/scene_error.h"
 
 namespace lancer::app {
 namespace {
@@ -68,7 +68,7 @@ extern "C" void request_interrupt(int signal_number) {
 // Installs the handlers for the render's duration and restores the
 // previous ones after.
 class InterruptHandlers {
-public:
+  public:
     InterruptHandlers() {
         g_interrupt_requested = false;
         g_interrupt_signal = 0;
@@ -82,7 +82,7 @@ public:
     InterruptHandlers(const InterruptHandlers&) = delete;
     InterruptHandlers& operator=(const InterruptHandlers&) = delete;
 
-private:
+  private:
     void (*m_previous_int)(int) = SIG_DFL;
     void (*m_previous_term)(int) = SIG_DFL;
 };
@@ -162,8 +162,8 @@ int check_arguments(const RenderArguments& arguments) {
     }
     CropWindow crop{};
     if (!arguments.crop.empty() && !parse_crop(arguments.crop, crop)) {
-        print_error("--crop expects four integers x0,y0,x1,y1 (pixels, x1 and y1 excluded), got '" +
-                    arguments.crop + "'");
+        print_error("--crop expects four integers x0,y0,x1,y1 (pixels, x1 and y1 excluded), got '" + arguments.crop +
+                    "'");
         return kExitUsage;
     }
     for (const auto& assignment : arguments.parameters) {
@@ -237,27 +237,25 @@ double process_age_seconds() {
 
 // Size, seed, threads, progress and crop: the command line, then the
 // scene's render_settings, then defaults. Returns an exit status on error.
-int settle_image_options(const RenderArguments& arguments, const sg::RenderSettings& settings,
-                         RenderOptions& options) {
+int settle_image_options(const RenderArguments& arguments, const sg::RenderSettings& settings, RenderOptions& options) {
     options.width = arguments.width_option->count() ? arguments.width : settings.width.value_or(kDefaultWidth);
-    options.height =
-        arguments.height_option->count() ? arguments.height : settings.height.value_or(kDefaultHeight);
+    options.height = arguments.height_option->count() ? arguments.height : settings.height.value_or(kDefaultHeight);
     options.seed = arguments.seed_option->count() ? arguments.seed : settings.seed.value_or(0);
     options.threads = arguments.threads;
     options.progress = arguments.quiet ? ProgressMode::Quiet : ProgressMode::Auto;
     if (options.width <= 0 || options.height <= 0) {
         Diagnostic diagnostic;
         diagnostic.location = settings.location;
-        diagnostic.message = "image size must be positive, got " + std::to_string(options.width) + "x" +
-                             std::to_string(options.height);
+        diagnostic.message =
+            "image size must be positive, got " + std::to_string(options.width) + "x" + std::to_string(options.height);
         print_diagnostic(diagnostic);
         return kExitBadInput;
     }
     if (!arguments.crop.empty()) {
         CropWindow crop{};
         parse_crop(arguments.crop, crop);
-        if (crop.x0 < 0 || crop.y0 < 0 || crop.x1 > options.width || crop.y1 > options.height ||
-            crop.x0 >= crop.x1 || crop.y0 >= crop.y1) {
+        if (crop.x0 < 0 || crop.y0 < 0 || crop.x1 > options.width || crop.y1 > options.height || crop.x0 >= crop.x1 ||
+            crop.y0 >= crop.y1) {
             print_error("--crop " + arguments.crop + " is not a non-empty rectangle inside the " +
                         std::to_string(options.width) + "x" + std::to_string(options.height) +
                         " image (x0 < x1 <= width, y0 < y1 <= height)");
@@ -272,8 +270,8 @@ int settle_image_options(const RenderArguments& arguments, const sg::RenderSetti
 // pixel and writing the image needs a float RGBA copy. Refuses what the
 // machine cannot hold; announces a big one (docs/robustness.md).
 int check_film_fits(const RenderOptions& options) {
-    const double bytes = double(options.width) * double(options.height) *
-                         double(sizeof(Film::Accumulator) + 4 * sizeof(float));
+    const double bytes =
+        double(options.width) * double(options.height) * double(sizeof(Film::Accumulator) + 4 * sizeof(float));
     const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
     const double gib = double(1ull << 30);
     char estimate[160];
@@ -425,8 +423,7 @@ int run_render(const RenderArguments& arguments) {
             stats.interrupted || stats.min_samples_per_pixel != stats.max_samples_per_pixel;
         write_options.metadata = stats_metadata(report);
         write_image(film, output, write_options);
-        if (stats.interrupted && (checkpointing || arguments.resume))
-            write_checkpoint(checkpoint_path, identity, film);
+        if (stats.interrupted && (checkpointing || arguments.resume)) write_checkpoint(checkpoint_path, identity, film);
         report.total_seconds = seconds_so_far();
         if (!arguments.stats.empty()) write_stats_json(report, arguments.stats);
 
@@ -436,7 +433,8 @@ int run_render(const RenderArguments& arguments) {
         }
         if (stats.interrupted) {
             const char* name = signal_number == SIGTERM ? "SIGTERM" : "SIGINT";
-            std::fprintf(stderr, "lancer: interrupted by %s after %.1f s: wrote the image so far (%.1f spp, %u-%u) to %s%s\n",
+            std::fprintf(stderr,
+                         "lancer: interrupted by %s after %.1f s: wrote the image so far (%.1f spp, %u-%u) to %s%s\n",
                          name, report.total_seconds, stats.mean_samples_per_pixel, stats.min_samples_per_pixel,
                          stats.max_samples_per_pixel, output.c_str(),
                          checkpointing || arguments.resume ? "; continue with --resume" : "");
@@ -479,14 +477,18 @@ Command add_render_command(CLI::App& app) {
     arguments->checkpoint_option = render->add_option(
         "--checkpoint", arguments->checkpoint_interval,
         "Save progress every SECONDS to <output>.lancer-checkpoint (removed when the render completes)");
-    render->add_flag("--resume", arguments->resume,
-                     "Continue from <output>.lancer-checkpoint (same scene and settings required); without one, start over");
-    arguments->seed_option = render->add_option("--seed", arguments->seed, "Random seed (default: the scene's, else 0)");
+    render->add_flag(
+        "--resume", arguments->resume,
+        "Continue from <output>.lancer-checkpoint (same scene and settings required); without one, start over");
+    arguments->seed_option =
+        render->add_option("--seed", arguments->seed, "Random seed (default: the scene's, else 0)");
     render->add_option("--threads", arguments->threads, "Worker threads (default 0: every core)");
     render->add_option("--crop", arguments->crop, "Render only pixels x0 <= x < x1, y0 <= y < y1");
-    CLI::Option* parameter_option = render->add_option("-p,--parameter", arguments->parameters,
-                       "Integrator parameter key=value (repeatable); overrides the scene's")
-        ->allow_extra_args(false);
+    CLI::Option* parameter_option =
+        render
+            ->add_option("-p,--parameter", arguments->parameters,
+                         "Integrator parameter key=value (repeatable); overrides the scene's")
+            ->allow_extra_args(false);
     render->add_flag("-q,--quiet", arguments->quiet, "No progress and no summary line");
     render->add_flag("--safe", arguments->safe,
                      "Untrusted scene: read includes, OBJ/MTL and image files only from the scene's folder and the "

@@ -20,19 +20,19 @@ std::string json_string(const std::string& text) {
     std::string out = "\"";
     for (const unsigned char c : text) {
         switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\t': out += "\\t"; break;
-            case '\r': out += "\\r"; break;
-            default:
-                if (c < 0x20) {
-                    char escaped[8];
-                    std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-                    out += escaped;
-                } else {
-                    out += char(c);
-                }
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\t': out += "\\t"; break;
+        case '\r': out += "\\r"; break;
+        default:
+            if (c < 0x20) {
+                char escaped[8];
+                std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+                out += escaped;
+            } else {
+                out += char(c);
+            }
         }
     }
     return out + "\"";
@@ -46,7 +46,9 @@ std::string number(double value) {
     return text;
 }
 
-std::string number(std::uint64_t value) { return std::to_string(value); }
+std::string number(std::uint64_t value) {
+    return std::to_string(value);
+}
 
 const char* mode_name(const RenderReport& report) {
     if (report.noise_target > 0.0) return report.time_budget_seconds > 0.0 ? "noise+time" : "noise";
@@ -88,8 +90,8 @@ std::string stats_json(const RenderReport& report) {
             ", \"min\": " + std::to_string(s.min_samples_per_pixel) +
             ", \"max\": " + std::to_string(s.max_samples_per_pixel) + ", \"taken\": " + number(s.samples) + "},\n";
     json += "  \"passes\": " + std::to_string(s.passes) + ",\n";
-    json += "  \"seconds\": {\"total\": " + number(report.total_seconds) + ", \"render\": " + number(s.seconds) +
-            "},\n";
+    json +=
+        "  \"seconds\": {\"total\": " + number(report.total_seconds) + ", \"render\": " + number(s.seconds) + "},\n";
     json += "  \"rays\": " + number(s.rays) + ",\n";
     json += "  \"rays_per_second\": " + number(s.rays_per_second) + ",\n";
     json += "  \"nonfinite_samples\": " + number(s.nonfinite_samples) + ",\n";

@@ -12,9 +12,9 @@
 namespace lancer {
 
 struct RenderReport {
-    std::string scene;       // scene file as given
-    std::string output;      // image file
-    std::string integrator;  // plugin name
+    std::string scene;                                            // scene file as given
+    std::string output;                                           // image file
+    std::string integrator;                                       // plugin name
     std::vector<std::pair<std::string, std::string>> parameters;  // resolved, name -> value
     int width = 0;
     int height = 0;

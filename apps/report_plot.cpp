@@ -82,7 +82,8 @@ std::string render_svg(const LogLogPlot& plot, int width, int height) {
         }
     if (x_high == 0.0) x_low = 0.1, x_high = 1.0, y_low = 0.1, y_high = 1.0;  // nothing to plot
     for (const PlotLevel& level : plot.levels)
-        if (std::isfinite(level.y) && level.y > 0.0) y_low = std::min(y_low, level.y), y_high = std::max(y_high, level.y);
+        if (std::isfinite(level.y) && level.y > 0.0)
+            y_low = std::min(y_low, level.y), y_high = std::max(y_high, level.y);
     const LogAxis x_axis(x_low, x_high, left, right);
     const LogAxis y_axis(y_low, y_high, bottom, top);
 
@@ -99,15 +100,16 @@ std::string render_svg(const LogLogPlot& plot, int width, int height) {
             << number(bottom) << "\" stroke=\"" << stroke << "\"/>\n";
     };
     auto horizontal_line = [&](double y, const char* stroke) {
-        svg << "<line x1=\"" << number(left) << "\" y1=\"" << number(y) << "\" x2=\"" << number(right)
-            << "\" y2=\"" << number(y) << "\" stroke=\"" << stroke << "\"/>\n";
+        svg << "<line x1=\"" << number(left) << "\" y1=\"" << number(y) << "\" x2=\"" << number(right) << "\" y2=\""
+            << number(y) << "\" stroke=\"" << stroke << "\"/>\n";
     };
     for (int d = x_axis.first_decade; d <= x_axis.last_decade; ++d) {
         const double x = x_axis.to_pixel(std::pow(10.0, d));
         vertical_line(x, "#bbb");
         svg << "<text x=\"" << number(x) << "\" y=\"" << number(bottom + 18) << "\" text-anchor=\"middle\">"
             << decade_label(d) << "</text>\n";
-        for (int m = 2; m <= 9 && d < x_axis.last_decade; ++m) vertical_line(x_axis.to_pixel(m * std::pow(10.0, d)), "#eee");
+        for (int m = 2; m <= 9 && d < x_axis.last_decade; ++m)
+            vertical_line(x_axis.to_pixel(m * std::pow(10.0, d)), "#eee");
     }
     for (int d = y_axis.first_decade; d <= y_axis.last_decade; ++d) {
         const double y = y_axis.to_pixel(std::pow(10.0, d));
@@ -121,15 +123,15 @@ std::string render_svg(const LogLogPlot& plot, int width, int height) {
         << "\" height=\"" << number(bottom - top) << "\" fill=\"none\" stroke=\"black\"/>\n";
     svg << "<text x=\"" << number((left + right) / 2) << "\" y=\"" << number(height - 12)
         << "\" text-anchor=\"middle\">" << escape_xml(plot.x_label) << "</text>\n";
-    svg << "<text transform=\"translate(16," << number((top + bottom) / 2)
-        << ") rotate(-90)\" text-anchor=\"middle\">" << escape_xml(plot.y_label) << "</text>\n";
+    svg << "<text transform=\"translate(16," << number((top + bottom) / 2) << ") rotate(-90)\" text-anchor=\"middle\">"
+        << escape_xml(plot.y_label) << "</text>\n";
 
     // Levels, under the curves.
     for (const PlotLevel& level : plot.levels) {
         if (!(std::isfinite(level.y) && level.y > 0.0)) continue;
         const double y = y_axis.to_pixel(level.y);
-        svg << "<line x1=\"" << number(left) << "\" y1=\"" << number(y) << "\" x2=\"" << number(right)
-            << "\" y2=\"" << number(y) << "\" stroke=\"#555\" stroke-dasharray=\"6,4\"/>\n";
+        svg << "<line x1=\"" << number(left) << "\" y1=\"" << number(y) << "\" x2=\"" << number(right) << "\" y2=\""
+            << number(y) << "\" stroke=\"#555\" stroke-dasharray=\"6,4\"/>\n";
         svg << "<text x=\"" << number(left + 6) << "\" y=\"" << number(y - 5) << "\" fill=\"#555\">"
             << escape_xml(level.label) << "</text>\n";
     }
@@ -147,8 +149,8 @@ std::string render_svg(const LogLogPlot& plot, int width, int height) {
             << "\" stroke-width=\"2\"/>\n";
         for (const PlotPoint& point : series.points) {
             if (!plottable(point)) continue;
-            svg << "<circle cx=\"" << number(x_axis.to_pixel(point.x)) << "\" cy=\""
-                << number(y_axis.to_pixel(point.y)) << "\" r=\"3.5\" fill=\"" << series.colour << "\"><title>"
+            svg << "<circle cx=\"" << number(x_axis.to_pixel(point.x)) << "\" cy=\"" << number(y_axis.to_pixel(point.y))
+                << "\" r=\"3.5\" fill=\"" << series.colour << "\"><title>"
                 << escape_xml(series.name + " " + point.label) << "</title></circle>\n";
         }
     }
@@ -156,9 +158,8 @@ std::string render_svg(const LogLogPlot& plot, int width, int height) {
     // Legend, right of the plot.
     double legend_y = top + 10;
     for (const PlotSeries& series : plot.series) {
-        svg << "<line x1=\"" << number(right + 15) << "\" y1=\"" << number(legend_y) << "\" x2=\""
-            << number(right + 40) << "\" y2=\"" << number(legend_y) << "\" stroke=\"" << series.colour
-            << "\" stroke-width=\"2\"/>\n";
+        svg << "<line x1=\"" << number(right + 15) << "\" y1=\"" << number(legend_y) << "\" x2=\"" << number(right + 40)
+            << "\" y2=\"" << number(legend_y) << "\" stroke=\"" << series.colour << "\" stroke-width=\"2\"/>\n";
         svg << "<circle cx=\"" << number(right + 27.5) << "\" cy=\"" << number(legend_y) << "\" r=\"3.5\" fill=\""
             << series.colour << "\"/>\n";
         svg << "<text x=\"" << number(right + 48) << "\" y=\"" << number(legend_y + 4) << "\">"

@@ -15,8 +15,8 @@ struct PlotPoint {
 };
 
 struct PlotSeries {
-    std::string name;    // legend entry
-    std::string colour;  // any CSS colour
+    std::string name;               // legend entry
+    std::string colour;             // any CSS colour
     std::vector<PlotPoint> points;  // drawn in the given order
 };
 

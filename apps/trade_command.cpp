@@ -23,10 +23,10 @@
 #include "cli_output.h"
 #include "commands.h"
 #include "image_metrics.h"
-#include "lancer/parser.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
 #include "lancer/host/rgb_image.h"
+#include "lancer/parser.h"
 #include "lancer/scene_error.h"
 #include "reference_cache.h"
 #include "render_job.h"
@@ -91,7 +91,7 @@ double process_cpu_seconds() {
 // One line per step when stdout is not a terminal (logs, CI), else a bar
 // redrawn in place that counts steps and shows the time spent.
 class TradeProgress {
-public:
+  public:
     explicit TradeProgress(int total_steps) : m_total(total_steps), m_terminal(::isatty(::fileno(stdout))) {}
 
     // A step that was planned but will not run (over budget) still counts.
@@ -120,7 +120,7 @@ public:
         std::fflush(stdout);
     }
 
-private:
+  private:
     void draw(const std::string& what) {
         constexpr int kWidth = 30;
         const int filled = m_total > 0 ? std::min(kWidth, kWidth * m_done / m_total) : kWidth;
@@ -212,8 +212,8 @@ struct TimedRender {
     std::uint64_t rays = 0;
     double mean_spp = 0.0;
     double estimated_rel_rmse = 0.0;
-    ReferenceNoise noise;  // the film's own noise, were it a reference
-    std::string parameters;   // as resolved
+    ReferenceNoise noise;    // the film's own noise, were it a reference
+    std::string parameters;  // as resolved
 };
 
 // `noise_target` > 0 renders adaptively, at most `spp` samples per pixel.
@@ -301,8 +301,9 @@ int run_trade(const TradeArguments& arguments) {
         print_error("--threads must be 0 (every core) or positive");
         return kExitUsage;
     }
-    const double budget =
-        arguments.budget_option->count() ? arguments.budget : arguments.quick ? kQuickBudgetSeconds : kDefaultBudgetSeconds;
+    const double budget = arguments.budget_option->count() ? arguments.budget
+                          : arguments.quick                ? kQuickBudgetSeconds
+                                                           : kDefaultBudgetSeconds;
     const Clock::time_point run_start = Clock::now();
 
     try {
@@ -352,10 +353,10 @@ int run_trade(const TradeArguments& arguments) {
         const Plugin path_plugin = load_plugin("path");
         const std::uint64_t reference_seed = seed + kReferenceSeedOffset;
         const double reference_seconds = kReferenceShare * budget;
-        const std::string settings_text =
-            std::string("lancer ") + kLancerVersion + " size " + std::to_string(prepared.width) + "x" +
-            std::to_string(prepared.height) + " seed " + std::to_string(reference_seed) + " path " +
-            join_parameters(resolve_for(prepared, path_plugin, kReferenceParameters));
+        const std::string settings_text = std::string("lancer ") + kLancerVersion + " size " +
+                                          std::to_string(prepared.width) + "x" + std::to_string(prepared.height) +
+                                          " seed " + std::to_string(reference_seed) + " path " +
+                                          join_parameters(resolve_for(prepared, path_plugin, kReferenceParameters));
         const std::string key = reference_key(arguments.scene, default_include_path(), settings_text);
         const ReferenceCache cache(arguments.cache.empty() ? default_reference_cache_folder(out / "reference-cache")
                                                            : fs::path(arguments.cache));
@@ -379,12 +380,12 @@ int run_trade(const TradeArguments& arguments) {
             const int wanted_spp = std::clamp(power_of_two_floor(reference_seconds / std::max(pilot_seconds, 1e-6)),
                                               kMinReferenceSpp, kMaxReferenceSpp);
             progress.starting("reference: path " + std::to_string(wanted_spp) + " spp");
-            const TimedRender rendered =
-                render_setting(prepared, path_plugin, kReferenceParameters, wanted_spp, reference_seed, arguments.threads);
+            const TimedRender rendered = render_setting(prepared, path_plugin, kReferenceParameters, wanted_spp,
+                                                        reference_seed, arguments.threads);
             reference = cache.store(key, rendered.image, wanted_spp, rendered.noise, rendered.seconds);
             run.reference.seconds = rendered.seconds;
-            progress.finished("reference", "path " + std::to_string(wanted_spp) + " spp, " +
-                                               seconds_text(rendered.seconds));
+            progress.finished("reference",
+                              "path " + std::to_string(wanted_spp) + " spp, " + seconds_text(rendered.seconds));
             progress.note("reference: rendered, path " + std::to_string(wanted_spp) + " spp in " +
                           seconds_text(rendered.seconds) + " (cached in " + reference->file.string() + ")");
         }
@@ -489,8 +490,8 @@ Command add_trade_command(CLI::App& app) {
     trade->add_option("scene", arguments->scene, "Scene file (.pov)")->required();
     trade->add_option("-o,--out", arguments->out, "Folder for results.csv, the plots, index.html and images")
         ->required();
-    arguments->budget_option = trade->add_option(
-        "--budget", arguments->budget, "Seconds for the whole run, roughly (default 120; 50 with --quick)");
+    arguments->budget_option = trade->add_option("--budget", arguments->budget,
+                                                 "Seconds for the whole run, roughly (default 120; 50 with --quick)");
     trade->add_flag("--quick", arguments->quick, "Small images (about 160x120) and short ladders: about a minute");
     arguments->width_option = trade->add_option("--width", arguments->width, "Image width (with --height)");
     arguments->height_option = trade->add_option("--height", arguments->height, "Image height (with --width)");

@@ -31,9 +31,12 @@ std::string TradeSetting::label() const {
 std::string TradeSetting::slug() const {
     std::string text;
     for (char c : label()) {
-        if (c == ' ') text += '_';
-        else if (c == '.') text += 'p';
-        else if (c != '=') text += c;
+        if (c == ' ')
+            text += '_';
+        else if (c == '.')
+            text += 'p';
+        else if (c != '=')
+            text += c;
     }
     return text;
 }
@@ -57,7 +60,8 @@ std::vector<TradeSetting> trade_ladder(const std::string& integrator, bool quick
     } else if (integrator == "whitted") {
         // Deeper recursion, then antialiasing at a depth that is enough
         // for everything but facing mirrors.
-        for (int depth : {1, 2, 4, 8}) ladder.push_back(setting(integrator, {"max_depth=" + std::to_string(depth)}, 1, 1 + depth * 0.5));
+        for (int depth : {1, 2, 4, 8})
+            ladder.push_back(setting(integrator, {"max_depth=" + std::to_string(depth)}, 1, 1 + depth * 0.5));
         ladder.push_back(setting(integrator, {"max_depth=8"}, 4, 5));
         if (!quick) ladder.push_back(setting(integrator, {"max_depth=8"}, 16, 5));
     } else if (integrator == "gather") {

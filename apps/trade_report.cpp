@@ -39,8 +39,8 @@ std::string heat_map_gradient() {
         const double error = kHeatMapMinimum * std::pow(kHeatMapMaximum / kHeatMapMinimum, i / 10.0);
         const Color c = heat_map_colour(error);
         char stop[48];
-        std::snprintf(stop, sizeof stop, "%srgb(%d,%d,%d)", i ? "," : "", int(c.r * 255 + 0.5f),
-                      int(c.g * 255 + 0.5f), int(c.b * 255 + 0.5f));
+        std::snprintf(stop, sizeof stop, "%srgb(%d,%d,%d)", i ? "," : "", int(c.r * 255 + 0.5f), int(c.g * 255 + 0.5f),
+                      int(c.b * 255 + 0.5f));
         stops += stop;
     }
     return "linear-gradient(to right," + stops + ")";
@@ -70,9 +70,9 @@ const std::vector<std::string>& trade_integrator_order() {
 }
 
 std::string integrator_colour(const std::string& integrator) {
-    static const std::map<std::string, std::string> colours = {
-        {"raycast", "#7f7f7f"}, {"shadow", "#1f77b4"}, {"whitted", "#2ca02c"},
-        {"gather", "#ff7f0e"},  {"path", "#d62728"},      {"path --noise", "#9467bd"}};
+    static const std::map<std::string, std::string> colours = {{"raycast", "#7f7f7f"}, {"shadow", "#1f77b4"},
+                                                               {"whitted", "#2ca02c"}, {"gather", "#ff7f0e"},
+                                                               {"path", "#d62728"},    {"path --noise", "#9467bd"}};
     const auto found = colours.find(integrator);
     return found != colours.end() ? found->second : "#8c564b";
 }
@@ -91,7 +91,7 @@ std::string results_csv(const TradeRun& run) {
 
 std::string error_plot_svg(const TradeRun& run, const std::string& metric) {
     LogLogPlot plot;
-    const std::string name = metric == "rmse" ? "RMSE (linear RGB)"
+    const std::string name = metric == "rmse"      ? "RMSE (linear RGB)"
                              : metric == "rel_mse" ? "relative MSE"
                                                    : "1 - SSIM (luma, sRGB)";
     plot.title = name + " against render time";
@@ -102,8 +102,7 @@ std::string error_plot_svg(const TradeRun& run, const std::string& metric) {
         series.name = integrator;
         series.colour = integrator_colour(integrator);
         for (const TradeResult& r : run.results)
-            if (r.curve == integrator)
-                series.points.push_back({r.seconds, metric_value(r, metric), r.setting});
+            if (r.curve == integrator) series.points.push_back({r.seconds, metric_value(r, metric), r.setting});
         if (!series.points.empty()) plot.series.push_back(std::move(series));
     }
     // Below the reference's own noise a render's error cannot be measured.
@@ -158,10 +157,9 @@ std::string report_html(const TradeRun& run, const std::vector<std::string>& plo
             if (r.curve != integrator) continue;
             html << "<figure><div class=\"pair\"><img src=\"" << escape_xml(r.image) << "\" width=\"" << run.width
                  << "\" alt=\"render\"><img src=\"" << escape_xml(r.heat_map) << "\" width=\"" << run.width
-                 << "\" alt=\"heat map\"></div><figcaption><b>" << escape_xml(r.setting) << "</b>: "
-                 << format("%.3g s", r.seconds) << ", RMSE " << format("%.3g", r.rmse) << ", relMSE "
-                 << format("%.3g", r.rel_mse) << ", SSIM " << format("%.3f", r.ssim)
-                 << "</figcaption></figure>\n";
+                 << "\" alt=\"heat map\"></div><figcaption><b>" << escape_xml(r.setting)
+                 << "</b>: " << format("%.3g s", r.seconds) << ", RMSE " << format("%.3g", r.rmse) << ", relMSE "
+                 << format("%.3g", r.rel_mse) << ", SSIM " << format("%.3f", r.ssim) << "</figcaption></figure>\n";
         }
         html << "</div>\n";
     }

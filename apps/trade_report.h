@@ -13,7 +13,7 @@ namespace lancer::app {
 struct TradeResult {
     std::string curve;  // the plot's series: the integrator, or "path --noise"
     std::string integrator;
-    std::string setting;  // "n=64 spp=4"
+    std::string setting;       // "n=64 spp=4"
     double seconds = 0.0;      // wall clock, what the user waits
     double cpu_seconds = 0.0;  // over every thread: steadier on a shared machine
     std::uint64_t rays = 0;    // ray queries (intersect and occluded)

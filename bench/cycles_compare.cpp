@@ -30,10 +30,10 @@
 #include <string>
 #include <vector>
 
-#include "lancer/host/scene_compiler.h"
-#include "lancer/parser.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
+#include "lancer/parser.h"
 
 namespace {
 
@@ -55,9 +55,15 @@ std::string cache_folder() {
     const char* folder = std::getenv("LANCER_BENCH_CACHE");
     return folder ? folder : "/tmp";
 }
-int reference_spp() { return env_int("LANCER_BENCH_REFERENCE_SPP", 1024); }
-int max_spp() { return env_int("LANCER_BENCH_MAX_SPP", 512); }
-std::string source(const std::string& relative) { return std::string(LANCER_SOURCE_DIR) + "/" + relative; }
+int reference_spp() {
+    return env_int("LANCER_BENCH_REFERENCE_SPP", 1024);
+}
+int max_spp() {
+    return env_int("LANCER_BENCH_MAX_SPP", 512);
+}
+std::string source(const std::string& relative) {
+    return std::string(LANCER_SOURCE_DIR) + "/" + relative;
+}
 
 using Pixels = std::vector<float>;  // row-major RGB
 
@@ -84,7 +90,7 @@ struct Rung {
     double seconds = 0.0;         // wall time of this render alone
     double render_seconds = 0.0;  // sampling only (Cycles: its own render_time)
     double rmse = 0.0;
-    double cpu_seconds = 0.0;     // of all threads, over the same span as `seconds`
+    double cpu_seconds = 0.0;  // of all threads, over the same span as `seconds`
 };
 
 // Each rung is a render of its own, so a rung's seconds are the time to its
@@ -203,12 +209,16 @@ void BM_CornellCyclesLancer(benchmark::State& state, const char* sampler) {
     report(state, sampler, rungs);
 }
 BENCHMARK_CAPTURE(BM_CornellCyclesLancer, independent, "independent")
-    ->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(BM_CornellCyclesLancer, sobol, "sobol")->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 // --- Cycles ------------------------------------------------------------
 
-bool have_blender() { return std::system("command -v blender >/dev/null 2>&1") == 0; }
+bool have_blender() {
+    return std::system("command -v blender >/dev/null 2>&1") == 0;
+}
 
 struct Exr {
     Pixels pixels;
@@ -241,10 +251,10 @@ Exr read_exr(const std::string& path) {
 // wall time, or a negative number if it failed.
 double run_blender(const std::string& prefix, const std::string& samples, int seed) {
     std::remove((prefix + "_times.txt").c_str());
-    const std::string command = "blender -b --factory-startup --python-exit-code 1 --python '" + source("bench/cycles/cornell_cycles.py") +
-                                "' -- --out '" + prefix + "' --size " + std::to_string(kSize) + " --threads " +
-                                std::to_string(kThreads) + " --seed " + std::to_string(seed) + " --samples " +
-                                samples + " > '" + prefix + "_blender.log' 2>&1";
+    const std::string command = "blender -b --factory-startup --python-exit-code 1 --python '" +
+                                source("bench/cycles/cornell_cycles.py") + "' -- --out '" + prefix + "' --size " +
+                                std::to_string(kSize) + " --threads " + std::to_string(kThreads) + " --seed " +
+                                std::to_string(seed) + " --samples " + samples + " > '" + prefix + "_blender.log' 2>&1";
     const auto start = std::chrono::steady_clock::now();
     const int status = std::system(command.c_str());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

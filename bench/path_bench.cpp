@@ -13,9 +13,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "lancer/host/scene_compiler.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/scene_graph.h"
 
 namespace {

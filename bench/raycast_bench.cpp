@@ -33,8 +33,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -47,9 +47,9 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "lancer/host/scene_compiler.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/scene_graph.h"
 
 namespace {
@@ -109,13 +109,13 @@ double process_cpu_seconds() {
 }
 
 class FrameClock {
-public:
+  public:
     FrameTime stop() const {
         return {std::chrono::duration<double>(std::chrono::steady_clock::now() - m_wall).count(),
                 process_cpu_seconds() - m_cpu};
     }
 
-private:
+  private:
     std::chrono::steady_clock::time_point m_wall = std::chrono::steady_clock::now();
     double m_cpu = process_cpu_seconds();
 };
@@ -160,7 +160,7 @@ std::shared_ptr<sg::TriangleMesh> make_height_field() {
 // per ray and nothing else. Separates the host's and RenderScene's own cost
 // from raycast's shading.
 class IntersectOnly final : public Integrator {
-public:
+  public:
     Color shade_camera_hit(const Ray&, const Hit* hit, const RenderScene&, Sampler&) const override {
         return hit ? Color(1.0f) : Color(0.0f);
     }
@@ -182,8 +182,8 @@ struct BenchScene {
     RTCDevice device = nullptr;
     RTCScene bare_scene = nullptr;
     RTCScene bare_robust_scene = nullptr;  // same, with RTC_SCENE_FLAG_ROBUST as lancer's scene
-    std::vector<float> vertices;         // xyz per vertex, padded for Embree's 16-byte loads
-    std::vector<unsigned> indices;       // three per triangle
+    std::vector<float> vertices;           // xyz per vertex, padded for Embree's 16-byte loads
+    std::vector<unsigned> indices;         // three per triangle
 
     std::size_t triangles() const { return mesh->faces.size(); }
 
@@ -387,9 +387,9 @@ struct BenchScene {
                             const int x = x0 + (k & 3), y = y0 + (k >> 2);
                             valid[k] = x < tile.cols().end() && y < tile.rows().end() ? -1 : 0;
                             RTCRay ray;
-                            to_embree(camera_rays[std::size_t(std::min(y, kHeight - 1)) * kWidth +
-                                                  std::min(x, kWidth - 1)],
-                                      ray);
+                            to_embree(
+                                camera_rays[std::size_t(std::min(y, kHeight - 1)) * kWidth + std::min(x, kWidth - 1)],
+                                ray);
                             packet.ray.org_x[k] = ray.org_x;
                             packet.ray.org_y[k] = ray.org_y;
                             packet.ray.org_z[k] = ray.org_z;
@@ -428,8 +428,7 @@ void set_common_counters(benchmark::State& state, const BenchScene& bench) {
     state.counters["compile_peak_bytes_per_triangle"] = bench.compile_peak_bytes_per_triangle;
     state.counters["embree_bytes_per_triangle"] = bench.embree_bytes_per_triangle;
     state.counters["compile_s"] = bench.compile_seconds;
-    state.counters["peak_bytes_per_triangle"] =
-        1024.0 * double(status_kilobytes("VmHWM:")) / double(bench.triangles());
+    state.counters["peak_bytes_per_triangle"] = 1024.0 * double(status_kilobytes("VmHWM:")) / double(bench.triangles());
 }
 
 // Rays of the frame that find the height field in the robust scene but

@@ -13,10 +13,10 @@
 
 #include "lancer/host/camera_ray.h"
 #include "lancer/host/film.h"
-#include "lancer/integrator.h"
 #include "lancer/host/plugin_host.h"
-#include "lancer/render_scene.h"
 #include "lancer/host/renderer.h"
+#include "lancer/integrator.h"
+#include "lancer/render_scene.h"
 #include "lancer/scene_graph.h"
 
 namespace lancer::seed_test {
@@ -106,8 +106,8 @@ inline LoadedIntegrator load_integrator(const std::string& name, const RenderSce
 }
 
 // Mean radiance along `ray` over `samples` sampler streams (pixel (0,0)).
-inline Color mean_radiance(const Integrator& integrator, const RenderScene& scene, const Ray& ray,
-                           int samples = 1, std::uint64_t seed = 7) {
+inline Color mean_radiance(const Integrator& integrator, const RenderScene& scene, const Ray& ray, int samples = 1,
+                           std::uint64_t seed = 7) {
     const std::unique_ptr<Sampler> sampler = integrator.make_sampler(seed);
     Color sum(0.0f);
     for (int i = 0; i < samples; ++i) {
@@ -124,8 +124,8 @@ inline Ray ray_towards(const Vec3& origin, const Vec3& target) {
     return ray;
 }
 
-inline Film render_small(const RenderScene& scene, const Integrator& integrator, int width, int height,
-                         int samples = 1, int threads = 1) {
+inline Film render_small(const RenderScene& scene, const Integrator& integrator, int width, int height, int samples = 1,
+                         int threads = 1) {
     RenderOptions options;
     options.width = width;
     options.height = height;

@@ -60,8 +60,6 @@ const sg::TriangleMesh& only_mesh(const sg::SceneGraph& scene) {
 
 }  // namespace
 
-
-
 TEST_F(BadFiles, MissingObjFileIsLocated) {
     ParseResult result = parse("sphere { 0, 1 }\nobj_mesh { \"nowhere.obj\" }\n");
     ASSERT_FALSE(result.ok());
@@ -69,10 +67,13 @@ TEST_F(BadFiles, MissingObjFileIsLocated) {
         << all_text(result);
 }
 
-TEST_F(BadFiles, EmptyObjHasNoFaces) { EXPECT_NE(obj_error("").find("has no faces"), std::string::npos); }
+TEST_F(BadFiles, EmptyObjHasNoFaces) {
+    EXPECT_NE(obj_error("").find("has no faces"), std::string::npos);
+}
 
 TEST_F(BadFiles, PointCloudHasNoFaces) {
-    EXPECT_NE(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\n").find("4 vertices only: a point cloud?"), std::string::npos);
+    EXPECT_NE(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\n").find("4 vertices only: a point cloud?"),
+              std::string::npos);
 }
 
 TEST_F(BadFiles, TruncatedObj) {
@@ -83,7 +84,9 @@ TEST_F(BadFiles, TruncatedObj) {
     EXPECT_FALSE(message.empty());
 }
 
-TEST_F(BadFiles, PngRenamedObj) { EXPECT_NE(obj_error(kPngHead).find("is a PNG image"), std::string::npos); }
+TEST_F(BadFiles, PngRenamedObj) {
+    EXPECT_NE(obj_error(kPngHead).find("is a PNG image"), std::string::npos);
+}
 
 TEST_F(BadFiles, Utf16Obj) {
     std::string utf16 = "\xFF\xFE";
@@ -194,7 +197,8 @@ TEST(ResourceLimits, MaxTraceLevelOutOfRange) {
         << all_text(result);
     result = parse_scene_string("global_settings { max_trace_level 1e12 }", "limits.pov");
     ASSERT_FALSE(result.ok());
-    EXPECT_NE(all_text(result).find("limits.pov:1:35: error: integer out of range"), std::string::npos) << all_text(result);
+    EXPECT_NE(all_text(result).find("limits.pov:1:35: error: integer out of range"), std::string::npos)
+        << all_text(result);
 }
 
 TEST(ResourceLimits, Mesh2HugeDeclaredCountIsCheckedAgainstTheEntries) {
@@ -225,8 +229,8 @@ TEST(ResourceLimits, RenderSizeAndSamples) {
 TEST(ResourceLimits, NestedLoopsStopAtTheTokenBudget) {
     ParseOptions options;
     options.max_loop_iterations = 1000;
-    ParseResult result = parse_scene_string(
-        "#declare A = 0;\n#while (1)\n#declare A = A + 1;\n#end", "limits.pov", options);
+    ParseResult result =
+        parse_scene_string("#declare A = 0;\n#while (1)\n#declare A = A + 1;\n#end", "limits.pov", options);
     ASSERT_FALSE(result.ok());
     EXPECT_NE(all_text(result).find("limits.pov:2:1: error: #while loop exceeded 1000 iterations"), std::string::npos)
         << all_text(result);
@@ -251,7 +255,8 @@ TEST(ResourceLimits, IncludeDepth) {
 }
 
 TEST(ResourceLimits, AbsurdResolutionIsRefusedBeforeAllocating) {
-    CommandResult result = run_lancer("render scenes/demo.pov -o /tmp/lancer-never-written.png --width 100000 --height 100000 2>&1");
+    CommandResult result =
+        run_lancer("render scenes/demo.pov -o /tmp/lancer-never-written.png --width 100000 --height 100000 2>&1");
     EXPECT_NE(result.exit_code, 0) << result.output;
     EXPECT_NE(result.output.find("GiB"), std::string::npos) << result.output;
     EXPECT_FALSE(fs::exists("/tmp/lancer-never-written.png"));

@@ -28,8 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-#define EXPECT_CONTAINS(text, part) \
-    EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
+#define EXPECT_CONTAINS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
 
 std::string read_file(const fs::path& path) {
     std::ifstream in(path);
@@ -61,7 +60,7 @@ Pixels read_pixels(const fs::path& path) {
 
 // A lancer process running in the background, its output in a file.
 class Background {
-public:
+  public:
     Background(const std::vector<std::string>& arguments, const fs::path& log) {
         std::vector<std::string> argv = {binary_path("bin/lancer")};
         argv.insert(argv.end(), arguments.begin(), arguments.end());
@@ -101,7 +100,7 @@ public:
         return m_status;
     }
 
-private:
+  private:
     pid_t m_pid = -1;
     bool m_reaped = false;
     int m_status = 0;
@@ -119,10 +118,10 @@ bool wait_for(Condition condition, double seconds) {
 }
 
 class CliProgressive : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
-        m_folder = binary_path("tests/cli_progressive_out/") +
-                   ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        m_folder =
+            binary_path("tests/cli_progressive_out/") + ::testing::UnitTest::GetInstance()->current_test_info()->name();
         fs::remove_all(m_folder);
         fs::create_directories(m_folder);
         m_scene = source_path("scenes/cornell_box.pov");
@@ -134,8 +133,8 @@ protected:
                           std::to_string(size) + " " + extra);
     }
     std::vector<std::string> render_arguments(const std::string& output, std::vector<std::string> extra) {
-        std::vector<std::string> arguments = {"render", m_scene, "-i", "path", "--width", "32", "--height", "32",
-                                              "-o", output};
+        std::vector<std::string> arguments = {"render", m_scene,    "-i", "path", "--width",
+                                              "32",     "--height", "32", "-o",   output};
         arguments.insert(arguments.end(), extra.begin(), extra.end());
         return arguments;
     }
@@ -162,11 +161,10 @@ TEST_F(CliProgressive, StatsFileMetadataAndSummaryAgree) {
     EXPECT_CONTAINS(result.output, "Mrays/s");
     EXPECT_CONTAINS(result.output, "est. rel. error");
     const std::string json = read_file(out("s.json"));
-    for (const char* field :
-         {"\"integrator\": \"path\"", "\"max_depth\": \"8\"", "\"width\": 24", "\"height\": 24", "\"seed\": 3",
-          "\"samples\": {\"mean\": 4, \"min\": 4, \"max\": 4, \"taken\": 2304}", "\"seconds\": {\"total\": ",
-          "\"render\": ", "\"rays\": ", "\"rays_per_second\": ", "\"nonfinite_samples\": 0",
-          "\"estimated_rel_rmse\": ", "\"interrupted\": false"})
+    for (const char* field : {"\"integrator\": \"path\"", "\"max_depth\": \"8\"", "\"width\": 24", "\"height\": 24",
+                              "\"seed\": 3", "\"samples\": {\"mean\": 4, \"min\": 4, \"max\": 4, \"taken\": 2304}",
+                              "\"seconds\": {\"total\": ", "\"render\": ", "\"rays\": ", "\"rays_per_second\": ",
+                              "\"nonfinite_samples\": 0", "\"estimated_rel_rmse\": ", "\"interrupted\": false"})
         EXPECT_CONTAINS(json, field);
     // Path traces at least the camera ray of each sample.
     const auto rays_at = json.find("\"rays\": ");
@@ -249,8 +247,8 @@ TEST_F(CliProgressive, ResumeAfterKillNineIsBitIdentical) {
     EXPECT_FALSE(fs::exists(resumed));
 
     auto command = [&](const std::string& output, const std::string& extra) {
-        return "render scenes/cornell_box.pov -i path --width 32 --height 32 --spp 384 --checkpoint 0.2 -o '" +
-               output + "' " + extra;
+        return "render scenes/cornell_box.pov -i path --width 32 --height 32 --spp 384 --checkpoint 0.2 -o '" + output +
+               "' " + extra;
     };
     // ... another seed is refused, naming what differs ...
     CommandResult result = run_lancer(command(resumed, "--seed 8 --resume -q"));

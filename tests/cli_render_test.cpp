@@ -1,11 +1,11 @@
 // `lancer render` and `lancer plugins` as a user meets them: bad arguments
 // get an "error:" line and a non-zero status, and nothing is written unless
 // the whole render succeeds.
+#include <sys/wait.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 
 #include <gtest/gtest.h>
 
@@ -16,14 +16,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-#define EXPECT_CONTAINS(text, part) \
-    EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
+#define EXPECT_CONTAINS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
 
 class CliRender : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
-        m_folder = binary_path("tests/cli_render_out/") +
-                   ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        m_folder =
+            binary_path("tests/cli_render_out/") + ::testing::UnitTest::GetInstance()->current_test_info()->name();
         fs::remove_all(m_folder);
         fs::create_directories(m_folder);
         m_scene = m_folder / "ball.pov";
@@ -168,8 +167,8 @@ TEST_F(CliRender, SceneRenderSettingsAreDefaultsTheCommandLineOverrides) {
     EXPECT_EQ(result.exit_code, 0) << result.output;
     EXPECT_CONTAINS(result.output, "20x10");
     EXPECT_CONTAINS(result.output, "depth");
-    result = run_lancer("render '" + m_scene.string() + "' --width 16 -i normal -o '" +
-                        (m_folder / "b.png").string() + "'");
+    result =
+        run_lancer("render '" + m_scene.string() + "' --width 16 -i normal -o '" + (m_folder / "b.png").string() + "'");
     EXPECT_EQ(result.exit_code, 0) << result.output;
     EXPECT_CONTAINS(result.output, "16x10");
     EXPECT_CONTAINS(result.output, "normal");

@@ -18,10 +18,10 @@
 #include <gtest/gtest.h>
 
 #include "image_compare.h"
-#include "lancer/host/scene_compiler.h"
-#include "lancer/parser.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
+#include "lancer/parser.h"
 #include "run_command.h"
 
 namespace lancer::test {
@@ -46,8 +46,7 @@ std::vector<double> block_means(const testing::Image& image, int block) {
     std::vector<double> means(std::size_t(bx) * by * 3, 0.0);
     for (int y = 0; y < by * block; ++y)
         for (int x = 0; x < bx * block; ++x)
-            for (int c = 0; c < 3; ++c)
-                means[(std::size_t(y / block) * bx + x / block) * 3 + c] += image.at(x, y, c);
+            for (int c = 0; c < 3; ++c) means[(std::size_t(y / block) * bx + x / block) * 3 + c] += image.at(x, y, c);
     for (double& m : means) m /= double(block) * block;
     return means;
 }

@@ -8,11 +8,11 @@
 
 #include <gtest/gtest.h>
 
-#include "lancer/host/scene_compiler.h"
 #include "lancer/host/estimate.h"
-#include "lancer/parser.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
+#include "lancer/parser.h"
 #include "run_command.h"
 
 namespace lancer {
@@ -36,7 +36,7 @@ Film render(const RenderScene& scene, const Integrator& integrator, RenderOption
 }
 
 class EstimateHonesty : public ::testing::TestWithParam<const char*> {
-protected:
+  protected:
     void SetUp() override {
         ParseOptions parse_options;
         parse_options.include_path = default_include_path();
@@ -84,8 +84,8 @@ TEST_P(EstimateHonesty, EstimatedOverTrueErrorIsBetweenHalfAndTwo) {
     EXPECT_LE(adaptive_ratio, 2.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Corpus, EstimateHonesty, ::testing::Values("cornell_box.pov", "sphere_lights.pov", "glass.pov"),
-                         [](const auto& info) {
+INSTANTIATE_TEST_SUITE_P(Corpus, EstimateHonesty,
+                         ::testing::Values("cornell_box.pov", "sphere_lights.pov", "glass.pov"), [](const auto& info) {
                              std::string name = info.param;
                              return name.substr(0, name.find('.'));
                          });

@@ -20,14 +20,14 @@
 
 #include <gtest/gtest.h>
 
-#include "lancer/host/scene_compiler.h"
-#include "lancer/scene_error.h"
 #include "lancer/host/film.h"
+#include "lancer/host/plugin_host.h"
+#include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/integrator.h"
 #include "lancer/parser.h"
-#include "lancer/host/plugin_host.h"
 #include "lancer/render_scene.h"
-#include "lancer/host/renderer.h"
+#include "lancer/scene_error.h"
 #include "lancer/scene_graph.h"
 
 namespace lancer {
@@ -72,8 +72,8 @@ Film render_graph(const sg::SceneGraph& graph, const std::string& integrator_nam
 }
 
 // Renders scene text (parsed for width x height).
-Film render(const std::string& text, const std::string& integrator_name, const Parameters& parameters,
-            int width = 32, int height = 24, int spp = 1, std::uint64_t seed = 3) {
+Film render(const std::string& text, const std::string& integrator_name, const Parameters& parameters, int width = 32,
+            int height = 24, int spp = 1, std::uint64_t seed = 3) {
     return render_graph(parse(text, width, height), integrator_name, parameters, width, height, spp, seed);
 }
 
@@ -95,7 +95,8 @@ Film render(const std::string& text, const std::string& integrator_name, const P
 float max_value(const Film& film) {
     float m = 0.0f;
     for (int y = 0; y < film.height(); ++y)
-        for (int x = 0; x < film.width(); ++x) m = std::max({m, film.mean(x, y).r, film.mean(x, y).g, film.mean(x, y).b});
+        for (int x = 0; x < film.width(); ++x)
+            m = std::max({m, film.mean(x, y).r, film.mean(x, y).g, film.mean(x, y).b});
     return m;
 }
 
@@ -341,8 +342,10 @@ sphere { <0, 1, 0>, 0.5 pigment { color rgb 1 } }
         EXPECT_EQ(parsed.diagnostics.front().location.line, 5) << light;
     }
     // The same lights built in code, past the parser's checks.
-    sg::SceneGraph graph = parse(base + "light_source { <0, 3, 0> color rgb 1 area_light <1, 0, 0>, <0, 0, 1>, 2, 2 }\n"
-                                        "light_source { <1, 3, 0> color rgb 1 area_sphere 0.5 }\n", 16, 12);
+    sg::SceneGraph graph = parse(base +
+                                     "light_source { <0, 3, 0> color rgb 1 area_light <1, 0, 0>, <0, 0, 1>, 2, 2 }\n"
+                                     "light_source { <1, 3, 0> color rgb 1 area_sphere 0.5 }\n",
+                                 16, 12);
     ASSERT_EQ(graph.lights.size(), 2u);
     for (int variant = 0; variant < 3; ++variant) {
         sg::SceneGraph degenerate = graph;
@@ -370,8 +373,8 @@ sphere { <0, 1, 0>, 0.5 pigment { color rgb 1 } }
 TEST(Extremes, ZeroAndHugeIntensities) {
     auto scene = [](const char* intensity, const char* ambient) {
         return std::string("camera { location <0, 2, -5> look_at <0, 0.5, 0> }\n") +
-               "light_source { <2, 4, -3> color rgb " + intensity + " }\n" +
-               "light_source { <-2, 3, 0> color rgb " + intensity + " area_light <1, 0, 0>, <0, 0, 1>, 2, 2 }\n" +
+               "light_source { <2, 4, -3> color rgb " + intensity + " }\n" + "light_source { <-2, 3, 0> color rgb " +
+               intensity + " area_light <1, 0, 0>, <0, 0, 1>, 2, 2 }\n" +
                "plane { y, 0 pigment { color rgb 1 } finish { ambient " + ambient + " diffuse 0.8 } }\n" +
                "sphere { <0, 1, 0>, 0.6 pigment { color rgb 1 } finish { ambient " + ambient +
                " diffuse 0.8 phong 0.5 reflection 0.3 } }\n";
@@ -384,9 +387,12 @@ TEST(Extremes, ZeroAndHugeIntensities) {
         // Every geometry pixel (the lower half is plane or sphere).
         for (int x = 0; x < dark.width(); ++x) {
             const float v = dark.mean(x, dark.height() - 1).g;
-            if (path) EXPECT_EQ(v, 0.0f) << name;
-            else if (std::string(name) != "gather") EXPECT_NEAR(v, 0.1f, 1e-5f) << name;  // gather has no ambient
-            else EXPECT_EQ(v, 0.0f) << name;
+            if (path)
+                EXPECT_EQ(v, 0.0f) << name;
+            else if (std::string(name) != "gather")
+                EXPECT_NEAR(v, 0.1f, 1e-5f) << name;  // gather has no ambient
+            else
+                EXPECT_EQ(v, 0.0f) << name;
         }
         const Film one = render(scene("1", "0"), name, quick(name), 16, 12, spp);
         const Film huge = render(scene("1e30", "0"), name, quick(name), 16, 12, spp);
@@ -394,8 +400,10 @@ TEST(Extremes, ZeroAndHugeIntensities) {
         for (int y = 0; y < one.height(); ++y)
             for (int x = 0; x < one.width(); ++x) {
                 const float a = one.mean(x, y).g, b = huge.mean(x, y).g;
-                if (a > 1e-6f) ASSERT_NEAR(b / a, 1e30f, 1e25f) << name << " at (" << x << ", " << y << ")";
-                else ASSERT_LE(b, 1e30f * 1e-5f) << name << " at (" << x << ", " << y << ")";
+                if (a > 1e-6f)
+                    ASSERT_NEAR(b / a, 1e30f, 1e25f) << name << " at (" << x << ", " << y << ")";
+                else
+                    ASSERT_LE(b, 1e30f * 1e-5f) << name << " at (" << x << ", " << y << ")";
             }
     }
 }
@@ -418,7 +426,8 @@ TEST(Extremes, ZeroAreaTrianglesInAnObj) {
     auto scene = [&](const std::string& file) {
         return "camera { location <0, 0.7, -4> look_at <0, 0.7, 0> }\n"
                "light_source { <0, 2, -5> color rgb 20 }\n"
-               "obj_mesh { \"" + (folder / file).string() + "\" pigment { color rgb 1 } }\n";
+               "obj_mesh { \"" +
+               (folder / file).string() + "\" pigment { color rgb 1 } }\n";
     };
     for (const char* name : kAllIntegrators) {
         const int spp = std::string(name) == "path" || std::string(name) == "gather" ? 4 : 1;

@@ -38,9 +38,15 @@ constexpr int kDefaultTestSpp = 16;
 constexpr int kDefaultGoldenSpp = 256;
 constexpr int kDefaultBlock = 2;
 
-int test_spp(const MatrixEntry& e) { return e.test_spp > 0 ? e.test_spp : kDefaultTestSpp; }
-int golden_spp(const MatrixEntry& e) { return e.golden_spp > 0 ? e.golden_spp : kDefaultGoldenSpp; }
-int block(const MatrixEntry& e) { return e.block > 0 ? e.block : kDefaultBlock; }
+int test_spp(const MatrixEntry& e) {
+    return e.test_spp > 0 ? e.test_spp : kDefaultTestSpp;
+}
+int golden_spp(const MatrixEntry& e) {
+    return e.golden_spp > 0 ? e.golden_spp : kDefaultGoldenSpp;
+}
+int block(const MatrixEntry& e) {
+    return e.block > 0 ? e.block : kDefaultBlock;
+}
 
 // Every pixel's mean finite and no sample dropped as non-finite by the film.
 void expect_finite(const std::string& id, const Film& film) {
@@ -132,8 +138,8 @@ TEST_P(GoldenImage, MatchesGolden) {
         }
         const long allowed = std::max(2L, long(kEdgePixelFraction * double(render.mean.size())));
         if (over > allowed) {
-            ADD_FAILURE() << id << ": " << over << " pixels differ by more than " << kChannelTolerance
-                          << " (allowed " << allowed << "); worst " << worst << " at (" << worst_x << ", " << worst_y
+            ADD_FAILURE() << id << ": " << over << " pixels differ by more than " << kChannelTolerance << " (allowed "
+                          << allowed << "); worst " << worst << " at (" << worst_x << ", " << worst_y
                           << "), mean |diff| " << sum / (3.0 * double(render.mean.size()))
                           << "\nrender | golden | 4x|diff| written to "
                           << write_failure_image(id, render, golden, 4.0f);
@@ -163,8 +169,8 @@ TEST_P(GoldenImage, MatchesGolden) {
         test::compare_images(render, golden, kFamilyAlpha, block(entry), entry.absolute_tolerance);
     if (!comparison.passed) {
         ADD_FAILURE() << id << " (" << test_spp(entry) << " spp vs golden's " << golden_file.metadata["spp"]
-                      << "): " << comparison.summary
-                      << "\nrender | golden | 4x|diff| written to " << write_failure_image(id, render, golden, 4.0f);
+                      << "): " << comparison.summary << "\nrender | golden | 4x|diff| written to "
+                      << write_failure_image(id, render, golden, 4.0f);
     }
 }
 
@@ -195,10 +201,10 @@ TEST_P(GoldenVerify, AgreesWithIndependentHighSppRender) {
             const GoldenFile path = read_golden(other.golden_path());
             const auto& p = path.statistics;
             // Deterministic goldens are larger: render this one at path's size.
-            const auto same_size = g.width == p.width
-                                       ? g
-                                       : test::PixelStatistics::from_film(
-                                             render_entry(entry, p.width, p.height, 1, kTestSeed).film);
+            const auto same_size =
+                g.width == p.width
+                    ? g
+                    : test::PixelStatistics::from_film(render_entry(entry, p.width, p.height, 1, kTestSeed).film);
             std::cout << "[ vs path  ] " << entry.id() << ": relative L1 difference from " << other.id() << ": "
                       << relative_l1(same_size, p) << "\n";
         }
@@ -210,8 +216,8 @@ TEST_P(GoldenVerify, AgreesWithIndependentHighSppRender) {
     const test::ImageComparison comparison = test::compare_images(g, r, kFamilyAlpha, 1, entry.absolute_tolerance);
     std::cout << "[ verify   ] " << entry.id() << " vs " << spp << " spp: " << comparison.summary << "; relative L1 "
               << relative_l1(g, r) << "\n";
-    EXPECT_TRUE(comparison.passed) << entry.id() << ": golden vs independent " << spp << " spp render: "
-                                   << comparison.summary << "\nwritten to "
+    EXPECT_TRUE(comparison.passed) << entry.id() << ": golden vs independent " << spp
+                                   << " spp render: " << comparison.summary << "\nwritten to "
                                    << write_failure_image(entry.id() + "_verify", g, r, 4.0f);
 }
 

@@ -12,22 +12,28 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "lancer/host/scene_compiler.h"
 #include "lancer/host/image_io.h"
+#include "lancer/host/plugin_host.h"
+#include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/integrator.h"
 #include "lancer/parser.h"
-#include "lancer/host/plugin_host.h"
 #include "lancer/render_scene.h"
-#include "lancer/host/renderer.h"
 #include "lancer/scene_graph.h"
 
 namespace lancer::golden {
 
 namespace fs = std::filesystem;
 
-std::string source_dir() { return LANCER_SOURCE_DIR; }
-std::string golden_dir() { return source_dir() + "/tests/golden"; }
-std::string failure_dir() { return std::string(LANCER_BINARY_DIR) + "/golden_failures"; }
+std::string source_dir() {
+    return LANCER_SOURCE_DIR;
+}
+std::string golden_dir() {
+    return source_dir() + "/tests/golden";
+}
+std::string failure_dir() {
+    return std::string(LANCER_BINARY_DIR) + "/golden_failures";
+}
 
 bool regenerating() {
     const char* value = std::getenv("LANCER_REGENERATE_GOLDENS");
@@ -40,7 +46,9 @@ std::string MatrixEntry::id() const {
     return name;
 }
 
-std::string MatrixEntry::golden_path() const { return golden_dir() + "/" + id() + ".exr"; }
+std::string MatrixEntry::golden_path() const {
+    return golden_dir() + "/" + id() + ".exr";
+}
 
 std::vector<MatrixEntry> load_matrix() {
     const std::string path = golden_dir() + "/matrix.txt";
@@ -70,11 +78,16 @@ std::vector<MatrixEntry> load_matrix() {
                 continue;
             }
             try {
-                if (key == ":test_spp") entry.test_spp = std::stoi(value);
-                else if (key == ":golden_spp") entry.golden_spp = std::stoi(value);
-                else if (key == ":block") entry.block = std::stoi(value);
-                else if (key == ":abs_tol") entry.absolute_tolerance = std::stod(value);
-                else fail("unknown option '" + key + "' (:test_spp, :golden_spp, :block, :abs_tol)");
+                if (key == ":test_spp")
+                    entry.test_spp = std::stoi(value);
+                else if (key == ":golden_spp")
+                    entry.golden_spp = std::stoi(value);
+                else if (key == ":block")
+                    entry.block = std::stoi(value);
+                else if (key == ":abs_tol")
+                    entry.absolute_tolerance = std::stod(value);
+                else
+                    fail("unknown option '" + key + "' (:test_spp, :golden_spp, :block, :abs_tol)");
             } catch (const std::logic_error&) {
                 fail("bad number in '" + word + "'");
             }
@@ -119,10 +132,14 @@ std::vector<std::string> suited_integrators(const std::string& scene) {
     int depth = 0;
     for (std::size_t i = suits + 6; i < header.size(); ++i) {
         const char c = header[i];
-        if (c == '(') ++depth;
-        else if (c == ')') --depth;
-        else if (depth == 0 && c == '.' ) break;
-        else if (depth == 0) sentence += c;
+        if (c == '(')
+            ++depth;
+        else if (c == ')')
+            --depth;
+        else if (depth == 0 && c == '.')
+            break;
+        else if (depth == 0)
+            sentence += c;
     }
     // Each word of the sentence that names a known integrator.
     std::string word;
@@ -132,8 +149,10 @@ std::vector<std::string> suited_integrators(const std::string& scene) {
         word.clear();
     };
     for (char c : sentence) {
-        if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') word += c;
-        else flush();
+        if (std::isalpha(static_cast<unsigned char>(c)) || c == '_')
+            word += c;
+        else
+            flush();
     }
     flush();
     return names;

@@ -16,15 +16,15 @@ namespace lancer::golden {
 // One row of tests/golden/matrix.txt: a scene of scenes/ rendered by one
 // integrator with fixed parameters.
 struct MatrixEntry {
-    std::string scene;       // path under scenes/ without ".pov", e.g. "language/meshes"
-    std::string integrator;  // plugin name
+    std::string scene;                              // path under scenes/ without ".pov", e.g. "language/meshes"
+    std::string integrator;                         // plugin name
     std::map<std::string, std::string> parameters;  // integrator parameters (key=value)
     // Harness options (":key=value" in the matrix); 0 means the default.
-    int test_spp = 0;    // stochastic: samples per pixel of the test render
-    int golden_spp = 0;  // stochastic: samples per pixel of the golden
-    int block = 0;       // stochastic: block size of the z-test
+    int test_spp = 0;                 // stochastic: samples per pixel of the test render
+    int golden_spp = 0;               // stochastic: samples per pixel of the golden
+    int block = 0;                    // stochastic: block size of the z-test
     double absolute_tolerance = 0.0;  // stochastic: see stat_compare.h
-    int line = 0;        // in matrix.txt, for messages
+    int line = 0;                     // in matrix.txt, for messages
 
     // "cornell_box/path" or "cornell_box/shadow.area_samples-4": the golden's
     // path under tests/golden/ without ".exr", and the test's name.

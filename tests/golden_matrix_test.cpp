@@ -55,8 +55,8 @@ TEST(GoldenMatrix, EverySceneHasAGoldenForEachIntegratorItsHeaderNames) {
 TEST(GoldenMatrix, EveryRowHasItsGolden) {
     for (const MatrixEntry& entry : load_matrix())
         EXPECT_TRUE(fs::is_regular_file(entry.golden_path()))
-            << "matrix.txt:" << entry.line << ": missing " << entry.golden_path()
-            << " (scripts/regenerate-goldens.sh '" << entry.id() << "')";
+            << "matrix.txt:" << entry.line << ": missing " << entry.golden_path() << " (scripts/regenerate-goldens.sh '"
+            << entry.id() << "')";
 }
 
 // Guards against: stale goldens of deleted rows, and goldens kept outside
@@ -71,16 +71,15 @@ TEST(GoldenMatrix, NoGoldenWithoutARow) {
         }
     }
     for (const auto& item : fs::directory_iterator(source_dir() + "/plugins"))
-        EXPECT_FALSE(fs::exists(item.path() / "golden"))
-            << item.path() / "golden" << ": goldens live in tests/golden/ (docs/testing.md)";
+        EXPECT_FALSE(fs::exists(item.path() / "golden")) << item.path() / "golden"
+                                                         << ": goldens live in tests/golden/ (docs/testing.md)";
 }
 
 // The header parser reads the corpus' own phrasing.
 TEST(GoldenMatrix, SuitsLineParsing) {
     EXPECT_EQ(suited_integrators("glass"), (std::vector<std::string>{"whitted", "path"}));
     EXPECT_EQ(suited_integrators("sphere_lights"), (std::vector<std::string>{"path", "gather", "shadow"}));
-    EXPECT_EQ(suited_integrators("hard_shadows"),
-              (std::vector<std::string>{"shadow", "whitted", "path", "raycast"}));
+    EXPECT_EQ(suited_integrators("hard_shadows"), (std::vector<std::string>{"shadow", "whitted", "path", "raycast"}));
 }
 
 }  // namespace

@@ -21,8 +21,7 @@ Image load_image(const std::string& path) {
         throw std::runtime_error("cannot read image '" + path + "': " + input->geterror());
     image.rgb.resize(std::size_t(spec.width) * spec.height * 3);
     for (std::size_t p = 0; p < std::size_t(spec.width) * spec.height; ++p)
-        for (int c = 0; c < 3; ++c)
-            image.rgb[p * 3 + c] = all[p * spec.nchannels + std::min(c, spec.nchannels - 1)];
+        for (int c = 0; c < 3; ++c) image.rgb[p * 3 + c] = all[p * spec.nchannels + std::min(c, spec.nchannels - 1)];
     return image;
 }
 
@@ -66,8 +65,7 @@ Image side_by_side(const Image& render, const Image& golden, float diff_gain) {
     for (int y = 0; y < out.height; ++y)
         for (int c = 0; c < 3; ++c) {
             for (int x = 0; x < render.width && y < render.height; ++x) put(x, y, c, render.at(x, y, c));
-            for (int x = 0; x < golden.width && y < golden.height; ++x)
-                put(render.width + x, y, c, golden.at(x, y, c));
+            for (int x = 0; x < golden.width && y < golden.height; ++x) put(render.width + x, y, c, golden.at(x, y, c));
             for (int x = 0; x < std::min(render.width, golden.width); ++x)
                 if (y < render.height && y < golden.height)
                     put(render.width + golden.width + x, y, c,
@@ -82,8 +80,8 @@ bool images_match(const Image& render, const Image& golden, double max_mean_abso
     std::ostringstream why;
     bool ok = d.same_size && d.mean_absolute <= max_mean_absolute && d.pixels_over_threshold <= max_pixels_over;
     if (!d.same_size)
-        why << "size " << render.width << "x" << render.height << " differs from the golden's " << golden.width
-            << "x" << golden.height;
+        why << "size " << render.width << "x" << render.height << " differs from the golden's " << golden.width << "x"
+            << golden.height;
     else
         why << "mean |diff| " << d.mean_absolute << " (limit " << max_mean_absolute << "), max " << d.max_absolute
             << ", RMSE " << d.rmse << ", " << d.pixels_over_threshold << " pixels over " << pixel_threshold

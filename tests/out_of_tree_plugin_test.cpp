@@ -5,13 +5,13 @@
 //   3. run the installed bin/lancer with -i on the new plugin, found through
 //      LANCER_PLUGIN_PATH, and check the image it wrote.
 // It takes a few seconds (one small CMake project).
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <string>
-#include <sys/wait.h>
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -63,8 +63,8 @@ TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
     const std::string cmake = LANCER_CMAKE_COMMAND;
 
     // 1. Install.
-    const ShellResult install =
-        run_shell({shell_quoted(cmake), "--install", shell_quoted(LANCER_BINARY_DIR), "--prefix", shell_quoted(prefix)});
+    const ShellResult install = run_shell(
+        {shell_quoted(cmake), "--install", shell_quoted(LANCER_BINARY_DIR), "--prefix", shell_quoted(prefix)});
     ASSERT_EQ(install.exit_code, 0) << install.output;
     for (const char* installed :
          {"bin/lancer", "lib/liblancer.so", "lib/lancer/plugins/raycast.so", "lib/lancer/plugins/depth.so",
@@ -93,10 +93,9 @@ TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
                             "light_source { <5, 5, -5> color rgb <1, 1, 1> }\n"
                             "sphere { <0, 0, 0>, 1 pigment { color rgb <1, 0, 0> } }\n";
     const fs::path image = work / "sphere.exr";
-    const ShellResult render =
-        run_shell({"LANCER_PLUGIN_PATH=" + shell_quoted(plugin_build), shell_quoted(prefix / "bin/lancer"), "render",
-                   shell_quoted(scene), "-i silhouette -p level=0.25 --width 32 --height 24 --quiet -o",
-                   shell_quoted(image)});
+    const ShellResult render = run_shell(
+        {"LANCER_PLUGIN_PATH=" + shell_quoted(plugin_build), shell_quoted(prefix / "bin/lancer"), "render",
+         shell_quoted(scene), "-i silhouette -p level=0.25 --width 32 --height 24 --quiet -o", shell_quoted(image)});
     ASSERT_EQ(render.exit_code, 0) << render.output;
 
     auto input = OIIO::ImageInput::open(image.string());
@@ -106,15 +105,17 @@ TEST(OutOfTreePlugin, BuildsAgainstTheInstalledPackageAndLoads) {
     ASSERT_EQ(spec.height, 24);
     std::vector<float> pixels(std::size_t(spec.width) * spec.height * spec.nchannels);
     ASSERT_TRUE(input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
-    const auto channel = [&](int x, int y, int c) { return pixels[(std::size_t(y) * spec.width + x) * spec.nchannels + c]; };
+    const auto channel = [&](int x, int y, int c) {
+        return pixels[(std::size_t(y) * spec.width + x) * spec.nchannels + c];
+    };
     // The sphere fills the centre with the plugin's level; the corner is background (black).
     EXPECT_NEAR(channel(16, 12, 0), 0.25f, 1e-3f);
     EXPECT_NEAR(channel(16, 12, 1), 0.25f, 1e-3f);
     EXPECT_NEAR(channel(0, 0, 0), 0.0f, 1e-6f);
 
     // `lancer plugins` lists it with its parameter, beside the built-in ones.
-    const ShellResult listing = run_shell(
-        {"LANCER_PLUGIN_PATH=" + shell_quoted(plugin_build), shell_quoted(prefix / "bin/lancer"), "plugins"});
+    const ShellResult listing =
+        run_shell({"LANCER_PLUGIN_PATH=" + shell_quoted(plugin_build), shell_quoted(prefix / "bin/lancer"), "plugins"});
     EXPECT_EQ(listing.exit_code, 0) << listing.output;
     EXPECT_NE(listing.output.find("silhouette"), std::string::npos) << listing.output;
     EXPECT_NE(listing.output.find("level"), std::string::npos) << listing.output;

@@ -17,12 +17,11 @@ namespace lancer::test {
 namespace {
 
 // Message checks read better as "contains" than as equality.
-#define EXPECT_CONTAINS(text, part) \
-    EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
+#define EXPECT_CONTAINS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
 
 // Sets an environment variable for one test and restores it after.
 class ScopedEnvironment {
-public:
+  public:
     ScopedEnvironment(const char* name, const std::string& value) : m_name(name) {
         if (const char* previous = std::getenv(name)) m_previous = previous;
         m_had_previous = std::getenv(name) != nullptr;
@@ -36,7 +35,7 @@ public:
         }
     }
 
-private:
+  private:
     const char* m_name;
     std::string m_previous;
     bool m_had_previous = false;
@@ -174,8 +173,7 @@ const IntegratorDescriptor kTestDescriptor = {
     kPluginAbiVersion, "tester", "for tests", kTestParameters, std::size(kTestParameters), nullptr,
 };
 
-sg::ParameterValue scene_value(std::variant<double, sg::Vec3, std::string, bool> value, int line = 3,
-                               int column = 5) {
+sg::ParameterValue scene_value(std::variant<double, sg::Vec3, std::string, bool> value, int line = 3, int column = 5) {
     sg::ParameterValue parameter;
     parameter.value = std::move(value);
     parameter.location.file = std::make_shared<const std::string>("scenes/test.pov");

@@ -13,9 +13,9 @@
 
 #include <gtest/gtest.h>
 
-#include "lancer/host/scene_compiler.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/scene_graph.h"
 
 namespace lancer::test {
@@ -58,8 +58,7 @@ sg::SceneGraph wall_scene(double distance) {
 
 struct RaycastFixture {
     Plugin plugin = load_plugin("raycast");
-    std::unique_ptr<Integrator> integrator =
-        plugin.descriptor->create(resolve_parameters(*plugin.descriptor, {}, {}));
+    std::unique_ptr<Integrator> integrator = plugin.descriptor->create(resolve_parameters(*plugin.descriptor, {}, {}));
 };
 
 Film render(const sg::SceneGraph& graph, const Integrator& integrator, int size, int threads, int spp = 1) {
@@ -165,14 +164,13 @@ TEST(RaycastIntegrator, OneAndTwoThreadsGiveTheSameImageBitForBit) {
 // camera rays and the per-sample sampler streams are covered by the same
 // bit-exact check.
 class JitteredRaycast final : public Integrator {
-public:
+  public:
     explicit JitteredRaycast(const Integrator& raycast) : m_raycast(raycast) {}
-    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
-                           Sampler& sampler) const override {
+    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene, Sampler& sampler) const override {
         return m_raycast.shade_camera_hit(ray, hit, scene, sampler) * (0.5f + sampler.next_1d());
     }
 
-private:
+  private:
     const Integrator& m_raycast;
 };
 

@@ -1,8 +1,8 @@
 #include "run_command.h"
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
-#include <sys/wait.h>
 
 namespace lancer::test {
 
@@ -16,8 +16,7 @@ std::string binary_path(const std::string& relative) {
 
 CommandResult run_lancer(const std::string& arguments) {
     const std::string command =
-        "cd '" + std::string(LANCER_SOURCE_DIR) + "' && '" + binary_path("bin/lancer") + "' " +
-        arguments + " 2>&1";
+        "cd '" + std::string(LANCER_SOURCE_DIR) + "' && '" + binary_path("bin/lancer") + "' " + arguments + " 2>&1";
     CommandResult result;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;

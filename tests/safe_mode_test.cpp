@@ -20,11 +20,12 @@ constexpr const char* kSecret = "TOP_SECRET_LINE";
 
 struct SafeFixture : ::testing::Test {
     TempFolder temp;
-    std::string outside;      // temp/outside/secret.inc, holds kSecret
-    fs::path scene_folder;    // temp/scene
+    std::string outside;    // temp/outside/secret.inc, holds kSecret
+    fs::path scene_folder;  // temp/scene
 
     void SetUp() override {
-        outside = temp.write("outside/secret.inc", std::string("#declare ") + kSecret + " = 1;\n" + kSecret + " oops\n");
+        outside =
+            temp.write("outside/secret.inc", std::string("#declare ") + kSecret + " = 1;\n" + kSecret + " oops\n");
         temp.write("outside/secret.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         temp.write("outside/secret.mtl", std::string("newmtl ") + kSecret + "\nKd 1 0 0\n");
         temp.write("outside/secret.png", kSecret);
@@ -61,8 +62,9 @@ void expect_refused(const ParseResult& result, int line, int column) {
 }  // namespace
 
 TEST_F(SafeFixture, IncludesInsideTheFolderAndTheStandardPathAreAllowed) {
-    ParseResult result = parse("#include \"colors.inc\"\n#include \"inner/ok.inc\"\nsphere { 0, R pigment { White } }\n"
-                               "obj_mesh { \"tri.obj\" }\n");
+    ParseResult result = parse(
+        "#include \"colors.inc\"\n#include \"inner/ok.inc\"\nsphere { 0, R pigment { White } }\n"
+        "obj_mesh { \"tri.obj\" }\n");
     EXPECT_TRUE(result.ok()) << all_text(result);
 }
 
@@ -106,7 +108,8 @@ TEST_F(SafeFixture, ObjOutsideIsRefused) {
 TEST_F(SafeFixture, MtlOutsideIsRefused) {
     temp.write("scene/escape.obj", "mtllib ../outside/secret.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     expect_refused(parse("obj_mesh { \"escape.obj\" }\n"), 1, 12);
-    temp.write("scene/escape2.obj", "mtllib " + (temp.path() / "outside/secret.mtl").string() + "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    temp.write("scene/escape2.obj",
+               "mtllib " + (temp.path() / "outside/secret.mtl").string() + "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     expect_refused(parse("obj_mesh { \"escape2.obj\" }\n"), 1, 12);
 }
 

@@ -48,7 +48,9 @@ PixelStatistics PixelStatistics::block_average(int block) const {
 namespace {
 
 // Two-sided p-value of a standard normal deviate.
-double two_sided_p(double z) { return std::erfc(std::abs(z) / std::sqrt(2.0)); }
+double two_sided_p(double z) {
+    return std::erfc(std::abs(z) / std::sqrt(2.0));
+}
 
 // z of a difference of means with standard error sqrt(variance); identical
 // noiseless values give 0, differing ones infinity.
@@ -59,8 +61,8 @@ double z_score(double difference, double variance) {
 
 }  // namespace
 
-ImageComparison compare_images(const PixelStatistics& image, const PixelStatistics& reference,
-                               double alpha, int block, double absolute_tolerance) {
+ImageComparison compare_images(const PixelStatistics& image, const PixelStatistics& reference, double alpha, int block,
+                               double absolute_tolerance) {
     if (image.width != reference.width || image.height != reference.height)
         throw std::invalid_argument("compare_images: images differ in size");
     const PixelStatistics a = image.block_average(block);
@@ -83,9 +85,7 @@ ImageComparison compare_images(const PixelStatistics& image, const PixelStatisti
         }
     };
 
-    auto shrink = [&](double d) {
-        return std::copysign(std::max(0.0, std::abs(d) - absolute_tolerance), d);
-    };
+    auto shrink = [&](double d) { return std::copysign(std::max(0.0, std::abs(d) - absolute_tolerance), d); };
     glm::dvec3 sum_difference(0.0), sum_variance(0.0);
     for (std::size_t i = 0; i < pixels; ++i) {
         glm::dvec3 difference = a.mean[i] - b.mean[i];
@@ -98,8 +98,8 @@ ImageComparison compare_images(const PixelStatistics& image, const PixelStatisti
     }
     // The whole image: mean of differences, variance of that mean.
     for (int c = 0; c < 3; ++c) {
-        const double z = z_score(sum_difference[c] / double(pixels),
-                                 sum_variance[c] / (double(pixels) * double(pixels)));
+        const double z =
+            z_score(sum_difference[c] / double(pixels), sum_variance[c] / (double(pixels) * double(pixels)));
         result.image_z[c] = z;
         consider(z, -1, -1, c);
     }
@@ -109,10 +109,12 @@ ImageComparison compare_images(const PixelStatistics& image, const PixelStatisti
     text << (result.passed ? "images agree" : "images differ") << ": min p " << result.min_p_value
          << " vs per-test level " << result.per_test_alpha << " (" << result.tests << " tests, block "
          << std::max(block, 1) << "); worst z " << result.worst_z << " at ";
-    if (result.worst_x < 0) text << "the whole-image mean";
-    else text << "(" << result.worst_x << ", " << result.worst_y << ")";
-    text << " channel " << result.worst_channel << "; whole-image z (" << result.image_z[0] << ", "
-         << result.image_z[1] << ", " << result.image_z[2] << ")";
+    if (result.worst_x < 0)
+        text << "the whole-image mean";
+    else
+        text << "(" << result.worst_x << ", " << result.worst_y << ")";
+    text << " channel " << result.worst_channel << "; whole-image z (" << result.image_z[0] << ", " << result.image_z[1]
+         << ", " << result.image_z[2] << ")";
     result.summary = text.str();
     return result;
 }

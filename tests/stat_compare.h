@@ -45,7 +45,7 @@ struct ImageComparison {
     int worst_x = -1, worst_y = -1, worst_channel = -1;  // -1 x: the whole image
     double worst_z = 0.0;
     double image_z[3] = {0.0, 0.0, 0.0};  // whole-image mean difference, in std errors
-    std::string summary;          // one line for test failure messages
+    std::string summary;                  // one line for test failure messages
 };
 
 // Compares `image` with `reference` (same size) at family-wise significance
@@ -54,7 +54,7 @@ struct ImageComparison {
 // taken: for estimators that reach some pixels only through rare events
 // (BSDF sampling of a small light), whose variance estimate is then 0 at
 // any affordable sample count.
-ImageComparison compare_images(const PixelStatistics& image, const PixelStatistics& reference,
-                               double alpha = 0.01, int block = 1, double absolute_tolerance = 0.0);
+ImageComparison compare_images(const PixelStatistics& image, const PixelStatistics& reference, double alpha = 0.01,
+                               int block = 1, double absolute_tolerance = 0.0);
 
 }  // namespace lancer::test

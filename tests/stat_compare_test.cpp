@@ -38,15 +38,14 @@ PixelStatistics synthetic_render(std::uint32_t seed, double bias, int samples) {
 
 TEST(StatCompare, IndependentRendersAgree) {
     for (std::uint32_t seed : {1u, 2u, 3u, 4u}) {
-        const ImageComparison c = compare_images(synthetic_render(seed, 0.0, 256),
-                                                 synthetic_render(seed + 100, 0.0, 256));
+        const ImageComparison c =
+            compare_images(synthetic_render(seed, 0.0, 256), synthetic_render(seed + 100, 0.0, 256));
         EXPECT_TRUE(c.passed) << c.summary;
     }
 }
 
 TEST(StatCompare, TwoPercentBiasIsCaught) {
-    const ImageComparison c =
-        compare_images(synthetic_render(5, 0.02, 256), synthetic_render(6, 0.0, 256));
+    const ImageComparison c = compare_images(synthetic_render(5, 0.02, 256), synthetic_render(6, 0.0, 256));
     EXPECT_FALSE(c.passed) << c.summary;
     EXPECT_LT(c.worst_x, 0) << "the whole-image test should be the one to catch it";
 }
@@ -61,8 +60,7 @@ TEST(StatCompare, LocalErrorIsCaught) {
 }
 
 TEST(StatCompare, BlockAveragingKeepsAgreement) {
-    const ImageComparison c = compare_images(synthetic_render(9, 0.0, 64),
-                                             synthetic_render(10, 0.0, 64), 0.01, 4);
+    const ImageComparison c = compare_images(synthetic_render(9, 0.0, 64), synthetic_render(10, 0.0, 64), 0.01, 4);
     EXPECT_TRUE(c.passed) << c.summary;
     EXPECT_EQ(c.tests, 3 * 8 * 8 + 3);
 }

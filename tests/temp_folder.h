@@ -11,7 +11,7 @@
 namespace lancer::test {
 
 class TempFolder {
-public:
+  public:
     TempFolder() {
         std::string pattern = (std::filesystem::temp_directory_path() / "lancer-test-XXXXXX").string();
         if (mkdtemp(pattern.data())) m_path = pattern;
@@ -33,7 +33,7 @@ public:
         return file.string();
     }
 
-private:
+  private:
     std::filesystem::path m_path;
 };
 

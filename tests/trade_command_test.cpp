@@ -18,8 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-#define EXPECT_CONTAINS(text, part) \
-    EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
+#define EXPECT_CONTAINS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
 
 std::string read_text(const fs::path& path) {
     std::ifstream stream(path);
@@ -29,7 +28,7 @@ std::string read_text(const fs::path& path) {
 }
 
 class TradeCommand : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         m_folder = binary_path("tests/trade_out/") + ::testing::UnitTest::GetInstance()->current_test_info()->name();
         fs::remove_all(m_folder);
@@ -125,12 +124,12 @@ TEST_F(TradeCommand, SecondRunReusesTheCachedReference) {
 }
 
 TEST_F(TradeCommand, RejectsBadArguments) {
-    EXPECT_EQ(run_lancer("trade '" + m_scene.string() + "' --out '" + (m_folder / "x").string() + "' --budget 0")
-                  .exit_code,
-              2);
-    EXPECT_EQ(run_lancer("trade '" + m_scene.string() + "' --out '" + (m_folder / "x").string() + "' --width 10")
-                  .exit_code,
-              2);
+    EXPECT_EQ(
+        run_lancer("trade '" + m_scene.string() + "' --out '" + (m_folder / "x").string() + "' --budget 0").exit_code,
+        2);
+    EXPECT_EQ(
+        run_lancer("trade '" + m_scene.string() + "' --out '" + (m_folder / "x").string() + "' --width 10").exit_code,
+        2);
     const CommandResult missing = run_lancer("trade no_such_scene.pov --out '" + (m_folder / "x").string() + "'");
     EXPECT_EQ(missing.exit_code, 1);
 }

@@ -23,7 +23,9 @@ struct Call {
     const std::vector<Value>& args;
     const SourceRange& where;
 
-    double f(size_t i) { return ev.to_float(args[i], where, "a float argument " + std::to_string(i + 1) + " of " + name + "()"); }
+    double f(size_t i) {
+        return ev.to_float(args[i], where, "a float argument " + std::to_string(i + 1) + " of " + name + "()");
+    }
     sg::Vec3 vec(size_t i) { return ev.to_vec3(args[i], where); }
     std::string s(size_t i) { return ev.to_string(args[i], where); }
     void domain(const std::string& problem) { ev.error(where.begin, name + "(): " + problem); }
@@ -64,17 +66,19 @@ Value builtin_rand(Evaluator& ev, const std::vector<Value>& args, const SourceRa
 
 Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>& args, const SourceRange& where) {
     static const std::unordered_map<std::string, std::pair<int, int>> arity = {
-        {"abs", {1, 1}}, {"sqrt", {1, 1}}, {"sqr", {1, 1}}, {"pow", {2, 2}}, {"exp", {1, 1}}, {"log", {1, 1}},
-        {"ln", {1, 1}}, {"sin", {1, 1}}, {"cos", {1, 1}}, {"tan", {1, 1}}, {"asin", {1, 1}}, {"acos", {1, 1}},
-        {"atan", {1, 1}}, {"atan2", {2, 2}}, {"sinh", {1, 1}}, {"cosh", {1, 1}}, {"tanh", {1, 1}},
-        {"asinh", {1, 1}}, {"acosh", {1, 1}}, {"atanh", {1, 1}}, {"min", {1, 99}}, {"max", {1, 99}},
-        {"floor", {1, 1}}, {"ceil", {1, 1}}, {"mod", {2, 2}}, {"int", {1, 1}}, {"div", {2, 2}},
-        {"radians", {1, 1}}, {"degrees", {1, 1}}, {"vlength", {1, 1}}, {"vnormalize", {1, 1}},
-        {"vcross", {2, 2}}, {"vdot", {2, 2}}, {"vrotate", {2, 2}}, {"vaxis_rotate", {3, 3}}, {"seed", {1, 1}},
-        {"rand", {1, 1}}, {"select", {3, 4}}, {"concat", {1, 99}}, {"str", {3, 3}}, {"strlen", {1, 1}},
-        {"substr", {3, 3}}, {"chr", {1, 1}}, {"val", {1, 1}}, {"strupr", {1, 1}}, {"strlwr", {1, 1}},
-        {"vstr", {5, 5}}, {"asc", {1, 1}}, {"bitwise_and", {2, 99}}, {"bitwise_or", {2, 99}},
-        {"file_exists", {1, 1}}};
+        {"abs", {1, 1}},          {"sqrt", {1, 1}},        {"sqr", {1, 1}},          {"pow", {2, 2}},
+        {"exp", {1, 1}},          {"log", {1, 1}},         {"ln", {1, 1}},           {"sin", {1, 1}},
+        {"cos", {1, 1}},          {"tan", {1, 1}},         {"asin", {1, 1}},         {"acos", {1, 1}},
+        {"atan", {1, 1}},         {"atan2", {2, 2}},       {"sinh", {1, 1}},         {"cosh", {1, 1}},
+        {"tanh", {1, 1}},         {"asinh", {1, 1}},       {"acosh", {1, 1}},        {"atanh", {1, 1}},
+        {"min", {1, 99}},         {"max", {1, 99}},        {"floor", {1, 1}},        {"ceil", {1, 1}},
+        {"mod", {2, 2}},          {"int", {1, 1}},         {"div", {2, 2}},          {"radians", {1, 1}},
+        {"degrees", {1, 1}},      {"vlength", {1, 1}},     {"vnormalize", {1, 1}},   {"vcross", {2, 2}},
+        {"vdot", {2, 2}},         {"vrotate", {2, 2}},     {"vaxis_rotate", {3, 3}}, {"seed", {1, 1}},
+        {"rand", {1, 1}},         {"select", {3, 4}},      {"concat", {1, 99}},      {"str", {3, 3}},
+        {"strlen", {1, 1}},       {"substr", {3, 3}},      {"chr", {1, 1}},          {"val", {1, 1}},
+        {"strupr", {1, 1}},       {"strlwr", {1, 1}},      {"vstr", {5, 5}},         {"asc", {1, 1}},
+        {"bitwise_and", {2, 99}}, {"bitwise_or", {2, 99}}, {"file_exists", {1, 1}}};
     auto expected = arity.find(name);
     if (expected == arity.end()) {
         error(where.begin, "unknown function '" + name + "'");
@@ -167,7 +171,8 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
     }
     if (name == "bitwise_and" || name == "bitwise_or") {
         long r = static_cast<long>(c.f(0));
-        for (size_t i = 1; i < args.size(); ++i) r = name == "bitwise_and" ? r & static_cast<long>(c.f(i)) : r | static_cast<long>(c.f(i));
+        for (size_t i = 1; i < args.size(); ++i)
+            r = name == "bitwise_and" ? r & static_cast<long>(c.f(i)) : r | static_cast<long>(c.f(i));
         return number(static_cast<double>(r));
     }
     if (name == "seed") return builtin_seed(*this, args, where);
@@ -202,7 +207,9 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         for (size_t i = 0; i < args.size(); ++i) r += c.s(i);
         return Value::string(r);
     }
-    if (name == "str") return Value::string(format_number(c.f(0), static_cast<int>(c.f(1)), c.f(2) < 0 ? 6 : static_cast<int>(c.f(2))));
+    if (name == "str")
+        return Value::string(
+            format_number(c.f(0), static_cast<int>(c.f(1)), c.f(2) < 0 ? 6 : static_cast<int>(c.f(2))));
     if (name == "vstr") {
         int dims = static_cast<int>(c.f(0));
         const Value& v = args[1];

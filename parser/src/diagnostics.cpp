@@ -97,7 +97,8 @@ std::string Evaluator::suggestion(const std::string& name) const {
     return best;
 }
 
-bool Evaluator::add_diagnostic(Diagnostic::Severity severity, const sg::SourceLocation& where, const std::string& message) {
+bool Evaluator::add_diagnostic(Diagnostic::Severity severity, const sg::SourceLocation& where,
+                               const std::string& message) {
     if (severity != Diagnostic::Severity::Error) {
         // A warning inside a loop repeats every iteration: keep the first
         // ones and drop the rest, so a long loop cannot fill memory.
@@ -111,7 +112,8 @@ bool Evaluator::add_diagnostic(Diagnostic::Severity severity, const sg::SourceLo
         auto chain = m_include_chains.find(where.file.get());
         if (chain != m_include_chains.end()) diagnostic.include_chain = chain->second;
         auto buffer = m_buffers.find(where.file.get());
-        if (buffer != m_buffers.end() && where.line >= 1 && where.line <= static_cast<int>(buffer->second->lines.size()))
+        if (buffer != m_buffers.end() && where.line >= 1 &&
+            where.line <= static_cast<int>(buffer->second->lines.size()))
             diagnostic.source_line = buffer->second->lines[where.line - 1];
     }
     m_diagnostics.push_back(std::move(diagnostic));
@@ -150,7 +152,8 @@ void Evaluator::hint(const sg::SourceLocation& where, const std::string& what) {
     warning(where, what + " is recorded but has no effect: lancer samples area lights physically");
 }
 
-void Evaluator::unknown_identifier(const std::string& name, const sg::SourceLocation& where, const std::string& expected) {
+void Evaluator::unknown_identifier(const std::string& name, const sg::SourceLocation& where,
+                                   const std::string& expected) {
     std::string near = suggestion(name);
     error(where, "unknown identifier '" + name + "' (expected " + expected + ")" +
                      (near.empty() ? "" : "; did you mean '" + near + "'?"));

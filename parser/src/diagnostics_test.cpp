@@ -26,7 +26,9 @@ TEST_P(MalformedScene, GivesALocatedError) {
     EXPECT_EQ(d.location.line, bad.line) << d.message;
     EXPECT_EQ(d.location.column, bad.column) << d.message;
     std::string shown = format_diagnostic(d);
-    EXPECT_EQ(shown.rfind("bad.pov:" + std::to_string(bad.line) + ":" + std::to_string(bad.column) + ": error: ", 0), 0u) << shown;
+    EXPECT_EQ(shown.rfind("bad.pov:" + std::to_string(bad.line) + ":" + std::to_string(bad.column) + ": error: ", 0),
+              0u)
+        << shown;
 }
 
 std::string with_nul() {
@@ -42,10 +44,12 @@ const BadScene kBadScenes[] = {
     {"LogOfZero", "#declare A = log(0);", "logarithm", 1, 14},
     {"AcosOutOfDomain", "\n#declare A = acos(2);", "outside [-1, 1]", 2, 14},
     {"ColourWhereVectorExpected", "box { 0, 1 translate rgb 1 }", "expected a vector, found a colour", 1, 22},
-    {"VectorWhereFloatExpected", "sphere { 0, <1, 2, 3> }", "expected a float radius, found a 3-component vector", 1, 13},
+    {"VectorWhereFloatExpected", "sphere { 0, <1, 2, 3> }", "expected a float radius, found a 3-component vector", 1,
+     13},
     {"StringInArithmetic", "#declare A = \"a\" + 1;", "needs numbers", 1, 18},
     {"UnknownIdentifierSuggests", "#declare Radius = 1;\nsphere { 0, Raduis }", "did you mean 'Radius'", 2, 13},
-    {"UnknownColourSuggests", "#include \"colors.inc\"\nsphere { 0, 1 pigment { color Whitte } }", "did you mean 'White'", 2, 31},
+    {"UnknownColourSuggests", "#include \"colors.inc\"\nsphere { 0, 1 pigment { color Whitte } }",
+     "did you mean 'White'", 2, 31},
     {"MisspelledKeyword", "sphre { 0, 1 }", "did you mean 'sphere'", 1, 1},
     {"MissingClosingBrace", "sphere { 0, 1\n", "unexpected end of file", 1, 14},
     {"ExtraValue", "sphere { 0 1 2 }", "unexpected number inside sphere", 1, 14},
@@ -60,7 +64,8 @@ const BadScene kBadScenes[] = {
     {"RunawayWhile", "#while (1)\n#end", "exceeded 10000 iterations", 1, 1},
     {"MacroRecursion", "#macro F(N) F(N + 1) #end\nF(0)", "macro recursion too deep", 1, 13},
     {"MacroArgumentCount", "#macro F(A, B) sphere { A, B } #end\nF(1)", "takes 2 argument(s), but 1", 2, 1},
-    {"NestingTooDeep", "#declare A = " + std::string(300, '(') + "1" + std::string(300, ')') + ";", "nesting too deep", 1, 270},
+    {"NestingTooDeep", "#declare A = " + std::string(300, '(') + "1" + std::string(300, ')') + ";", "nesting too deep",
+     1, 270},
     {"IfWithoutEnd", "sphere { 0, 1 }\n#if (1)\nsphere { 0, 2 }", "#if has no matching #end", 2, 1},
     {"EndWithoutIf", "#end", "#end without", 1, 1},
     {"ElseWithoutIf", "\n  #else", "#else without a matching #if", 2, 3},
@@ -80,7 +85,8 @@ const BadScene kBadScenes[] = {
     {"Mesh2CountMismatch", "mesh2 {\n vertex_vectors { 4, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1, <0,1,2> } }",
      "declares 4 entries but lists 3", 2, 2},
     {"Mesh2NormalIndexRange",
-     "mesh2 { vertex_vectors { 3, 0, x, y } normal_vectors { 1, z }\n face_indices { 1, <0,1,2> }\n normal_indices { 1, <0,0,1> } }",
+     "mesh2 { vertex_vectors { 3, 0, x, y } normal_vectors { 1, z }\n face_indices { 1, <0,1,2> }\n normal_indices { "
+     "1, <0,0,1> } }",
      "index 1 is out of range: normal_vectors has 1", 3, 22},
     {"EmptyMesh", "mesh { }", "mesh has no triangles", 1, 1},
     {"CameraAngleTooWide", "camera { angle 180 }", "between 0 and 180", 1, 16},
@@ -101,7 +107,8 @@ INSTANTIATE_TEST_SUITE_P(ParserDiagnostics, MalformedScene, ::testing::ValuesIn(
                          [](const ::testing::TestParamInfo<BadScene>& info) { return std::string(info.param.name); });
 
 TEST(ParserDiagnostics, SeveralSemanticErrorsAreCollected) {
-    ParseResult result = parse_scene_string("sphere { 0, -1 }\nsphere { 0, -2 }\nbox { 0, 1 translate rgb 1 }", "many.pov");
+    ParseResult result =
+        parse_scene_string("sphere { 0, -1 }\nsphere { 0, -2 }\nbox { 0, 1 translate rgb 1 }", "many.pov");
     ASSERT_FALSE(result.ok());
     int errors = 0;
     for (const auto& d : result.diagnostics) errors += d.severity == Diagnostic::Severity::Error;

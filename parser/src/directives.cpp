@@ -56,10 +56,10 @@ void Evaluator::run_directive(const RawToken& d) {
     if (n == "fopen" || n == "fclose" || n == "read" || n == "write" || n == "render") {
         error(d.location, "#" + n + " is a POV-Ray directive that lancer does not support");
     } else {
-        static const std::vector<std::string> known = {"declare", "local", "undef", "include", "if", "ifdef",
-                                                       "ifndef", "elseif", "else", "end", "while", "for",
-                                                       "switch", "case", "range", "break", "macro", "version",
-                                                       "debug", "warning", "error", "default"};
+        static const std::vector<std::string> known = {"declare", "local",   "undef", "include", "if",    "ifdef",
+                                                       "ifndef",  "elseif",  "else",  "end",     "while", "for",
+                                                       "switch",  "case",    "range", "break",   "macro", "version",
+                                                       "debug",   "warning", "error", "default"};
         std::string best;
         size_t best_distance = 3;
         for (const auto& k : known) {
@@ -186,7 +186,8 @@ void Evaluator::directive_if(const RawToken& d, bool ifdef, bool negate) {
 // Reached #else/#elseif while running a taken branch: skip to the #end.
 void Evaluator::directive_else(const RawToken& d, bool elseif) {
     auto& controls = m_frames.back()->controls;
-    if (controls.empty() || (controls.back().kind != Control::Kind::If && controls.back().kind != Control::Kind::Switch)) {
+    if (controls.empty() ||
+        (controls.back().kind != Control::Kind::If && controls.back().kind != Control::Kind::Switch)) {
         error(d.location, "#" + d.text + " without a matching #if");
         return abort_parse();
     }
@@ -227,7 +228,8 @@ void Evaluator::directive_for(const RawToken& d) {
     }
     if (!expect_raw_punct(",", "after the #for variable")) return;
     SourceRange range{d.location, d.location};
-    double start = to_float(parse_nested(Parser::token::TOK_START_EXPR, d.location, true), range, "a float start for #for");
+    double start =
+        to_float(parse_nested(Parser::token::TOK_START_EXPR, d.location, true), range, "a float start for #for");
     if (m_aborted || !expect_raw_punct(",", "after the start value of #for")) return;
     double end = to_float(parse_nested(Parser::token::TOK_START_EXPR, d.location, true), range, "a float end for #for");
     if (m_aborted) return;
@@ -285,9 +287,11 @@ void Evaluator::directive_switch(const RawToken& d) {
             // #range (low, high)
             RawToken at = *stop;
             if (!expect_raw_punct("(", "after #range")) return;
-            double low = to_float(parse_nested(Parser::token::TOK_START_EXPR, at.location, true), where, "a float for #range");
+            double low =
+                to_float(parse_nested(Parser::token::TOK_START_EXPR, at.location, true), where, "a float for #range");
             if (m_aborted || !expect_raw_punct(",", "between the bounds of #range")) return;
-            double high = to_float(parse_nested(Parser::token::TOK_START_EXPR, at.location, true), where, "a float for #range");
+            double high =
+                to_float(parse_nested(Parser::token::TOK_START_EXPR, at.location, true), where, "a float for #range");
             if (m_aborted || !expect_raw_punct(")", "to close #range (low, high)")) return;
             matched = control.switch_value >= low && control.switch_value <= high;
         } else {
@@ -363,7 +367,8 @@ void Evaluator::directive_end(const RawToken& d) {
     }
     if (control.kind == Control::Kind::For) {
         if (++control.iterations > m_options.max_loop_iterations) {
-            error(control.opened_at, "#for loop exceeded " + std::to_string(m_options.max_loop_iterations) + " iterations");
+            error(control.opened_at,
+                  "#for loop exceeded " + std::to_string(m_options.max_loop_iterations) + " iterations");
             return abort_parse();
         }
         const Value* current = lookup(control.variable);
@@ -469,7 +474,8 @@ void Evaluator::directive_include(const RawToken& d) {
     if (search == FileSearch::Refused) return abort_parse();
     if (search == FileSearch::Missing) {
         std::string searched;
-        for (const auto& folder : folders) searched += (searched.empty() ? "" : ", ") + (folder.empty() ? std::string(".") : folder);
+        for (const auto& folder : folders)
+            searched += (searched.empty() ? "" : ", ") + (folder.empty() ? std::string(".") : folder);
         error(d.location, "cannot find include file \"" + name + "\" (searched: " + searched + ")");
         return abort_parse();
     }
@@ -487,7 +493,8 @@ void Evaluator::directive_include(const RawToken& d) {
         }
     }
     if (file_depth >= m_options.max_include_depth) {
-        error(d.location, "#include nested too deeply (more than " + std::to_string(m_options.max_include_depth) + " files)");
+        error(d.location,
+              "#include nested too deeply (more than " + std::to_string(m_options.max_include_depth) + " files)");
         return abort_parse();
     }
     std::string text;
@@ -536,9 +543,7 @@ void Evaluator::directive_default(const RawToken& d) {
     case Value::Kind::Texture: *texture = *value.texture; break;
     case Value::Kind::Pigment: texture->pigment = *value.pigment; break;
     case Value::Kind::Finish: texture->finish = *value.finish; break;
-    default:
-        error(d.location, "#default expects a texture, pigment or finish, found " + describe(value));
-        return;
+    default: error(d.location, "#default expects a texture, pigment or finish, found " + describe(value)); return;
     }
     texture->name = "#default";
     m_default_texture = texture;

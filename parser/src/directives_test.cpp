@@ -12,7 +12,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::parse_ok;
 
-int sphere_count(const sg::SceneGraph& scene) { return summarize_scene(scene).objects_by_kind["sphere"]; }
+int sphere_count(const sg::SceneGraph& scene) {
+    return summarize_scene(scene).objects_by_kind["sphere"];
+}
 
 TEST(ParserDirectives, WhileLoopMakesObjects) {
     auto scene = parse_ok("#declare I = 0;\n#while (I < 10)\n  sphere { <I, 0, 0>, 0.1 }\n  #declare I = I + 1;\n#end");
@@ -104,7 +106,7 @@ TEST(ParserDirectives, DefaultTexture) {
 }
 
 class IncludeTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         m_dir = fs::temp_directory_path() / ("lancer_include_test_" + std::to_string(::getpid()) + "_" +
                                              ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -130,7 +132,8 @@ TEST_F(IncludeTest, NestedIncludesResolveAgainstTheIncludingFolder) {
 TEST_F(IncludeTest, IncludePathIsSearchedAndColorsIncIsBuiltIn) {
     fs::create_directories(m_dir / "lib");
     write("lib/shapes.inc", "#declare Unit = sphere { 0, 1 }\n");
-    std::string scene_path = write("scene.pov", "#include \"colors.inc\"\n#include \"shapes.inc\"\nobject { Unit pigment { SkyBlue } }\n");
+    std::string scene_path =
+        write("scene.pov", "#include \"colors.inc\"\n#include \"shapes.inc\"\nobject { Unit pigment { SkyBlue } }\n");
     ParseOptions options;
     options.include_path = {(m_dir / "lib").string()};
     ParseResult result = parse_scene_file(scene_path, options);
@@ -176,9 +179,11 @@ TEST_F(IncludeTest, ErrorInsideIncludedFileShowsTheChain) {
 
 TEST_F(IncludeTest, ObjMeshWithMtlMaterials) {
     write("sub/box.mtl", "newmtl red\nKd 1 0 0\nKs 0.5 0.5 0.5\nNs 100\n");
-    write("sub/box.obj", "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
-                         "usemtl red\nf 1/1 2/2 3/3 4/4\n");
-    std::string scene_path = write("scene.pov", "obj_mesh { \"sub/box.obj\" translate x }\nobj_mesh { \"sub/box.obj\" pigment { rgb 1 } }\n");
+    write("sub/box.obj",
+          "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+          "usemtl red\nf 1/1 2/2 3/3 4/4\n");
+    std::string scene_path = write(
+        "scene.pov", "obj_mesh { \"sub/box.obj\" translate x }\nobj_mesh { \"sub/box.obj\" pigment { rgb 1 } }\n");
     ParseResult result = parse_scene_file(scene_path);
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     auto mesh = std::get<sg::MeshRef>(result.scene->objects[0].shape);

@@ -48,7 +48,7 @@ bool is_reserved_word(const std::string& name);
 size_t edit_distance(const std::string& a, const std::string& b);
 
 class Evaluator {
-public:
+  public:
     using Symbol = Parser::symbol_type;
     using Kind = Parser::token_kind_type;
 
@@ -96,7 +96,8 @@ public:
     Value make_vector(const std::vector<Value>& items, const SourceRange& where);
     Value colour_keyword(const std::string& keyword, const Value& operand, const SourceRange& where);
     Value colour_from(const Value& operand, const SourceRange& where);
-    Value colour_component(const Value& colour, const SourceRange& wc, int channel, const Value& v, const SourceRange& wv);
+    Value colour_component(const Value& colour, const SourceRange& wc, int channel, const Value& v,
+                           const SourceRange& wv);
     Value checked(Value value, const SourceRange& where, const std::string& what);
     void remember_location(Value& value, const SourceRange& where) { value.location = where.begin; }
 
@@ -104,10 +105,14 @@ public:
     Value call_builtin(const std::string& name, const std::vector<Value>& args, const SourceRange& where);
 
     // ---- objects and materials (objects.cpp, meshes.cpp)
-    ShapePtr make_sphere(const Value& c, const SourceRange& wc, const Value& r, const SourceRange& wr, const sg::SourceLocation& at);
-    ShapePtr make_plane(const Value& n, const SourceRange& wn, const Value& d, const SourceRange& wd, const sg::SourceLocation& at);
-    ShapePtr make_box(const Value& a, const SourceRange& wa, const Value& b, const SourceRange& wb, const sg::SourceLocation& at);
-    ShapePtr make_triangle(const std::vector<Value>& points, const std::vector<SourceRange>& where, const sg::SourceLocation& at);
+    ShapePtr make_sphere(const Value& c, const SourceRange& wc, const Value& r, const SourceRange& wr,
+                         const sg::SourceLocation& at);
+    ShapePtr make_plane(const Value& n, const SourceRange& wn, const Value& d, const SourceRange& wd,
+                        const sg::SourceLocation& at);
+    ShapePtr make_box(const Value& a, const SourceRange& wa, const Value& b, const SourceRange& wb,
+                      const sg::SourceLocation& at);
+    ShapePtr make_triangle(const std::vector<Value>& points, const std::vector<SourceRange>& where,
+                           const sg::SourceLocation& at);
     ShapePtr make_mesh(const sg::SourceLocation& at);
     void finish_mesh(ShapeValue& shape, const sg::SourceLocation& at);
     ShapePtr make_mesh2(const Edits<sg::TriangleMesh>& sections, const sg::SourceLocation& at);
@@ -123,15 +128,16 @@ public:
     std::function<void(ShapeValue&)> finish_edit(std::shared_ptr<sg::Finish> finish);
     std::function<void(ShapeValue&)> interior_edit(std::shared_ptr<sg::Interior> interior);
     std::function<void(ShapeValue&)> child_edit(ShapePtr child);
-    std::function<void(ShapeValue&)> mesh_triangle_edit(const std::vector<Value>& points, const std::vector<SourceRange>& where,
+    std::function<void(ShapeValue&)> mesh_triangle_edit(const std::vector<Value>& points,
+                                                        const std::vector<SourceRange>& where,
                                                         const std::vector<std::shared_ptr<sg::Material>>& textures,
                                                         const sg::SourceLocation& at);
-    std::function<void(sg::TriangleMesh&)> mesh2_vectors(const std::string& section, const Value& count, const SourceRange& wc,
-                                                         const std::vector<Value>& items, const SourceRange& wi,
-                                                         const sg::SourceLocation& at);
-    std::function<void(sg::TriangleMesh&)> mesh2_indices(const std::string& section, const Value& count, const SourceRange& wc,
-                                                         const std::vector<Value>& items, const SourceRange& wi,
-                                                         const sg::SourceLocation& at);
+    std::function<void(sg::TriangleMesh&)> mesh2_vectors(const std::string& section, const Value& count,
+                                                         const SourceRange& wc, const std::vector<Value>& items,
+                                                         const SourceRange& wi, const sg::SourceLocation& at);
+    std::function<void(sg::TriangleMesh&)> mesh2_indices(const std::string& section, const Value& count,
+                                                         const SourceRange& wc, const std::vector<Value>& items,
+                                                         const SourceRange& wi, const sg::SourceLocation& at);
     std::function<void(sg::TriangleMesh&)> mesh2_textures(const Value& count, const SourceRange& wc,
                                                           const std::vector<std::shared_ptr<sg::Material>>& textures,
                                                           const sg::SourceLocation& at);
@@ -148,21 +154,24 @@ public:
     std::shared_ptr<sg::Interior> build_interior(const Edits<sg::Interior>& edits, const sg::SourceLocation& at);
     void finish_image_map(sg::ImageMap& image, const sg::SourceLocation& at);
     sg::MapType map_type(const Value& v, const SourceRange& where);
-    std::function<void(sg::Finish&)> finish_scalar(const std::string& name, bool albedo, const Value& v, const SourceRange& where);
+    std::function<void(sg::Finish&)> finish_scalar(const std::string& name, bool albedo, const Value& v,
+                                                   const SourceRange& where);
 
     // ---- lights, camera, settings (lights_camera.cpp)
     sg::Light make_light(const Value& position, const SourceRange& wp, const Value& colour, const SourceRange& wc,
                          const sg::SourceLocation& at);
     void apply_light(sg::Light& light, const Edits<sg::Light>& edits);
-    std::function<void(sg::Light&)> area_light(const Value& a1, const SourceRange& w1, const Value& a2, const SourceRange& w2,
-                                               const Value& n1, const SourceRange& wn1, const Value& n2, const SourceRange& wn2);
+    std::function<void(sg::Light&)> area_light(const Value& a1, const SourceRange& w1, const Value& a2,
+                                               const SourceRange& w2, const Value& n1, const SourceRange& wn1,
+                                               const Value& n2, const SourceRange& wn2);
     double camera_angle(const Value& v, const SourceRange& where);
     void add_object(const ShapePtr& shape);
     void add_light(const sg::Light& light, const sg::Mat4& world_from_local);
     void set_camera(const CameraSpec& spec);
     void render_setting(const std::string& name, const SourceRange& wn, const Value& v, const SourceRange& wv,
                         const Edits<ParameterList>& parameters);
-    std::function<void(ParameterList&)> parameter_edit(const std::string& name, const Value& v, const SourceRange& where);
+    std::function<void(ParameterList&)> parameter_edit(const std::string& name, const Value& v,
+                                                       const SourceRange& where);
 
     // ---- files the scene names (files.cpp)
     enum class FileSearch { Found, Missing, Refused };
@@ -179,7 +188,8 @@ public:
     void refuse_file(const sg::SourceLocation& where, const std::string& what, const std::string& name);
     // Reads a whole file after checking its size against max_file_bytes;
     // false with a located error when it cannot.
-    bool read_file(const std::string& path, const sg::SourceLocation& where, const std::string& what, std::string& text);
+    bool read_file(const std::string& path, const sg::SourceLocation& where, const std::string& what,
+                   std::string& text);
     // Counts triangles against max_triangles; false (error reported once) past it.
     bool add_triangles(long count, const sg::SourceLocation& where);
 
@@ -189,17 +199,17 @@ public:
     struct Control;
     class ObjMaterialReader;
 
-private:
+  private:
     friend struct TokenStreamAccess;
     // token stream internals (token_stream.cpp)
     // A token to read again: a start symbol, or a raw token put back (it is
     // classified again, so it sees declarations made meanwhile).
     struct Pending {
-        const RawToken* raw = nullptr;          // points into a buffer kept in m_buffers
-        std::shared_ptr<const Symbol> symbol;   // start symbols only
-        const void* frame = nullptr;            // where raw was read, so it can be put back
+        const RawToken* raw = nullptr;         // points into a buffer kept in m_buffers
+        std::shared_ptr<const Symbol> symbol;  // start symbols only
+        const void* frame = nullptr;           // where raw was read, so it can be put back
         size_t index = 0;
-        bool classified = false;                // its bracket was counted in m_nesting
+        bool classified = false;  // its bracket was counted in m_nesting
     };
     void rewind_lookahead();
     bool take_punct(const char* punct);
@@ -262,9 +272,9 @@ private:
     // Every inclusion gets its own label pointer; its include chain is kept here.
     std::map<const std::string*, std::vector<sg::SourceLocation>> m_include_chains;
     std::map<const std::string*, std::shared_ptr<const TokenBuffer>> m_buffers;
-    int m_barrier_depth = -1;    // directives in frames at or below this depth wait
+    int m_barrier_depth = -1;  // directives in frames at or below this depth wait
     int m_nested_base_depth = 0;
-    int m_nesting = 0;           // open ( { [ in the token stream
+    int m_nesting = 0;  // open ( { [ in the token stream
     long m_tokens_read = 0;
     int m_macro_depth = 0;
     std::optional<Value> m_nested_result;
@@ -293,9 +303,9 @@ struct Evaluator::Control {
     enum class Kind { If, While, For, Switch, Macro };
     Kind kind = Kind::If;
     sg::SourceLocation opened_at;
-    size_t loop_position = 0;   // While: the token after #while; For: first body token
+    size_t loop_position = 0;  // While: the token after #while; For: first body token
     long iterations = 0;
-    std::string variable;       // For
+    std::string variable;  // For
     double end = 0.0, step = 1.0;
     double switch_value = 0.0;  // Switch
     bool case_matched = false;  // Switch: a #case ran, later ones are skipped
@@ -307,7 +317,7 @@ struct Evaluator::Frame {
     size_t end = 0;
     bool is_macro = false;
     bool owns_scope = false;
-    std::string name;             // file label or macro name
+    std::string name;  // file label or macro name
     sg::SourceLocation called_from;
     std::vector<Control> controls;
 };

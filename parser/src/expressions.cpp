@@ -62,9 +62,7 @@ sg::Vec3 Evaluator::to_vec3(const Value& value, const SourceRange& where) {
         if (value.size == 3) return {value.v[0], value.v[1], value.v[2]};
         error(where.begin, "expected a 3-component vector, found " + describe(value));
         return sg::Vec3(0.0);
-    default:
-        error(where.begin, "expected a vector, found " + describe(value));
-        return sg::Vec3(0.0);
+    default: error(where.begin, "expected a vector, found " + describe(value)); return sg::Vec3(0.0);
     }
 }
 
@@ -80,11 +78,8 @@ sg::Vec3 Evaluator::nonzero_vec3(const Value& value, const SourceRange& where, c
 sg::Color Evaluator::to_color(const Value& value, const SourceRange& where) {
     sg::Color c;
     switch (value.kind) {
-    case Value::Kind::Float:
-        c.rgb = sg::Vec3(value.v[0]);
-        return c;
-    case Value::Kind::Color:
-        return {{value.v[0], value.v[1], value.v[2]}, value.v[3], value.v[4]};
+    case Value::Kind::Float: c.rgb = sg::Vec3(value.v[0]); return c;
+    case Value::Kind::Color: return {{value.v[0], value.v[1], value.v[2]}, value.v[3], value.v[4]};
     case Value::Kind::Vector:
         if (value.size >= 3) {
             c.rgb = {value.v[0], value.v[1], value.v[2]};
@@ -93,9 +88,7 @@ sg::Color Evaluator::to_color(const Value& value, const SourceRange& where) {
             return c;
         }
         [[fallthrough]];
-    default:
-        error(where.begin, "expected a colour, found " + describe(value));
-        return c;
+    default: error(where.begin, "expected a colour, found " + describe(value)); return c;
     }
 }
 
@@ -108,7 +101,8 @@ std::string Evaluator::to_string(const Value& value, const SourceRange& where) {
 Value Evaluator::arithmetic(char op, const Value& a, const Value& b, const SourceRange& where) {
     if (!a.is_numeric() || !b.is_numeric()) {
         const Value& bad = a.is_numeric() ? b : a;
-        error(where.begin, std::string("operator '") + op + "' needs numbers, vectors or colours, found " + describe(bad));
+        error(where.begin,
+              std::string("operator '") + op + "' needs numbers, vectors or colours, found " + describe(bad));
         return Value::number(0.0);
     }
     // Result shape: a colour wins, else the longer vector, else a float.
@@ -143,10 +137,16 @@ Value Evaluator::arithmetic(char op, const Value& a, const Value& b, const Sourc
     return checked(result, where, std::string("the result of '") + op + "'");
 }
 
-Value Evaluator::compare(const std::string& op, const Value& a, const SourceRange& wa, const Value& b, const SourceRange& wb) {
+Value Evaluator::compare(const std::string& op, const Value& a, const SourceRange& wa, const Value& b,
+                         const SourceRange& wb) {
     double x = to_float(a, wa, "a float operand of '" + op + "'");
     double y = to_float(b, wb, "a float operand of '" + op + "'");
-    bool r = op == "<" ? x < y : op == "<=" ? x <= y : op == ">" ? x > y : op == ">=" ? x >= y : op == "=" ? x == y : x != y;
+    bool r = op == "<"    ? x < y
+             : op == "<=" ? x <= y
+             : op == ">"  ? x > y
+             : op == ">=" ? x >= y
+             : op == "="  ? x == y
+                          : x != y;
     return Value::number(r ? 1.0 : 0.0);
 }
 
@@ -169,16 +169,22 @@ Value Evaluator::negate(const Value& a, const SourceRange& where) {
 
 Value Evaluator::component(const Value& a, const SourceRange& wa, const std::string& name, const SourceRange& wn) {
     int index = -1;
-    if (name == "x" || name == "u" || name == "red") index = 0;
-    else if (name == "y" || name == "v" || name == "green") index = 1;
-    else if (name == "z" || name == "blue") index = 2;
-    else if (name == "t" || name == "filter") index = 3;
-    else if (name == "transmit") index = 4;
+    if (name == "x" || name == "u" || name == "red")
+        index = 0;
+    else if (name == "y" || name == "v" || name == "green")
+        index = 1;
+    else if (name == "z" || name == "blue")
+        index = 2;
+    else if (name == "t" || name == "filter")
+        index = 3;
+    else if (name == "transmit")
+        index = 4;
     if (a.kind == Value::Kind::Color && name == "gray") {
         return Value::number(0.297 * a.v[0] + 0.589 * a.v[1] + 0.114 * a.v[2]);
     }
     if (index < 0) {
-        error(wn.begin, "unknown component '." + name + "' (use .x .y .z .t .u .v .red .green .blue .filter .transmit .gray)");
+        error(wn.begin,
+              "unknown component '." + name + "' (use .x .y .z .t .u .v .red .green .blue .filter .transmit .gray)");
         return Value::number(0.0);
     }
     if (!(a.kind == Value::Kind::Vector || a.kind == Value::Kind::Color) || index >= a.size) {
@@ -198,7 +204,8 @@ Value Evaluator::make_vector(const std::vector<Value>& items, const SourceRange&
     result.size = static_cast<int>(items.size());
     for (size_t i = 0; i < items.size(); ++i) {
         if (items[i].kind != Value::Kind::Float) {
-            error(where.begin, "vector component " + std::to_string(i + 1) + " must be a float, found " + describe(items[i]));
+            error(where.begin,
+                  "vector component " + std::to_string(i + 1) + " must be a float, found " + describe(items[i]));
             continue;
         }
         result.v[i] = items[i].v[0];

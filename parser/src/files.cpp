@@ -1,8 +1,8 @@
 // Files a scene names (#include, obj_mesh, MTL, image_map): one search, one
 // safe-mode check (ParseOptions::safe), one size-checked read, and the
 // scene-wide triangle budget.
-#include <fstream>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "evaluator.h"
@@ -43,8 +43,10 @@ void Evaluator::init_safe_roots(const std::string& scene_folder) {
     if (!m_options.safe) return;
     std::error_code ec;
     std::vector<std::string> roots;
-    if (!m_options.safe_root.empty()) roots.push_back(m_options.safe_root);
-    else roots.push_back(scene_folder.empty() ? fs::current_path(ec).string() : scene_folder);
+    if (!m_options.safe_root.empty())
+        roots.push_back(m_options.safe_root);
+    else
+        roots.push_back(scene_folder.empty() ? fs::current_path(ec).string() : scene_folder);
     for (const auto& dir : m_options.include_path) roots.push_back(dir);
     for (const auto& root : roots) {
         if (root.empty() || !fs::is_directory(root, ec)) continue;
@@ -74,7 +76,8 @@ Evaluator::FileSearch Evaluator::find_file(const std::string& name, const std::v
     if (fs::path(name).is_absolute()) {
         candidates.push_back(name);
     } else {
-        for (const auto& folder : folders) candidates.push_back(folder.empty() ? fs::path(name) : fs::path(folder) / name);
+        for (const auto& folder : folders)
+            candidates.push_back(folder.empty() ? fs::path(name) : fs::path(folder) / name);
     }
     std::error_code ec;
     for (const auto& candidate : candidates) {

@@ -25,9 +25,8 @@ int count(const ParseResult& result, Diagnostic::Severity severity) {
 // fuzzing machine was loaded), but errors must stay bounded: 30, then stop.
 TEST(FuzzRegression, ErrorsInALoopStopAtThirty) {
     std::string name = "St" + std::string(120, 'z') + "eps";
-    ParseResult result = parse_scene_string("#include \"colors.inc\"\n#for (I, 0, 100000)\n#local F = I / (" + name +
-                                                " - 1);\n#end\n",
-                                            "loop.pov");
+    ParseResult result = parse_scene_string(
+        "#include \"colors.inc\"\n#for (I, 0, 100000)\n#local F = I / (" + name + " - 1);\n#end\n", "loop.pov");
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(count(result, Diagnostic::Severity::Error), 30);
     EXPECT_NE(all_diagnostics(result).find("too many errors; stopping"), std::string::npos);
@@ -37,10 +36,12 @@ TEST(FuzzRegression, ErrorsInALoopStopAtThirty) {
 // warning in a long loop stored one diagnostic (with its source line) per
 // iteration: 10^6 iterations, hundreds of MB. Now the first 200 are kept.
 TEST(FuzzRegression, WarningsInALoopAreBounded) {
-    ParseResult result = parse_scene_string("#for (I, 0, 99999)\n#warning \"again\"\n#end\nsphere { 0, 1 }\n", "loop.pov");
+    ParseResult result =
+        parse_scene_string("#for (I, 0, 99999)\n#warning \"again\"\n#end\nsphere { 0, 1 }\n", "loop.pov");
     ASSERT_TRUE(result.ok()) << all_diagnostics(result);
     EXPECT_EQ(count(result, Diagnostic::Severity::Warning), 200);
-    EXPECT_NE(all_diagnostics(result).find("more than 200 warnings and notes; the rest are not shown"), std::string::npos);
+    EXPECT_NE(all_diagnostics(result).find("more than 200 warnings and notes; the rest are not shown"),
+              std::string::npos);
 }
 
 // Also from that triage: a warning used to count as an error for the
@@ -66,7 +67,8 @@ TEST(FuzzRegression, NestedLoopsStopAtTheObjectLimit) {
         "#declare A = A + 1;\n#end\n#declare L = L + 0;\n#end\n",
         "nested.pov", options);
     ASSERT_FALSE(result.ok());
-    EXPECT_NE(all_diagnostics(result).find("nested.pov:5:3: error: the scene has more than 500 objects"), std::string::npos)
+    EXPECT_NE(all_diagnostics(result).find("nested.pov:5:3: error: the scene has more than 500 objects"),
+              std::string::npos)
         << all_diagnostics(result);
 }
 

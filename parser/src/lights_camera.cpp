@@ -56,13 +56,14 @@ double Evaluator::camera_angle(const Value& v, const SourceRange& where) {
 }
 
 void Evaluator::set_camera(const CameraSpec& spec) {
-    if (m_saw_camera) warning(spec.location_in_source, "a second camera replaces the first (POV-Ray uses the last one)");
+    if (m_saw_camera)
+        warning(spec.location_in_source, "a second camera replaces the first (POV-Ray uses the last one)");
     m_saw_camera = true;
     m_scene.camera = resolve_camera(spec);
 }
 
-sg::Light Evaluator::make_light(const Value& position, const SourceRange& wp, const Value& colour, const SourceRange& wc,
-                                const sg::SourceLocation& at) {
+sg::Light Evaluator::make_light(const Value& position, const SourceRange& wp, const Value& colour,
+                                const SourceRange& wc, const sg::SourceLocation& at) {
     sg::Light light;
     light.location = at;
     light.position = to_vec3(position, wp);
@@ -105,7 +106,8 @@ void Evaluator::add_light(const sg::Light& local, const sg::Mat4& world_from_loc
             error(light.location, "parallel light: point_at must differ from the light's position");
         }
     }
-    if (light.fade_distance < 0.0 || light.fade_power < 0.0) error(light.location, "fade_distance and fade_power must not be negative");
+    if (light.fade_distance < 0.0 || light.fade_power < 0.0)
+        error(light.location, "fade_distance and fade_power must not be negative");
     m_scene.lights.push_back(light);
 }
 
@@ -146,24 +148,29 @@ void Evaluator::render_setting(const std::string& name, const SourceRange& wn, c
     for (const char* known : {"integrator", "width", "height", "samples", "seed"}) {
         if (edit_distance(name, known) <= 2) near = known;
     }
-    error(wn.begin, "unknown render_settings item '" + name + "' (expected integrator, width, height, samples or seed)" +
+    error(wn.begin, "unknown render_settings item '" + name +
+                        "' (expected integrator, width, height, samples or seed)" +
                         (near.empty() ? "" : "; did you mean '" + near + "'?"));
 }
 
-std::function<void(ParameterList&)> Evaluator::parameter_edit(const std::string& name, const Value& v, const SourceRange& where) {
+std::function<void(ParameterList&)> Evaluator::parameter_edit(const std::string& name, const Value& v,
+                                                              const SourceRange& where) {
     sg::ParameterValue parameter;
     parameter.location = where.begin;
     switch (v.kind) {
     case Value::Kind::Float:
-        if (v.boolean_literal) parameter.value = v.v[0] != 0.0;
-        else parameter.value = v.v[0];
+        if (v.boolean_literal)
+            parameter.value = v.v[0] != 0.0;
+        else
+            parameter.value = v.v[0];
         break;
     case Value::Kind::Vector:
     case Value::Kind::Color:
         parameter.value = to_vec3(v.kind == Value::Kind::Color ? Value::vector({v.v[0], v.v[1], v.v[2]}) : v, where);
         break;
     case Value::Kind::String: parameter.value = v.text; break;
-    default: error(where.begin, "an integrator parameter must be a number, vector, string or on/off, found " + describe(v));
+    default:
+        error(where.begin, "an integrator parameter must be a number, vector, string or on/off, found " + describe(v));
     }
     return [name, parameter](ParameterList& list) { list[name] = parameter; };
 }

@@ -40,8 +40,10 @@ std::string first_lines(const std::string& message, int keep = 5) {
         size_t end = message.find('\n', start);
         if (end == std::string::npos) end = message.size();
         if (end > start) {
-            if (lines < keep) out += (lines ? "; " : "") + message.substr(start, std::min<size_t>(end - start, 200));
-            else ++dropped;
+            if (lines < keep)
+                out += (lines ? "; " : "") + message.substr(start, std::min<size_t>(end - start, 200));
+            else
+                ++dropped;
             ++lines;
         }
         start = end + 1;
@@ -82,10 +84,9 @@ void Evaluator::finish_mesh(ShapeValue& shape, const sg::SourceLocation& at) {
 
 // One triangle (3 points) or smooth triangle (point, normal) x 3, with an
 // optional per-triangle texture.
-std::function<void(ShapeValue&)> Evaluator::mesh_triangle_edit(const std::vector<Value>& points,
-                                                               const std::vector<SourceRange>& where,
-                                                               const std::vector<std::shared_ptr<sg::Material>>& textures,
-                                                               const sg::SourceLocation& at) {
+std::function<void(ShapeValue&)> Evaluator::mesh_triangle_edit(
+    const std::vector<Value>& points, const std::vector<SourceRange>& where,
+    const std::vector<std::shared_ptr<sg::Material>>& textures, const sg::SourceLocation& at) {
     add_triangles(1, at);
     bool smooth = points.size() == 6;
     std::vector<sg::Vec3> p, n;
@@ -162,7 +163,8 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_vectors(const std::strin
                                                                 const SourceRange& wi, const sg::SourceLocation& at) {
     int declared = to_int(count, wc);
     if (declared != static_cast<int>(items.size())) {
-        error(at, section + " declares " + std::to_string(declared) + " entries but lists " + std::to_string(items.size()));
+        error(at,
+              section + " declares " + std::to_string(declared) + " entries but lists " + std::to_string(items.size()));
     }
     bool uv = section == "uv_vectors";
     std::vector<sg::Vec3> vectors;
@@ -177,9 +179,12 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_vectors(const std::strin
     }
     return [section, vectors](sg::TriangleMesh& mesh) {
         for (const auto& v : vectors) {
-            if (section == "vertex_vectors") mesh.positions.push_back(v);
-            else if (section == "normal_vectors") mesh.normals.push_back(glm::length(v) > 0 ? glm::normalize(v) : v);
-            else mesh.uvs.emplace_back(v.x, v.y);
+            if (section == "vertex_vectors")
+                mesh.positions.push_back(v);
+            else if (section == "normal_vectors")
+                mesh.normals.push_back(glm::length(v) > 0 ? glm::normalize(v) : v);
+            else
+                mesh.uvs.emplace_back(v.x, v.y);
         }
     };
 }
@@ -219,7 +224,8 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_indices(const std::strin
     if (section == "face_indices") add_triangles(static_cast<long>(entries.size()), at);
     int declared = to_int(count, wc);
     if (declared != static_cast<int>(entries.size())) {
-        error(at, section + " declares " + std::to_string(declared) + " entries but lists " + std::to_string(entries.size()));
+        error(at, section + " declares " + std::to_string(declared) + " entries but lists " +
+                      std::to_string(entries.size()));
     }
     Evaluator* ev = this;
     return [ev, section, entries, ok, at](sg::TriangleMesh& mesh) {
@@ -235,7 +241,9 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_indices(const std::strin
             for (const auto& entry : entries) {
                 sg::TriangleMesh::Face face;
                 for (int i = 0; i < 3; ++i) {
-                    face.position[i] = check(entry.index[i], mesh.positions.size(), "vertex_vectors", entry.where) ? entry.index[i] : 0;
+                    face.position[i] = check(entry.index[i], mesh.positions.size(), "vertex_vectors", entry.where)
+                                           ? entry.index[i]
+                                           : 0;
                 }
                 if (entry.texture >= 0 && check(entry.texture, mesh.materials.size(), "texture_list", entry.where)) {
                     face.material = entry.texture;
@@ -253,8 +261,8 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_indices(const std::strin
         for (size_t f = 0; f < entries.size(); ++f) {
             for (int i = 0; i < 3; ++i) {
                 int index = entries[f].index[i];
-                if (!check(index, normals ? mesh.normals.size() : mesh.uvs.size(), normals ? "normal_vectors" : "uv_vectors",
-                           entries[f].where))
+                if (!check(index, normals ? mesh.normals.size() : mesh.uvs.size(),
+                           normals ? "normal_vectors" : "uv_vectors", entries[f].where))
                     index = -1;
                 (normals ? mesh.faces[f].normal : mesh.faces[f].uv)[i] = index;
             }
@@ -262,12 +270,13 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_indices(const std::strin
     };
 }
 
-std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_textures(const Value& count, const SourceRange& wc,
-                                                                 const std::vector<std::shared_ptr<sg::Material>>& textures,
-                                                                 const sg::SourceLocation& at) {
+std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_textures(
+    const Value& count, const SourceRange& wc, const std::vector<std::shared_ptr<sg::Material>>& textures,
+    const sg::SourceLocation& at) {
     int declared = to_int(count, wc);
     if (declared != static_cast<int>(textures.size())) {
-        error(at, "texture_list declares " + std::to_string(declared) + " textures but lists " + std::to_string(textures.size()));
+        error(at, "texture_list declares " + std::to_string(declared) + " textures but lists " +
+                      std::to_string(textures.size()));
     }
     return [textures](sg::TriangleMesh& mesh) {
         for (const auto& t : textures) mesh.materials.push_back(t);
@@ -281,7 +290,7 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_textures(const Value& co
 // apply as for every other file. tinyobjloader's own reader would follow
 // "../" and absolute names anywhere.
 class Evaluator::ObjMaterialReader : public tinyobj::MaterialReader {
-public:
+  public:
     ObjMaterialReader(Evaluator& evaluator, fs::path folder) : m_evaluator(evaluator), m_folder(std::move(folder)) {}
 
     bool operator()(const std::string& id, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* map,
@@ -319,7 +328,7 @@ public:
     std::string refused_name;
     std::vector<std::string> missing;
 
-private:
+  private:
     Evaluator& m_evaluator;
     fs::path m_folder;
 };
@@ -370,13 +379,16 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         return shape;
     }
     if (!loaded) {
-        error(where.begin, "cannot read OBJ file \"" + name + "\": " + (obj_error.empty() ? "parse error" : first_lines(obj_error)));
+        error(where.begin,
+              "cannot read OBJ file \"" + name + "\": " + (obj_error.empty() ? "parse error" : first_lines(obj_error)));
         return shape;
     }
     for (const auto& missing : materials.missing)
-        warning(where.begin, "OBJ \"" + name + "\": MTL file \"" + missing + "\" not found; its faces get the default material");
+        warning(where.begin,
+                "OBJ \"" + name + "\": MTL file \"" + missing + "\" not found; its faces get the default material");
     if (!obj_error.empty()) warning(where.begin, "OBJ \"" + name + "\": " + first_lines(obj_error));
-    if (!obj_warning.empty() && materials.missing.empty()) warning(where.begin, "OBJ \"" + name + "\": " + first_lines(obj_warning));
+    if (!obj_warning.empty() && materials.missing.empty())
+        warning(where.begin, "OBJ \"" + name + "\": " + first_lines(obj_warning));
     for (float coordinate : attrib.vertices) {
         if (!std::isfinite(coordinate)) {
             error(where.begin, "OBJ \"" + name + "\" has a vertex coordinate that is not a finite number");
@@ -412,7 +424,8 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
                 material->pigment.image.location = where.begin;
                 finish_image_map(material->pigment.image, where.begin);
             } else {
-                warning(where.begin, "OBJ material '" + m.name + "': texture \"" + m.diffuse_texname + "\" not found; using Kd");
+                warning(where.begin,
+                        "OBJ material '" + m.name + "': texture \"" + m.diffuse_texname + "\" not found; using Kd");
             }
         }
         material->finish.ambient = sg::Vec3(m.ambient[0], m.ambient[1], m.ambient[2]);
@@ -435,10 +448,16 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
             bool valid = true;
             for (int i = 0; i < 3; ++i) {
                 const auto& index = indices[f + i];
-                if (index.vertex_index < 0 || static_cast<size_t>(index.vertex_index) >= mesh->positions.size()) valid = false;
+                if (index.vertex_index < 0 || static_cast<size_t>(index.vertex_index) >= mesh->positions.size())
+                    valid = false;
                 face.position[i] = index.vertex_index;
-                face.normal[i] = index.normal_index >= 0 && static_cast<size_t>(index.normal_index) < mesh->normals.size() ? index.normal_index : -1;
-                face.uv[i] = index.texcoord_index >= 0 && static_cast<size_t>(index.texcoord_index) < mesh->uvs.size() ? index.texcoord_index : -1;
+                face.normal[i] =
+                    index.normal_index >= 0 && static_cast<size_t>(index.normal_index) < mesh->normals.size()
+                        ? index.normal_index
+                        : -1;
+                face.uv[i] = index.texcoord_index >= 0 && static_cast<size_t>(index.texcoord_index) < mesh->uvs.size()
+                                 ? index.texcoord_index
+                                 : -1;
             }
             if (!valid) {
                 error(where.begin, "OBJ \"" + name + "\": face " + std::to_string(f / 3 + 1) +
@@ -447,17 +466,20 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
                 return shape;
             }
             // All three normals or none, all three uvs or none.
-            if (face.normal[0] < 0 || face.normal[1] < 0 || face.normal[2] < 0) face.normal[0] = face.normal[1] = face.normal[2] = -1;
+            if (face.normal[0] < 0 || face.normal[1] < 0 || face.normal[2] < 0)
+                face.normal[0] = face.normal[1] = face.normal[2] = -1;
             if (face.uv[0] < 0 || face.uv[1] < 0 || face.uv[2] < 0) face.uv[0] = face.uv[1] = face.uv[2] = -1;
             int material_id = f / 3 < obj_shape.mesh.material_ids.size() ? obj_shape.mesh.material_ids[f / 3] : -1;
-            face.material = material_id >= 0 && static_cast<size_t>(material_id) < mesh->materials.size() ? material_id : -1;
+            face.material =
+                material_id >= 0 && static_cast<size_t>(material_id) < mesh->materials.size() ? material_id : -1;
             mesh->faces.push_back(face);
         }
     }
     if (mesh->faces.empty()) {
         error(where.begin, "OBJ file \"" + name + "\" has no faces" +
-                               (mesh->positions.empty() ? "" : " (" + std::to_string(mesh->positions.size()) +
-                                                                    " vertices only: a point cloud?)"));
+                               (mesh->positions.empty() ? ""
+                                                        : " (" + std::to_string(mesh->positions.size()) +
+                                                              " vertices only: a point cloud?)"));
     } else {
         add_triangles(static_cast<long>(mesh->faces.size()), where.begin);
     }

@@ -61,7 +61,8 @@ void attach_in_parent_space(ShapeValue& shape, const sg::Material& material) {
 sg::Material current_in_parent_space(const ShapeValue& shape) {
     if (!shape.object.material) return sg::Material{};
     sg::Material material = *shape.object.material;
-    material.pigment.pattern_from_object = material.pigment.pattern_from_object * glm::inverse(shape.object.parent_from_object);
+    material.pigment.pattern_from_object =
+        material.pigment.pattern_from_object * glm::inverse(shape.object.parent_from_object);
     return material;
 }
 
@@ -71,7 +72,8 @@ void apply_default_material(sg::Object& object, const MaterialPtr& fallback) {
         return;
     }
     if (auto* group = std::get_if<sg::Group>(&object.shape)) {
-        for (auto& child : group->children) apply_default_material(child, in_child_space(fallback, child.parent_from_object));
+        for (auto& child : group->children)
+            apply_default_material(child, in_child_space(fallback, child.parent_from_object));
     }
 }
 
@@ -99,7 +101,8 @@ ShapePtr Evaluator::make_sphere(const Value& c, const SourceRange& wc, const Val
     sg::Sphere sphere;
     sphere.center = to_vec3(c, wc);
     sphere.radius = to_float(r, wr, "a float radius");
-    if (sphere.radius <= 0.0 && r.kind == Value::Kind::Float) error(wr.begin, "sphere radius must be positive, got " + std::to_string(sphere.radius));
+    if (sphere.radius <= 0.0 && r.kind == Value::Kind::Float)
+        error(wr.begin, "sphere radius must be positive, got " + std::to_string(sphere.radius));
     shape->object.shape = sphere;
     return shape;
 }
@@ -275,7 +278,8 @@ std::shared_ptr<sg::Finish> Evaluator::build_finish(const Edits<sg::Finish>& edi
     return finish;
 }
 
-std::shared_ptr<sg::Interior> Evaluator::build_interior(const Edits<sg::Interior>& edits, const sg::SourceLocation& at) {
+std::shared_ptr<sg::Interior> Evaluator::build_interior(const Edits<sg::Interior>& edits,
+                                                        const sg::SourceLocation& at) {
     auto interior = std::make_shared<sg::Interior>();
     for (const auto& edit : edits) edit(*interior);
     interior->location = at;
@@ -304,7 +308,8 @@ sg::MapType Evaluator::map_type(const Value& v, const SourceRange& where) {
     case 2: return sg::MapType::Cylindrical;
     case 5: return sg::MapType::Torus;
     default:
-        error(where.begin, "unsupported map_type " + std::to_string(type) + " (use 0 planar, 1 spherical, 2 cylindrical, 5 torus)");
+        error(where.begin,
+              "unsupported map_type " + std::to_string(type) + " (use 0 planar, 1 spherical, 2 cylindrical, 5 torus)");
         return sg::MapType::UV;
     }
 }
@@ -334,12 +339,18 @@ void Evaluator::finish_image_map(sg::ImageMap& image, const sg::SourceLocation& 
     if (image.format == sg::ImageFormat::Unknown) {
         std::string ext = fs::path(found).extension().string();
         for (auto& c : ext) c = static_cast<char>(std::tolower(c));
-        if (ext == ".png") image.format = sg::ImageFormat::Png;
-        else if (ext == ".jpg" || ext == ".jpeg") image.format = sg::ImageFormat::Jpeg;
-        else if (ext == ".exr") image.format = sg::ImageFormat::Exr;
-        else if (ext == ".hdr") image.format = sg::ImageFormat::Hdr;
-        else if (ext == ".tga") image.format = sg::ImageFormat::Tga;
-        else if (ext == ".tif" || ext == ".tiff") image.format = sg::ImageFormat::Tiff;
+        if (ext == ".png")
+            image.format = sg::ImageFormat::Png;
+        else if (ext == ".jpg" || ext == ".jpeg")
+            image.format = sg::ImageFormat::Jpeg;
+        else if (ext == ".exr")
+            image.format = sg::ImageFormat::Exr;
+        else if (ext == ".hdr")
+            image.format = sg::ImageFormat::Hdr;
+        else if (ext == ".tga")
+            image.format = sg::ImageFormat::Tga;
+        else if (ext == ".tif" || ext == ".tiff")
+            image.format = sg::ImageFormat::Tiff;
     }
     if (image.format == sg::ImageFormat::Exr || image.format == sg::ImageFormat::Hdr) image.srgb = false;
 }

@@ -21,7 +21,8 @@ ParseResult Evaluator::run(const std::string& text, const std::string& label, co
         m_scene.render.height = m_options.image_height;
     }
     if (push_file(text, label, path, folder, {})) {
-        m_pending.push_back(Pending{nullptr, std::make_shared<const Symbol>(Parser::token::TOK_START_SCENE, SourceRange{}), nullptr, 0, false});
+        m_pending.push_back(Pending{
+            nullptr, std::make_shared<const Symbol>(Parser::token::TOK_START_SCENE, SourceRange{}), nullptr, 0, false});
         Parser parser(*this);
         parser.parse();
         while (!m_frames.empty() && !m_aborted) pop_frame();

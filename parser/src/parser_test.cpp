@@ -18,7 +18,9 @@ void expect_vec(const sg::Vec3& actual, const sg::Vec3& expected, double toleran
     EXPECT_NEAR(actual.z, expected.z, tolerance);
 }
 
-sg::Vec3 apply(const sg::Mat4& m, const sg::Vec3& p) { return sg::Vec3(m * glm::dvec4(p, 1.0)); }
+sg::Vec3 apply(const sg::Mat4& m, const sg::Vec3& p) {
+    return sg::Vec3(m * glm::dvec4(p, 1.0));
+}
 
 TEST(ParserObjects, SphereWithDefaults) {
     auto scene = parse_ok("sphere { <1, 2, 3>, 0.5 }");
@@ -48,8 +50,9 @@ TEST(ParserObjects, PlaneNormalisedAndBox) {
 }
 
 TEST(ParserObjects, TriangleAndSmoothTriangle) {
-    auto scene = parse_ok("triangle { <0,0,0>, <1,0,0>, <0,1,0> }\n"
-                          "smooth_triangle { <0,0,0>, <0,0,-1>, <1,0,0>, <0,0,-2>, <0,1,0>, <0,1,-1> }");
+    auto scene = parse_ok(
+        "triangle { <0,0,0>, <1,0,0>, <0,1,0> }\n"
+        "smooth_triangle { <0,0,0>, <0,0,-1>, <1,0,0>, <0,0,-2>, <0,1,0>, <0,1,-1> }");
     ASSERT_EQ(scene.objects.size(), 2u);
     EXPECT_EQ(scene.objects[0].kind, sg::Object::Kind::Triangle);
     auto mesh = std::get<sg::MeshRef>(scene.objects[0].shape);
@@ -63,9 +66,10 @@ TEST(ParserObjects, TriangleAndSmoothTriangle) {
 }
 
 TEST(ParserObjects, MeshWithPerTriangleTexture) {
-    auto scene = parse_ok("#declare T = texture { pigment { rgb <1,0,0> } }\n"
-                          "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> texture { T } }\n"
-                          "       triangle { <0,0,1>, <1,0,1>, <0,1,1> } translate x }");
+    auto scene = parse_ok(
+        "#declare T = texture { pigment { rgb <1,0,0> } }\n"
+        "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> texture { T } }\n"
+        "       triangle { <0,0,1>, <1,0,1>, <0,1,1> } translate x }");
     auto mesh = std::get<sg::MeshRef>(scene.objects[0].shape);
     ASSERT_EQ(mesh->faces.size(), 2u);
     EXPECT_EQ(mesh->faces[0].material, 0);
@@ -98,15 +102,17 @@ TEST(ParserObjects, Mesh2WithNormalsAndUvs) {
 }
 
 TEST(ParserObjects, Mesh2NormalsPairWithVerticesWithoutIndices) {
-    auto scene = parse_ok("mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }"
-                          " normal_vectors { 3, z, z, z } face_indices { 1, <0,1,2> } }");
+    auto scene = parse_ok(
+        "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }"
+        " normal_vectors { 3, z, z, z } face_indices { 1, <0,1,2> } }");
     auto mesh = std::get<sg::MeshRef>(scene.objects[0].shape);
     EXPECT_EQ(mesh->faces[0].normal[2], 2);
 }
 
 TEST(ParserObjects, ObjectReuseComposesTransforms) {
-    auto scene = parse_ok("#declare S = sphere { 0, 1 translate <1, 0, 0> }\n"
-                          "object { S scale 2 }\n");
+    auto scene = parse_ok(
+        "#declare S = sphere { 0, 1 translate <1, 0, 0> }\n"
+        "object { S scale 2 }\n");
     ASSERT_EQ(scene.objects.size(), 1u);
     EXPECT_EQ(scene.objects[0].name, "S");
     // translate then scale: the centre lands at x = 2
@@ -114,7 +120,8 @@ TEST(ParserObjects, ObjectReuseComposesTransforms) {
 }
 
 TEST(ParserTransforms, RotationOrderXThenYThenZ) {
-    auto scene = parse_ok("sphere { 0, 1 rotate <90, 0, 0> } sphere { 0, 1 rotate y*90 } sphere { 0, 1 rotate <90, 90, 0> }");
+    auto scene =
+        parse_ok("sphere { 0, 1 rotate <90, 0, 0> } sphere { 0, 1 rotate y*90 } sphere { 0, 1 rotate <90, 90, 0> }");
     // POV: rotate x*90 takes +y to +z; rotate y*90 takes +x to -z.
     expect_vec(apply(scene.objects[0].parent_from_object, {0, 1, 0}), {0, 0, 1}, 1e-12);
     expect_vec(apply(scene.objects[1].parent_from_object, {1, 0, 0}), {0, 0, -1}, 1e-12);
@@ -123,10 +130,11 @@ TEST(ParserTransforms, RotationOrderXThenYThenZ) {
 }
 
 TEST(ParserTransforms, MatrixAndTransformBlocks) {
-    auto scene = parse_ok("#declare T = transform { scale 2 translate y }\n"
-                          "sphere { 0, 1 transform T }\n"
-                          "sphere { 0, 1 transform { T inverse } }\n"
-                          "sphere { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, 3,4,5> }");
+    auto scene = parse_ok(
+        "#declare T = transform { scale 2 translate y }\n"
+        "sphere { 0, 1 transform T }\n"
+        "sphere { 0, 1 transform { T inverse } }\n"
+        "sphere { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, 3,4,5> }");
     expect_vec(apply(scene.objects[0].parent_from_object, {1, 0, 0}), {2, 1, 0});
     expect_vec(apply(scene.objects[1].parent_from_object, {2, 1, 0}), {1, 0, 0});
     expect_vec(apply(scene.objects[2].parent_from_object, {0, 0, 0}), {3, 4, 5});
@@ -146,7 +154,8 @@ TEST(ParserTransforms, NestedUnionsComposeAndTexturesInherit) {
     const auto& children = std::get<sg::Group>(outer.shape).children;
     ASSERT_EQ(children.size(), 2u);
     const auto& inner = std::get<sg::Group>(children[0].shape).children;
-    sg::Mat4 world_from_sphere = outer.parent_from_object * children[0].parent_from_object * inner[0].parent_from_object;
+    sg::Mat4 world_from_sphere =
+        outer.parent_from_object * children[0].parent_from_object * inner[0].parent_from_object;
     expect_vec(apply(world_from_sphere, {0, 0, 0}), {1, 1, 1});
     // The union's pigment reaches the children without their own texture ...
     ASSERT_TRUE(inner[0].material);
@@ -355,8 +364,8 @@ TEST(ParserExpressions, RandIsReproducible) {
 }
 
 TEST(ParserObjects, NoShadowHollowAndIgnoredKeywordsWarn) {
-    ParseResult result = parse_scene_string(
-        "sphere { 0, 1 no_shadow hollow double_illuminate normal { bumps 0.5 } }", "w.pov");
+    ParseResult result =
+        parse_scene_string("sphere { 0, 1 no_shadow hollow double_illuminate normal { bumps 0.5 } }", "w.pov");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     EXPECT_TRUE(result.scene->objects[0].no_shadow);
     EXPECT_TRUE(result.scene->objects[0].hollow);

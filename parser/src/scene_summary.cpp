@@ -57,7 +57,8 @@ struct Walker {
         ++summary.object_count;
         if (object.material) materials.insert(object.material.get());
         if (const auto* sphere = std::get_if<sg::Sphere>(&object.shape)) {
-            grow_box(world_from_object, sphere->center - sg::Vec3(sphere->radius), sphere->center + sg::Vec3(sphere->radius));
+            grow_box(world_from_object, sphere->center - sg::Vec3(sphere->radius),
+                     sphere->center + sg::Vec3(sphere->radius));
         } else if (const auto* box = std::get_if<sg::Box>(&object.shape)) {
             grow_box(world_from_object, box->corner1, box->corner2);
         } else if (std::holds_alternative<sg::Plane>(object.shape)) {
@@ -120,8 +121,10 @@ std::string format_scene_summary(const SceneSummary& summary, const sg::SceneGra
     }
     out << "\n  materials: " << summary.materials << "\n";
     out << "  bounds:    ";
-    if (summary.bounds) out << vec_text(summary.bounds->first) << " to " << vec_text(summary.bounds->second);
-    else out << "(no finite objects)";
+    if (summary.bounds)
+        out << vec_text(summary.bounds->first) << " to " << vec_text(summary.bounds->second);
+    else
+        out << "(no finite objects)";
     if (summary.unbounded_objects) out << " (" << summary.unbounded_objects << " infinite plane(s) excluded)";
     out << "\n  camera:    " << (scene.camera ? "from the scene" : "POV-Ray default") << "\n";
     if (scene.render.integrator) out << "  integrator: " << *scene.render.integrator << "\n";

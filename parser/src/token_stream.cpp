@@ -28,48 +28,110 @@ const std::unordered_map<std::string, Kind>& keyword_table() {
 
 const std::unordered_map<std::string, Kind>& punct_table() {
     static const std::unordered_map<std::string, Kind> table = {
-        {"{", Parser::token::TOK_LBRACE}, {"}", Parser::token::TOK_RBRACE}, {"(", Parser::token::TOK_LPAREN},
+        {"{", Parser::token::TOK_LBRACE}, {"}", Parser::token::TOK_RBRACE},   {"(", Parser::token::TOK_LPAREN},
         {")", Parser::token::TOK_RPAREN}, {"[", Parser::token::TOK_LBRACKET}, {"]", Parser::token::TOK_RBRACKET},
-        {"<", Parser::token::TOK_LT}, {">", Parser::token::TOK_GT}, {"<=", Parser::token::TOK_LE},
-        {">=", Parser::token::TOK_GE}, {"=", Parser::token::TOK_EQ}, {"!=", Parser::token::TOK_NE},
-        {"+", Parser::token::TOK_PLUS}, {"-", Parser::token::TOK_MINUS}, {"*", Parser::token::TOK_STAR},
-        {"/", Parser::token::TOK_SLASH}, {",", Parser::token::TOK_COMMA}, {";", Parser::token::TOK_SEMI},
-        {".", Parser::token::TOK_DOT}, {"?", Parser::token::TOK_QUESTION}, {":", Parser::token::TOK_COLON},
-        {"&", Parser::token::TOK_AND}, {"|", Parser::token::TOK_OR}, {"!", Parser::token::TOK_NOT},
+        {"<", Parser::token::TOK_LT},     {">", Parser::token::TOK_GT},       {"<=", Parser::token::TOK_LE},
+        {">=", Parser::token::TOK_GE},    {"=", Parser::token::TOK_EQ},       {"!=", Parser::token::TOK_NE},
+        {"+", Parser::token::TOK_PLUS},   {"-", Parser::token::TOK_MINUS},    {"*", Parser::token::TOK_STAR},
+        {"/", Parser::token::TOK_SLASH},  {",", Parser::token::TOK_COMMA},    {";", Parser::token::TOK_SEMI},
+        {".", Parser::token::TOK_DOT},    {"?", Parser::token::TOK_QUESTION}, {":", Parser::token::TOK_COLON},
+        {"&", Parser::token::TOK_AND},    {"|", Parser::token::TOK_OR},       {"!", Parser::token::TOK_NOT},
     };
     return table;
 }
 
 const std::unordered_set<std::string>& builtin_names() {
     static const std::unordered_set<std::string> names = {
-        "abs", "sqrt", "pow", "exp", "log", "ln", "sin", "cos", "tan", "asin", "acos", "atan", "atan2",
-        "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "min", "max", "floor", "ceil", "mod", "int",
-        "div", "radians", "degrees", "vlength", "vnormalize", "vcross", "vdot", "vrotate", "vaxis_rotate",
-        "seed", "rand", "select", "concat", "str", "strlen", "substr", "chr", "val", "strupr", "strlwr",
-        "vstr", "asc", "sqr", "bitwise_and", "bitwise_or", "file_exists"};
+        "abs",         "sqrt",         "pow",        "exp",     "log",     "ln",         "sin",    "cos",
+        "tan",         "asin",         "acos",       "atan",    "atan2",   "sinh",       "cosh",   "tanh",
+        "asinh",       "acosh",        "atanh",      "min",     "max",     "floor",      "ceil",   "mod",
+        "int",         "div",          "radians",    "degrees", "vlength", "vnormalize", "vcross", "vdot",
+        "vrotate",     "vaxis_rotate", "seed",       "rand",    "select",  "concat",     "str",    "strlen",
+        "substr",      "chr",          "val",        "strupr",  "strlwr",  "vstr",       "asc",    "sqr",
+        "bitwise_and", "bitwise_or",   "file_exists"};
     return names;
 }
 
 // Ignored POV blocks: swallowed with a warning so nothing is dropped silently.
 const std::unordered_set<std::string>& ignored_blocks() {
     static const std::unordered_set<std::string> names = {
-        "normal", "photons", "radiosity", "media", "fog", "sky_sphere", "rainbow", "bounded_by",
-        "clipped_by", "irid", "interior_texture", "subsurface", "mm_per_unit"};
+        "normal",     "photons", "radiosity",        "media",      "fog",        "sky_sphere", "rainbow", "bounded_by",
+        "clipped_by", "irid",    "interior_texture", "subsurface", "mm_per_unit"};
     return names;
 }
 
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
-    static const std::unordered_set<std::string> names = {
-        "cylinder", "cone", "torus", "disc", "blob", "lathe", "prism", "sor", "superellipsoid", "text",
-        "height_field", "isosurface", "parametric", "julia_fractal", "bicubic_patch", "polygon", "quadric",
-        "quartic", "cubic", "poly", "sphere_sweep", "ovus", "lemon", "array", "spline", "function",
-        "color_map", "colour_map", "pigment_map", "texture_map", "normal_map", "slope_map", "gradient",
-        "bozo", "agate", "marble", "granite", "wood", "leopard", "onion", "radial", "spotted", "wrinkles",
-        "ripples", "waves", "hexagon", "brick", "bumps", "dents", "crackle", "spiral1", "spiral2",
-        "fisheye", "panoramic", "cylindrical", "spherical", "ultra_wide_angle", "omnimax", "layered",
-        "material_map", "uv_mapping", "pattern", "tiles", "cells", "boxed", "planar", "average",
-        "interior_texture", "isosurface", "dictionary"};
+    static const std::unordered_set<std::string> names = {"cylinder",
+                                                          "cone",
+                                                          "torus",
+                                                          "disc",
+                                                          "blob",
+                                                          "lathe",
+                                                          "prism",
+                                                          "sor",
+                                                          "superellipsoid",
+                                                          "text",
+                                                          "height_field",
+                                                          "isosurface",
+                                                          "parametric",
+                                                          "julia_fractal",
+                                                          "bicubic_patch",
+                                                          "polygon",
+                                                          "quadric",
+                                                          "quartic",
+                                                          "cubic",
+                                                          "poly",
+                                                          "sphere_sweep",
+                                                          "ovus",
+                                                          "lemon",
+                                                          "array",
+                                                          "spline",
+                                                          "function",
+                                                          "color_map",
+                                                          "colour_map",
+                                                          "pigment_map",
+                                                          "texture_map",
+                                                          "normal_map",
+                                                          "slope_map",
+                                                          "gradient",
+                                                          "bozo",
+                                                          "agate",
+                                                          "marble",
+                                                          "granite",
+                                                          "wood",
+                                                          "leopard",
+                                                          "onion",
+                                                          "radial",
+                                                          "spotted",
+                                                          "wrinkles",
+                                                          "ripples",
+                                                          "waves",
+                                                          "hexagon",
+                                                          "brick",
+                                                          "bumps",
+                                                          "dents",
+                                                          "crackle",
+                                                          "spiral1",
+                                                          "spiral2",
+                                                          "fisheye",
+                                                          "panoramic",
+                                                          "cylindrical",
+                                                          "spherical",
+                                                          "ultra_wide_angle",
+                                                          "omnimax",
+                                                          "layered",
+                                                          "material_map",
+                                                          "uv_mapping",
+                                                          "pattern",
+                                                          "tiles",
+                                                          "cells",
+                                                          "boxed",
+                                                          "planar",
+                                                          "average",
+                                                          "interior_texture",
+                                                          "isosurface",
+                                                          "dictionary"};
     return names;
 }
 
@@ -78,10 +140,32 @@ bool is_valued(Kind kind) {
 }
 
 const std::unordered_set<std::string>& constant_names() {
-    static const std::unordered_set<std::string> names = {
-        "x", "y", "z", "t", "u", "v", "pi", "tau", "true", "yes", "on", "false", "no", "off", "clock",
-        "clock_delta", "frame_number", "clock_on", "initial_clock", "final_clock", "initial_frame",
-        "final_frame", "version", "image_width", "image_height", "defined"};
+    static const std::unordered_set<std::string> names = {"x",
+                                                          "y",
+                                                          "z",
+                                                          "t",
+                                                          "u",
+                                                          "v",
+                                                          "pi",
+                                                          "tau",
+                                                          "true",
+                                                          "yes",
+                                                          "on",
+                                                          "false",
+                                                          "no",
+                                                          "off",
+                                                          "clock",
+                                                          "clock_delta",
+                                                          "frame_number",
+                                                          "clock_on",
+                                                          "initial_clock",
+                                                          "final_clock",
+                                                          "initial_frame",
+                                                          "final_frame",
+                                                          "version",
+                                                          "image_width",
+                                                          "image_height",
+                                                          "defined"};
     return names;
 }
 
@@ -96,7 +180,8 @@ Evaluator::Evaluator(const ParseOptions& options) : m_options(options) {
     m_scopes.emplace_back();  // the global scope
     // LANCER_INCLUDE_PATH and lancer's include/ are always searched last.
     for (const auto& dir : default_include_path()) {
-        if (std::find(m_options.include_path.begin(), m_options.include_path.end(), dir) == m_options.include_path.end())
+        if (std::find(m_options.include_path.begin(), m_options.include_path.end(), dir) ==
+            m_options.include_path.end())
             m_options.include_path.push_back(dir);
     }
 }
@@ -146,8 +231,9 @@ void Evaluator::pop_frame() {
     if (!frame.controls.empty() && !m_aborted) {
         const Control& open = frame.controls.back();
         static const char* names[] = {"#if", "#while", "#for", "#switch", "#macro"};
-        error(open.opened_at, std::string(names[static_cast<int>(open.kind)]) + " has no matching #end" +
-                                  (frame.is_macro ? " inside macro '" + frame.name + "'" : " before the end of the file"));
+        error(open.opened_at,
+              std::string(names[static_cast<int>(open.kind)]) + " has no matching #end" +
+                  (frame.is_macro ? " inside macro '" + frame.name + "'" : " before the end of the file"));
         abort_parse();
     }
     if (frame.owns_scope && m_scopes.size() > 1) m_scopes.pop_back();
@@ -174,7 +260,9 @@ bool Evaluator::directives_blocked() const {
     return m_barrier_depth >= 0 && static_cast<int>(m_frames.size()) <= m_barrier_depth;
 }
 
-void Evaluator::abort_parse() { m_aborted = true; }
+void Evaluator::abort_parse() {
+    m_aborted = true;
+}
 
 Evaluator::Symbol Evaluator::next_token() {
     while (true) {
@@ -234,10 +322,8 @@ Evaluator::Symbol Evaluator::next_token() {
 
 Evaluator::Symbol Evaluator::classify(const RawToken& raw) {
     switch (raw.kind) {
-    case RawKind::Number:
-        return make_symbol(Parser::token::TOK_NUMBER, raw, Value::number(raw.number));
-    case RawKind::String:
-        return make_symbol(Parser::token::TOK_STRING, raw, Value::string(raw.text));
+    case RawKind::Number: return make_symbol(Parser::token::TOK_NUMBER, raw, Value::number(raw.number));
+    case RawKind::String: return make_symbol(Parser::token::TOK_STRING, raw, Value::string(raw.text));
     case RawKind::Punct: {
         if (raw.text == "{") m_block_names.push_back(m_previous_word);
         if (raw.text == "}" && !m_block_names.empty()) {
@@ -246,8 +332,8 @@ Evaluator::Symbol Evaluator::classify(const RawToken& raw) {
         }
         if (raw.text == "{" || raw.text == "(" || raw.text == "[") {
             if (++m_nesting > m_options.max_nesting_depth) {
-                error(raw.location, "nesting too deep: more than " + std::to_string(m_options.max_nesting_depth) +
-                                        " open brackets");
+                error(raw.location,
+                      "nesting too deep: more than " + std::to_string(m_options.max_nesting_depth) + " open brackets");
                 abort_parse();
             }
         } else if (raw.text == "}" || raw.text == ")" || raw.text == "]") {
@@ -255,11 +341,8 @@ Evaluator::Symbol Evaluator::classify(const RawToken& raw) {
         }
         return make_symbol(punct_table().at(raw.text), raw);
     }
-    case RawKind::Identifier:
-        m_previous_word = raw.text;
-        return symbol_for_identifier(raw);
-    case RawKind::Directive:
-        break;
+    case RawKind::Identifier: m_previous_word = raw.text; return symbol_for_identifier(raw);
+    case RawKind::Directive: break;
     }
     return make_symbol(Parser::token::TOK_DIRECTIVE, raw);
 }
@@ -401,7 +484,8 @@ Value Evaluator::parse_nested(Kind start, const sg::SourceLocation& at, bool bar
     if (barrier) m_barrier_depth = m_nested_base_depth;
     m_nested_result.reset();
     m_nested_had_lookahead = false;
-    m_pending.push_back(Pending{nullptr, std::make_shared<const Symbol>(start, SourceRange{at, at}), nullptr, 0, false});
+    m_pending.push_back(
+        Pending{nullptr, std::make_shared<const Symbol>(start, SourceRange{at, at}), nullptr, 0, false});
     // Parsers are reused per nesting level: building one reserves its stack.
     size_t level = m_parser_depth++;
     if (m_parsers.size() <= level) m_parsers.push_back(std::make_unique<Parser>(*this));
@@ -433,8 +517,12 @@ void Evaluator::finish_arguments(std::vector<Value> arguments) {
     m_nested_result = Value::number(0.0);
 }
 
-void Evaluator::begin_value_barrier() { m_barrier_depth = m_nested_base_depth; }
-void Evaluator::end_value_barrier() { m_barrier_depth = -1; }
+void Evaluator::begin_value_barrier() {
+    m_barrier_depth = m_nested_base_depth;
+}
+void Evaluator::end_value_barrier() {
+    m_barrier_depth = -1;
+}
 
 // Puts an unread lookahead back into its frame when it was the last token
 // read there, so frame changes (includes, skipped branches) see it in order.
@@ -485,10 +573,17 @@ bool Evaluator::expect_raw_punct(const char* punct, const std::string& context) 
     if (take_punct(punct)) return true;
     sg::SourceLocation where;
     const RawToken* next = m_pending.empty() ? peek_raw() : m_pending.back().raw;
-    if (next) where = next->location;
-    else if (!m_frames.empty() && !m_frames.back()->buffer->tokens.empty()) where = m_frames.back()->buffer->tokens.back().location;
-    error(where, std::string("expected '") + punct + "' " + context +
-                     (next ? ", found '" + (next->kind == RawKind::String ? "\"" + next->text + "\"" : (next->kind == RawKind::Directive ? "#" : "") + next->text) + "'" : ", found the end of the file"));
+    if (next)
+        where = next->location;
+    else if (!m_frames.empty() && !m_frames.back()->buffer->tokens.empty())
+        where = m_frames.back()->buffer->tokens.back().location;
+    error(where,
+          std::string("expected '") + punct + "' " + context +
+              (next ? ", found '" +
+                          (next->kind == RawKind::String ? "\"" + next->text + "\""
+                                                         : (next->kind == RawKind::Directive ? "#" : "") + next->text) +
+                          "'"
+                    : ", found the end of the file"));
     abort_parse();
     return false;
 }

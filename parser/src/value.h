@@ -32,7 +32,20 @@ struct CameraSpec {
 };
 
 struct Value {
-    enum class Kind { Float, Vector, Color, String, Object, Texture, Pigment, Finish, Interior, Camera, Light, Transform };
+    enum class Kind {
+        Float,
+        Vector,
+        Color,
+        String,
+        Object,
+        Texture,
+        Pigment,
+        Finish,
+        Interior,
+        Camera,
+        Light,
+        Transform
+    };
     Kind kind = Kind::Float;
     // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
     std::array<double, 5> v{0.0, 0.0, 0.0, 0.0, 0.0};

@@ -16,7 +16,7 @@ namespace {
 using namespace lancer;
 
 class AlbedoIntegrator final : public Integrator {
-public:
+  public:
     Color shade_camera_hit(const Ray&, const Hit* hit, const RenderScene&, Sampler&) const override {
         if (!hit) return Color(0.0f);
         const Material& material = *hit->material;
@@ -31,8 +31,7 @@ std::unique_ptr<Integrator> create(const ParameterSet&) {
 }
 
 const IntegratorDescriptor kDescriptor = {
-    kPluginAbiVersion, "albedo", "AOV: pigment x diffuse at the nearest hit, unlit",
-    nullptr,           0,        &create,
+    kPluginAbiVersion, "albedo", "AOV: pigment x diffuse at the nearest hit, unlit", nullptr, 0, &create,
 };
 
 }  // namespace

@@ -25,7 +25,7 @@ namespace {
 using namespace lancer;
 
 class DepthIntegrator final : public Integrator {
-public:
+  public:
     explicit DepthIntegrator(float max_distance) : m_max_distance(max_distance) {}
 
     Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene&, Sampler&) const override {
@@ -38,13 +38,12 @@ public:
 
     bool is_deterministic() const override { return true; }
 
-private:
+  private:
     float m_max_distance;
 };
 
 const ParameterDecl kParameters[] = {
-    {"max_distance", ParameterType::Float, "0",
-     "distance shown as white; 0 writes the raw distance (use EXR)"},
+    {"max_distance", ParameterType::Float, "0", "distance shown as white; 0 writes the raw distance (use EXR)"},
 };
 
 std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
@@ -57,8 +56,8 @@ std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
 }
 
 const IntegratorDescriptor kDescriptor = {
-    kPluginAbiVersion, "depth", "AOV: distance to the nearest hit, raw or normalised",
-    kParameters,       std::size(kParameters), &create,
+    kPluginAbiVersion,      "depth", "AOV: distance to the nearest hit, raw or normalised", kParameters,
+    std::size(kParameters), &create,
 };
 
 }  // namespace

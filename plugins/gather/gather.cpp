@@ -65,10 +65,9 @@ using namespace lancer;
 constexpr std::int64_t kMaxDepth = 256;
 
 class GatherIntegrator final : public Integrator {
-public:
+  public:
     GatherIntegrator(int point_count, float jitter, int max_depth, bool fresnel, bool additive_reflection)
-        : m_point_count(point_count), m_jitter(jitter), m_requested_depth(max_depth),
-          m_lattice(0) {
+        : m_point_count(point_count), m_jitter(jitter), m_requested_depth(max_depth), m_lattice(0) {
         m_options.fresnel = fresnel;
         m_options.additive_reflection = additive_reflection;
     }
@@ -80,8 +79,7 @@ public:
         m_options.min_weight = scene.options().adc_bailout;
     }
 
-    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
-                           Sampler& sampler) const override {
+    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene, Sampler& sampler) const override {
         const auto gathered_local_term = [this, &scene](const ShadingContext& at, const Color& diffuse_scale,
                                                         Sampler& hit_sampler) {
             LobeRadiance local = direct_light(scene, at);
@@ -93,7 +91,7 @@ public:
 
     bool is_deterministic() const override { return m_jitter == 0.0f; }
 
-private:
+  private:
     // Highlights from every light of the simple model, and the diffuse light
     // of point and directional lights (which gathered rays cannot find),
     // each behind a shadow ray. Area lights' diffuse light is gathered.
@@ -150,8 +148,7 @@ const ParameterDecl kParameters[] = {
     {"max_depth", ParameterType::Int, "0",
      "deepest mirror/refraction level (camera ray = 1), at most 256; 0: the scene's max_trace_level"},
     {"fresnel", ParameterType::Bool, "false", "Fresnel split of transparent surfaces, as whitted"},
-    {"additive_reflection", ParameterType::Bool, "false",
-     "POV-Ray's sum: reflection does not remove the diffuse term"},
+    {"additive_reflection", ParameterType::Bool, "false", "POV-Ray's sum: reflection does not remove the diffuse term"},
 };
 
 std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
@@ -167,8 +164,7 @@ std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
         throw std::invalid_argument("gather: max_depth must lie in [0, " + std::to_string(kMaxDepth) + "], got " +
                                     std::to_string(max_depth));
     return std::make_unique<GatherIntegrator>(static_cast<int>(point_count), static_cast<float>(jitter),
-                                              static_cast<int>(max_depth),
-                                              parameters.get_bool("fresnel", false),
+                                              static_cast<int>(max_depth), parameters.get_bool("fresnel", false),
                                               parameters.get_bool("additive_reflection", false));
 }
 

@@ -161,7 +161,8 @@ TEST(GatherIntegrator, JitterComesOnlyFromThePixelSampler) {
 TEST(GatherIntegrator, RejectsOutOfRangeParameters) {
     const Plugin plugin = load_plugin("gather");
     for (const char* bad : {"n=0", "jitter=1.5", "jitter=-0.1", "max_depth=-1"})
-        EXPECT_THROW(plugin.descriptor->create(resolve_parameters(*plugin.descriptor, {}, {bad})), std::invalid_argument)
+        EXPECT_THROW(plugin.descriptor->create(resolve_parameters(*plugin.descriptor, {}, {bad})),
+                     std::invalid_argument)
             << bad;
 }
 

@@ -26,7 +26,7 @@
 namespace lancer {
 
 class SphereLattice {
-public:
+  public:
     explicit SphereLattice(int point_count) {
         const double golden_ratio = 0.5 * (1.0 + std::sqrt(5.0));
         m_longitudes.reserve(point_count);
@@ -61,7 +61,7 @@ public:
         return {ring * c, y, ring * s};
     }
 
-private:
+  private:
     std::vector<Vec2> m_longitudes;  // (cos, sin) of each point's longitude
 };
 

@@ -20,7 +20,7 @@ namespace {
 using namespace lancer;
 
 class NormalIntegrator final : public Integrator {
-public:
+  public:
     explicit NormalIntegrator(bool shading) : m_shading(shading) {}
 
     Color shade_camera_hit(const Ray& ray, const Hit* found, const RenderScene&, Sampler&) const override {
@@ -34,13 +34,12 @@ public:
 
     bool is_deterministic() const override { return true; }
 
-private:
+  private:
     bool m_shading;
 };
 
 const ParameterDecl kParameters[] = {
-    {"shading", ParameterType::Bool, "true",
-     "the interpolated shading normal; false: the geometric normal"},
+    {"shading", ParameterType::Bool, "true", "the interpolated shading normal; false: the geometric normal"},
 };
 
 std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
@@ -48,8 +47,8 @@ std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
 }
 
 const IntegratorDescriptor kDescriptor = {
-    kPluginAbiVersion, "normal", "AOV: camera-facing surface normal as colour 0.5 + 0.5 n",
-    kParameters,       std::size(kParameters), &create,
+    kPluginAbiVersion,      "normal", "AOV: camera-facing surface normal as colour 0.5 + 0.5 n", kParameters,
+    std::size(kParameters), &create,
 };
 
 }  // namespace

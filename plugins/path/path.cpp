@@ -37,8 +37,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include <lancer/shading/bsdf_sampling.h>
 #include <lancer/integrator.h>
+#include <lancer/shading/bsdf_sampling.h>
 
 namespace {
 
@@ -63,7 +63,7 @@ struct PathSettings {
 };
 
 class PathIntegrator final : public Integrator {
-public:
+  public:
     explicit PathIntegrator(const PathSettings& settings) : m_settings(settings) {}
 
     void prepare(const RenderScene& scene) override {
@@ -99,8 +99,7 @@ public:
     }
 
     std::unique_ptr<Sampler> make_sampler(std::uint64_t seed) const override {
-        return m_settings.sampler == SamplerKind::Sobol ? make_sobol_sampler(seed)
-                                                        : make_independent_sampler(seed);
+        return m_settings.sampler == SamplerKind::Sobol ? make_sobol_sampler(seed) : make_independent_sampler(seed);
     }
 
     Color shade_camera_hit(const Ray& camera_ray, const Hit* camera_hit, const RenderScene& scene,
@@ -114,7 +113,7 @@ public:
         // Product of the (eta_from/eta_to)^2 factors in `throughput`, divided
         // out for Russian roulette so it does not kill paths inside glass.
         float radiance_scale = 1.0f;
-        bool delta_bounce = true;  // the camera counts as a delta event
+        bool delta_bounce = true;   // the camera counts as a delta event
         float previous_pdf = 0.0f;  // solid-angle density of the last BSDF sample
         Vec3 previous_point(0.0f);
 
@@ -142,7 +141,7 @@ public:
                         weight = 0.0f;
                     if (!delta_bounce && m_settings.strategy == Strategy::Mis) {
                         const float light_pdf = selection_probability(scene, hit.emitter) *
-                                                 hit.emitter->pdf(previous_point, ray.direction, hit);
+                                                hit.emitter->pdf(previous_point, ray.direction, hit);
                         weight = power_heuristic(previous_pdf, light_pdf);
                     }
                     radiance += throughput * weight * emitted;
@@ -194,11 +193,10 @@ public:
         return radiance;
     }
 
-private:
+  private:
     // The (eta_from/eta_to)^2 radiance factor a dielectric refraction put
     // into the weight (1 for anything else).
-    static float transmission_scale(const Hit& hit, const Vec3& wo, const BsdfSample& s,
-                                    const Material& material) {
+    static float transmission_scale(const Hit& hit, const Vec3& wo, const BsdfSample& s, const Material& material) {
         if (!s.is_transmission) return 1.0f;
         const float ior = material.parameters().ior;
         if (!(ior > 0.0f) || std::abs(ior - 1.0f) < 1e-6f) return 1.0f;
@@ -219,15 +217,14 @@ private:
 
     // Light reaching `hit` straight from the lights, through the smooth
     // lobes of `bsdf`, MIS-weighted against BSDF sampling.
-    Color direct_light(const RenderScene& scene, const Hit& hit, const Bsdf& bsdf, float u_light,
-                       const Vec2& u_point, Sampler& sampler) const {
+    Color direct_light(const RenderScene& scene, const Hit& hit, const Bsdf& bsdf, float u_light, const Vec2& u_point,
+                       Sampler& sampler) const {
         const std::vector<const Light*>& lights = scene.lights();
         if (lights.empty()) return Color(0.0f);
         if (m_settings.light_selection == LightSelection::All) {
             Color sum(0.0f);
             for (std::size_t i = 0; i < lights.size(); ++i)
-                sum += light_contribution(scene, hit, bsdf, *lights[i], 1.0f,
-                                          i == 0 ? u_point : sampler.next_2d());
+                sum += light_contribution(scene, hit, bsdf, *lights[i], 1.0f, i == 0 ? u_point : sampler.next_2d());
             return sum;
         }
         // One light, chosen by the selection distribution.
@@ -235,8 +232,7 @@ private:
         float probability = 0.0f;
         if (&scene == m_prepared_for && m_light_cdf.size() == lights.size()) {
             const float target = u_light * m_light_cdf.back();
-            index = std::size_t(std::upper_bound(m_light_cdf.begin(), m_light_cdf.end(), target) -
-                                m_light_cdf.begin());
+            index = std::size_t(std::upper_bound(m_light_cdf.begin(), m_light_cdf.end(), target) - m_light_cdf.begin());
             index = std::min(index, lights.size() - 1);
             probability = m_light_probability[index];
         } else {
@@ -247,8 +243,8 @@ private:
         return light_contribution(scene, hit, bsdf, *lights[index], probability, u_point);
     }
 
-    Color light_contribution(const RenderScene& scene, const Hit& hit, const Bsdf& bsdf,
-                             const Light& light, float selection, const Vec2& u) const {
+    Color light_contribution(const RenderScene& scene, const Hit& hit, const Bsdf& bsdf, const Light& light,
+                             float selection, const Vec2& u) const {
         const bool delta = light.is_delta();
         if (!delta && m_settings.strategy == Strategy::Bsdf) return Color(0.0f);
         const LightSample incident = light.sample(hit.position, u);
@@ -272,11 +268,9 @@ private:
 };
 
 const ParameterDecl kParameters[] = {
-    {"max_depth", ParameterType::Int, "16",
-     "bounces: 0 emission only, 1 direct light only; negative: unlimited"},
+    {"max_depth", ParameterType::Int, "16", "bounces: 0 emission only, 1 direct light only; negative: unlimited"},
     {"rr_depth", ParameterType::Int, "3", "bounces before Russian roulette starts"},
-    {"clamp", ParameterType::Float, "0",
-     "cap on each sample's largest component (biased firefly control); 0: off"},
+    {"clamp", ParameterType::Float, "0", "cap on each sample's largest component (biased firefly control); 0: off"},
     {"sampler", ParameterType::String, "independent",
      "\"independent\" or \"sobol\" (Owen-scrambled Sobol; best with 2^k samples)"},
     {"light_sampling", ParameterType::String, "power",
@@ -294,22 +288,34 @@ std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
     settings.clamp = float(std::max(0.0, parameters.get_float("clamp", 0.0)));
 
     const std::string sampler = parameters.get_string("sampler", "independent");
-    if (sampler == "independent") settings.sampler = SamplerKind::Independent;
-    else if (sampler == "sobol") settings.sampler = SamplerKind::Sobol;
-    else throw std::invalid_argument("path: sampler must be \"independent\" or \"sobol\", not \"" + sampler + "\"");
+    if (sampler == "independent")
+        settings.sampler = SamplerKind::Independent;
+    else if (sampler == "sobol")
+        settings.sampler = SamplerKind::Sobol;
+    else
+        throw std::invalid_argument("path: sampler must be \"independent\" or \"sobol\", not \"" + sampler + "\"");
 
     const std::string selection = parameters.get_string("light_sampling", "power");
-    if (selection == "power") settings.light_selection = LightSelection::Power;
-    else if (selection == "uniform") settings.light_selection = LightSelection::Uniform;
-    else if (selection == "all") settings.light_selection = LightSelection::All;
-    else throw std::invalid_argument("path: light_sampling must be \"power\", \"uniform\" or \"all\", not \"" + selection + "\"");
+    if (selection == "power")
+        settings.light_selection = LightSelection::Power;
+    else if (selection == "uniform")
+        settings.light_selection = LightSelection::Uniform;
+    else if (selection == "all")
+        settings.light_selection = LightSelection::All;
+    else
+        throw std::invalid_argument("path: light_sampling must be \"power\", \"uniform\" or \"all\", not \"" +
+                                    selection + "\"");
 
     settings.additive_reflection = parameters.get_bool("additive_reflection", false);
     const std::string strategy = parameters.get_string("strategy", "mis");
-    if (strategy == "mis") settings.strategy = Strategy::Mis;
-    else if (strategy == "nee") settings.strategy = Strategy::Nee;
-    else if (strategy == "bsdf") settings.strategy = Strategy::Bsdf;
-    else throw std::invalid_argument("path: strategy must be \"mis\", \"nee\" or \"bsdf\", not \"" + strategy + "\"");
+    if (strategy == "mis")
+        settings.strategy = Strategy::Mis;
+    else if (strategy == "nee")
+        settings.strategy = Strategy::Nee;
+    else if (strategy == "bsdf")
+        settings.strategy = Strategy::Bsdf;
+    else
+        throw std::invalid_argument("path: strategy must be \"mis\", \"nee\" or \"bsdf\", not \"" + strategy + "\"");
     return std::make_unique<PathIntegrator>(settings);
 }
 

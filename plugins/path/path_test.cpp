@@ -12,9 +12,9 @@
 #include <gtest/gtest.h>
 
 #include "lancer/host/camera_ray.h"
-#include "lancer/host/scene_compiler.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/scene_graph.h"
 #include "stat_compare.h"
 
@@ -168,8 +168,8 @@ TEST_F(PathFixture, TinySphereLightMatchesPointLight) {
     auto integrator = make_integrator(path, {"max_depth=3"});
     const Film point = render(lit_floor_scene(false), *integrator, 16, 12, 256, 1);
     const Film sphere_light = render(lit_floor_scene(true), *integrator, 16, 12, 256, 2);
-    const ImageComparison c = compare_images(PixelStatistics::from_film(sphere_light),
-                                             PixelStatistics::from_film(point), 0.01, 2);
+    const ImageComparison c =
+        compare_images(PixelStatistics::from_film(sphere_light), PixelStatistics::from_film(point), 0.01, 2);
     EXPECT_TRUE(c.passed) << c.summary;
 }
 
@@ -303,7 +303,7 @@ TEST_F(PathFixture, DepthZeroIsEmissionOnly) {
     for (int y = 0; y < 12; ++y)
         for (int x = 0; x < 16; ++x) brightest = std::max(brightest, double(max_component(film.mean(x, y))));
     EXPECT_LE(brightest, 0.7 + 1e-5);  // no reflected light anywhere
-    EXPECT_GT(brightest, 0.0);          // the emitter is visible
+    EXPECT_GT(brightest, 0.0);         // the emitter is visible
 }
 
 TEST_F(PathFixture, RejectsUnknownSampler) {

@@ -19,7 +19,7 @@
 namespace lancer {
 
 class DiffusePointLanes {
-public:
+  public:
     static constexpr int kLanes = 16;
     static constexpr int kMaxLights = 8;
 
@@ -52,11 +52,11 @@ public:
     // a light leaves the float range where the light samples in float: the
     // caller shades it the general way.
     void shade(const Ray* const* rays, const Hit* const* hits, int count, Color* out, bool* shaded) const {
-        float px[kLanes], py[kLanes], pz[kLanes];  // hit point
-        float nx[kLanes], ny[kLanes], nz[kLanes];  // shading normal, facing wo
-        float red[kLanes], green[kLanes], blue[kLanes];          // pigment
+        float px[kLanes], py[kLanes], pz[kLanes];        // hit point
+        float nx[kLanes], ny[kLanes], nz[kLanes];        // shading normal, facing wo
+        float red[kLanes], green[kLanes], blue[kLanes];  // pigment
         float opacity[kLanes], diffuse[kLanes];
-        float sum_r[kLanes], sum_g[kLanes], sum_b[kLanes];      // emission + ambient
+        float sum_r[kLanes], sum_g[kLanes], sum_b[kLanes];  // emission + ambient
         for (int k = 0; k < count; ++k) {
             const Hit& hit = *hits[k];
             const Material& material = *hit.material;
@@ -102,8 +102,8 @@ public:
                 const float reflected_g = (lit ? shape * green[k] : 0.0f) * incident_g;
                 const float reflected_b = (lit ? shape * blue[k] : 0.0f) * incident_b;
                 const bool black = radiance_r == 0.0f && radiance_g == 0.0f && radiance_b == 0.0f;
-                const bool finite = std::isfinite(reflected_r) && std::isfinite(reflected_g) &&
-                                    std::isfinite(reflected_b);
+                const bool finite =
+                    std::isfinite(reflected_r) && std::isfinite(reflected_g) && std::isfinite(reflected_b);
                 const bool counts = !black && finite;
                 lit_r[k] += counts ? reflected_r : 0.0f;
                 lit_g[k] += counts ? reflected_g : 0.0f;
@@ -117,7 +117,7 @@ public:
         }
     }
 
-private:
+  private:
     Vec3 m_position[kMaxLights];
     Color m_intensity[kMaxLights];
     int m_lights = 0;

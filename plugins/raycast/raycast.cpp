@@ -29,7 +29,7 @@ namespace {
 using namespace lancer;
 
 class RaycastIntegrator final : public Integrator {
-public:
+  public:
     RaycastIntegrator(bool with_ambient, bool with_specular)
         : m_with_ambient(with_ambient), m_with_specular(with_specular) {}
 
@@ -74,7 +74,7 @@ public:
 
     bool is_deterministic() const override { return true; }
 
-private:
+  private:
     struct SceneLighting {
         explicit SceneLighting(const RenderScene& scene)
             : lights(scene.lights()), ambient_light(scene.options().ambient_light) {}
@@ -100,10 +100,8 @@ private:
 };
 
 const ParameterDecl kParameters[] = {
-    {"ambient", ParameterType::Bool, "true",
-     "add POV's ambient term (ambient x pigment x ambient_light x opacity)"},
-    {"specular", ParameterType::Bool, "true",
-     "include the glossy lobes (phong, specular); false: diffuse only"},
+    {"ambient", ParameterType::Bool, "true", "add POV's ambient term (ambient x pigment x ambient_light x opacity)"},
+    {"specular", ParameterType::Bool, "true", "include the glossy lobes (phong, specular); false: diffuse only"},
 };
 
 std::unique_ptr<Integrator> create(const ParameterSet& parameters) {

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "lancer/host/scene_compiler.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/scene_graph.h"
 
 namespace lancer::test {
@@ -17,15 +17,14 @@ namespace {
 
 // raycast's shading hit by hit, through the SDK's default batch.
 class HitByHit final : public Integrator {
-public:
+  public:
     explicit HitByHit(const Integrator& inner) : m_inner(inner) {}
-    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
-                           Sampler& sampler) const override {
+    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene, Sampler& sampler) const override {
         return m_inner.shade_camera_hit(ray, hit, scene, sampler);
     }
     bool is_deterministic() const override { return m_inner.is_deterministic(); }
 
-private:
+  private:
     const Integrator& m_inner;
 };
 

@@ -39,12 +39,12 @@ namespace {
 using namespace lancer;
 
 class ShadowIntegrator final : public Integrator {
-public:
+  public:
     ShadowIntegrator(int area_samples, bool with_ambient)
         : m_area_samples(area_samples), m_with_ambient(with_ambient) {}
 
     Color shade_camera_hit(const Ray& ray, const Hit* found, const RenderScene& scene,
-                            Sampler& sampler) const override {
+                           Sampler& sampler) const override {
         if (!found) return scene.background(ray);
         const Hit& hit = *found;
         const ShadingContext at = make_shading_context(hit, ray);
@@ -62,7 +62,7 @@ public:
 
     bool is_deterministic() const override { return m_area_samples == 0; }
 
-private:
+  private:
     // Mean over area_samples points of the light's surface, each behind its
     // own shadow ray: the Monte Carlo estimate of the lamp's direct light.
     Color sampled_area_light(const RenderScene& scene, const ShadingContext& at, const Light& light,
@@ -87,8 +87,7 @@ const ParameterDecl kParameters[] = {
     {"area_samples", ParameterType::Int, "0",
      "0: area lights through their point proxy (hard shadows); N > 0: N surface samples per "
      "area light (soft shadows)"},
-    {"ambient", ParameterType::Bool, "true",
-     "add POV's ambient term (ambient x pigment x ambient_light x opacity)"},
+    {"ambient", ParameterType::Bool, "true", "add POV's ambient term (ambient x pigment x ambient_light x opacity)"},
 };
 
 std::unique_ptr<Integrator> create(const ParameterSet& parameters) {

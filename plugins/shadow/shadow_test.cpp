@@ -1,6 +1,6 @@
 // The shadow integrator against scenes whose shadows geometry predicts.
-#include "lancer/host/scene_compiler.h"
 #include <cmath>
+#include "lancer/host/scene_compiler.h"
 
 #include "../seed_integrators_test.h"
 
@@ -34,7 +34,9 @@ double analytic_shadow_radius() {
 
 // The ground at (x, 0, 0) seen from the side (a ray in the plane x = const,
 // which passes under the sphere), so the ray itself never meets the sphere.
-Ray ray_to_ground(double x) { return ray_towards(Vec3(float(x), 1.0f, -5.0f), Vec3(float(x), 0.0f, 0.0f)); }
+Ray ray_to_ground(double x) {
+    return ray_towards(Vec3(float(x), 1.0f, -5.0f), Vec3(float(x), 0.0f, 0.0f));
+}
 
 // Default material: white, ambient 0.1, diffuse 0.6. A point light of colour
 // C gives radiance 0.6 * C * cos / d^2 on it (light.h's units).

@@ -49,9 +49,8 @@ using namespace lancer;
 constexpr std::int64_t kMaxDepth = 256;
 
 class WhittedIntegrator final : public Integrator {
-public:
-    WhittedIntegrator(int max_depth, bool fresnel, bool additive_reflection)
-        : m_requested_depth(max_depth) {
+  public:
+    WhittedIntegrator(int max_depth, bool fresnel, bool additive_reflection) : m_requested_depth(max_depth) {
         m_options.fresnel = fresnel;
         m_options.additive_reflection = additive_reflection;
     }
@@ -62,10 +61,8 @@ public:
         m_options.min_weight = scene.options().adc_bailout;
     }
 
-    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene,
-                           Sampler& sampler) const override {
-        const auto lights_with_shadows = [&scene](const ShadingContext& at, const Color& diffuse_scale,
-                                                  Sampler&) {
+    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene, Sampler& sampler) const override {
+        const auto lights_with_shadows = [&scene](const ShadingContext& at, const Color& diffuse_scale, Sampler&) {
             // A perfect mirror without highlights needs no shadow rays.
             if (is_black(diffuse_scale) && !at.material.has_glossy()) return LobeRadiance{};
             LobeRadiance local = simple_direct_light(scene, at, Shadows::Hard);
@@ -77,7 +74,7 @@ public:
 
     bool is_deterministic() const override { return true; }
 
-private:
+  private:
     int m_requested_depth;
     SpecularOptions m_options;
 };
@@ -87,8 +84,7 @@ const ParameterDecl kParameters[] = {
      "deepest ray level (camera ray = 1), at most 256; 0: the scene's max_trace_level"},
     {"fresnel", ParameterType::Bool, "false",
      "Fresnel split of transparent surfaces (reflect F, transmit 1-F); false: fixed coefficients"},
-    {"additive_reflection", ParameterType::Bool, "false",
-     "POV-Ray's sum: reflection does not remove the diffuse term"},
+    {"additive_reflection", ParameterType::Bool, "false", "POV-Ray's sum: reflection does not remove the diffuse term"},
 };
 
 std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
@@ -96,8 +92,7 @@ std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
     if (max_depth < 0 || max_depth > kMaxDepth)
         throw std::invalid_argument("whitted: max_depth must lie in [0, " + std::to_string(kMaxDepth) + "], got " +
                                     std::to_string(max_depth));
-    return std::make_unique<WhittedIntegrator>(static_cast<int>(max_depth),
-                                               parameters.get_bool("fresnel", false),
+    return std::make_unique<WhittedIntegrator>(static_cast<int>(max_depth), parameters.get_bool("fresnel", false),
                                                parameters.get_bool("additive_reflection", false));
 }
 

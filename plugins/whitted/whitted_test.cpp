@@ -1,7 +1,7 @@
 // The whitted integrator on scenes with known answers: invisible glass,
 // mirrors, total internal reflection, POV-Ray's depth and bailout limits.
-#include "lancer/host/scene_compiler.h"
 #include <cmath>
+#include "lancer/host/scene_compiler.h"
 
 #include "../seed_integrators_test.h"
 
@@ -16,13 +16,13 @@ sg::SceneGraph room(std::optional<sg::Object> extra) {
     sg::SceneGraph graph;
     graph.camera = camera({0.0, 1.5, -5.0}, {0.0, -0.2, 1.0});
     graph.objects.push_back(plane({0.0, 1.0, 0.0}, 0.0, material([](sg::Material& m) {
-        m.pigment.kind = sg::Pigment::Kind::Checker;
-        m.finish.specular = 0.3;
-    })));
+                                      m.pigment.kind = sg::Pigment::Kind::Checker;
+                                      m.finish.specular = 0.3;
+                                  })));
     graph.objects.push_back(plane({0.0, 0.0, -1.0}, -4.0, material([](sg::Material& m) {
-        m.pigment.color.rgb = {0.8, 0.4, 0.2};
-        m.finish.phong = 0.4;
-    })));
+                                      m.pigment.color.rgb = {0.8, 0.4, 0.2};
+                                      m.finish.phong = 0.4;
+                                  })));
     graph.lights.push_back(point_light({-2.0, 6.0, -4.0}, sg::Vec3(60.0)));
     graph.lights.push_back(square_light({2.0, 5.0, 0.0}, 1.0, sg::Vec3(20.0)));
     if (extra) graph.objects.push_back(*extra);
@@ -33,9 +33,9 @@ TEST(WhittedIntegrator, FullyTransmittingSphereWithIorOneIsInvisible) {
     // Default finish (diffuse 0.6, ambient 0.1): a transparent object has no
     // diffuse, no ambient and casts no shadow.
     sg::Object glass = sphere({0.0, 1.0, 0.0}, 1.0, material([](sg::Material& m) {
-        m.pigment.color.transmit = 1.0;
-        m.interior.ior = 1.0;
-    }));
+                                  m.pigment.color.transmit = 1.0;
+                                  m.interior.ior = 1.0;
+                              }));
     const auto with_sphere = compile_scene(room(glass));
     const auto without_sphere = compile_scene(room(std::nullopt));
     const auto whitted = load_integrator("whitted", *with_sphere);
@@ -44,7 +44,8 @@ TEST(WhittedIntegrator, FullyTransmittingSphereWithIorOneIsInvisible) {
     float largest_difference = 0.0f;
     for (int y = 0; y < 24; ++y)
         for (int x = 0; x < 32; ++x)
-            largest_difference = glm::max(largest_difference, max_component(glm::abs(seen.mean(x, y) - reference.mean(x, y))));
+            largest_difference =
+                glm::max(largest_difference, max_component(glm::abs(seen.mean(x, y) - reference.mean(x, y))));
     EXPECT_LT(largest_difference, 1e-4f);
 }
 
@@ -75,9 +76,8 @@ TEST(WhittedIntegrator, MirrorShowsWallColourTimesReflectance) {
 TEST(WhittedIntegrator, MirrorShowsNoDiffuse) {
     // reflection 1 with POV's default diffuse 0.6 and ambient 0.1, lit from
     // above: the seed's mirror shows only the wall.
-    const auto scene = compile_scene(mirror_facing_wall(material([](sg::Material& m) {
-        m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(1.0);
-    })));
+    const auto scene = compile_scene(mirror_facing_wall(
+        material([](sg::Material& m) { m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(1.0); })));
     const auto whitted = load_integrator("whitted", *scene);
     const Color seen = mean_radiance(*whitted, *scene, kDownAt45);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], float(kWallColour[c]), 1e-5f) << "channel " << c;
@@ -95,11 +95,11 @@ sg::SceneGraph glass_slab() {
     sg::SceneGraph graph;
     graph.background = {1.0, 0.0, 0.0};
     graph.objects.push_back(box({-100.0, -1.0, -100.0}, {100.0, 0.0, 100.0}, material([](sg::Material& m) {
-        m.pigment.color.transmit = 1.0;
-        m.finish.ambient = sg::Vec3(0.0);
-        m.finish.diffuse = 0.0;
-        m.interior.ior = 1.5;
-    })));
+                                    m.pigment.color.transmit = 1.0;
+                                    m.finish.ambient = sg::Vec3(0.0);
+                                    m.finish.diffuse = 0.0;
+                                    m.interior.ior = 1.5;
+                                })));
     graph.objects.push_back(sphere({10.0, -0.5, 0.0}, 0.3, flat_colour({0.0, 1.0, 0.0})));
     graph.objects.push_back(plane({0.0, 1.0, 0.0}, -2.0, flat_colour({0.0, 0.0, 0.0})));
     return graph;
@@ -136,13 +136,13 @@ TEST(WhittedIntegrator, FresnelGlassWithFresnelReflectionReflectsOnce) {
     sg::SceneGraph graph;
     graph.background = {1.0, 1.0, 1.0};
     graph.objects.push_back(box({-10.0, -1.0, -10.0}, {10.0, 0.0, 10.0}, material([](sg::Material& m) {
-        m.pigment.color.filter = 1.0;
-        m.finish.ambient = sg::Vec3(0.0);
-        m.finish.diffuse = 0.0;
-        m.finish.reflection.max = sg::Vec3(1.0);
-        m.finish.reflection.fresnel = true;
-        m.interior.ior = 1.5;
-    })));
+                                    m.pigment.color.filter = 1.0;
+                                    m.finish.ambient = sg::Vec3(0.0);
+                                    m.finish.diffuse = 0.0;
+                                    m.finish.reflection.max = sg::Vec3(1.0);
+                                    m.finish.reflection.fresnel = true;
+                                    m.interior.ior = 1.5;
+                                })));
     graph.objects.push_back(plane({0.0, 1.0, 0.0}, -2.0, flat_colour({0.0, 0.0, 0.0})));
     const auto scene = compile_scene(graph);
     const auto whitted = load_integrator("whitted", *scene, {{"fresnel", "true"}});

@@ -15,17 +15,17 @@
 namespace {
 
 class Silhouette final : public lancer::Integrator {
-public:
+  public:
     explicit Silhouette(float level) : m_level(level) {}
 
-    lancer::Color shade_camera_hit(const lancer::Ray& ray, const lancer::Hit* hit,
-                                   const lancer::RenderScene& scene, lancer::Sampler&) const override {
+    lancer::Color shade_camera_hit(const lancer::Ray& ray, const lancer::Hit* hit, const lancer::RenderScene& scene,
+                                   lancer::Sampler&) const override {
         return hit != nullptr ? lancer::Color(m_level) : scene.background(ray);
     }
 
     bool is_deterministic() const override { return true; }
 
-private:
+  private:
     float m_level;
 };
 
@@ -38,8 +38,8 @@ std::unique_ptr<lancer::Integrator> create(const lancer::ParameterSet& parameter
 }
 
 const lancer::IntegratorDescriptor kDescriptor = {
-    lancer::kPluginAbiVersion, "silhouette", "flat grey where a surface is hit (out-of-tree sample)",
-    kParameters, std::size(kParameters), &create,
+    lancer::kPluginAbiVersion, "silhouette", "flat grey where a surface is hit (out-of-tree sample)", kParameters,
+    std::size(kParameters),    &create,
 };
 
 }  // namespace

@@ -5,14 +5,16 @@
 namespace {
 
 class Black final : public lancer::Integrator {
-public:
+  public:
     lancer::Color shade_camera_hit(const lancer::Ray&, const lancer::Hit*, const lancer::RenderScene&,
                                    lancer::Sampler&) const override {
         return lancer::Color(0.0f);
     }
 };
 
-std::unique_ptr<lancer::Integrator> create(const lancer::ParameterSet&) { return std::make_unique<Black>(); }
+std::unique_ptr<lancer::Integrator> create(const lancer::ParameterSet&) {
+    return std::make_unique<Black>();
+}
 
 const lancer::IntegratorDescriptor kDescriptor = {
     lancer::kPluginAbiVersion, "something_else", "name differs from file", nullptr, 0, &create,

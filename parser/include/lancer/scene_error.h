@@ -11,12 +11,12 @@
 namespace lancer {
 
 class SceneError : public std::runtime_error {
-public:
+  public:
     SceneError(sg::SourceLocation location, const std::string& message)
         : std::runtime_error(message), m_location(std::move(location)) {}
     const sg::SourceLocation& location() const { return m_location; }
 
-private:
+  private:
     sg::SourceLocation m_location;
 };
 

@@ -26,8 +26,8 @@ using Mat4 = glm::dmat4;  // column-major, acts on column vectors (GLM)
 
 struct SourceLocation {
     std::shared_ptr<const std::string> file;  // path as the user named it
-    int line = 0;                              // 1-based; 0 = unknown
-    int column = 0;                            // 1-based
+    int line = 0;                             // 1-based; 0 = unknown
+    int column = 0;                           // 1-based
 };
 
 // A colour with POV-Ray's optional filter and transmit channels.
@@ -51,20 +51,20 @@ struct ImageMap {
     // what a user of meshes and OBJ files expects; an explicit map_type
     // selects POV-Ray's projections.
     MapType map_type = MapType::UV;
-    int interpolate = 2;    // 0 none, 2 bilinear, 4 normalized distance (POV)
-    bool once = false;      // no repeat outside [0,1]^2
+    int interpolate = 2;  // 0 none, 2 bilinear, 4 normalized distance (POV)
+    bool once = false;    // no repeat outside [0,1]^2
     double filter_all = 0.0;
     double transmit_all = 0.0;
-    bool srgb = true;       // 8-bit formats are sRGB-encoded; EXR/HDR are linear
+    bool srgb = true;  // 8-bit formats are sRGB-encoded; EXR/HDR are linear
     SourceLocation location;
 };
 
 struct Pigment {
     enum class Kind { Solid, Checker, Image };
     Kind kind = Kind::Solid;
-    Color color;                 // Solid; POV default pigment is black
+    Color color;                                              // Solid; POV default pigment is black
     Color checker[2] = {{Vec3(1.0)}, {Vec3(0.0, 1.0, 0.0)}};  // POV defaults: white, green
-    ImageMap image;              // Image
+    ImageMap image;                                           // Image
     // Pigment-space transform (scale/rotate/translate written inside the
     // pigment or texture); maps object space to pattern space.
     Mat4 pattern_from_object{1.0};
@@ -72,10 +72,10 @@ struct Pigment {
 };
 
 struct Reflection {
-    Vec3 min{0.0};          // reflectance at normal incidence ...
-    Vec3 max{0.0};          // ... and at grazing incidence
-    double falloff = 1.0;   // POV's falloff exponent
-    bool fresnel = false;   // use the interior's ior instead of falloff
+    Vec3 min{0.0};         // reflectance at normal incidence ...
+    Vec3 max{0.0};         // ... and at grazing incidence
+    double falloff = 1.0;  // POV's falloff exponent
+    bool fresnel = false;  // use the interior's ior instead of falloff
     double exponent = 1.0;
     double metallic = 0.0;
 };
@@ -83,12 +83,12 @@ struct Reflection {
 // Finish defaults are POV-Ray 3.7's (texture.cpp:Create_Finish).
 struct Finish {
     Vec3 ambient{0.1};
-    Vec3 emission{0.0};     // radiance emitted = emission * pigment colour
+    Vec3 emission{0.0};  // radiance emitted = emission * pigment colour
     double diffuse = 0.6;
     double brilliance = 1.0;
     double specular = 0.0;  // Blinn lobe albedo
     double roughness = 0.05;
-    double phong = 0.0;     // Phong lobe albedo
+    double phong = 0.0;  // Phong lobe albedo
     double phong_size = 40.0;
     double metallic = 0.0;
     Reflection reflection;
@@ -172,13 +172,13 @@ struct Object {
 struct Light {
     enum class Kind { Point, Directional, AreaRectangle, AreaSphere };
     Kind kind = Kind::Point;
-    Vec3 position{0.0};     // world space, transforms applied
-    Vec3 color{1.0};        // see docs/scene-language.md for the unit
+    Vec3 position{0.0};            // world space, transforms applied
+    Vec3 color{1.0};               // see docs/scene-language.md for the unit
     Vec3 point_at{0.0, 0.0, 1.0};  // Directional: light travels position -> point_at
     // AreaRectangle: the rectangle position ± axis1/2 ± axis2/2.
     Vec3 axis1{0.0};
     Vec3 axis2{0.0};
-    int samples1 = 1;   // POV's n1, n2: accepted, used as a sampling hint
+    int samples1 = 1;  // POV's n1, n2: accepted, used as a sampling hint
     int samples2 = 1;
     bool jitter = false;
     int adaptive = 0;

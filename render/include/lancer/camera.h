@@ -9,14 +9,12 @@
 namespace lancer {
 
 class Camera {
-public:
+  public:
     enum class Projection { Perspective, Orthographic };
 
     Camera() = default;
-    Camera(Projection projection, const Vec3& location, const Vec3& direction, const Vec3& right,
-           const Vec3& up)
-        : m_projection(projection), m_location(location), m_direction(direction),
-          m_right(right), m_up(up) {}
+    Camera(Projection projection, const Vec3& location, const Vec3& direction, const Vec3& right, const Vec3& up)
+        : m_projection(projection), m_location(location), m_direction(direction), m_right(right), m_up(up) {}
 
     // Ray through the film point (x, y) in pixels, (0,0) the top-left corner
     // of the image and (width, height) the bottom-right. Pixel centres are at
@@ -80,7 +78,7 @@ public:
     const Vec3& right() const { return m_right; }
     const Vec3& up() const { return m_up; }
 
-private:
+  private:
     Projection m_projection = Projection::Perspective;
     Vec3 m_location{0.0f};
     Vec3 m_direction{0.0f, 0.0f, 1.0f};

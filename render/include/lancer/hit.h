@@ -11,11 +11,11 @@ class Material;
 class Light;
 
 struct Hit {
-    float t = kInfinity;         // ray parameter of the hit
-    Vec3 position{0.0f};         // world space
-    Vec3 geometric_normal{0.0f}; // unit, the surface's own orientation (not flipped)
-    Vec3 shading_normal{0.0f};   // unit, interpolated (smooth meshes), same side as geometric
-    Vec2 uv{0.0f};               // surface coordinates, see docs/scene-language.md per shape
+    float t = kInfinity;          // ray parameter of the hit
+    Vec3 position{0.0f};          // world space
+    Vec3 geometric_normal{0.0f};  // unit, the surface's own orientation (not flipped)
+    Vec3 shading_normal{0.0f};    // unit, interpolated (smooth meshes), same side as geometric
+    Vec2 uv{0.0f};                // surface coordinates, see docs/scene-language.md per shape
     // Conservative bound on the absolute floating-point error of `position`
     // per axis; spawn_ray offsets by it so new rays never re-hit this surface.
     Vec3 position_error{0.0f};
@@ -23,7 +23,7 @@ struct Hit {
     const Light* emitter = nullptr;      // area light or emissive object, else null
     std::uint32_t object_id = 0;         // index of the world-space instance
     std::uint32_t primitive_id = 0;
-    bool casts_shadow = true;            // false for no_shadow objects
+    bool casts_shadow = true;  // false for no_shadow objects
 
     // Unit normals turned to face the side `toward` (e.g. -ray.direction):
     // POV-Ray surfaces are two-sided.

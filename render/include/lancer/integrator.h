@@ -25,19 +25,18 @@ inline constexpr std::uint32_t kPluginAbiVersion = 5;
 // sample has a stream of its own (a function of seed, pixel and sample
 // index only), already past the host's own draws for the film point.
 class CameraSampleStreams {
-public:
+  public:
     virtual Sampler& stream(int sample) const = 0;
 
-protected:
+  protected:
     ~CameraSampleStreams() = default;
 };
 
 // Camera rays the host traced together, with their nearest hits: sample i
 // looks along ray(i) and finds hit(i), null when the ray escaped.
 class CameraHits {
-public:
-    CameraHits(int count, const Ray* rays, const Hit* hits, const bool* found,
-               const CameraSampleStreams& streams)
+  public:
+    CameraHits(int count, const Ray* rays, const Hit* hits, const bool* found, const CameraSampleStreams& streams)
         : m_count(count), m_rays(rays), m_hits(hits), m_found(found), m_streams(&streams) {}
 
     int count() const { return m_count; }
@@ -47,7 +46,7 @@ public:
     // integrator that draws no random numbers should not ask for it.
     Sampler& sampler(int i) const { return m_streams->stream(i); }
 
-private:
+  private:
     int m_count;
     const Ray* m_rays;
     const Hit* m_hits;
@@ -56,7 +55,7 @@ private:
 };
 
 class Integrator {
-public:
+  public:
     virtual ~Integrator() = default;
     // Once per render, before any shading (precomputation). The scene is the
     // one every later call receives.
@@ -72,8 +71,7 @@ public:
     // shade_camera_hit() for each, with its own stream. An integrator may
     // override it to shade the batch in one loop (raycast shades many hits
     // lane by lane); the result must equal shade_camera_hit()'s bit for bit.
-    virtual void shade_camera_hits(const CameraHits& batch, const RenderScene& scene,
-                                   Color* radiance) const {
+    virtual void shade_camera_hits(const CameraHits& batch, const RenderScene& scene, Color* radiance) const {
         for (int i = 0; i < batch.count(); ++i)
             radiance[i] = shade_camera_hit(batch.ray(i), batch.hit(i), scene, batch.sampler(i));
     }
@@ -81,9 +79,7 @@ public:
     // then traces the pixel centre; more samples antialias.
     virtual bool is_deterministic() const { return false; }
     // The kind of sampler behind every stream; one per thread, cloned.
-    virtual std::unique_ptr<Sampler> make_sampler(std::uint64_t seed) const {
-        return make_independent_sampler(seed);
-    }
+    virtual std::unique_ptr<Sampler> make_sampler(std::uint64_t seed) const { return make_independent_sampler(seed); }
 };
 
 struct IntegratorDescriptor {
@@ -98,8 +94,8 @@ struct IntegratorDescriptor {
 
 }  // namespace lancer
 
-#define LANCER_EXPORT_INTEGRATOR(descriptor)                                                  \
-    extern "C" __attribute__((visibility("default"))) const ::lancer::IntegratorDescriptor*  \
-    lancer_integrator_descriptor() {                                                         \
-        return &(descriptor);                                                                \
+#define LANCER_EXPORT_INTEGRATOR(descriptor)                                                \
+    extern "C" __attribute__((visibility("default"))) const ::lancer::IntegratorDescriptor* \
+    lancer_integrator_descriptor() {                                                        \
+        return &(descriptor);                                                               \
     }

@@ -16,16 +16,16 @@ namespace lancer {
 // A direct-lighting estimate is f(wo, wi) * |cos(n, wi)| * radiance / pdf,
 // counted only if the shadow ray from p to `point` is unoccluded.
 struct LightSample {
-    Color radiance{0.0f};  // incident radiance (delta lights: intensity * attenuation)
-    Vec3 wi{0.0f};         // unit, from p towards the light
-    float distance = 0.0f; // from p to `point` (infinite for directional)
-    Vec3 point{0.0f};      // the sampled point (directional: far along wi)
-    float pdf = 0.0f;      // solid-angle density; 1 for delta lights; 0 = no sample
+    Color radiance{0.0f};   // incident radiance (delta lights: intensity * attenuation)
+    Vec3 wi{0.0f};          // unit, from p towards the light
+    float distance = 0.0f;  // from p to `point` (infinite for directional)
+    Vec3 point{0.0f};       // the sampled point (directional: far along wi)
+    float pdf = 0.0f;       // solid-angle density; 1 for delta lights; 0 = no sample
     bool is_delta = false;
 };
 
 class Light {
-public:
+  public:
     enum class Kind { Point, Directional, Rectangle, Sphere, EmissiveShape };
 
     virtual ~Light() = default;
@@ -61,7 +61,7 @@ public:
         return static_cast<const Parameters*>(parameters_of(Parameters::kKind));
     }
 
-protected:
+  protected:
     // The parameter struct of `kind` when this light is of that kind.
     virtual const void* parameters_of(Kind kind) const { return nullptr; }
 };
@@ -73,8 +73,8 @@ struct PointLightParameters {
     Color intensity{0.0f};       // radiant intensity (W/sr) on the pattern's axis
     float fade_distance = 0.0f;  // POV's fade; 0: inverse-square falloff
     float fade_power = 0.0f;
-    Vec3 pattern_axis{0.0f};     // non-zero: a cosine pattern about it (proxies of flat emitters)
-    bool one_sided = false;      // pattern max(0, cos) rather than |cos|
+    Vec3 pattern_axis{0.0f};  // non-zero: a cosine pattern about it (proxies of flat emitters)
+    bool one_sided = false;   // pattern max(0, cos) rather than |cos|
 
     // Falls off as 1/d^2 in every direction: sample() is plain_point_incidence's
     // arithmetic wherever in_plain_point_range(d^2).

@@ -26,13 +26,12 @@
 
 namespace lancer {
 
-
 // Everything a material needs to know about one hit, with the pigment
 // already looked up.
 struct SurfaceSample {
-    Color pigment{0.0f};   // rgb of the pigment at the hit (linear)
-    float filter = 0.0f;   // pigment's filter at the hit
-    float transmit = 0.0f; // pigment's transmit at the hit
+    Color pigment{0.0f};    // rgb of the pigment at the hit (linear)
+    float filter = 0.0f;    // pigment's filter at the hit
+    float transmit = 0.0f;  // pigment's transmit at the hit
 };
 
 struct MaterialParameters {
@@ -62,7 +61,7 @@ inline float diffuse_lobe_weight(float diffuse, float opacity, float shape) {
 }
 
 class Material {
-public:
+  public:
     explicit Material(const MaterialParameters& parameters);
 
     const MaterialParameters& parameters() const { return m_params; }
@@ -105,8 +104,7 @@ public:
         return diffuse_lobe_weight(m_params.diffuse, opacity, shape) * surface.pigment;
     }
     // The glossy part alone (phong + specular).
-    Color glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo,
-                      const Vec3& wi) const;
+    Color glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const;
 
     // Mirror reflectance for cos_i = dot(n, wo) (POV's reflection block; with
     // fresnel, Fresnel of ior scaled between min and max). Zero: no mirror.
@@ -117,7 +115,7 @@ public:
     bool has_glossy() const { return m_params.phong > 0.0f || m_params.specular > 0.0f; }
     bool is_emissive() const { return max_component(m_params.emission) > 0.0f; }
 
-private:
+  private:
     MaterialParameters m_params;
     float m_blinn_normalization;  // c(k) of the Blinn lobe, see above
     // A pigment that does not vary, looked up once: sample_surface then
@@ -131,7 +129,9 @@ private:
 float blinn_normalization(float exponent);
 
 // Reflect `d` (pointing at the surface) about unit normal n.
-inline Vec3 reflect(const Vec3& d, const Vec3& n) { return d - 2.0f * glm::dot(d, n) * n; }
+inline Vec3 reflect(const Vec3& d, const Vec3& n) {
+    return d - 2.0f * glm::dot(d, n) * n;
+}
 // Refract `d` (unit, pointing at the surface) through unit n (facing against
 // d) with eta = n_incident / n_transmitted. False on total internal reflection.
 bool refract(const Vec3& d, const Vec3& n, float eta, Vec3& transmitted);

@@ -21,7 +21,7 @@ struct ParameterDecl {
 // Values already validated against the declarations by the host: every
 // name is declared and every value parses as its type.
 class ParameterSet {
-public:
+  public:
     void set(const std::string& name, const std::string& value) { m_values[name] = value; }
     bool has(const std::string& name) const { return m_values.count(name) != 0; }
 
@@ -32,7 +32,7 @@ public:
 
     const std::map<std::string, std::string>& values() const { return m_values; }
 
-private:
+  private:
     std::map<std::string, std::string> m_values;
 };
 

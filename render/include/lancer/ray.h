@@ -27,8 +27,14 @@ struct Ray {
     Vec3 at(float t) const { return origin + t * direction; }
 };
 
-inline float max_component(const Color& c) { return glm::max(c.r, glm::max(c.g, c.b)); }
-inline float luminance(const Color& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-inline bool is_black(const Color& c) { return c.r == 0.0f && c.g == 0.0f && c.b == 0.0f; }
+inline float max_component(const Color& c) {
+    return glm::max(c.r, glm::max(c.g, c.b));
+}
+inline float luminance(const Color& c) {
+    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+}
+inline bool is_black(const Color& c) {
+    return c.r == 0.0f && c.g == 0.0f && c.b == 0.0f;
+}
 
 }  // namespace lancer

@@ -22,7 +22,7 @@ struct Bounds {
 };
 
 struct SceneOptions {
-    int max_trace_level = 5;      // global_settings max_trace_level
+    int max_trace_level = 5;  // global_settings max_trace_level
     float adc_bailout = 1.0f / 255.0f;
     Color ambient_light{1.0f};
 };
@@ -30,7 +30,7 @@ struct SceneOptions {
 enum class RayCoherence { Incoherent, Coherent };
 
 class RenderScene {
-public:
+  public:
     virtual ~RenderScene() = default;
 
     // Nearest hit along the ray within [t_min, t_max]; false if none.
@@ -39,8 +39,7 @@ public:
     // was filled. The results are intersect()'s, bit for bit. Coherent rays
     // (neighbouring camera rays, nearly parallel) are traced in packets,
     // which is faster than one by one; incoherent ones (bounces) one by one.
-    virtual void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found,
-                                 RayCoherence coherence) const {
+    virtual void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found, RayCoherence coherence) const {
         for (int i = 0; i < count; ++i) found[i] = intersect(rays[i], hits[i]);
     }
     // True if any shadow-casting surface lies within [t_min, t_max]. Area

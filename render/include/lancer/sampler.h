@@ -11,7 +11,7 @@
 namespace lancer {
 
 class Sampler {
-public:
+  public:
     virtual ~Sampler() = default;
     // Position the sampler at one sample of one pixel; resets the dimension.
     virtual void start_sample(int pixel_x, int pixel_y, std::uint32_t sample_index) = 0;

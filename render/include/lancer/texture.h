@@ -11,13 +11,13 @@
 namespace lancer {
 
 struct TextureSample {
-    Color rgb{0.0f};       // linear
+    Color rgb{0.0f};  // linear
     float filter = 0.0f;
     float transmit = 0.0f;
 };
 
 class Texture {
-public:
+  public:
     virtual ~Texture() = default;
     // The pigment at a hit returned by RenderScene::intersect (or built by a
     // light sampler on the same object; object_id must be valid).

@@ -58,7 +58,7 @@ void put(std::string& out, const T& value) {
 
 // Reads from a byte buffer, failing cleanly past its end.
 class Reader {
-public:
+  public:
     explicit Reader(const std::string& bytes) : m_bytes(bytes) {}
     template <typename T>
     bool get(T& value) {
@@ -75,14 +75,16 @@ public:
     }
     std::size_t offset() const { return m_offset; }
 
-private:
+  private:
     const std::string& m_bytes;
     std::size_t m_offset = 0;
 };
 
 }  // namespace
 
-std::string checkpoint_path_for(const std::string& output) { return output + ".lancer-checkpoint"; }
+std::string checkpoint_path_for(const std::string& output) {
+    return output + ".lancer-checkpoint";
+}
 
 std::string content_hash_of_file(const std::string& path) {
     std::ifstream file(path, std::ios::binary);
@@ -144,9 +146,7 @@ void read_checkpoint(const std::string& path, const CheckpointIdentity& expected
     std::ifstream file(path, std::ios::binary);
     if (!file) throw CheckpointError("cannot resume: no checkpoint '" + path + "'");
     const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    auto corrupt = [&](const std::string& why) {
-        throw CheckpointError("cannot resume from '" + path + "': " + why);
-    };
+    auto corrupt = [&](const std::string& why) { throw CheckpointError("cannot resume from '" + path + "': " + why); };
 
     // Header and integrity.
     if (bytes.size() < sizeof kMagic + 8 || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)

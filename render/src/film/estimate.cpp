@@ -9,9 +9,13 @@
 namespace lancer {
 namespace {
 
-PixelWindow whole(const Film& film) { return {0, 0, film.width(), film.height()}; }
+PixelWindow whole(const Film& film) {
+    return {0, 0, film.width(), film.height()};
+}
 
-bool empty(const PixelWindow& window) { return window.x1 <= window.x0 || window.y1 <= window.y0; }
+bool empty(const PixelWindow& window) {
+    return window.x1 <= window.x0 || window.y1 <= window.y0;
+}
 
 }  // namespace
 
@@ -20,11 +24,14 @@ double pixel_relative_variance(const Film& film, int x, int y) {
     const Color mean = film.mean(x, y);
     const Color variance = film.variance_of_mean(x, y);
     double sum = 0.0;
-    for (int c = 0; c < 3; ++c) sum += double(variance[c]) / (double(mean[c]) * double(mean[c]) + kRelativeErrorEpsilon);
+    for (int c = 0; c < 3; ++c)
+        sum += double(variance[c]) / (double(mean[c]) * double(mean[c]) + kRelativeErrorEpsilon);
     return sum / 3.0;
 }
 
-double estimated_relative_rmse(const Film& film) { return estimated_relative_rmse(film, whole(film)); }
+double estimated_relative_rmse(const Film& film) {
+    return estimated_relative_rmse(film, whole(film));
+}
 
 double estimated_relative_rmse(const Film& film, const PixelWindow& window) {
     if (empty(window)) return 0.0;
@@ -34,7 +41,9 @@ double estimated_relative_rmse(const Film& film, const PixelWindow& window) {
     return std::sqrt(sum / (double(window.x1 - window.x0) * double(window.y1 - window.y0)));
 }
 
-double relative_rmse(const Film& image, const Film& reference) { return relative_rmse(image, reference, whole(image)); }
+double relative_rmse(const Film& image, const Film& reference) {
+    return relative_rmse(image, reference, whole(image));
+}
 
 double relative_rmse(const Film& image, const Film& reference, const PixelWindow& window) {
     if (image.width() != reference.width() || image.height() != reference.height())

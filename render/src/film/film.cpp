@@ -30,8 +30,9 @@ Color Film::variance_of_mean(int x, int y) const {
     return Color(variance / n);
 }
 
-std::uint32_t Film::sample_count(int x, int y) const { return at(x, y).count; }
-
+std::uint32_t Film::sample_count(int x, int y) const {
+    return at(x, y).count;
+}
 
 void Film::restore(std::vector<Accumulator> accumulators) {
     if (accumulators.size() != m_pixels.size())

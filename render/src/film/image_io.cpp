@@ -58,7 +58,7 @@ void write_image(const Film& film, const std::string& path, const ImageWriteOpti
     if (!is_supported_image_extension(path))
         throw std::runtime_error("cannot write '" + path + "': unknown image extension '" + ext +
                                  "' (use .png, .exr, .hdr, .tif or .tiff)");
-    const Encoding encoding = ext == ".png"                   ? Encoding::Srgb8
+    const Encoding encoding = ext == ".png"                       ? Encoding::Srgb8
                               : (ext == ".tif" || ext == ".tiff") ? Encoding::Srgb16
                                                                   : Encoding::LinearFloat;
     const bool sample_channel = options.sample_count_channel && ext == ".exr";

@@ -25,7 +25,9 @@ std::string lower_extension(const std::string& path) {
 }
 
 // Formats that store display-encoded values rather than linear radiance.
-bool is_srgb_encoded(const std::string& ext) { return ext == ".png" || ext == ".tif" || ext == ".tiff"; }
+bool is_srgb_encoded(const std::string& ext) {
+    return ext == ".png" || ext == ".tif" || ext == ".tiff";
+}
 
 }  // namespace
 
@@ -48,8 +50,8 @@ RgbImage read_rgb_image(const std::string& path) {
     RgbImage image(spec.width, spec.height);
     for (std::size_t i = 0; i < image.pixels.size(); ++i) {
         const float* p = &values[i * spec.nchannels];
-        image.pixels[i] = decode ? Color(srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2]))
-                                 : Color(p[0], p[1], p[2]);
+        image.pixels[i] =
+            decode ? Color(srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2])) : Color(p[0], p[1], p[2]);
     }
     return image;
 }
@@ -68,9 +70,9 @@ void write_rgb_image(const RgbImage& image, const std::string& path) {
     // format from it) and a failure leaves no partial file under the name.
     static std::atomic<unsigned> counter{0};
     const fs::path target(path);
-    const fs::path temporary = target.parent_path() / ("." + target.stem().string() + ".tmp" +
-                                                       std::to_string(::getpid()) + "-" +
-                                                       std::to_string(counter++) + ext);
+    const fs::path temporary =
+        target.parent_path() /
+        ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ext);
     OIIO::ImageSpec spec(image.width, image.height, 3, encode ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
     auto output = OIIO::ImageOutput::create(temporary.string());
     if (!output || !output->open(temporary.string(), spec))

@@ -20,8 +20,8 @@ static void ray_lane_to_object(const Instance& instance, RTCRayN* rays, unsigned
     ray_to_object(instance, org, dir, o, d);
 }
 
-bool intersect_analytic(const Instance& instance, const DVec3& o, const DVec3& d, double t_min, double t_max,
-                        double& t, int& face) {
+bool intersect_analytic(const Instance& instance, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t,
+                        int& face) {
     face = 0;
     switch (instance.kind) {
     case ShapeKind::Sphere: return intersect_sphere(instance.sphere, o, d, t_min, t_max, t);

@@ -63,9 +63,7 @@ SurfaceGeometry box_surface(const AnalyticBox& b, const DVec3& p, int face) {
     const int u_axis = axis == 0 ? 2 : 0;
     const int v_axis = axis == 1 ? 2 : 1;
     const DVec3 extent = b.upper - b.lower;
-    auto fraction = [&](int a) {
-        return extent[a] > 0.0 ? (g.point[a] - b.lower[a]) / extent[a] : 0.0;
-    };
+    auto fraction = [&](int a) { return extent[a] > 0.0 ? (g.point[a] - b.lower[a]) / extent[a] : 0.0; };
     g.uv = Vec2(float(fraction(u_axis)), float(fraction(v_axis)));
     return g;
 }

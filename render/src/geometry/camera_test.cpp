@@ -50,8 +50,7 @@ TEST(Camera, PixelCentresAreAtHalfIntegers) {
 }
 
 TEST(Camera, OrthographicRaysAreParallelFromTheImagePlane) {
-    const Camera camera(Camera::Projection::Orthographic, Vec3(0, 0, -5), Vec3(0, 0, 1), Vec3(4, 0, 0),
-                        Vec3(0, 3, 0));
+    const Camera camera(Camera::Projection::Orthographic, Vec3(0, 0, -5), Vec3(0, 0, 1), Vec3(4, 0, 0), Vec3(0, 3, 0));
     const Ray a = camera.generate_ray(0.0f, 0.0f, 4, 3);
     const Ray b = camera.generate_ray(4.0f, 3.0f, 4, 3);
     EXPECT_EQ(a.direction, Vec3(0, 0, 1));

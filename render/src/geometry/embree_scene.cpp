@@ -68,8 +68,8 @@ void EmbreeScene::build() {
     }();
     m_has_no_shadow_mesh = any_no_shadow_mesh;
     m_scene = rtcNewScene(m_device);
-    rtcSetSceneFlags(m_scene, RTCSceneFlags(kSceneFlags |
-                                            (any_no_shadow_mesh ? RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION : 0)));
+    rtcSetSceneFlags(m_scene,
+                     RTCSceneFlags(kSceneFlags | (any_no_shadow_mesh ? RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION : 0)));
     rtcSetSceneBuildQuality(m_scene, kBuildQuality);
 
     // Analytic kinds present in the scene, one user geometry each.
@@ -136,9 +136,12 @@ void EmbreeScene::build() {
                 instance.face_materials.empty()) {
                 const unsigned id = unsigned(m_geometries.size() - 1);
                 if (m_plain_triangles.size() <= id) m_plain_triangles.resize(id + 1);
-                m_plain_triangles[id] =
-                    PlainTriangles{instance.world_positions.data(), mesh.indices.data(), instance.material,
-                                   emitter_of(instance, instance.material), index, instance.casts_shadow};
+                m_plain_triangles[id] = PlainTriangles{instance.world_positions.data(),
+                                                       mesh.indices.data(),
+                                                       instance.material,
+                                                       emitter_of(instance, instance.material),
+                                                       index,
+                                                       instance.casts_shadow};
             }
             continue;
         }

@@ -76,7 +76,9 @@ struct PacketAnswers {
     unsigned geometry[kMaxLanes], primitive[kMaxLanes], instance[kMaxLanes];
     float u[kMaxLanes], v[kMaxLanes];
 
-    EmbreeHit lane(int k) const { return EmbreeHit{tnear[k], tfar[k], geometry[k], primitive[k], instance[k], u[k], v[k]}; }
+    EmbreeHit lane(int k) const {
+        return EmbreeHit{tnear[k], tfar[k], geometry[k], primitive[k], instance[k], u[k], v[k]};
+    }
 };
 
 // The float vertices Embree traces for a mesh instance: world space for a
@@ -87,8 +89,8 @@ inline const std::vector<float>& traced_positions(const Instance& instance) {
 
 // Analytic shapes as Embree user geometry (analytic_geometry.cpp).
 void ray_to_object(const Instance& instance, const float org[3], const float dir[3], DVec3& o, DVec3& d);
-bool intersect_analytic(const Instance& instance, const DVec3& o, const DVec3& d, double t_min, double t_max,
-                        double& t, int& face);
+bool intersect_analytic(const Instance& instance, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t,
+                        int& face);
 void analytic_bounds(const RTCBoundsFunctionArguments* args);
 void analytic_intersect(const RTCIntersectFunctionNArguments* args);
 void analytic_occluded(const RTCOccludedFunctionNArguments* args);
@@ -99,14 +101,13 @@ void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const flo
                                   const float* u, const float* v, int count, Hit* hits);
 
 class EmbreeScene final : public RenderScene {
-public:
+  public:
     // Throws std::runtime_error when Embree reports an error.
     explicit EmbreeScene(std::unique_ptr<SceneData> data);
     ~EmbreeScene() override;
 
     bool intersect(const Ray& ray, Hit& hit) const override;
-    void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found,
-                         RayCoherence coherence) const override;
+    void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found, RayCoherence coherence) const override;
     bool occluded(const Ray& ray) const override;
     const std::vector<const Light*>& lights() const override { return m_data->lights; }
     const std::vector<const Light*>& local_lights() const override { return m_data->local_lights; }
@@ -115,7 +116,7 @@ public:
     const SceneOptions& options() const override { return m_data->options; }
     Bounds bounds() const override { return m_data->bounds; }
 
-private:
+  private:
     void build();
     RTCGeometry make_triangles(const MeshData& mesh, const std::vector<float>& positions);
     // intersect_batch's stages for coherent rays (see there); packets of kPacketLanes rays.

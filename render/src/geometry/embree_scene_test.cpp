@@ -146,10 +146,9 @@ TEST(EmbreeScene, NonUniformScaleGivesEllipsoidNormals) {
 
 TEST(EmbreeScene, MeshUsedTwiceIsInstancedWithEachTransform) {
     auto mesh = triangle_mesh({-1, -1, 0}, {1, -1, 0}, {0, 1, 0});
-    auto scene = compile_objects({mesh_object(mesh, solid_material({1, 0, 0}),
-                                              glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 5))),
-                                  mesh_object(mesh, solid_material({0, 1, 0}),
-                                              glm::translate(glm::dmat4(1.0), glm::dvec3(10, 0, 7)))});
+    auto scene = compile_objects(
+        {mesh_object(mesh, solid_material({1, 0, 0}), glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 5))),
+         mesh_object(mesh, solid_material({0, 1, 0}), glm::translate(glm::dmat4(1.0), glm::dvec3(10, 0, 7)))});
     Hit hit;
     ASSERT_TRUE(scene->intersect(make_ray(Vec3(0, 0, 0), Vec3(0, 0, 1)), hit));
     EXPECT_NEAR(hit.t, 5.0f, 1e-5f);

@@ -14,7 +14,9 @@ namespace {
 // of the intersector's t.
 constexpr float kShadowMarginUlps = 64.0f;
 
-float max_abs(const Vec3& v) { return glm::max(std::fabs(v.x), glm::max(std::fabs(v.y), std::fabs(v.z))); }
+float max_abs(const Vec3& v) {
+    return glm::max(std::fabs(v.x), glm::max(std::fabs(v.y), std::fabs(v.z)));
+}
 
 }  // namespace
 

@@ -24,7 +24,9 @@ struct TriangleSurfaces {
 };
 
 // The point's error bound per axis, in the space of the corners.
-inline float triangle_point_error(float largest_coordinate) { return 16.0f * FLT_EPSILON * largest_coordinate; }
+inline float triangle_point_error(float largest_coordinate) {
+    return 16.0f * FLT_EPSILON * largest_coordinate;
+}
 
 // Lane k: the triangle whose corner indices start at corners[k], into the
 // xyz array positions[k], at barycentrics (b1[k], b2[k]); count at most
@@ -58,8 +60,8 @@ void triangle_surfaces(const float* const* positions, const std::uint32_t* const
         out.nz[k] = usable ? cz * inverse : 0.0f;
         float m = 0.0f;
         for (int c = 0; c < 3; ++c)
-            m = std::max(m, std::max(std::fabs(corner_x[c][k]),
-                                     std::max(std::fabs(corner_y[c][k]), std::fabs(corner_z[c][k]))));
+            m = std::max(
+                m, std::max(std::fabs(corner_x[c][k]), std::max(std::fabs(corner_y[c][k]), std::fabs(corner_z[c][k]))));
         out.largest[k] = m;
     }
 }
@@ -116,8 +118,7 @@ void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const flo
     }
 }
 
-void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray, float t, int face,
-                                        Hit& hit) const {
+void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray, float t, int face, Hit& hit) const {
     DVec3 o, d;
     const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
     const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};

@@ -9,7 +9,9 @@
 namespace lancer {
 namespace {
 
-DMat3 linear_part(const DMat4& m) { return DMat3(m); }
+DMat3 linear_part(const DMat4& m) {
+    return DMat3(m);
+}
 
 }  // namespace
 
@@ -44,6 +46,8 @@ bool Placement::is_similarity() const {
            std::fabs(glm::dot(a[1], a[2])) < tolerance;
 }
 
-double Placement::uniform_scale() const { return glm::length(linear_part(world_from_object)[0]); }
+double Placement::uniform_scale() const {
+    return glm::length(linear_part(world_from_object)[0]);
+}
 
 }  // namespace lancer

@@ -12,7 +12,7 @@ namespace lancer {
 
 // Parallelograms (box faces) or triangles, sampled by world area.
 class PolygonSampler final : public SurfaceSampler {
-public:
+  public:
     struct Polygon {
         DVec3 origin, edge1, edge2;  // triangle: origin + b1 e1 + b2 e2, b1+b2 <= 1
         Vec2 uv0, uv1, uv2;          // uv at origin, origin+e1, origin+e2
@@ -79,7 +79,7 @@ public:
     }
     bool is_closed() const override { return m_closed; }
 
-private:
+  private:
     std::vector<Polygon> m_polygons;
     std::vector<double> m_cdf;
     double m_total = 0.0;

@@ -37,8 +37,8 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
     rayhit.hit.instID[0] = kInvalidId;
     rayhit.hit.u = rayhit.hit.v = 0.0f;
     rtcIntersect1(m_scene, &context, &rayhit);
-    const EmbreeHit found{rayhit.ray.tnear, rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
-                          rayhit.hit.instID[0], rayhit.hit.u,  rayhit.hit.v};
+    const EmbreeHit found{rayhit.ray.tnear,     rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
+                          rayhit.hit.instID[0], rayhit.hit.u,    rayhit.hit.v};
     return complete_hit(ray, found, hit);
 }
 
@@ -107,8 +107,7 @@ void EmbreeScene::prefetch_corners(const PacketAnswers& answers, int lanes) cons
     }
 }
 
-void EmbreeScene::intersect_batch(const Ray* rays, int count, Hit* hits, bool* found,
-                                  RayCoherence coherence) const {
+void EmbreeScene::intersect_batch(const Ray* rays, int count, Hit* hits, bool* found, RayCoherence coherence) const {
     // Incoherent rays share too few BVH nodes for packets to pay.
     if (coherence == RayCoherence::Incoherent) {
         for (int i = 0; i < count; ++i) found[i] = intersect(rays[i], hits[i]);

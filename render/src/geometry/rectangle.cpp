@@ -7,8 +7,8 @@
 
 namespace lancer {
 
-bool intersect_rectangle(const AnalyticRectangle& r, const DVec3& o, const DVec3& d, double t_min,
-                         double t_max, double& t) {
+bool intersect_rectangle(const AnalyticRectangle& r, const DVec3& o, const DVec3& d, double t_min, double t_max,
+                         double& t) {
     const DVec3 normal = glm::cross(r.axis1, r.axis2);
     const double denominator = glm::dot(normal, d);
     if (denominator == 0.0) return false;

@@ -94,9 +94,9 @@ TEST_P(SelfIntersection, WorldSpaceTriangle) {
     const double s = GetParam();
     const glm::dvec3 centre = s * glm::dvec3(0.2, 0.1, -0.3);
     sg::SceneGraph graph;
-    graph.objects.push_back(mesh_object(triangle_mesh(centre + s * glm::dvec3(-3, -2, 0.5),
-                                                      centre + s * glm::dvec3(3, -1, -0.4),
-                                                      centre + s * glm::dvec3(0.2, 3, 0.1))));
+    graph.objects.push_back(
+        mesh_object(triangle_mesh(centre + s * glm::dvec3(-3, -2, 0.5), centre + s * glm::dvec3(3, -1, -0.4),
+                                  centre + s * glm::dvec3(0.2, 3, 0.1))));
     check_scene(*compile_scene(graph), centre, s, false, "triangle at scale " + std::to_string(s));
 }
 
@@ -123,9 +123,8 @@ TEST_P(SelfIntersection, LightOnASurfaceIsNotShadowedByIt) {
         if (analytic)
             graph.objects.push_back(plane_object({0, 1, 0}, 0.0));
         else
-            graph.objects.push_back(
-                mesh_object(triangle_mesh(s * glm::dvec3(-100, 0, -100), s * glm::dvec3(100, 0, -100),
-                                          s * glm::dvec3(0, 0, 200))));
+            graph.objects.push_back(mesh_object(
+                triangle_mesh(s * glm::dvec3(-100, 0, -100), s * glm::dvec3(100, 0, -100), s * glm::dvec3(0, 0, 200))));
         auto scene = compile_scene(graph);
         std::mt19937 rng(7);
         std::uniform_real_distribution<float> u(-5.0f, 5.0f);
@@ -189,8 +188,8 @@ TEST(SelfIntersectionFarFromOrigin, SphereBoxTriangleAtOffset1e5) {
     box_graph.objects.push_back(box_object(centre - glm::dvec3(1.0), centre + glm::dvec3(1.0, 0.5, 2.0)));
     check_scene(*compile_scene(box_graph), centre, 1.0, true, "box at 1e5");
     sg::SceneGraph triangle_graph;
-    triangle_graph.objects.push_back(mesh_object(
-        triangle_mesh(centre + glm::dvec3(-3, -2, 0.5), centre + glm::dvec3(3, -1, -0.4), centre + glm::dvec3(0.2, 3, 0.1))));
+    triangle_graph.objects.push_back(mesh_object(triangle_mesh(
+        centre + glm::dvec3(-3, -2, 0.5), centre + glm::dvec3(3, -1, -0.4), centre + glm::dvec3(0.2, 3, 0.1))));
     check_scene(*compile_scene(triangle_graph), centre, 1.0, false, "triangle at 1e5");
 }
 

@@ -60,14 +60,12 @@ struct AnalyticRectangle {
 
 // Nearest root of o + t d in the open interval (t_min, t_max); `face`
 // receives the box face (0..5: -x, +x, -y, +y, -z, +z).
-bool intersect_sphere(const AnalyticSphere& s, const DVec3& o, const DVec3& d, double t_min, double t_max,
-                      double& t);
+bool intersect_sphere(const AnalyticSphere& s, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t);
 bool intersect_box(const AnalyticBox& b, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t,
                    int& face);
-bool intersect_plane(const AnalyticPlane& p, const DVec3& o, const DVec3& d, double t_min, double t_max,
-                     double& t);
-bool intersect_rectangle(const AnalyticRectangle& r, const DVec3& o, const DVec3& d, double t_min,
-                         double t_max, double& t);
+bool intersect_plane(const AnalyticPlane& p, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t);
+bool intersect_rectangle(const AnalyticRectangle& r, const DVec3& o, const DVec3& d, double t_min, double t_max,
+                         double& t);
 
 // Surface details at a point already on the shape (object space).
 struct SurfaceGeometry {
@@ -91,7 +89,7 @@ struct SurfacePoint {
 
 // Area sampling of one object's emitting surface.
 class SurfaceSampler {
-public:
+  public:
     virtual ~SurfaceSampler() = default;
     virtual double area() const = 0;  // world area of what sample() covers
     virtual SurfacePoint sample(const Vec2& u) const = 0;

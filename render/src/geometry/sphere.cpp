@@ -9,13 +9,13 @@
 namespace lancer {
 namespace {
 
-
-DMat3 linear_part(const DMat4& m) { return DMat3(m); }
+DMat3 linear_part(const DMat4& m) {
+    return DMat3(m);
+}
 
 }  // namespace
 
-bool intersect_sphere(const AnalyticSphere& s, const DVec3& o, const DVec3& d, double t_min, double t_max,
-                      double& t) {
+bool intersect_sphere(const AnalyticSphere& s, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t) {
     const DVec3 oc = o - s.center;
     const double a = glm::dot(d, d);
     if (!(a > 0.0)) return false;
@@ -71,7 +71,7 @@ double area_jacobian(const Placement& placement, const DVec3& world_normal) {
 }
 
 class SphereSampler final : public SurfaceSampler {
-public:
+  public:
     SphereSampler(const AnalyticSphere& s, const Placement& placement, const Material* material)
         : m_sphere(s), m_placement(placement), m_material(material) {
         const double object_area = 4.0 * kPiD * s.radius * s.radius;
@@ -114,7 +114,7 @@ public:
     bool is_flat(DVec3&) const override { return false; }
     bool is_closed() const override { return true; }
 
-private:
+  private:
     AnalyticSphere m_sphere;
     Placement m_placement;
     const Material* m_material;

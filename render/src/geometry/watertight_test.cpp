@@ -75,7 +75,9 @@ Leaks shoot(const RenderScene& scene, const sg::TriangleMesh& mesh, const glm::d
             const glm::dvec3& centre, double scale) {
     std::mt19937 rng(99);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    auto world = [&](int index) { return Vec3(glm::dvec3(world_from_object * glm::dvec4(mesh.positions[index], 1.0))); };
+    auto world = [&](int index) {
+        return Vec3(glm::dvec3(world_from_object * glm::dvec4(mesh.positions[index], 1.0)));
+    };
     Leaks leaks;
     for (int k = 0; k < 20000; ++k) {
         const glm::dvec3 jitter(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5);
@@ -103,10 +105,9 @@ TEST_P(Watertight, RaysAtSharedEdgesNeverLeaveAClosedMesh) {
     const glm::dvec3 centre(offset, 0.5 * offset, -offset);
     const sg::MeshRef mesh = closed_mesh(scale, instanced ? glm::dvec3(0.0) : centre);
     sg::SceneGraph graph;
-    const glm::dmat4 placement = instanced
-                                     ? glm::translate(glm::dmat4(1.0), centre) *
-                                           glm::rotate(glm::dmat4(1.0), 0.7, glm::dvec3(0.3, 1.0, 0.2))
-                                     : glm::dmat4(1.0);
+    const glm::dmat4 placement = instanced ? glm::translate(glm::dmat4(1.0), centre) *
+                                                 glm::rotate(glm::dmat4(1.0), 0.7, glm::dvec3(0.3, 1.0, 0.2))
+                                           : glm::dmat4(1.0);
     graph.objects.push_back(mesh_object(mesh, solid_material(glm::dvec3(0.5)), placement));
     // Used twice, the mesh is built once and instanced; the copy sits far off.
     if (instanced)

@@ -27,13 +27,11 @@ bool parse_whole(std::string_view text, T& value) {
 
 std::string lowercase(std::string_view text) {
     std::string result(text);
-    std::transform(result.begin(), result.end(), result.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(result.begin(), result.end(), result.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     return result;
 }
 
-[[noreturn]] void throw_bad_value(const std::string& name, const std::string& text,
-                                  const char* expected) {
+[[noreturn]] void throw_bad_value(const std::string& name, const std::string& text, const char* expected) {
     throw std::invalid_argument("parameter '" + name + "' = '" + text + "' is not " + expected);
 }
 

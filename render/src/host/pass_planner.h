@@ -24,7 +24,7 @@ enum class PassMode { Fixed, Budget, Adaptive };
 // one. A pixel at most doubles its samples per pass, so the image refines
 // evenly and the estimates that steer adaptive sampling are refreshed often.
 class PassPlanner {
-public:
+  public:
     PassPlanner(const RenderOptions& options, bool deterministic, const CropWindow& window)
         : m_window(window), m_width(window.x1 - window.x0), m_height(window.y1 - window.y0) {
         const bool budget = !deterministic && options.time_budget_seconds > 0.0;
@@ -124,8 +124,10 @@ public:
         m_plan_completes = false;
         while (low < high) {  // largest limit whose total fits
             const std::uint32_t middle = low + (high - low + 1) / 2;
-            if (total_at(middle) <= samples) low = middle;
-            else high = middle - 1;
+            if (total_at(middle) <= samples)
+                low = middle;
+            else
+                high = middle - 1;
         }
         if (low == 0 && samples > 0) return spread_one_sample(samples);
         for (std::size_t i = 0; i < m_plan.size(); ++i) m_plan[i] = std::min(m_wanted[i], low);
@@ -141,7 +143,7 @@ public:
         return m_plans_per_pixel ? m_plan[index(x, y)] : wanted_after(std::min(taken, m_cap), x, y);
     }
 
-private:
+  private:
     std::size_t index(int x, int y) const { return std::size_t(y) * m_width + x; }
 
     // When not every pixel can have one more sample, `samples` pixels get
@@ -208,8 +210,8 @@ private:
     std::uint32_t m_cap = 1;
     std::uint32_t m_min_samples = 16;
     double m_noise_target = 0.0;
-    std::vector<std::uint32_t> m_wanted;  // per pixel, before any time limit
-    std::vector<std::uint32_t> m_plan;    // per pixel, this pass
+    std::vector<std::uint32_t> m_wanted;      // per pixel, before any time limit
+    std::vector<std::uint32_t> m_plan;        // per pixel, this pass
     std::vector<double> m_relative_variance;  // per pixel, adaptive mode only
     std::uint64_t m_taken_at_plan = 0;
     std::uint64_t m_pixels_wanting = 0;

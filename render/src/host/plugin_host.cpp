@@ -48,10 +48,10 @@ std::string join(const std::vector<std::string>& items, const char* separator) {
 
 const char* type_name(ParameterType type) {
     switch (type) {
-        case ParameterType::Int: return "int";
-        case ParameterType::Float: return "float";
-        case ParameterType::Bool: return "bool";
-        case ParameterType::String: return "string";
+    case ParameterType::Int: return "int";
+    case ParameterType::Float: return "float";
+    case ParameterType::Bool: return "bool";
+    case ParameterType::String: return "string";
     }
     return "?";
 }
@@ -60,14 +60,12 @@ const char* type_name(ParameterType type) {
 // liblancer.so's own folder in the build tree and in an installed prefix.
 std::string folder_of_this_library() {
     Dl_info info{};
-    if (dladdr(reinterpret_cast<const void*>(&folder_of_this_library), &info) == 0 ||
-        info.dli_fname == nullptr) {
+    if (dladdr(reinterpret_cast<const void*>(&folder_of_this_library), &info) == 0 || info.dli_fname == nullptr) {
         return {};
     }
     std::error_code error;
     const fs::path library = fs::canonical(info.dli_fname, error);
-    return error ? fs::path(info.dli_fname).parent_path().string()
-                 : library.parent_path().string();
+    return error ? fs::path(info.dli_fname).parent_path().string() : library.parent_path().string();
 }
 
 const char* expected_text(ParameterType type);
@@ -87,8 +85,8 @@ Plugin open_plugin_file(const std::string& path, const std::string& expected_nam
     dlerror();
     void* symbol = dlsym(handle, kDescriptorSymbol);
     if (symbol == nullptr) {
-        throw PluginError("'" + path + "' is not a lancer integrator plugin: it does not export '" +
-                          kDescriptorSymbol + "' (" + dl_error_text() +
+        throw PluginError("'" + path + "' is not a lancer integrator plugin: it does not export '" + kDescriptorSymbol +
+                          "' (" + dl_error_text() +
                           "); end the plugin's .cpp with LANCER_EXPORT_INTEGRATOR(descriptor)");
     }
     using DescriptorFunction = const IntegratorDescriptor* (*)();
@@ -102,8 +100,7 @@ Plugin open_plugin_file(const std::string& path, const std::string& expected_nam
     if (descriptor->abi_version != kPluginAbiVersion) {
         throw PluginError("plugin '" + path + "' was built for plugin ABI version " +
                           std::to_string(descriptor->abi_version) + ", but this lancer uses ABI version " +
-                          std::to_string(kPluginAbiVersion) +
-                          "; rebuild the plugin against this lancer's headers");
+                          std::to_string(kPluginAbiVersion) + "; rebuild the plugin against this lancer's headers");
     }
     if (descriptor->name == nullptr || descriptor->create == nullptr ||
         (descriptor->parameter_count > 0 && descriptor->parameters == nullptr)) {
@@ -112,20 +109,18 @@ Plugin open_plugin_file(const std::string& path, const std::string& expected_nam
     }
     if (!expected_name.empty() && expected_name != descriptor->name) {
         throw PluginError("plugin '" + path + "' calls itself '" + descriptor->name +
-                          "'; a plugin's name must match its file name (" + expected_name +
-                          kPluginExtension + ")");
+                          "'; a plugin's name must match its file name (" + expected_name + kPluginExtension + ")");
     }
     // A default that does not parse is the plugin author's bug; say so now
     // rather than when a user's render reads it.
     for (std::size_t i = 0; i < descriptor->parameter_count; ++i) {
         const ParameterDecl& decl = descriptor->parameters[i];
         if (decl.name == nullptr || decl.default_value == nullptr) {
-            throw PluginError("plugin '" + path + "': parameter " + std::to_string(i) +
-                              " has no name or no default");
+            throw PluginError("plugin '" + path + "': parameter " + std::to_string(i) + " has no name or no default");
         }
         if (!parses_as(decl, decl.default_value)) {
-            throw PluginError("plugin '" + path + "': the default of parameter '" + decl.name +
-                              "' is '" + decl.default_value + "', not " + expected_text(decl.type));
+            throw PluginError("plugin '" + path + "': the default of parameter '" + decl.name + "' is '" +
+                              decl.default_value + "', not " + expected_text(decl.type));
         }
     }
 
@@ -159,18 +154,18 @@ std::string declared_names(const IntegratorDescriptor& descriptor) {
     if (descriptor.parameter_count == 0) return "it declares no parameters";
     std::vector<std::string> names;
     for (std::size_t i = 0; i < descriptor.parameter_count; ++i) {
-        names.push_back(std::string(descriptor.parameters[i].name) + " (" +
-                        type_name(descriptor.parameters[i].type) + ")");
+        names.push_back(std::string(descriptor.parameters[i].name) + " (" + type_name(descriptor.parameters[i].type) +
+                        ")");
     }
     return "it declares: " + join(names, ", ");
 }
 
 const char* expected_text(ParameterType type) {
     switch (type) {
-        case ParameterType::Int: return "an integer";
-        case ParameterType::Float: return "a number";
-        case ParameterType::Bool: return "a boolean (true/false, on/off, yes/no, 1/0)";
-        case ParameterType::String: return "a string";
+    case ParameterType::Int: return "an integer";
+    case ParameterType::Float: return "a number";
+    case ParameterType::Bool: return "a boolean (true/false, on/off, yes/no, 1/0)";
+    case ParameterType::String: return "a string";
     }
     return "?";
 }
@@ -180,10 +175,10 @@ bool parses_as(const ParameterDecl& decl, const std::string& text) {
     probe.set(decl.name, text);
     try {
         switch (decl.type) {
-            case ParameterType::Int: probe.get_int(decl.name, 0); break;
-            case ParameterType::Float: probe.get_float(decl.name, 0.0); break;
-            case ParameterType::Bool: probe.get_bool(decl.name, false); break;
-            case ParameterType::String: break;
+        case ParameterType::Int: probe.get_int(decl.name, 0); break;
+        case ParameterType::Float: probe.get_float(decl.name, 0.0); break;
+        case ParameterType::Bool: probe.get_bool(decl.name, false); break;
+        case ParameterType::String: break;
         }
     } catch (const std::invalid_argument&) {
         return false;
@@ -203,23 +198,22 @@ std::string number_text(double value) {
 
 // A scene value as text of the declared type. On a mismatch (a vector for a
 // number, 2.5 for an integer...) returns false and describes the value in `got`.
-bool scene_value_text(const ParameterDecl& decl, const sg::ParameterValue& value, std::string& text,
-                      std::string& got) {
+bool scene_value_text(const ParameterDecl& decl, const sg::ParameterValue& value, std::string& text, std::string& got) {
     const auto& v = value.value;
     if (const auto* number = std::get_if<double>(&v)) {
         got = number_text(*number);
         switch (decl.type) {
-            case ParameterType::Int:
-                if (*number != std::floor(*number) || std::abs(*number) > 9.0e15) return false;
-                text = std::to_string(std::int64_t(*number));
-                return true;
-            case ParameterType::Bool:
-                // POV-Ray's on/off are the numbers 1 and 0.
-                if (*number != 0.0 && *number != 1.0) return false;
-                text = *number != 0.0 ? "true" : "false";
-                return true;
-            case ParameterType::Float:
-            case ParameterType::String: text = got; return true;
+        case ParameterType::Int:
+            if (*number != std::floor(*number) || std::abs(*number) > 9.0e15) return false;
+            text = std::to_string(std::int64_t(*number));
+            return true;
+        case ParameterType::Bool:
+            // POV-Ray's on/off are the numbers 1 and 0.
+            if (*number != 0.0 && *number != 1.0) return false;
+            text = *number != 0.0 ? "true" : "false";
+            return true;
+        case ParameterType::Float:
+        case ParameterType::String: text = got; return true;
         }
     }
     if (const auto* flag = std::get_if<bool>(&v)) {
@@ -267,8 +261,8 @@ Plugin load_plugin(const std::string& name) {
         if (fs::is_regular_file(candidate, error)) return open_plugin_file(candidate.string(), name);
     }
     const std::vector<std::string> available = available_plugin_names();
-    throw PluginError("no integrator plugin '" + name + "': looked for " + name + kPluginExtension +
-                      " in " + (folders.empty() ? std::string("(no folders)") : join(folders, ", ")) +
+    throw PluginError("no integrator plugin '" + name + "': looked for " + name + kPluginExtension + " in " +
+                      (folders.empty() ? std::string("(no folders)") : join(folders, ", ")) +
                       " (LANCER_PLUGIN_PATH adds folders); available: " +
                       (available.empty() ? std::string("none") : join(available, ", ")));
 }
@@ -312,8 +306,8 @@ ParameterSet resolve_parameters(const IntegratorDescriptor& descriptor,
     for (const auto& [name, value] : from_scene) {
         const ParameterDecl* decl = find_declaration(descriptor, name);
         if (decl == nullptr) {
-            throw SceneError(value.location, integrator + " has no parameter '" + name + "'; " +
-                                                 declared_names(descriptor));
+            throw SceneError(value.location,
+                             integrator + " has no parameter '" + name + "'; " + declared_names(descriptor));
         }
         std::string text, got;
         if (!scene_value_text(*decl, value, text, got)) {
@@ -333,12 +327,12 @@ ParameterSet resolve_parameters(const IntegratorDescriptor& descriptor,
         const std::string text = assignment.substr(equals + 1);
         const ParameterDecl* decl = find_declaration(descriptor, name);
         if (decl == nullptr) {
-            throw PluginError("-p " + assignment + ": " + integrator + " has no parameter '" + name +
-                              "'; " + declared_names(descriptor));
+            throw PluginError("-p " + assignment + ": " + integrator + " has no parameter '" + name + "'; " +
+                              declared_names(descriptor));
         }
         if (!parses_as(*decl, text)) {
-            throw PluginError("-p " + assignment + ": parameter '" + name + "' of " + integrator +
-                              " expects " + expected_text(decl->type) + ", got '" + text + "'");
+            throw PluginError("-p " + assignment + ": parameter '" + name + "' of " + integrator + " expects " +
+                              expected_text(decl->type) + ", got '" + text + "'");
         }
         parameters.set(name, text);
     }

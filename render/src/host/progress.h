@@ -17,7 +17,7 @@ namespace lancer {
 class Progress {
     using Clock = std::chrono::steady_clock;
 
-public:
+  public:
     explicit Progress(ProgressMode mode) : m_start(Clock::now()) {
         if (mode == ProgressMode::Auto) mode = ::isatty(STDERR_FILENO) ? ProgressMode::Bar : ProgressMode::Lines;
         m_mode = mode;
@@ -51,7 +51,7 @@ public:
         if (m_mode == ProgressMode::Bar && m_last_draw >= 0.0) std::fprintf(stderr, "\n");
     }
 
-private:
+  private:
     ProgressMode m_mode;
     Clock::time_point m_start;
     std::mutex m_mutex;

@@ -11,12 +11,12 @@
 #include <fstream>
 #include <thread>
 
-#include "lancer/host/scene_compiler.h"
 #include "lancer/host/checkpoint.h"
 #include "lancer/host/counting_scene.h"
 #include "lancer/host/estimate.h"
 #include "lancer/host/film.h"
 #include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
 #include "scene_test_helpers.h"
 
 namespace lancer {
@@ -29,7 +29,7 @@ namespace fs = std::filesystem;
 // the image, very noisy on the right. One ray query per sample: the
 // host's camera ray.
 class HalfNoisyIntegrator final : public Integrator {
-public:
+  public:
     Color shade_camera_hit(const Ray& ray, const Hit*, const RenderScene&, Sampler& sampler) const override {
         const float u = sampler.next_1d();
         if (ray.direction.x < 0.0f) return Color(0.5f);
@@ -39,7 +39,7 @@ public:
 
 // Slow on purpose, so that time budgets are measurable.
 class SlowIntegrator final : public Integrator {
-public:
+  public:
     Color shade_camera_hit(const Ray&, const Hit*, const RenderScene&, Sampler& sampler) const override {
         std::this_thread::sleep_for(std::chrono::microseconds(200));
         return Color(sampler.next_1d());
@@ -203,7 +203,7 @@ TEST(Progressive, EstimateMatchesTheTrueErrorOfAKnownNoise) {
 }
 
 class CheckpointFiles : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         m_path = (fs::temp_directory_path() / ("lancer_checkpoint_test_" + std::to_string(::getpid()))).string();
     }

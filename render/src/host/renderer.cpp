@@ -33,7 +33,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 CropWindow clamped_window(const RenderOptions& options, int width, int height) {
     CropWindow window{0, 0, width, height};
@@ -115,9 +117,13 @@ SampleCounts count_samples(const Film& film, const CropWindow& window) {
 // One call of render_image: the passes, each a parallel sweep of the
 // window's tiles, and what the render did.
 class ImageRender {
-public:
+  public:
     ImageRender(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options, Film& film)
-        : m_scene(scene), m_integrator(integrator), m_options(options), m_film(film), m_start(Clock::now()),
+        : m_scene(scene),
+          m_integrator(integrator),
+          m_options(options),
+          m_film(film),
+          m_start(Clock::now()),
           m_window(clamped_window(options, film.width(), film.height())),
           m_tile(std::max(options.tile_size, 1)),
           m_tiles_x((m_window.x1 - m_window.x0 + m_tile - 1) / m_tile),
@@ -167,7 +173,7 @@ public:
         return stats;
     }
 
-private:
+  private:
     // Passes until the plan is done, the deadline passes or the render is
     // cancelled; returns how many ran.
     int run_passes() {

@@ -10,11 +10,11 @@
 #include <OpenImageIO/imageio.h>
 
 #include "image_compare.h"
-#include "lancer/host/scene_compiler.h"
+#include "lancer/host/camera_ray.h"
 #include "lancer/host/film.h"
 #include "lancer/host/image_io.h"
-#include "lancer/host/camera_ray.h"
 #include "lancer/host/renderer.h"
+#include "lancer/host/scene_compiler.h"
 #include "scene_test_helpers.h"
 
 namespace lancer {
@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 // Returns random numbers drawn from the sampler plus the hit distance: any
 // dependence on thread or tile order would show.
 class NoisyIntegrator final : public Integrator {
-public:
+  public:
     Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene&, Sampler& sampler) const override {
         const float depth = hit ? hit->t : 0.0f;
         return Color(sampler.next_1d(), sampler.next_1d() * depth, ray.direction.x);
@@ -34,7 +34,7 @@ public:
 };
 
 class NanIntegrator final : public Integrator {
-public:
+  public:
     Color shade_camera_hit(const Ray&, const Hit*, const RenderScene&, Sampler& sampler) const override {
         return sampler.next_1d() < 0.5f ? Color(NAN) : Color(1.0f);
     }
@@ -190,7 +190,7 @@ TEST(Sampler, DeterministicPerPixelSampleAndDimension) {
 }
 
 class ImageOutput : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         m_dir = fs::temp_directory_path() / ("lancer_image_io_test_" + std::to_string(::getpid()));
         fs::create_directories(m_dir);

@@ -11,7 +11,6 @@
 namespace lancer {
 namespace {
 
-
 MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment) {
     MaterialParameters p;
     p.pigment = pigment;
@@ -55,7 +54,7 @@ void world_bounds(const Placement& placement, const DVec3& lower, const DVec3& u
 }
 
 class Builder {
-public:
+  public:
     explicit Builder(sg::SceneGraph& graph) : m_graph(graph), m_data(std::make_unique<SceneData>()) {
         m_data->texture_factory = std::make_unique<TextureFactory>(m_data->texture_spaces);
     }
@@ -76,14 +75,13 @@ public:
         return std::move(m_data);
     }
 
-private:
+  private:
     void build_camera() {
         const sg::Camera camera = m_graph.camera.value_or(sg::Camera{});
-        m_data->camera = Camera(camera.projection == sg::Camera::Projection::Orthographic
-                                    ? Camera::Projection::Orthographic
-                                    : Camera::Projection::Perspective,
-                                Vec3(camera.location), Vec3(camera.direction), Vec3(camera.right),
-                                Vec3(camera.up));
+        m_data->camera =
+            Camera(camera.projection == sg::Camera::Projection::Orthographic ? Camera::Projection::Orthographic
+                                                                             : Camera::Projection::Perspective,
+                   Vec3(camera.location), Vec3(camera.direction), Vec3(camera.right), Vec3(camera.up));
     }
 
     void count_mesh_uses(const std::vector<sg::Object>& objects) {
@@ -113,8 +111,7 @@ private:
 
     const Material* make_material(const sg::Material& source) {
         m_data->textures.push_back(m_data->texture_factory->make(source.pigment));
-        m_data->materials.push_back(
-            std::make_unique<Material>(to_parameters(source, m_data->textures.back().get())));
+        m_data->materials.push_back(std::make_unique<Material>(to_parameters(source, m_data->textures.back().get())));
         return m_data->materials.back().get();
     }
 
@@ -269,8 +266,8 @@ private:
             default: continue;
             }
             if (!(surface->area() > 0.0) || !std::isfinite(surface->area())) continue;
-            auto light = std::make_unique<EmissiveShapeLight>(std::move(surface), index, instance.material,
-                                                              sphere_shape);
+            auto light =
+                std::make_unique<EmissiveShapeLight>(std::move(surface), index, instance.material, sphere_shape);
             instance.emitter = light.get();
             m_data->lights.push_back(light.get());
             m_data->local_lights.push_back(&light->proxy());
@@ -282,17 +279,16 @@ private:
         std::vector<WorldTriangle> triangles;
         const sg::TriangleMesh& source = *instance.mesh->source;
         for (std::size_t f = 0; f < source.faces.size(); ++f) {
-            const Material* face_material =
-                f < instance.face_materials.size() && instance.face_materials[f] ? instance.face_materials[f]
-                                                                                 : instance.material;
+            const Material* face_material = f < instance.face_materials.size() && instance.face_materials[f]
+                                                ? instance.face_materials[f]
+                                                : instance.material;
             if (!face_material->is_emissive()) continue;
             const auto& face = source.faces[f];
             WorldTriangle t;
             for (int k = 0; k < 3; ++k) {
                 t.p[k] = instance.placement.point_to_world(source.positions[face.position[k]]);
                 const int uv = face.uv[k];
-                t.uv[k] = uv >= 0 && std::size_t(uv) < source.uvs.size() ? Vec2(source.uvs[uv])
-                                                                         : Vec2(k == 1, k == 2);
+                t.uv[k] = uv >= 0 && std::size_t(uv) < source.uvs.size() ? Vec2(source.uvs[uv]) : Vec2(k == 1, k == 2);
             }
             t.material = face_material;
             triangles.push_back(t);
@@ -317,8 +313,8 @@ private:
                 instance.light = light.get();
                 instance.location = source.location;
                 const DVec3 half = 0.5 * (glm::abs(source.axis1) + glm::abs(source.axis2));
-                world_bounds(instance.placement, source.position - half, source.position + half,
-                             instance.bounds_lower, instance.bounds_upper);
+                world_bounds(instance.placement, source.position - half, source.position + half, instance.bounds_lower,
+                             instance.bounds_upper);
                 push_instance(std::move(instance), DMat4(1.0));
                 add_light(std::move(light));
             } else if (source.kind == sg::Light::Kind::AreaSphere) {
@@ -358,8 +354,7 @@ private:
 
     void compute_bounds() {
         for (const Instance& instance : m_data->instances)
-            if (instance.kind != ShapeKind::Plane)
-                expand(m_data->bounds, instance.bounds_lower, instance.bounds_upper);
+            if (instance.kind != ShapeKind::Plane) expand(m_data->bounds, instance.bounds_lower, instance.bounds_upper);
     }
 
     // Point and directional lights, and area lights too small to have a
@@ -377,9 +372,8 @@ private:
                                                              float(kPiD) * color, centre, radius));
                 continue;
             }
-            const bool degenerate_rectangle =
-                source.kind == sg::Light::Kind::AreaRectangle &&
-                !(glm::length(glm::cross(source.axis1, source.axis2)) > 0.0);
+            const bool degenerate_rectangle = source.kind == sg::Light::Kind::AreaRectangle &&
+                                              !(glm::length(glm::cross(source.axis1, source.axis2)) > 0.0);
             const bool degenerate_sphere = source.kind == sg::Light::Kind::AreaSphere && !(source.radius > 0.0);
             if (source.kind == sg::Light::Kind::Point || degenerate_rectangle || degenerate_sphere) {
                 const float fade_distance = source.kind == sg::Light::Kind::Point ? float(source.fade_distance) : 0.0f;
@@ -421,6 +415,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<SceneData> build_scene_data(sg::SceneGraph& graph) { return Builder(graph).run(); }
+std::unique_ptr<SceneData> build_scene_data(sg::SceneGraph& graph) {
+    return Builder(graph).run();
+}
 
 }  // namespace lancer

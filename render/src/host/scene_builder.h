@@ -7,11 +7,11 @@
 #include <memory>
 #include <vector>
 
+#include "geometry/shapes.h"
 #include "lancer/camera.h"
 #include "lancer/render_scene.h"
 #include "lancer/scene_graph.h"
 #include "lights/lights.h"
-#include "geometry/shapes.h"
 #include "materials/textures.h"
 
 namespace lancer {
@@ -27,8 +27,8 @@ struct MeshData {
     std::vector<sg::Vec3> normals;
     std::vector<sg::Vec2> uvs;
     std::vector<sg::TriangleMesh::Face> faces;
-    std::vector<float> object_positions;      // xyz per vertex, plus one padding float
-    std::vector<std::uint32_t> indices;       // three per triangle
+    std::vector<float> object_positions;  // xyz per vertex, plus one padding float
+    std::vector<std::uint32_t> indices;   // three per triangle
     std::vector<std::uint32_t> face_of_triangle;
     int uses = 0;
 };
@@ -43,12 +43,12 @@ struct Instance {
     AnalyticPlane plane;
     AnalyticRectangle rectangle;
     const MeshData* mesh = nullptr;
-    bool mesh_in_world = false;        // world_positions used instead of instancing
+    bool mesh_in_world = false;  // world_positions used instead of instancing
     std::vector<float> world_positions;
     const Material* material = nullptr;
     std::vector<const Material*> face_materials;  // by face; null: `material`
-    const Light* emitter = nullptr;    // for emissive materials
-    const Light* light = nullptr;      // the area light this surface is
+    const Light* emitter = nullptr;               // for emissive materials
+    const Light* light = nullptr;                 // the area light this surface is
     bool casts_shadow = true;
     Vec3 bounds_lower{0.0f}, bounds_upper{0.0f};  // world, conservative
     sg::SourceLocation location;

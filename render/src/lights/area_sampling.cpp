@@ -22,7 +22,7 @@ void basis_about(const DVec3& w, DVec3& a, DVec3& b) {
 }  // namespace
 
 LightSample area_light_sample(const DVec3& p, const DVec3& surface_point, const DVec3& normal, const Color& radiance,
-                        float pdf) {
+                              float pdf) {
     LightSample s;
     const DVec3 point = lift_towards(surface_point, normal, p);
     const DVec3 offset = point - p;
@@ -82,8 +82,7 @@ bool sample_sphere_cone(const DVec3& center, double radius, const DVec3& p, cons
     }
     // Angle at the centre between -axis and the surface point seen along
     // that direction (the nearer intersection).
-    const double cos_alpha =
-        sin2_theta / sin_max + cos_theta * std::sqrt(std::max(0.0, 1.0 - sin2_theta / sin2_max));
+    const double cos_alpha = sin2_theta / sin_max + cos_theta * std::sqrt(std::max(0.0, 1.0 - sin2_theta / sin2_max));
     const double sin_alpha = std::sqrt(std::max(0.0, 1.0 - cos_alpha * cos_alpha));
     const double phi = 2.0 * kPiD * double(u.y);
     const DVec3 axis = to_center / std::sqrt(d2);

@@ -26,6 +26,8 @@ LightSample DirectionalLight::sample(const Vec3& p, const Vec2&) const {
     return s;
 }
 
-Color DirectionalLight::power() const { return kPi * m_scene_radius * m_scene_radius * m_parameters.irradiance; }
+Color DirectionalLight::power() const {
+    return kPi * m_scene_radius * m_scene_radius * m_parameters.irradiance;
+}
 
 }  // namespace lancer

@@ -6,11 +6,7 @@
 #include "lights/lights.h"
 
 namespace lancer {
-namespace {
-
-
-
-}  // namespace
+namespace {}  // namespace
 
 EmissiveShapeLight::EmissiveShapeLight(std::unique_ptr<SurfaceSampler> surface, std::uint32_t object_id,
                                        const Material* material, const SphereShape* sphere)
@@ -88,6 +84,8 @@ float EmissiveShapeLight::pdf(const Vec3& p, const Vec3&, const Hit& light_hit) 
                                DVec3(light_hit.geometric_normal));
 }
 
-Color EmissiveShapeLight::emitted(const Hit& light_hit, const Vec3&) const { return radiance_at(light_hit); }
+Color EmissiveShapeLight::emitted(const Hit& light_hit, const Vec3&) const {
+    return radiance_at(light_hit);
+}
 
 }  // namespace lancer

@@ -93,8 +93,7 @@ double integrate_pdf(const RenderScene& scene, const Light& light, const Vec3& p
 // sample() reports the same density pdf() gives for the point it returns
 // (when that point is visible from p: area sampling of a closed shape also
 // picks points on its far side).
-void expect_consistent_samples(const RenderScene& scene, const Light& light, const Vec3& p,
-                               int minimum_visible = 150) {
+void expect_consistent_samples(const RenderScene& scene, const Light& light, const Vec3& p, int minimum_visible = 150) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     int checked = 0, mismatched = 0;

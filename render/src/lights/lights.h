@@ -6,8 +6,8 @@
 
 #include <memory>
 
-#include "lancer/light.h"
 #include "geometry/shapes.h"
+#include "lancer/light.h"
 
 namespace lancer {
 
@@ -15,21 +15,21 @@ namespace lancer {
 // zero: |cos| for the proxy of a flat two-sided emitter, max(0, cos) for a
 // one-sided one (a rectangle light).
 class PointLight final : public Light {
-public:
+  public:
     // intensity in radiance units times area (W/sr); fade as POV's when
     // fade_distance > 0, else inverse-square.
-    PointLight(const Vec3& position, const Color& intensity, float fade_distance = 0.0f,
-               float fade_power = 0.0f, const Vec3& pattern_axis = Vec3(0.0f), bool one_sided = false);
+    PointLight(const Vec3& position, const Color& intensity, float fade_distance = 0.0f, float fade_power = 0.0f,
+               const Vec3& pattern_axis = Vec3(0.0f), bool one_sided = false);
     Kind kind() const override { return Kind::Point; }
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     Color power() const override;
     const Vec3& position() const { return m_parameters.position; }
     const Color& intensity() const { return m_parameters.intensity; }
 
-protected:
+  protected:
     const void* parameters_of(Kind kind) const override { return kind == kKind ? &m_parameters : nullptr; }
 
-private:
+  private:
     static constexpr Kind kKind = PointLightParameters::kKind;
     PointLightParameters m_parameters;
     // Inverse-square without a pattern: sample()'s float path applies.
@@ -37,7 +37,7 @@ private:
 };
 
 class DirectionalLight final : public Light {
-public:
+  public:
     // `travel`: direction light travels (position -> point_at); the scene
     // sphere places the shadow-ray target beyond all geometry.
     DirectionalLight(const Vec3& travel, const Color& irradiance, const Vec3& scene_center, float scene_radius);
@@ -45,12 +45,12 @@ public:
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     Color power() const override;
 
-protected:
+  protected:
     const void* parameters_of(Kind kind) const override {
         return kind == DirectionalLightParameters::kKind ? &m_parameters : nullptr;
     }
 
-private:
+  private:
     DirectionalLightParameters m_parameters;
     Vec3 m_scene_center;
     float m_scene_radius;
@@ -61,7 +61,7 @@ private:
 // `area_light <a,0,0>, <0,0,b>` faces down). One-sided because a physical
 // panel lights the room, not the ceiling it hangs from.
 class RectangleLight final : public Light {
-public:
+  public:
     RectangleLight(const AnalyticRectangle& rectangle, const Color& color);
     Kind kind() const override { return Kind::Rectangle; }
     LightSample sample(const Vec3& p, const Vec2& u) const override;
@@ -73,12 +73,12 @@ public:
     const AnalyticRectangle& rectangle() const { return m_rectangle; }
     bool emits_towards(const glm::dvec3& from_surface) const { return glm::dot(m_normal, from_surface) > 0.0; }
 
-protected:
+  protected:
     const void* parameters_of(Kind kind) const override {
         return kind == RectangleLightParameters::kKind ? &m_parameters : nullptr;
     }
 
-private:
+  private:
     RectangleLightParameters m_parameters;
     AnalyticRectangle m_rectangle;
     glm::dvec3 m_normal;
@@ -89,8 +89,8 @@ private:
 
 // The sample of a point on an emitting surface (lifted off it towards p),
 // seen from p; pdf 0 (no sample) when degenerate.
-LightSample area_light_sample(const DVec3& p, const DVec3& surface_point, const DVec3& normal,
-                              const Color& radiance, float pdf);
+LightSample area_light_sample(const DVec3& p, const DVec3& surface_point, const DVec3& normal, const Color& radiance,
+                              float pdf);
 
 // Solid-angle density of a point sampled on a surface with area density
 // pdf_area, seen from p: pdf_area * d^2 / |cos at the light|; 0 when
@@ -113,7 +113,7 @@ double sphere_cone_pdf(const DVec3& center, double radius, const DVec3& p);
 
 // Sphere of radius R with radiance C/R^2: intensity pi*C in every direction.
 class SphereLight final : public Light {
-public:
+  public:
     SphereLight(const DVec3& center, double radius, const Color& color);
     Kind kind() const override { return Kind::Sphere; }
     LightSample sample(const Vec3& p, const Vec2& u) const override;
@@ -123,12 +123,12 @@ public:
     const Light& proxy() const override { return *m_proxy; }
     const Color& radiance() const { return m_radiance; }
 
-protected:
+  protected:
     const void* parameters_of(Kind kind) const override {
         return kind == SphereLightParameters::kKind ? &m_parameters : nullptr;
     }
 
-private:
+  private:
     SphereLightParameters m_parameters;
     DVec3 m_center;
     double m_radius;
@@ -138,7 +138,7 @@ private:
 
 // An object whose material emits: radiance emission * pigment, two-sided.
 class EmissiveShapeLight final : public Light {
-public:
+  public:
     // `sphere`: when set (a sphere under a similarity transform, world
     // centre and radius), sampled by the cone it subtends.
     struct SphereShape {
@@ -146,8 +146,8 @@ public:
         AnalyticSphere object;  // as the scene gave it, for (u,v)
         Placement placement;
     };
-    EmissiveShapeLight(std::unique_ptr<SurfaceSampler> surface, std::uint32_t object_id,
-                       const Material* material, const SphereShape* sphere);
+    EmissiveShapeLight(std::unique_ptr<SurfaceSampler> surface, std::uint32_t object_id, const Material* material,
+                       const SphereShape* sphere);
     Kind kind() const override { return Kind::EmissiveShape; }
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     float pdf(const Vec3& p, const Vec3& wi, const Hit& light_hit) const override;
@@ -155,7 +155,7 @@ public:
     Color power() const override { return m_power; }
     const Light& proxy() const override { return *m_proxy; }
 
-private:
+  private:
     Color radiance_at(const Hit& hit) const;
     std::unique_ptr<SurfaceSampler> m_surface;
     std::uint32_t m_object_id;

@@ -6,10 +6,7 @@
 #include "lights/lights.h"
 
 namespace lancer {
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 RectangleLight::RectangleLight(const AnalyticRectangle& rectangle, const Color& color) : m_rectangle(rectangle) {
     const DVec3 cross = glm::cross(rectangle.axis1, rectangle.axis2);
@@ -23,13 +20,13 @@ RectangleLight::RectangleLight(const AnalyticRectangle& rectangle, const Color& 
 }
 
 LightSample RectangleLight::sample(const Vec3& p, const Vec2& u) const {
-    const DVec3 point = m_rectangle.center + (double(u.x) - 0.5) * m_rectangle.axis1 +
-                        (double(u.y) - 0.5) * m_rectangle.axis2;
+    const DVec3 point =
+        m_rectangle.center + (double(u.x) - 0.5) * m_rectangle.axis1 + (double(u.y) - 0.5) * m_rectangle.axis2;
     const DVec3 origin(p);
     // Behind the emitting side nothing arrives: no sample, and pdf() agrees.
     if (!emits_towards(origin - point)) return LightSample{};
     return area_light_sample(origin, point, m_normal, m_radiance,
-                       area_to_solid_angle(1.0 / m_area, origin, point, m_normal));
+                             area_to_solid_angle(1.0 / m_area, origin, point, m_normal));
 }
 
 float RectangleLight::pdf(const Vec3& p, const Vec3&, const Hit& light_hit) const {
@@ -42,6 +39,8 @@ Color RectangleLight::emitted(const Hit&, const Vec3& wo) const {
     return emits_towards(glm::dvec3(wo)) ? m_radiance : Color(0.0f);
 }
 
-Color RectangleLight::power() const { return float(kPiD * m_area) * m_radiance; }
+Color RectangleLight::power() const {
+    return float(kPiD * m_area) * m_radiance;
+}
 
 }  // namespace lancer

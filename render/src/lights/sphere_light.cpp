@@ -8,8 +8,7 @@
 
 namespace lancer {
 
-SphereLight::SphereLight(const DVec3& center, double radius, const Color& color)
-    : m_center(center), m_radius(radius) {
+SphereLight::SphereLight(const DVec3& center, double radius, const Color& color) : m_center(center), m_radius(radius) {
     // Intensity Le * pi R^2 = pi * C in every direction.
     m_radiance = Color(glm::dvec3(color) / (radius * radius));
     m_proxy = std::make_unique<PointLight>(Vec3(center), kPi * color);

@@ -12,7 +12,9 @@ constexpr float kInvPi = 1.0f / kPi;
 constexpr float kInv2Pi = 0.5f / kPi;
 
 // sqrt that tolerates the tiny negative arguments rounding produces.
-float safe_sqrt(float x) { return std::sqrt(std::max(0.0f, x)); }
+float safe_sqrt(float x) {
+    return std::sqrt(std::max(0.0f, x));
+}
 
 }  // namespace
 
@@ -50,7 +52,9 @@ Vec3 sample_cosine_hemisphere(const Vec2& u) {
     return Vec3(d.x, d.y, safe_sqrt(1.0f - d.x * d.x - d.y * d.y));
 }
 
-float cosine_hemisphere_pdf(float cos_theta) { return cos_theta > 0.0f ? cos_theta * kInvPi : 0.0f; }
+float cosine_hemisphere_pdf(float cos_theta) {
+    return cos_theta > 0.0f ? cos_theta * kInvPi : 0.0f;
+}
 
 Vec3 sample_uniform_sphere(const Vec2& u) {
     const float z = 1.0f - 2.0f * u.x;
@@ -59,7 +63,9 @@ Vec3 sample_uniform_sphere(const Vec2& u) {
     return Vec3(r * std::cos(phi), r * std::sin(phi), z);
 }
 
-float uniform_sphere_pdf() { return 0.25f * kInvPi; }
+float uniform_sphere_pdf() {
+    return 0.25f * kInvPi;
+}
 
 Vec3 sample_uniform_cone(const Vec2& u, float cos_max) {
     // cos(theta) uniform in [cos_max, 1] gives uniform solid angle.
@@ -69,7 +75,9 @@ Vec3 sample_uniform_cone(const Vec2& u, float cos_max) {
     return Vec3(sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta);
 }
 
-float uniform_cone_pdf(float cos_max) { return 1.0f / (2.0f * kPi * (1.0f - cos_max)); }
+float uniform_cone_pdf(float cos_max) {
+    return 1.0f / (2.0f * kPi * (1.0f - cos_max));
+}
 
 Vec3 sample_power_cosine(const Vec2& u, float exponent) {
     // The CDF of cos(theta) is cos^(e+1); invert with 1 - u so u = 0 maps to
@@ -91,7 +99,9 @@ Vec3 sample_diffuse_lobe(const Vec3& n, const Vec2& u) {
     return glm::normalize(Frame::from_normal(n).to_world(sample_cosine_hemisphere(u)));
 }
 
-float diffuse_lobe_pdf(const Vec3& n, const Vec3& wi) { return cosine_hemisphere_pdf(glm::dot(n, wi)); }
+float diffuse_lobe_pdf(const Vec3& n, const Vec3& wi) {
+    return cosine_hemisphere_pdf(glm::dot(n, wi));
+}
 
 Vec3 sample_phong_lobe(const Vec3& n, const Vec3& wo, float exponent, const Vec2& u) {
     const Vec3 r = reflect(-wo, n);
@@ -102,8 +112,7 @@ float phong_lobe_pdf(const Vec3& n, const Vec3& wo, const Vec3& wi, float expone
     return power_cosine_pdf(glm::dot(reflect(-wo, n), wi), exponent);
 }
 
-std::optional<Vec3> sample_blinn_lobe(const Vec3& n, const Vec3& wo, float exponent,
-                                      const Vec2& u) {
+std::optional<Vec3> sample_blinn_lobe(const Vec3& n, const Vec3& wo, float exponent, const Vec2& u) {
     const Vec3 h = glm::normalize(Frame::from_normal(n).to_world(sample_power_cosine(u, exponent)));
     const float wo_h = glm::dot(wo, h);
     if (wo_h <= 0.0f) return std::nullopt;
@@ -133,10 +142,9 @@ Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hi
     // Mirror (POV's reflection block) and, unless reflection adds to it as
     // in POV-Ray, the diffuse share it takes away (whitted's "a mirror has
     // no diffuse").
-    const Color rho_r = material.has_mirror()
-                            ? glm::clamp(material.mirror_reflectance(surface, cos_o, m_entering),
-                                         Color(0.0f), Color(1.0f))
-                            : Color(0.0f);
+    const Color rho_r = material.has_mirror() ? glm::clamp(material.mirror_reflectance(surface, cos_o, m_entering),
+                                                           Color(0.0f), Color(1.0f))
+                                              : Color(0.0f);
     m_diffuse_scale = additive_reflection ? Color(1.0f) : Color(1.0f) - rho_r;
     m_mirror = rho_r;
 
@@ -145,9 +153,7 @@ Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hi
     m_transparency = std::clamp(material.transparency(surface), 0.0f, 1.0f);
     const float opacity = 1.0f - m_transparency;
     const float w_diffuse =
-        p.diffuse > 0.0f
-            ? p.diffuse * std::max(0.0f, luminance(surface.pigment * m_diffuse_scale))
-            : 0.0f;
+        p.diffuse > 0.0f ? p.diffuse * std::max(0.0f, luminance(surface.pigment * m_diffuse_scale)) : 0.0f;
     const float w_phong = std::max(0.0f, p.phong);
     const float w_blinn = std::max(0.0f, p.specular);
     const float w_smooth = w_diffuse + w_phong + w_blinn;

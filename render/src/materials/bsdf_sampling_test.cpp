@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
-#include "lancer/shading/bsdf_sampling.h"
 #include "lancer/sampler.h"
+#include "lancer/shading/bsdf_sampling.h"
 
 namespace lancer {
 namespace {
@@ -40,7 +40,7 @@ struct SphereChiSquare {
 
     // Draws one direction from `u` (uniform in [0,1)^3); nullopt: a failed draw.
     std::function<std::optional<Vec3>(const Vec3& u)> sample;
-    std::function<double(const Vec3&)> pdf;                  // over the whole sphere
+    std::function<double(const Vec3&)> pdf;  // over the whole sphere
 
     static int cell(const Vec3& d) {
         const double theta = std::acos(std::clamp(double(d.z), -1.0, 1.0));
@@ -77,8 +77,8 @@ struct SphereChiSquare {
                     for (int b = 0; b < kSub; ++b) {
                         const double theta = (i + (a + 0.5) / kSub) * dt;
                         const double phi = (j + (b + 0.5) / kSub) * dp;
-                        const Vec3 d(float(std::sin(theta) * std::cos(phi)),
-                                     float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)));
+                        const Vec3 d(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
+                                     float(std::cos(theta)));
                         integral += pdf(d) * std::sin(theta);
                     }
                 integral *= dt * dp / (kSub * kSub);
@@ -98,8 +98,7 @@ struct SphereChiSquare {
             ++dof;
         }
         if (pooled_expected >= 5.0) {
-            chi2 += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) /
-                    pooled_expected;
+            chi2 += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) / pooled_expected;
             ++dof;
         } else if (pooled_observed > 10.0 * std::max(pooled_expected, 1.0)) {
             return 0.0;  // mass where the density says there is none
@@ -115,14 +114,20 @@ Vec3 direction_at(float theta_degrees) {
 
 TEST(BsdfSamplingChiSquare, CosineHemisphere) {
     SphereChiSquare test;
-    test.sample = [](const Vec3& u3) { const Vec2 u(u3); return std::optional<Vec3>(sample_cosine_hemisphere(u)); };
+    test.sample = [](const Vec3& u3) {
+        const Vec2 u(u3);
+        return std::optional<Vec3>(sample_cosine_hemisphere(u));
+    };
     test.pdf = [](const Vec3& d) { return double(cosine_hemisphere_pdf(d.z)); };
     EXPECT_GT(test.run(1), kSignificance);
 }
 
 TEST(BsdfSamplingChiSquare, UniformSphere) {
     SphereChiSquare test;
-    test.sample = [](const Vec3& u3) { const Vec2 u(u3); return std::optional<Vec3>(sample_uniform_sphere(u)); };
+    test.sample = [](const Vec3& u3) {
+        const Vec2 u(u3);
+        return std::optional<Vec3>(sample_uniform_sphere(u));
+    };
     test.pdf = [](const Vec3&) { return double(uniform_sphere_pdf()); };
     EXPECT_GT(test.run(2), kSignificance);
 }
@@ -132,14 +137,20 @@ TEST(BsdfSamplingChiSquare, UniformCone) {
     // not straddle the density's discontinuity.
     const float cos_max = std::cos(glm::radians(36.0f));
     SphereChiSquare test;
-    test.sample = [&](const Vec3& u3) { const Vec2 u(u3); return std::optional<Vec3>(sample_uniform_cone(u, cos_max)); };
+    test.sample = [&](const Vec3& u3) {
+        const Vec2 u(u3);
+        return std::optional<Vec3>(sample_uniform_cone(u, cos_max));
+    };
     test.pdf = [&](const Vec3& d) { return d.z >= cos_max ? double(uniform_cone_pdf(cos_max)) : 0.0; };
     EXPECT_GT(test.run(3), kSignificance);
 }
 
 TEST(BsdfSamplingChiSquare, PowerCosine) {
     SphereChiSquare test;
-    test.sample = [](const Vec3& u3) { const Vec2 u(u3); return std::optional<Vec3>(sample_power_cosine(u, 7.0f)); };
+    test.sample = [](const Vec3& u3) {
+        const Vec2 u(u3);
+        return std::optional<Vec3>(sample_power_cosine(u, 7.0f));
+    };
     test.pdf = [](const Vec3& d) { return double(power_cosine_pdf(d.z, 7.0f)); };
     EXPECT_GT(test.run(4), kSignificance);
 }
@@ -147,7 +158,10 @@ TEST(BsdfSamplingChiSquare, PowerCosine) {
 TEST(BsdfSamplingChiSquare, DiffuseLobeTiltedNormal) {
     const Vec3 n = glm::normalize(Vec3(0.3f, -0.2f, 0.9f));
     SphereChiSquare test;
-    test.sample = [&](const Vec3& u3) { const Vec2 u(u3); return std::optional<Vec3>(sample_diffuse_lobe(n, u)); };
+    test.sample = [&](const Vec3& u3) {
+        const Vec2 u(u3);
+        return std::optional<Vec3>(sample_diffuse_lobe(n, u));
+    };
     test.pdf = [&](const Vec3& d) { return double(diffuse_lobe_pdf(n, d)); };
     EXPECT_GT(test.run(5), kSignificance);
 }
@@ -156,7 +170,10 @@ TEST(BsdfSamplingChiSquare, PhongLobe) {
     const Vec3 n(0.0f, 0.0f, 1.0f);
     const Vec3 wo = direction_at(35.0f);
     SphereChiSquare test;
-    test.sample = [&](const Vec3& u3) { const Vec2 u(u3); return std::optional<Vec3>(sample_phong_lobe(n, wo, 12.0f, u)); };
+    test.sample = [&](const Vec3& u3) {
+        const Vec2 u(u3);
+        return std::optional<Vec3>(sample_phong_lobe(n, wo, 12.0f, u));
+    };
     test.pdf = [&](const Vec3& d) { return double(phong_lobe_pdf(n, wo, d, 12.0f)); };
     EXPECT_GT(test.run(6), kSignificance);
 }
@@ -165,15 +182,18 @@ TEST(BsdfSamplingChiSquare, BlinnLobe) {
     const Vec3 n(0.0f, 0.0f, 1.0f);
     const Vec3 wo = direction_at(60.0f);
     SphereChiSquare test;
-    test.sample = [&](const Vec3& u3) { const Vec2 u(u3); return sample_blinn_lobe(n, wo, 15.0f, u); };
+    test.sample = [&](const Vec3& u3) {
+        const Vec2 u(u3);
+        return sample_blinn_lobe(n, wo, 15.0f, u);
+    };
     test.pdf = [&](const Vec3& d) { return double(blinn_lobe_pdf(n, wo, d, 15.0f)); };
     EXPECT_GT(test.run(7), kSignificance);
 }
 
 // A material at a hit on the plane z = 0 with normal +z.
 struct MaterialAtHit {
-    explicit MaterialAtHit(const MaterialParameters& p, Color pigment = Color(0.8f),
-                           float filter = 0.0f, float transmit = 0.0f)
+    explicit MaterialAtHit(const MaterialParameters& p, Color pigment = Color(0.8f), float filter = 0.0f,
+                           float transmit = 0.0f)
         : material(p) {
         hit.position = Vec3(0.0f);
         hit.geometric_normal = hit.shading_normal = Vec3(0.0f, 0.0f, 1.0f);
@@ -250,24 +270,44 @@ TEST(BsdfSampling, EnergyConservation) {
     };
     add("diffuse", [](MaterialParameters& p) { p.diffuse = 1.0f; });
     for (float e : {1.0f, 10.0f, 40.0f, 400.0f})
-        add("phong", [e](MaterialParameters& p) { p.phong = 1.0f; p.phong_size = e; });
+        add("phong", [e](MaterialParameters& p) {
+            p.phong = 1.0f;
+            p.phong_size = e;
+        });
     for (float r : {0.5f, 0.05f, 0.005f})
-        add("blinn", [r](MaterialParameters& p) { p.specular = 1.0f; p.roughness = r; });
-    add("mix", [](MaterialParameters& p) { p.diffuse = 0.5f; p.phong = 0.25f; p.specular = 0.25f; });
+        add("blinn", [r](MaterialParameters& p) {
+            p.specular = 1.0f;
+            p.roughness = r;
+        });
+    add("mix", [](MaterialParameters& p) {
+        p.diffuse = 0.5f;
+        p.phong = 0.25f;
+        p.specular = 0.25f;
+    });
     add("mirror", [](MaterialParameters& p) { p.reflection_max = p.reflection_min = Color(1.0f); });
- add("half mirror", [](MaterialParameters& p) {
+    add("half mirror", [](MaterialParameters& p) {
         p.diffuse = 1.0f;
         p.reflection_max = p.reflection_min = Color(0.5f);
     });
-    add("fresnel glass", [](MaterialParameters& p) {
-        p.ior = 1.5f;
-        p.reflection_max = Color(1.0f);
-        p.reflection_fresnel = true;
-    }, Color(1.0f), 0.0f, 1.0f);
-    add("glass", [](MaterialParameters& p) { p.ior = 1.5f; }, Color(1.0f), 0.0f, 1.0f);
-    add("filter glass", [](MaterialParameters& p) { p.ior = 1.33f; p.diffuse = 0.1f; },
+    add(
+        "fresnel glass",
+        [](MaterialParameters& p) {
+            p.ior = 1.5f;
+            p.reflection_max = Color(1.0f);
+            p.reflection_fresnel = true;
+        },
+        Color(1.0f), 0.0f, 1.0f);
+    add(
+        "glass", [](MaterialParameters& p) { p.ior = 1.5f; }, Color(1.0f), 0.0f, 1.0f);
+    add(
+        "filter glass",
+        [](MaterialParameters& p) {
+            p.ior = 1.33f;
+            p.diffuse = 0.1f;
+        },
         Color(0.5f, 0.9f, 0.3f), 0.7f, 0.2f);
-    add("clear", [](MaterialParameters& p) {}, Color(1.0f), 0.0f, 1.0f);
+    add(
+        "clear", [](MaterialParameters& p) {}, Color(1.0f), 0.0f, 1.0f);
 
     std::mt19937 rng(10);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);

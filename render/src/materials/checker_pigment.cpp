@@ -10,16 +10,17 @@ namespace {
 // colours; POV's small tolerance keeps a plane at an integer coordinate on
 // one side.
 class CheckerTexture final : public Texture {
-public:
+  public:
     CheckerTexture(const sg::Pigment& pigment, const TextureSpaces& spaces)
-        : m_first(to_sample(pigment.checker[0])), m_second(to_sample(pigment.checker[1])),
-          m_pattern_from_object(pigment.pattern_from_object), m_spaces(spaces) {}
+        : m_first(to_sample(pigment.checker[0])),
+          m_second(to_sample(pigment.checker[1])),
+          m_pattern_from_object(pigment.pattern_from_object),
+          m_spaces(spaces) {}
 
     TextureSample evaluate(const Hit& hit) const override {
         constexpr double kTolerance = 1e-6;  // POV: Small_Tolerance, relative to a unit cell
         const glm::dvec3 p = pattern_point(hit, m_spaces, m_pattern_from_object);
-        const double cells = std::floor(p.x + kTolerance) + std::floor(p.y + kTolerance) +
-                             std::floor(p.z + kTolerance);
+        const double cells = std::floor(p.x + kTolerance) + std::floor(p.y + kTolerance) + std::floor(p.z + kTolerance);
         const bool odd = std::fmod(std::fabs(cells), 2.0) == 1.0;
         return odd ? m_second : m_first;
     }
@@ -28,7 +29,7 @@ public:
                 0.5f * (m_first.transmit + m_second.transmit)};
     }
 
-private:
+  private:
     TextureSample m_first, m_second;
     glm::dmat4 m_pattern_from_object;
     const TextureSpaces& m_spaces;

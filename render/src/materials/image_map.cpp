@@ -20,7 +20,9 @@ float srgb_decode(float encoded) {
 
 }  // namespace
 
-Vec2 planar_map(const glm::dvec3& p) { return {float(p.x), float(p.y)}; }
+Vec2 planar_map(const glm::dvec3& p) {
+    return {float(p.x), float(p.y)};
+}
 
 Vec2 spherical_map(const glm::dvec3& p) {
     // POV's spherical map: u is the angle from +x in the x-z plane, v the
@@ -42,7 +44,7 @@ Vec2 cylindrical_map(const glm::dvec3& p) {
 
 // Holds the TextureSystem for the life of every image texture using it.
 class ImageTextureSystem {
-public:
+  public:
     ImageTextureSystem() : m_system(OIIO::TextureSystem::create(false)) {
         m_system->attribute("automip", 1);
         m_system->attribute("max_memory_MB", 512.0f);
@@ -50,32 +52,34 @@ public:
     ~ImageTextureSystem() { OIIO::TextureSystem::destroy(m_system); }
     OIIO::TextureSystem& get() const { return *m_system; }
 
-private:
+  private:
     OIIO::TextureSystem* m_system;
 };
 
 namespace {
 
 class ImageTexture final : public Texture {
-public:
-    ImageTexture(const sg::Pigment& pigment, const TextureSpaces& spaces,
-                 std::shared_ptr<ImageTextureSystem> images)
-        : m_images(std::move(images)), m_map(pigment.image), m_filename(pigment.image.path),
-          m_pattern_from_object(pigment.pattern_from_object), m_spaces(spaces) {
+  public:
+    ImageTexture(const sg::Pigment& pigment, const TextureSpaces& spaces, std::shared_ptr<ImageTextureSystem> images)
+        : m_images(std::move(images)),
+          m_map(pigment.image),
+          m_filename(pigment.image.path),
+          m_pattern_from_object(pigment.pattern_from_object),
+          m_spaces(spaces) {
         OIIO::TextureSystem& system = m_images->get();
         OIIO::ImageSpec spec;
         if (m_map.path.empty() || !system.get_imagespec(m_filename, 0, spec)) {
             std::string why = system.geterror();
-            throw SceneError(m_map.location, "cannot read image '" + m_map.path + "'" +
-                                                 (why.empty() ? std::string() : ": " + why));
+            throw SceneError(m_map.location,
+                             "cannot read image '" + m_map.path + "'" + (why.empty() ? std::string() : ": " + why));
         }
         m_channels = glm::clamp(spec.nchannels, 1, 4);
         // 8- and 16-bit files are display-encoded; float files are linear.
         m_decode_srgb = m_map.srgb && !spec.format.is_floating_point();
         m_options.swrap = m_map.once ? OIIO::TextureOpt::WrapBlack : OIIO::TextureOpt::WrapPeriodic;
         m_options.twrap = m_options.swrap;
-        m_options.interpmode = m_map.interpolate == 0 ? OIIO::TextureOpt::InterpClosest
-                                                      : OIIO::TextureOpt::InterpBilinear;
+        m_options.interpmode =
+            m_map.interpolate == 0 ? OIIO::TextureOpt::InterpClosest : OIIO::TextureOpt::InterpBilinear;
         m_options.mipmode = OIIO::TextureOpt::MipModeNoMIP;
         float mean[4] = {0, 0, 0, 1};
         if (system.get_texture_info(m_filename, 0, OIIO::ustring("averagecolor"),
@@ -98,18 +102,16 @@ public:
             uv = Vec2(float(q.x), float(q.y));
         }
         }
-        if (m_map.once && (uv.x < 0.0f || uv.x > 1.0f || uv.y < 0.0f || uv.y > 1.0f))
-            return {Color(0.0f), 0.0f, 1.0f};
+        if (m_map.once && (uv.x < 0.0f || uv.x > 1.0f || uv.y < 0.0f || uv.y > 1.0f)) return {Color(0.0f), 0.0f, 1.0f};
         float texel[4] = {0, 0, 0, 1};
         OIIO::TextureOpt options = m_options;
         // OIIO's t runs down the image; lancer's v runs up.
-        m_images->get().texture(m_filename, options, uv.x, 1.0f - uv.y, 0.0f, 0.0f, 0.0f, 0.0f,
-                                m_channels, texel);
+        m_images->get().texture(m_filename, options, uv.x, 1.0f - uv.y, 0.0f, 0.0f, 0.0f, 0.0f, m_channels, texel);
         return finish(texel);
     }
     TextureSample average() const override { return m_average; }
 
-private:
+  private:
     TextureSample finish(const float* texel) const {
         TextureSample out;
         if (m_channels < 3) {
@@ -117,8 +119,7 @@ private:
         } else {
             out.rgb = Color(texel[0], texel[1], texel[2]);
         }
-        if (m_decode_srgb)
-            out.rgb = Color(srgb_decode(out.rgb.r), srgb_decode(out.rgb.g), srgb_decode(out.rgb.b));
+        if (m_decode_srgb) out.rgb = Color(srgb_decode(out.rgb.r), srgb_decode(out.rgb.g), srgb_decode(out.rgb.b));
         const float alpha = (m_channels == 4 || m_channels == 2) ? texel[m_channels - 1] : 1.0f;
         out.filter = float(m_map.filter_all);
         out.transmit = glm::clamp(float(m_map.transmit_all) + (1.0f - alpha), 0.0f, 1.0f);

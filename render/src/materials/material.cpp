@@ -19,7 +19,9 @@ float metallic_curve(float cos_angle) {
 }
 
 // Blinn exponent k = 1/roughness; roughness 0 means an arbitrarily sharp lobe.
-float blinn_exponent(float roughness) { return 1.0f / glm::max(roughness, 1e-4f); }
+float blinn_exponent(float roughness) {
+    return 1.0f / glm::max(roughness, 1e-4f);
+}
 
 }  // namespace
 
@@ -29,29 +31,28 @@ Color Material::transmission_tint(const SurfaceSample& surface) const {
     return (surface.filter * surface.pigment + Color(surface.transmit)) / total;
 }
 
-
 // With wo = N, N.H = cos(theta_i / 2); substituting x = cos(theta_i / 2)
 // turns the albedo integral 2 pi * int x^k cos(theta) sin(theta) dtheta into
 // 8 pi * int_{1/sqrt 2}^{1} (2 x^(k+3) - x^(k+1)) dx, integrated exactly here.
 // (The usual (k+8)/(8 pi) approximation overshoots by up to 7.5%.)
 float blinn_normalization(float exponent) {
     const double k = exponent;
-    auto antiderivative = [k](double x) { return 2.0 * std::pow(x, k + 4.0) / (k + 4.0) - std::pow(x, k + 2.0) / (k + 2.0); };
+    auto antiderivative = [k](double x) {
+        return 2.0 * std::pow(x, k + 4.0) / (k + 4.0) - std::pow(x, k + 2.0) / (k + 2.0);
+    };
     const double integral = antiderivative(1.0) - antiderivative(std::sqrt(0.5));
     return float(1.0 / (8.0 * 3.14159265358979323846 * integral));
 }
 
 Material::Material(const MaterialParameters& parameters)
-    : m_params(parameters),
-      m_blinn_normalization(blinn_normalization(blinn_exponent(parameters.roughness))) {
+    : m_params(parameters), m_blinn_normalization(blinn_normalization(blinn_exponent(parameters.roughness))) {
     if (const TextureSample* constant = parameters.pigment ? parameters.pigment->constant() : nullptr) {
         m_constant_pigment = SurfaceSample{constant->rgb, constant->filter, constant->transmit};
         m_pigment_is_constant = true;
     }
 }
 
-Color Material::glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo,
-                            const Vec3& wi) const {
+Color Material::glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const {
     const float cos_i = glm::dot(n, wi);
     if (!(cos_i > 0.0f) || !has_glossy()) return Color(0.0f);
     float lobe = 0.0f;
@@ -114,7 +115,6 @@ Color Material::mirror_reflectance(const SurfaceSample& surface, float cos_i, bo
 bool Material::has_mirror() const {
     return max_component(m_params.reflection_max) > 0.0f || max_component(m_params.reflection_min) > 0.0f;
 }
-
 
 bool refract(const Vec3& d, const Vec3& n, float eta, Vec3& transmitted) {
     const float cos_i = -glm::dot(d, n);

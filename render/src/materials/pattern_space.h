@@ -16,8 +16,7 @@ inline TextureSample to_sample(const sg::Color& c) {
 }
 
 // Pattern-space point of a hit: world -> texture-owner object -> pattern.
-inline glm::dvec3 pattern_point(const Hit& hit, const TextureSpaces& spaces,
-                                const glm::dmat4& pattern_from_object) {
+inline glm::dvec3 pattern_point(const Hit& hit, const TextureSpaces& spaces, const glm::dmat4& pattern_from_object) {
     glm::dvec4 p(glm::dvec3(hit.position), 1.0);
     if (hit.object_id < spaces.size()) p = spaces[hit.object_id] * p;
     return glm::dvec3(pattern_from_object * p);

@@ -5,13 +5,13 @@ namespace lancer {
 namespace {
 
 class SolidTexture final : public Texture {
-public:
+  public:
     explicit SolidTexture(const TextureSample& value) : m_value(value) {}
     TextureSample evaluate(const Hit&) const override { return m_value; }
     TextureSample average() const override { return m_value; }
     const TextureSample* constant() const override { return &m_value; }
 
-private:
+  private:
     TextureSample m_value;
 };
 

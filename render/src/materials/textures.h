@@ -9,7 +9,6 @@
 #include "lancer/scene_graph.h"
 #include "lancer/texture.h"
 
-
 namespace lancer {
 
 // For each object id, the map from world space to the space of the object
@@ -22,7 +21,7 @@ using TextureSpaces = std::vector<glm::dmat4>;
 class ImageTextureSystem;
 
 class TextureFactory {
-public:
+  public:
     explicit TextureFactory(const TextureSpaces& spaces);
     ~TextureFactory();
     TextureFactory(const TextureFactory&) = delete;
@@ -36,7 +35,7 @@ public:
 
     bool has_image_system() const { return m_images != nullptr; }
 
-private:
+  private:
     const TextureSpaces& m_spaces;
     std::shared_ptr<ImageTextureSystem> m_images;
 };

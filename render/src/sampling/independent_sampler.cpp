@@ -22,12 +22,11 @@ float to_unit_float(std::uint64_t bits) {
 }
 
 class IndependentSampler final : public Sampler {
-public:
+  public:
     explicit IndependentSampler(std::uint64_t seed) : m_seed(mix64(seed ^ 0x6a09e667f3bcc908ULL)) {}
 
     void start_sample(int pixel_x, int pixel_y, std::uint32_t sample_index) override {
-        std::uint64_t key = mix64(m_seed ^ (std::uint64_t(std::uint32_t(pixel_x)) << 32 |
-                                            std::uint32_t(pixel_y)));
+        std::uint64_t key = mix64(m_seed ^ (std::uint64_t(std::uint32_t(pixel_x)) << 32 | std::uint32_t(pixel_y)));
         m_stream = mix64(key + 0x9e3779b97f4a7c15ULL * (std::uint64_t(sample_index) + 1));
         m_dimension = 0;
     }
@@ -39,7 +38,7 @@ public:
     }
     std::unique_ptr<Sampler> clone() const override { return std::make_unique<IndependentSampler>(*this); }
 
-private:
+  private:
     std::uint64_t next_bits() { return mix64(m_stream + 0xd1b54a32d192ed03ULL * ++m_dimension); }
 
     std::uint64_t m_seed;

@@ -119,16 +119,17 @@ std::uint32_t owen_scramble(std::uint32_t x, std::uint32_t seed) {
 }
 
 // [0,1) from the top 24 bits, so the float is exact and never rounds to 1.
-float to_unit_float(std::uint32_t x) { return float(x >> 8) * 0x1p-24f; }
+float to_unit_float(std::uint32_t x) {
+    return float(x >> 8) * 0x1p-24f;
+}
 
 class SobolSampler final : public Sampler {
-public:
+  public:
     explicit SobolSampler(std::uint64_t seed)
         : m_seed(mix64(seed ^ 0x5b1e5c0ffee5eedull)), m_table(&direction_numbers()) {}
 
     void start_sample(int pixel_x, int pixel_y, std::uint32_t sample_index) override {
-        m_pixel_key = mix64(m_seed ^ mix64((std::uint64_t(std::uint32_t(pixel_x)) << 32) |
-                                           std::uint32_t(pixel_y)));
+        m_pixel_key = mix64(m_seed ^ mix64((std::uint64_t(std::uint32_t(pixel_x)) << 32) | std::uint32_t(pixel_y)));
         m_index = sample_index;
         m_dimension = 0;
     }
@@ -144,7 +145,7 @@ public:
 
     std::unique_ptr<Sampler> clone() const override { return std::make_unique<SobolSampler>(*this); }
 
-private:
+  private:
     float value(std::uint32_t dimension) const {
         const std::uint64_t dim_key = mix64(m_pixel_key + 0x9e3779b97f4a7c15ull * (dimension + 1));
         if (dimension >= m_table->size())

@@ -18,15 +18,14 @@
 namespace lancer {
 
 class CountingScene final : public RenderScene {
-public:
+  public:
     explicit CountingScene(const RenderScene& inner);
 
     bool intersect(const Ray& ray, Hit& hit) const override {
         count();
         return m_inner.intersect(ray, hit);
     }
-    void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found,
-                         RayCoherence coherence) const override {
+    void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found, RayCoherence coherence) const override {
         this->count(std::uint64_t(count));
         m_inner.intersect_batch(rays, count, hits, found, coherence);
     }
@@ -44,7 +43,7 @@ public:
     // Queries so far, over every thread. Exact once the threads are idle.
     std::uint64_t rays() const;
 
-private:
+  private:
     // One counter per TBB thread slot, each on its own cache line; a slot is
     // only written by the thread owning that index, so a relaxed load and
     // store (no locked instruction) suffice.

@@ -13,7 +13,7 @@
 namespace lancer {
 
 class Film {
-public:
+  public:
     // One pixel's running totals, in double so sums stay exact enough for
     // thousands of samples; also the checkpoint's on-disk record.
     struct Accumulator {
@@ -59,12 +59,12 @@ public:
         __builtin_prefetch(first + sizeof(Accumulator) - 1, 1);
     }
 
-    Color mean(int x, int y) const;              // black if no samples
-    Color variance_of_mean(int x, int y) const;  // sample variance / n
+    Color mean(int x, int y) const;                  // black if no samples
+    Color variance_of_mean(int x, int y) const;      // sample variance / n
     std::uint32_t sample_count(int x, int y) const;  // finite samples
     // Samples taken, finite or not: the index of the pixel's next sample.
     std::uint32_t samples_taken(int x, int y) const { return m_taken[std::size_t(y) * m_width + x]; }
-    std::uint64_t nonfinite_samples() const {   // over the whole film
+    std::uint64_t nonfinite_samples() const {  // over the whole film
         return m_nonfinite_total.value.load(std::memory_order_relaxed);
     }
     // False until a sample is added (or restored): every pixel has taken
@@ -77,7 +77,7 @@ public:
     // there are width x height of them.
     void restore(std::vector<Accumulator> accumulators);
 
-private:
+  private:
     const Accumulator& at(int x, int y) const { return m_pixels[std::size_t(y) * m_width + x]; }
     int m_width;
     int m_height;

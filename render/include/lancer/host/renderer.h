@@ -68,9 +68,9 @@ struct RenderOptions {
 inline constexpr int kDefaultAdaptiveCap = 4096;
 
 struct RenderStats {
-    double seconds = 0.0;                  // wall time of render_image
-    std::uint64_t samples = 0;             // samples taken by this call
-    std::uint64_t nonfinite_samples = 0;   // of those, NaN or infinite (dropped)
+    double seconds = 0.0;                 // wall time of render_image
+    std::uint64_t samples = 0;            // samples taken by this call
+    std::uint64_t nonfinite_samples = 0;  // of those, NaN or infinite (dropped)
     // Ray queries (intersect + occluded) counted by options.ray_counter
     // (counting_scene.h), else 0.
     std::uint64_t rays = 0;
@@ -90,7 +90,7 @@ struct RenderStats {
 // Renders into `film` (of size width x height). Deterministic: the same
 // per-pixel sample counts give the same film bit for bit whatever the
 // thread count, tile size or pass schedule.
-RenderStats render_image(const RenderScene& scene, const Integrator& integrator,
-                         const RenderOptions& options, Film& film);
+RenderStats render_image(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options,
+                         Film& film);
 
 }  // namespace lancer

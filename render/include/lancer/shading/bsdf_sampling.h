@@ -27,9 +27,7 @@ struct Frame {
     // Any right-handed basis around unit `n` (continuous except at n.z = -1).
     static Frame from_normal(const Vec3& n);
     Vec3 to_world(const Vec3& local) const { return local.x * s + local.y * t + local.z * n; }
-    Vec3 to_local(const Vec3& world) const {
-        return Vec3(glm::dot(world, s), glm::dot(world, t), glm::dot(world, n));
-    }
+    Vec3 to_local(const Vec3& world) const { return Vec3(glm::dot(world, s), glm::dot(world, t), glm::dot(world, n)); }
 };
 
 // ------------------------------------------------------------------ warps
@@ -65,15 +63,14 @@ float phong_lobe_pdf(const Vec3& n, const Vec3& wo, const Vec3& wi, float expone
 // Blinn: the half vector h is drawn with density (k+1)/(2 pi) (n.h)^k and wo
 // reflected about it, so p(wi) = p(h) / (4 |wo.h|). Empty when wo.h <= 0
 // (the reflected direction would have a different half vector).
-std::optional<Vec3> sample_blinn_lobe(const Vec3& n, const Vec3& wo, float exponent,
-                                      const Vec2& u);
+std::optional<Vec3> sample_blinn_lobe(const Vec3& n, const Vec3& wo, float exponent, const Vec2& u);
 float blinn_lobe_pdf(const Vec3& n, const Vec3& wo, const Vec3& wi, float exponent);
 
 // ------------------------------------------------------------------ material
 
 // One draw from a Bsdf.
 struct BsdfSample {
-    Vec3 wi{0.0f};        // unit, from the surface towards where light comes from
+    Vec3 wi{0.0f};  // unit, from the surface towards where light comes from
     // f * |cos| / pdf for smooth lobes; the component's reflectance or
     // transmittance over its choice probability for delta ones. Black: failed.
     Color weight{0.0f};
@@ -107,7 +104,7 @@ struct BsdfSample {
 //             (radiance is not symmetric across an interface; pbrt's
 //             TransportMode::Radiance).
 class Bsdf {
-public:
+  public:
     // `wo` unit, pointing away from the hit (towards the previous vertex).
     Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hit, const Vec3& wo,
          bool additive_reflection = false);
@@ -125,14 +122,14 @@ public:
     // The shading normal turned towards wo.
     const Vec3& normal() const { return m_n; }
 
-private:
+  private:
     float smooth_pdf(const Vec3& wi) const;  // mixture density alone
 
     const Material& m_material;
     SurfaceSample m_surface;
     Vec3 m_wo;
-    Vec3 m_n;                 // shading normal facing wo
-    bool m_entering = true;   // wo is on the geometric normal's side
+    Vec3 m_n;                // shading normal facing wo
+    bool m_entering = true;  // wo is on the geometric normal's side
     float m_transparency = 0.0f;
     Color m_tint{0.0f};
     Color m_diffuse_scale{1.0f};  // 1 - rho_r, or 1 with additive reflection

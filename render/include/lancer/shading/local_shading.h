@@ -25,8 +25,8 @@ struct ShadingContext {
 
 inline ShadingContext make_shading_context(const Hit& hit, const Ray& ray) {
     const Vec3 wo = -glm::normalize(ray.direction);
-    return ShadingContext{hit, *hit.material, hit.material->sample_surface(hit), wo,
-                          hit.facing_normal(wo), hit.is_front_face(wo)};
+    return ShadingContext{hit, *hit.material,         hit.material->sample_surface(hit),
+                          wo,  hit.facing_normal(wo), hit.is_front_face(wo)};
 }
 
 // Reflected radiance split by lobe, so an integrator can weight or replace
@@ -121,8 +121,8 @@ enum class Lobes {
 
 // Reflected light from one light of the simple model (see simple_model_light).
 // No shadow ray is cast for light the requested lobes do not reflect.
-inline LobeRadiance reflect_simple_light(const RenderScene& scene, const ShadingContext& at,
-                                         const Light& light, Shadows shadows, Lobes lobes = Lobes::All) {
+inline LobeRadiance reflect_simple_light(const RenderScene& scene, const ShadingContext& at, const Light& light,
+                                         Shadows shadows, Lobes lobes = Lobes::All) {
     const Light& stand_in = simple_model_light(light);
     // Point and directional lights ignore u: one sample is exact.
     const LightSample sample = stand_in.sample(at.hit.position, Vec2(0.5f));
@@ -142,8 +142,7 @@ inline LobeRadiance simple_direct_light(const RenderScene& scene, const std::vec
     for (const Light* light : lights) total += reflect_simple_light(scene, at, *light, shadows);
     return total;
 }
-inline LobeRadiance simple_direct_light(const RenderScene& scene, const ShadingContext& at,
-                                        Shadows shadows) {
+inline LobeRadiance simple_direct_light(const RenderScene& scene, const ShadingContext& at, Shadows shadows) {
     return simple_direct_light(scene, scene.lights(), at, shadows);
 }
 

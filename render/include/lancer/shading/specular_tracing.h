@@ -21,16 +21,16 @@
 //   which have no surface a reflected ray could find.
 #pragma once
 
-#include "lancer/shading/local_shading.h"
 #include "lancer/sampler.h"
+#include "lancer/shading/local_shading.h"
 
 namespace lancer {
 
 struct SpecularOptions {
-    int max_depth = 5;                     // POV's max_trace_level: the camera ray is level 1
-    float min_weight = 1.0f / 255.0f;      // POV's adc_bailout on the path weight
-    bool fresnel = false;                  // see the header comment
-    bool additive_reflection = false;      // true: POV-Ray's diffuse + reflection
+    int max_depth = 5;                 // POV's max_trace_level: the camera ray is level 1
+    float min_weight = 1.0f / 255.0f;  // POV's adc_bailout on the path weight
+    bool fresnel = false;              // see the header comment
+    bool additive_reflection = false;  // true: POV-Ray's diffuse + reflection
 };
 
 // How one hit passes light on along its mirror and refracted directions.
@@ -77,16 +77,14 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
 // diffuse work when diffuse_scale is black. A ray past max_depth or under
 // min_weight is not traced and counts black, as in POV-Ray.
 template <class LocalTerm>
-Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler,
-                     const SpecularOptions& options, const LocalTerm& local_term, int level = 1,
-                     float weight = 1.0f);
+Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
+                     const LocalTerm& local_term, int level = 1, float weight = 1.0f);
 
 // trace_specular() for a ray whose nearest hit is known (null: it escaped),
 // such as a camera ray the host traced.
 template <class LocalTerm>
 Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler& sampler,
-                     const SpecularOptions& options, const LocalTerm& local_term, int level = 1,
-                     float weight = 1.0f) {
+                     const SpecularOptions& options, const LocalTerm& local_term, int level = 1, float weight = 1.0f) {
     if (found == nullptr) return scene.background(ray);
     const Hit& hit = *found;
     const ShadingContext at = make_shading_context(hit, ray);
@@ -99,8 +97,8 @@ Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene,
         if (is_black(path_weight)) return;
         const float next_weight = weight * max_component(path_weight);
         if (level + 1 > options.max_depth || next_weight < options.min_weight) return;
-        radiance += path_weight * trace_specular(hit.spawn_ray(direction), scene, sampler, options,
-                                                 local_term, level + 1, next_weight);
+        radiance += path_weight * trace_specular(hit.spawn_ray(direction), scene, sampler, options, local_term,
+                                                 level + 1, next_weight);
     };
     follow(split.reflection, split.reflected);
     follow(split.transmission, split.refracted);
@@ -108,8 +106,8 @@ Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene,
 }
 
 template <class LocalTerm>
-Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler,
-                     const SpecularOptions& options, const LocalTerm& local_term, int level, float weight) {
+Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
+                     const LocalTerm& local_term, int level, float weight) {
     Hit hit;
     const bool found = scene.intersect(ray, hit);
     return shade_specular(ray, found ? &hit : nullptr, scene, sampler, options, local_term, level, weight);
