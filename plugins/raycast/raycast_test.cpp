@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "diffuse_point_lanes.h"
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
 #include "lancer/host/scene_compiler.h"
@@ -98,6 +99,22 @@ TEST(RaycastBatch, ImageIsHitByHitShadingsBitForBit) {
             EXPECT_GT(edge_pixels, 0);
         }
     }
+}
+
+// The lanes take a scene whose lights are all plain point lights (read
+// through Light::parameters), and no other: a fade or an area light sends
+// every hit the general way.
+TEST(RaycastBatch, LanesTakeOnlyPlainPointLights) {
+    const sg::SceneGraph plain = sphere_scene();
+    EXPECT_TRUE(DiffusePointLanes(compile_scene(plain)->lights(), Color(1.0f), true).usable());
+    sg::SceneGraph faded = sphere_scene();
+    faded.lights[1].fade_distance = 2.0;
+    faded.lights[1].fade_power = 2.0;
+    EXPECT_FALSE(DiffusePointLanes(compile_scene(faded)->lights(), Color(1.0f), true).usable());
+    sg::SceneGraph area = sphere_scene();
+    area.lights[1].kind = sg::Light::Kind::AreaSphere;
+    area.lights[1].radius = 0.2;
+    EXPECT_FALSE(DiffusePointLanes(compile_scene(area)->lights(), Color(1.0f), true).usable());
 }
 
 }  // namespace

@@ -165,7 +165,8 @@ TEST(EmbreeScene, MeshUsedTwiceIsInstancedWithEachTransform) {
 // what they find one by one, on every kind of shape, including instanced
 // meshes, planes outside the BVH and rays that hit nothing; batch sizes
 // that are not multiples of the packet width leave idle lanes.
-void expect_batches_find_what_single_rays_find(const RenderScene& scene, int batch_size) {
+void expect_batches_find_what_single_rays_find(const RenderScene& scene, int batch_size,
+                                               RayCoherence coherence = RayCoherence::Coherent) {
     std::mt19937 random(7);
     std::uniform_real_distribution<float> spread(-0.6f, 0.6f);
     std::vector<Ray> rays;
@@ -175,7 +176,7 @@ void expect_batches_find_what_single_rays_find(const RenderScene& scene, int bat
         const int count = int(std::min<std::size_t>(batch_size, rays.size() - first));
         std::vector<Hit> batch(count);
         std::unique_ptr<bool[]> found(new bool[count]);
-        scene.intersect_batch(&rays[first], count, batch.data(), found.get(), RayCoherence::Coherent);
+        scene.intersect_batch(&rays[first], count, batch.data(), found.get(), coherence);
         for (int i = 0; i < count; ++i) {
             Hit single;
             const bool single_found = scene.intersect(rays[first + i], single);
@@ -226,6 +227,43 @@ TEST(EmbreeScene, CoherentBatchesWithoutPlanesFindWhatSingleRaysFind) {
     expect_batches_find_what_single_rays_find(*scene, 37);
     expect_batches_find_what_single_rays_find(*scene, 256);
     expect_batches_find_what_single_rays_find(*scene, 1);
+}
+
+// Incoherent batches (bounces) are traced ray by ray: the same hits.
+TEST(EmbreeScene, IncoherentBatchesFindWhatSingleRaysFind) {
+    expect_batches_find_what_single_rays_find(*compile_objects(shapes_of_every_kind(true)), 37,
+                                              RayCoherence::Incoherent);
+}
+
+// Compiling moves what hits read out of a graph it consumes, and copies
+// it from a mesh the caller still holds: the caller's graph stays whole,
+// and both render scenes find the same interpolated normals.
+TEST(EmbreeScene, CompilingCopiesAMeshTheCallerShares) {
+    auto mesh = std::make_shared<sg::TriangleMesh>(*triangle_mesh({0, 0, 5}, {4, 0, 5}, {0, 4, 5}));
+    mesh->normals = {glm::normalize(glm::dvec3(-1, 0, -1)), glm::normalize(glm::dvec3(1, 0, -1)), {0, 0, -1}};
+    for (int k = 0; k < 3; ++k) mesh->faces[0].normal[k] = k;
+    sg::SceneGraph graph;
+    graph.objects.push_back(mesh_object(mesh));
+    const auto copied = compile_scene(graph);  // `graph` and `mesh` still hold the mesh
+    EXPECT_EQ(mesh->normals.size(), 3u);
+    EXPECT_EQ(mesh->faces.size(), 1u);
+    const auto moved = compile_scene(std::move(graph));  // `mesh` still holds it: copied again
+    EXPECT_EQ(mesh->normals.size(), 3u);
+    mesh.reset();
+    sg::SceneGraph alone;
+    auto only = std::make_shared<sg::TriangleMesh>(*triangle_mesh({0, 0, 5}, {4, 0, 5}, {0, 4, 5}));
+    only->normals = {glm::normalize(glm::dvec3(-1, 0, -1)), glm::normalize(glm::dvec3(1, 0, -1)), {0, 0, -1}};
+    for (int k = 0; k < 3; ++k) only->faces[0].normal[k] = k;
+    alone.objects.push_back(mesh_object(std::move(only)));
+    const auto consumed = compile_scene(std::move(alone));  // the graph alone held it: moved
+    const Ray ray = make_ray(Vec3(0.01f, 0.01f, 0), Vec3(0, 0, 1));
+    Hit a, b, c;
+    ASSERT_TRUE(copied->intersect(ray, a));
+    ASSERT_TRUE(moved->intersect(ray, b));
+    ASSERT_TRUE(consumed->intersect(ray, c));
+    EXPECT_LT(a.shading_normal.x, -0.6f);  // the per-vertex normals were read
+    EXPECT_EQ(a.shading_normal, b.shading_normal);
+    EXPECT_EQ(a.shading_normal, c.shading_normal);
 }
 
 TEST(EmbreeScene, NoShadowObjectsDoNotOcclude) {

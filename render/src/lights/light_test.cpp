@@ -264,5 +264,88 @@ TEST(Lights, FlatEmitterProxyHasCosinePattern) {
     EXPECT_NEAR(scene->lights()[0]->power().r, proxy.power().r, 1e-3f * proxy.power().r);
 }
 
+// Integrators that evaluate a kind of light themselves read its parameters
+// through Light::parameters<T>(): the struct of its own kind, null for any
+// other, and the values the scene gave (in lancer's units).
+TEST(Lights, ParametersAreTypedByKind) {
+    sg::Light faded = point_light({1, 2, 3}, {1, 0.5, 0.25});
+    faded.fade_distance = 2.0;
+    faded.fade_power = 1.0;
+    sg::Light rectangle;
+    rectangle.kind = sg::Light::Kind::AreaRectangle;
+    rectangle.position = {0, 4, 0};
+    rectangle.axis1 = {2, 0, 0};
+    rectangle.axis2 = {0, 0, 1};
+    rectangle.color = {1, 1, 1};
+    sg::Light sphere;
+    sphere.kind = sg::Light::Kind::AreaSphere;
+    sphere.position = {0, 6, 0};
+    sphere.radius = 0.5;
+    sphere.color = {1, 1, 1};
+    auto scene = compile_lights({point_light({0, 10, 0}, {1, 1, 1}), faded, rectangle, sphere});
+    ASSERT_EQ(scene->lights().size(), 4u);
+    // Area lights come first in lights() (their surfaces are built first).
+    const Light* by_kind[2][2] = {};  // [point][plain or faded], [area][rectangle or sphere]
+    for (const Light* light : scene->lights()) {
+        if (light->kind() == Light::Kind::Point) by_kind[0][by_kind[0][0] ? 1 : 0] = light;
+        if (light->kind() == Light::Kind::Rectangle) by_kind[1][0] = light;
+        if (light->kind() == Light::Kind::Sphere) by_kind[1][1] = light;
+    }
+    ASSERT_TRUE(by_kind[0][0] && by_kind[0][1] && by_kind[1][0] && by_kind[1][1]);
+    const Light& plain = *by_kind[0][0];
+    const Light& fading = *by_kind[0][1];
+    const Light& panel = *by_kind[1][0];
+    const Light& ball = *by_kind[1][1];
+
+    const auto* point = plain.parameters<PointLightParameters>();
+    ASSERT_NE(point, nullptr);
+    EXPECT_EQ(point->position, Vec3(0, 10, 0));
+    EXPECT_NEAR(point->intensity.r, kPi, 1e-6f);
+    EXPECT_TRUE(point->is_plain_inverse_square());
+    EXPECT_EQ(plain.parameters<RectangleLightParameters>(), nullptr);
+    EXPECT_EQ(plain.parameters<DirectionalLightParameters>(), nullptr);
+
+    const auto* fade = fading.parameters<PointLightParameters>();
+    ASSERT_NE(fade, nullptr);
+    EXPECT_FLOAT_EQ(fade->fade_distance, 2.0f);
+    EXPECT_FALSE(fade->is_plain_inverse_square());
+
+    const auto* rect = panel.parameters<RectangleLightParameters>();
+    ASSERT_NE(rect, nullptr);
+    EXPECT_EQ(rect->center, Vec3(0, 4, 0));
+    EXPECT_EQ(rect->axis1, Vec3(2, 0, 0));
+    EXPECT_NEAR(rect->radiance.r, kPi / 2.0f, 1e-5f);  // pi C / area
+    EXPECT_EQ(panel.parameters<PointLightParameters>(), nullptr);
+    // Its proxy is a point light with a one-sided cosine pattern.
+    const auto* proxy = panel.proxy().parameters<PointLightParameters>();
+    ASSERT_NE(proxy, nullptr);
+    EXPECT_TRUE(proxy->one_sided);
+    EXPECT_FALSE(proxy->is_plain_inverse_square());
+
+    const auto* round = ball.parameters<SphereLightParameters>();
+    ASSERT_NE(round, nullptr);
+    EXPECT_FLOAT_EQ(round->radius, 0.5f);
+    EXPECT_EQ(round->center, Vec3(0, 6, 0));
+    EXPECT_EQ(ball.parameters<RectangleLightParameters>(), nullptr);
+}
+
+// The float path of a plain point light is plain_point_incidence(): what
+// lane-parallel shading computes is what sample() gives, bit for bit.
+TEST(Lights, PlainPointSampleIsPlainPointIncidence) {
+    auto scene = compile_lights({point_light({0.3, 10, -2}, {1, 0.5, 0.25})});
+    const Light& light = *scene->lights()[0];
+    const auto* point = light.parameters<PointLightParameters>();
+    ASSERT_NE(point, nullptr);
+    const Vec3 p(1.7f, -0.25f, 3.5f);
+    const Vec3 to_light = point->position - p;
+    const float distance_squared = glm::dot(to_light, to_light);
+    ASSERT_TRUE(in_plain_point_range(distance_squared));
+    const PointIncidence incidence = plain_point_incidence(distance_squared);
+    const LightSample sample = light.sample(p, Vec2(0.5f));
+    EXPECT_EQ(sample.radiance, point->intensity * incidence.falloff);
+    EXPECT_EQ(sample.wi, to_light * incidence.inverse_distance);
+    EXPECT_EQ(sample.distance, incidence.distance);
+}
+
 }  // namespace
 }  // namespace lancer
