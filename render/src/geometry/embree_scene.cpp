@@ -7,7 +7,6 @@
 #include <string>
 
 #include "geometry/embree_scene.h"
-#include "lancer/host/scene_compiler.h"
 
 namespace lancer {
 namespace embree {
@@ -171,8 +170,8 @@ void EmbreeScene::build() {
 
 }  // namespace embree
 
-std::unique_ptr<RenderScene> compile_scene(sg::SceneGraph graph) {
-    return std::make_unique<embree::EmbreeScene>(build_scene_data(graph));
+std::unique_ptr<RenderScene> make_embree_scene(std::unique_ptr<SceneData> data) {
+    return std::make_unique<embree::EmbreeScene>(std::move(data));
 }
 
 }  // namespace lancer

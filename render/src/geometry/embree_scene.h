@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "host/scene_builder.h"
+#include "geometry/scene_data.h"
 #include "lancer/render_scene.h"
 
 namespace lancer::embree {
@@ -161,3 +161,11 @@ class EmbreeScene final : public RenderScene {
 };
 
 }  // namespace lancer::embree
+
+namespace lancer {
+
+// The render scene over `data`, which it owns. Throws std::runtime_error
+// when Embree reports an error.
+std::unique_ptr<RenderScene> make_embree_scene(std::unique_ptr<SceneData> data);
+
+}  // namespace lancer

@@ -1,0 +1,74 @@
+// The compiled scene's flat world-space tables (internal to liblancer):
+// instances with their placement and material, the meshes, the material and
+// texture tables, the lights with their proxies. host/scene_builder.cpp
+// fills them from the scene graph; the Embree scene (embree_scene.h) builds
+// its acceleration structure over them and owns them.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "geometry/shapes.h"
+#include "lancer/camera.h"
+#include "lancer/render_scene.h"
+#include "lancer/scene_graph.h"
+#include "lights/lights.h"
+#include "materials/textures.h"
+
+namespace lancer {
+
+enum class ShapeKind { Sphere, Box, Plane, Rectangle, Mesh };
+
+// One distinct sg::TriangleMesh, in its own object space. The render scene
+// owns everything hits read: once compiled, nothing refers to the graph.
+struct MeshData {
+    sg::MeshRef source;  // while compiling only; null afterwards
+    // What hit completion interpolates (per-vertex normals and texture
+    // coordinates, and the faces that index them), moved out of the graph.
+    std::vector<sg::Vec3> normals;
+    std::vector<sg::Vec2> uvs;
+    std::vector<sg::TriangleMesh::Face> faces;
+    std::vector<float> object_positions;  // xyz per vertex, plus one padding float
+    std::vector<std::uint32_t> indices;   // three per triangle
+    std::vector<std::uint32_t> face_of_triangle;
+    int uses = 0;
+};
+
+// One leaf object (or area light surface) placed in the world; its index is
+// Hit::object_id.
+struct Instance {
+    ShapeKind kind = ShapeKind::Sphere;
+    Placement placement;
+    AnalyticSphere sphere;
+    AnalyticBox box;
+    AnalyticPlane plane;
+    AnalyticRectangle rectangle;
+    const MeshData* mesh = nullptr;
+    bool mesh_in_world = false;  // world_positions used instead of instancing
+    std::vector<float> world_positions;
+    const Material* material = nullptr;
+    std::vector<const Material*> face_materials;  // by face; null: `material`
+    const Light* emitter = nullptr;               // for emissive materials
+    const Light* light = nullptr;                 // the area light this surface is
+    bool casts_shadow = true;
+    Vec3 bounds_lower{0.0f}, bounds_upper{0.0f};  // world, conservative
+    sg::SourceLocation location;
+};
+
+struct SceneData {
+    std::vector<Instance> instances;
+    std::vector<std::unique_ptr<MeshData>> meshes;
+    TextureSpaces texture_spaces;  // by object id
+    std::unique_ptr<TextureFactory> texture_factory;
+    std::vector<std::unique_ptr<Texture>> textures;
+    std::vector<std::unique_ptr<Material>> materials;
+    std::vector<std::unique_ptr<Light>> owned_lights;
+    std::vector<const Light*> lights;
+    std::vector<const Light*> local_lights;
+    Camera camera;
+    Color background{0.0f};
+    SceneOptions options;
+    Bounds bounds;
+};
+
+}  // namespace lancer
