@@ -3,10 +3,10 @@
 # the files. `scripts/check-format.sh --fix` reformats them instead.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# The tracked files; in a tree without git (an exported archive), every
+# The files git tracks or would (not ignored); in a tree without git (an exported archive), every
 # C++ file outside build folders.
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
-  mapfile -t files < <(git ls-files '*.cpp' '*.h' '*.cc')
+  mapfile -t files < <(git ls-files --cached --others --exclude-standard '*.cpp' '*.h' '*.cc')
 else
   mapfile -t files < <(find . \( -path './build*' -o -path './.git' \) -prune -o \
     -type f \( -name '*.cpp' -o -name '*.h' -o -name '*.cc' \) -print | sed 's|^\./||' | sort)

@@ -6,6 +6,8 @@
 
 namespace lancer {
 
-std::unique_ptr<RenderScene> compile_scene(sg::SceneGraph graph) { return make_embree_scene(build_scene_data(graph)); }
+std::unique_ptr<RenderScene> compile_scene(sg::SceneGraph graph) {
+    return make_embree_scene(build_scene_data(graph));
+}
 
 }  // namespace lancer
