@@ -30,8 +30,8 @@ light_source {
     color rgb 45
     area_light <2, 0, 0>, <0, 0, 2>, 5, 5
 }
-// Fill light (inverse-square falloff: intensity grows with distance squared).
-light_source { <6, 4, -6> color rgb <6, 6, 7> }
+// Fill light: a POV point light, the same at every distance.
+light_source { <6, 4, -6> color rgb <0.07, 0.07, 0.08> }
 
 plane {
     y, 0

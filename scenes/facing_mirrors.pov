@@ -8,7 +8,7 @@ render_settings { integrator "whitted" { } width 320 height 240 }
 
 camera { location <0.6, 1.6, -2.5> look_at <-0.2, 1.2, 0> right x * 4 / 3 angle 60 }
 
-light_source { <0, 3.5, -1> color rgb 12 }
+light_source { <0, 3.5, -1> color rgb 0.9 }
 
 plane { y, 0 texture { pigment { checker color rgb 0.9, color rgb 0.1 scale 0.5 } finish { ambient 0.05 } } }
 plane { y, 4 texture { pigment { color rgb 0.9 } finish { ambient 0.2 } } }

@@ -11,7 +11,7 @@ render_settings { integrator "whitted" { fresnel true } width 320 height 240 }
 camera { location <0, 2.5, -6> look_at <0, 0.7, 0> right x * 4 / 3 angle 50 }
 
 background { color rgb <0.4, 0.5, 0.7> }
-light_source { <-4, 8, -6> color rgb 90 }
+light_source { <-4, 8, -6> color rgb 0.8 }
 
 plane { y, 0 texture { pigment { checker color rgb <0.9, 0.85, 0.7>, color rgb <0.2, 0.25, 0.4> scale 0.6 } finish { ambient 0.05 } } }
 

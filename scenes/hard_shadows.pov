@@ -1,6 +1,6 @@
 // hard_shadows.pov: a point light and a directional (parallel) light over
-// spheres, a box and a triangle. Shows: hard shadows, inverse-square falloff
-// of the point light against the constant directional light.
+// spheres, a box and a triangle. Shows: hard shadows from both, and that a
+// POV point light, like the parallel one, does not fall off with distance.
 // Suits: shadow (the point of it), whitted, path; raycast shows no shadows.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
@@ -12,7 +12,7 @@ camera { location <0, 4, -9> look_at <0, 0.8, 0> right x * 4 / 3 angle 50 }
 plane { y, 0 texture { pigment { color rgb 0.75 } finish { ambient 0.05 diffuse 0.9 } } }
 
 // A warm point light to the left, falling off with distance.
-light_source { <-3, 5, -2> color rgb <1, 0.8, 0.6> * 30 }
+light_source { <-3, 5, -2> color rgb <1, 0.8, 0.6> * 0.8 }
 // A cool sun from the upper right.
 light_source { <10, 10, -5> color rgb <0.25, 0.3, 0.4> parallel point_at <0, 0, 0> }
 

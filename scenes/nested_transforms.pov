@@ -9,8 +9,8 @@ global_settings { assumed_gamma 1.0 }
 render_settings { integrator "shadow" { } width 320 height 240 }
 
 camera { location <0, 5, -9> look_at <0, 1, 0> right x * 4 / 3 angle 50 }
-light_source { <4, 9, -5> color rgb 100 }
-light_source { <-6, 4, -4> color rgb 15 }
+light_source { <4, 9, -5> color rgb 0.8 }
+light_source { <-6, 4, -4> color rgb 0.22 }
 
 plane { y, 0 texture { pigment { color rgb 0.6 } } }
 

@@ -8,8 +8,8 @@ global_settings { assumed_gamma 1.0 }
 render_settings { integrator "shadow" { } width 320 height 240 }
 
 camera { location <0, 3, -6> look_at <0, 0.6, 0> right x * 4 / 3 angle 55 }
-light_source { <3, 7, -5> color rgb 80 }
-light_source { <-5, 3, -3> color rgb 12 }
+light_source { <3, 7, -5> color rgb 1 }
+light_source { <-5, 3, -3> color rgb 0.28 }
 plane { y, 0 texture { pigment { color rgb 0.7 } finish { ambient 0.05 } } }
 
 #declare Knot = obj_mesh { "assets/knot.obj" }

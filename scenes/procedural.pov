@@ -9,8 +9,8 @@ global_settings { assumed_gamma 1.0 }
 render_settings { integrator "shadow" { } width 320 height 240 }
 
 camera { location <0, 7, -13> look_at <0, 2.5, 0> right x * 4 / 3 angle 50 }
-light_source { <5, 14, -8> color rgb 300 }
-light_source { <-8, 6, -10> color rgb 40 }
+light_source { <5, 14, -8> color rgb 1.05 }
+light_source { <-8, 6, -10> color rgb 0.2 }
 plane { y, 0 texture { pigment { color rgb 0.55 } } }
 
 // A box step at height H turned by Angle degrees about the y axis.

@@ -9,7 +9,7 @@ global_settings { assumed_gamma 1.0 }
 render_settings { integrator "shadow" { } width 320 height 240 }
 
 camera { location <0, 3.2, -7> look_at <0, 0.8, 0> right x * 4 / 3 angle 55 }
-light_source { <-3, 8, -6> color rgb 110 }
+light_source { <-3, 8, -6> color rgb 1 }
 
 #declare Grid = pigment { image_map { png "assets/uv_grid.png" interpolate 2 } }
 

@@ -74,19 +74,47 @@ Film render(const sg::SceneGraph& graph, const Integrator& integrator, int size,
     return film;
 }
 
-TEST(RaycastIntegrator, MatteWallUnderAPointLightFollowsTheInverseSquareLaw) {
+// The wall's pixel (x, y) seen under a light at the camera: cos of the
+// angle between the wall's normal (the view axis) and the pixel centre's
+// direction; direction (0,0,0.5), right and up of length 1.
+double pixel_cosine(int x, int y, int size) {
+    const double sx = (x + 0.5) / size - 0.5;
+    const double sy = 0.5 - (y + 0.5) / size;
+    return 0.5 / std::sqrt(0.25 + sx * sx + sy * sy);
+}
+
+// POV-Ray's law (reference/pov-3.7-semantics.md section 5): a point light
+// does not fall off, so a white matte wall shows diffuse * cos, whatever
+// its distance.
+TEST(RaycastIntegrator, MatteWallUnderAPovPointLightFollowsPovsLaw) {
     RaycastFixture raycast;
     // Odd, so the centre pixel looks straight at the wall; fine enough that
-    // cos^3 varies by well under 3% across one pixel even at the corners.
+    // the cosine varies by well under 3% across one pixel even at the corners.
     constexpr int kSize = 101;
-    for (const double distance : {1.0, 2.0, 4.0, 8.0}) {
+    for (const double distance : {1.0, 2.0, 4.0, 8.0, 1000.0}) {
         const Film film = render(wall_scene(distance), *raycast.integrator, kSize, 2);
         for (const auto& [x, y] : {std::pair{50, 50}, {75, 50}, {50, 15}, {90, 90}, {10, 35}}) {
-            // The pixel centre's direction; direction (0,0,0.5), right and up of length 1.
-            const double sx = (x + 0.5) / kSize - 0.5;
-            const double sy = 0.5 - (y + 0.5) / kSize;
-            const double cos_theta = 0.5 / std::sqrt(0.25 + sx * sx + sy * sy);
-            const double expected = std::pow(cos_theta, 3) / (distance * distance);
+            const double expected = pixel_cosine(x, y, kSize);
+            const Color measured = film.mean(x, y);
+            EXPECT_NEAR(measured.g, expected, 0.03 * expected) << "d=" << distance << " pixel " << x << "," << y;
+            EXPECT_FLOAT_EQ(measured.r, measured.g);
+            EXPECT_FLOAT_EQ(measured.b, measured.g);
+        }
+    }
+}
+
+// A physical point lamp (a sphere lamp of radius 0) follows the inverse-
+// square law instead: cos / d'^2 with d' = d / cos, so cos^3 / d^2.
+TEST(RaycastIntegrator, MatteWallUnderAPhysicalPointLampFollowsTheInverseSquareLaw) {
+    RaycastFixture raycast;
+    constexpr int kSize = 101;
+    for (const double distance : {1.0, 2.0, 4.0, 8.0}) {
+        sg::SceneGraph graph = wall_scene(distance);
+        graph.lights[0].kind = sg::Light::Kind::AreaSphere;
+        graph.lights[0].radius = 0.0;
+        const Film film = render(graph, *raycast.integrator, kSize, 2);
+        for (const auto& [x, y] : {std::pair{50, 50}, {75, 50}, {50, 15}, {90, 90}, {10, 35}}) {
+            const double expected = std::pow(pixel_cosine(x, y, kSize), 3) / (distance * distance);
             const Color measured = film.mean(x, y);
             EXPECT_NEAR(measured.g, expected, 0.03 * expected) << "d=" << distance << " pixel " << x << "," << y;
             EXPECT_FLOAT_EQ(measured.r, measured.g);

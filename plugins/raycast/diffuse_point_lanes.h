@@ -28,10 +28,11 @@ class DiffusePointLanes {
         m_usable = lights.size() <= std::size_t(kMaxLights);
         for (std::size_t i = 0; m_usable && i < lights.size(); ++i) {
             const auto* point = lights[i]->parameters<PointLightParameters>();
-            m_usable = point != nullptr && point->is_plain_inverse_square();
+            m_usable = point != nullptr && point->is_plain();
             if (!m_usable) break;
             m_position[i] = point->position;
             m_intensity[i] = point->intensity;
+            m_falloff[i] = point->falloff;
             ++m_lights;
         }
     }
@@ -80,12 +81,13 @@ class DiffusePointLanes {
         for (int light = 0; light < m_lights; ++light) {
             const Vec3 at = m_position[light];
             const Color intensity = m_intensity[light];
+            const PointFalloff falloff_kind = m_falloff[light];
             for (int k = 0; k < count; ++k) {
                 // PointLight::sample's float path.
                 const float tx = at.x - px[k], ty = at.y - py[k], tz = at.z - pz[k];
                 const float distance_squared = (tx * tx + ty * ty) + tz * tz;
                 in_range[k] &= in_plain_point_range(distance_squared);
-                const PointIncidence incidence = plain_point_incidence(distance_squared);
+                const PointIncidence incidence = plain_point_incidence(distance_squared, falloff_kind);
                 const float inverse_distance = incidence.inverse_distance;
                 const float falloff = incidence.falloff;
                 const float radiance_r = intensity.r * falloff, radiance_g = intensity.g * falloff,
@@ -120,6 +122,7 @@ class DiffusePointLanes {
   private:
     Vec3 m_position[kMaxLights];
     Color m_intensity[kMaxLights];
+    PointFalloff m_falloff[kMaxLights];
     int m_lights = 0;
     Color m_ambient_light;
     bool m_with_ambient;

@@ -38,12 +38,13 @@ Ray ray_to_ground(double x) {
     return ray_towards(Vec3(float(x), 1.0f, -5.0f), Vec3(float(x), 0.0f, 0.0f));
 }
 
-// Default material: white, ambient 0.1, diffuse 0.6. A point light of colour
-// C gives radiance 0.6 * C * cos / d^2 on it (light.h's units).
+// Default material: white, ambient 0.1, diffuse 0.6. A POV point light of
+// colour C gives radiance 0.6 * C * cos on it, at any distance (POV-Ray's
+// point lights do not fall off; light.h's units).
 float lit_ground_radiance(double x) {
     const double d2 = x * x + kLightHeight * kLightHeight;
     const double cos_theta = kLightHeight / std::sqrt(d2);
-    return float(0.1 + 0.6 * kLightColor * cos_theta / d2);
+    return float(0.1 + 0.6 * kLightColor * cos_theta);
 }
 
 TEST(ShadowIntegrator, GroundBelowFloatingSphereIsInFullShadow) {

@@ -1,7 +1,8 @@
 // Lights as integrators see them. Units (docs/scene-language.md#lights):
-// a point light of `color C` has radiant intensity pi*C, so a white matte
-// surface facing it at distance 1 shows radiance C, as in POV-Ray; falloff
-// is inverse-square unless the scene gives POV's fade_distance/fade_power.
+// a POV point light of `color C` reaches a surface as radiance pi*C, so a
+// white matte surface facing it shows C, as in POV-Ray, at any distance
+// (POV's fade_distance/fade_power when given); the point proxies of the
+// physical lamps fall off with the inverse square of the distance.
 #pragma once
 
 #include <cmath>
@@ -66,19 +67,28 @@ class Light {
     virtual const void* parameters_of(Kind kind) const { return nullptr; }
 };
 
-// POV's point light; also the proxy of every area light and emitter.
+// How a point light's radiance changes with distance when it has no fade.
+enum class PointFalloff {
+    None,           // POV-Ray's point light: the same at every distance
+    InverseSquare,  // a physical point: the proxies of lancer's physical lamps and emitters
+};
+
+// POV's point light; also the proxy of every physical lamp and emitter.
 struct PointLightParameters {
     static constexpr Light::Kind kKind = Light::Kind::Point;
     Vec3 position{0.0f};
-    Color intensity{0.0f};       // radiant intensity (W/sr) on the pattern's axis
-    float fade_distance = 0.0f;  // POV's fade; 0: inverse-square falloff
+    // Radiance arriving from it at distance 1 on the pattern's axis (a POV
+    // light of colour C: pi*C, so a white matte surface facing it shows C).
+    Color intensity{0.0f};
+    PointFalloff falloff = PointFalloff::InverseSquare;
+    float fade_distance = 0.0f;  // > 0: POV's fade, 2 / (1 + (d / fade_distance)^fade_power), instead
     float fade_power = 0.0f;
     Vec3 pattern_axis{0.0f};  // non-zero: a cosine pattern about it (proxies of flat emitters)
     bool one_sided = false;   // pattern max(0, cos) rather than |cos|
 
-    // Falls off as 1/d^2 in every direction: sample() is plain_point_incidence's
+    // No fade and no pattern: sample() is plain_point_incidence's
     // arithmetic wherever in_plain_point_range(d^2).
-    bool is_plain_inverse_square() const { return fade_distance == 0.0f && pattern_axis == Vec3(0.0f); }
+    bool is_plain() const { return fade_distance == 0.0f && pattern_axis == Vec3(0.0f); }
 };
 
 // POV's `parallel` light: the same irradiance from one direction everywhere.
@@ -106,7 +116,7 @@ struct SphereLightParameters {
     Color radiance{0.0f};
 };
 
-// A plain inverse-square point light at squared distance d2 from the
+// A plain point light (no fade, no pattern) at squared distance d2 from the
 // shading point, in float: the one copy of the arithmetic, which
 // PointLight::sample and lane-parallel shading (plugins/raycast) both use,
 // so they agree bit for bit. Float is exact enough, and cannot overflow,
@@ -119,10 +129,11 @@ struct PointIncidence {
 inline bool in_plain_point_range(float distance_squared) {
     return distance_squared > 1e-30f && distance_squared < 1e30f;
 }
-inline PointIncidence plain_point_incidence(float distance_squared) {
+inline PointIncidence plain_point_incidence(float distance_squared, PointFalloff falloff) {
     const float distance = std::sqrt(distance_squared);
     const float inverse_distance = 1.0f / distance;
-    return {distance, inverse_distance, inverse_distance * inverse_distance};
+    return {distance, inverse_distance,
+            falloff == PointFalloff::InverseSquare ? inverse_distance * inverse_distance : 1.0f};
 }
 
 }  // namespace lancer

@@ -375,10 +375,19 @@ class Builder {
             const bool degenerate_rectangle = source.kind == sg::Light::Kind::AreaRectangle &&
                                               !(glm::length(glm::cross(source.axis1, source.axis2)) > 0.0);
             const bool degenerate_sphere = source.kind == sg::Light::Kind::AreaSphere && !(source.radius > 0.0);
-            if (source.kind == sg::Light::Kind::Point || degenerate_rectangle || degenerate_sphere) {
-                const float fade_distance = source.kind == sg::Light::Kind::Point ? float(source.fade_distance) : 0.0f;
-                add_light(std::make_unique<PointLight>(Vec3(source.position), float(kPiD) * color, fade_distance,
-                                                       float(source.fade_power)));
+            if (source.kind == sg::Light::Kind::Point) {
+                // POV-Ray's point light: no falloff unless it fades.
+                PointLightParameters light;
+                light.position = Vec3(source.position);
+                light.intensity = float(kPiD) * color;
+                light.falloff = PointFalloff::None;
+                light.fade_distance = float(source.fade_distance);
+                light.fade_power = float(source.fade_power);
+                add_light(std::make_unique<PointLight>(light, radius));
+            } else if (degenerate_rectangle || degenerate_sphere) {
+                // A physical lamp without size: the physical point it shrank to.
+                add_light(std::make_unique<PointLight>(
+                    PointLightParameters{.position = Vec3(source.position), .intensity = float(kPiD) * color}));
             }
         }
     }

@@ -27,9 +27,11 @@ EmissiveShapeLight::EmissiveShapeLight(std::unique_ptr<SurfaceSampler> surface, 
     m_power = float(sides * kPiD * area) * mean_radiance;
     const Vec3 centre(m_surface->centroid());
     if (flat)
-        m_proxy = std::make_unique<PointLight>(centre, float(area) * mean_radiance, 0.0f, 0.0f, Vec3(flat_normal));
+        m_proxy = std::make_unique<PointLight>(PointLightParameters{
+            .position = centre, .intensity = float(area) * mean_radiance, .pattern_axis = Vec3(flat_normal)});
     else
-        m_proxy = std::make_unique<PointLight>(centre, float(area / 4.0) * mean_radiance);
+        m_proxy = std::make_unique<PointLight>(
+            PointLightParameters{.position = centre, .intensity = float(area / 4.0) * mean_radiance});
 }
 
 Color EmissiveShapeLight::radiance_at(const Hit& hit) const {

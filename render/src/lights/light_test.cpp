@@ -30,10 +30,42 @@ std::unique_ptr<RenderScene> compile_lights(std::vector<sg::Light> lights, std::
     return compile_scene(graph);
 }
 
-TEST(Lights, PointLightIsInverseSquareWithIntensityPiC) {
+// POV-Ray's point light (reference/pov-3.7-semantics.md section 5): no
+// falloff with distance; colour C reaches a surface as radiance pi*C, so
+// a white matte surface facing it shows C.
+TEST(Lights, PovPointLightHasNoFalloffAndIntensityPiC) {
     auto scene = compile_lights({point_light({0, 10, 0}, {1, 0.5, 0.25})});
     ASSERT_EQ(scene->lights().size(), 1u);
     const Light& light = *scene->lights()[0];
+    EXPECT_TRUE(light.is_delta());
+    const LightSample at1 = light.sample(Vec3(0, 9, 0), Vec2(0.5f));
+    const LightSample at4 = light.sample(Vec3(0, 6, 0), Vec2(0.5f));
+    const LightSample far = light.sample(Vec3(0, -1e6f, 0), Vec2(0.5f));
+    EXPECT_NEAR(at1.radiance.r, kPi, 1e-5f);
+    EXPECT_NEAR(at1.radiance.g, 0.5f * kPi, 1e-5f);
+    EXPECT_EQ(at4.radiance, at1.radiance);
+    EXPECT_EQ(far.radiance, at1.radiance);
+    EXPECT_EQ(at1.wi, Vec3(0, 1, 0));
+    EXPECT_FLOAT_EQ(at4.distance, 4.0f);
+    EXPECT_EQ(at1.pdf, 1.0f);
+    EXPECT_TRUE(std::isfinite(light.power().r));
+    EXPECT_GT(light.power().r, 0.0f);
+    // At the light's position: no sample, no NaN.
+    const LightSample at0 = light.sample(Vec3(0, 10, 0), Vec2(0.5f));
+    EXPECT_EQ(at0.pdf, 0.0f);
+}
+
+// The physical point a lamp's proxy is: inverse-square, intensity pi*C
+// (the assertions POV's point light had before it took POV's meaning).
+TEST(Lights, PhysicalLampProxyIsInverseSquareWithIntensityPiC) {
+    sg::Light lamp;
+    lamp.kind = sg::Light::Kind::AreaSphere;
+    lamp.position = {0, 10, 0};
+    lamp.radius = 1e-3;
+    lamp.color = {1, 0.5, 0.25};
+    auto scene = compile_lights({lamp});
+    ASSERT_EQ(scene->local_lights().size(), 1u);
+    const Light& light = *scene->local_lights()[0];
     EXPECT_TRUE(light.is_delta());
     const LightSample at1 = light.sample(Vec3(0, 9, 0), Vec2(0.5f));
     const LightSample at4 = light.sample(Vec3(0, 6, 0), Vec2(0.5f));
@@ -44,7 +76,6 @@ TEST(Lights, PointLightIsInverseSquareWithIntensityPiC) {
     EXPECT_FLOAT_EQ(at4.distance, 4.0f);
     EXPECT_EQ(at1.pdf, 1.0f);
     EXPECT_NEAR(light.power().r, 4.0f * kPi * kPi, 1e-4f);
-    // At the light's position: no sample, no NaN.
     const LightSample at0 = light.sample(Vec3(0, 10, 0), Vec2(0.5f));
     EXPECT_EQ(at0.pdf, 0.0f);
 }
@@ -301,14 +332,15 @@ TEST(Lights, ParametersAreTypedByKind) {
     ASSERT_NE(point, nullptr);
     EXPECT_EQ(point->position, Vec3(0, 10, 0));
     EXPECT_NEAR(point->intensity.r, kPi, 1e-6f);
-    EXPECT_TRUE(point->is_plain_inverse_square());
+    EXPECT_TRUE(point->is_plain());
+    EXPECT_EQ(point->falloff, PointFalloff::None);  // POV-Ray's point light
     EXPECT_EQ(plain.parameters<RectangleLightParameters>(), nullptr);
     EXPECT_EQ(plain.parameters<DirectionalLightParameters>(), nullptr);
 
     const auto* fade = fading.parameters<PointLightParameters>();
     ASSERT_NE(fade, nullptr);
     EXPECT_FLOAT_EQ(fade->fade_distance, 2.0f);
-    EXPECT_FALSE(fade->is_plain_inverse_square());
+    EXPECT_FALSE(fade->is_plain());
 
     const auto* rect = panel.parameters<RectangleLightParameters>();
     ASSERT_NE(rect, nullptr);
@@ -320,7 +352,8 @@ TEST(Lights, ParametersAreTypedByKind) {
     const auto* proxy = panel.proxy().parameters<PointLightParameters>();
     ASSERT_NE(proxy, nullptr);
     EXPECT_TRUE(proxy->one_sided);
-    EXPECT_FALSE(proxy->is_plain_inverse_square());
+    EXPECT_FALSE(proxy->is_plain());
+    EXPECT_EQ(proxy->falloff, PointFalloff::InverseSquare);  // the proxy of a physical lamp
 
     const auto* round = ball.parameters<SphereLightParameters>();
     ASSERT_NE(round, nullptr);
@@ -340,7 +373,7 @@ TEST(Lights, PlainPointSampleIsPlainPointIncidence) {
     const Vec3 to_light = point->position - p;
     const float distance_squared = glm::dot(to_light, to_light);
     ASSERT_TRUE(in_plain_point_range(distance_squared));
-    const PointIncidence incidence = plain_point_incidence(distance_squared);
+    const PointIncidence incidence = plain_point_incidence(distance_squared, point->falloff);
     const LightSample sample = light.sample(p, Vec2(0.5f));
     EXPECT_EQ(sample.radiance, point->intensity * incidence.falloff);
     EXPECT_EQ(sample.wi, to_light * incidence.inverse_distance);

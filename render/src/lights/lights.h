@@ -16,10 +16,9 @@ namespace lancer {
 // one-sided one (a rectangle light).
 class PointLight final : public Light {
   public:
-    // intensity in radiance units times area (W/sr); fade as POV's when
-    // fade_distance > 0, else inverse-square.
-    PointLight(const Vec3& position, const Color& intensity, float fade_distance = 0.0f, float fade_power = 0.0f,
-               const Vec3& pattern_axis = Vec3(0.0f), bool one_sided = false);
+    // `scene_radius`: of the sphere bounding the scene's finite geometry,
+    // which power() needs for a light without falloff.
+    explicit PointLight(const PointLightParameters& parameters, float scene_radius = 1.0f);
     Kind kind() const override { return Kind::Point; }
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     Color power() const override;
@@ -32,8 +31,9 @@ class PointLight final : public Light {
   private:
     static constexpr Kind kKind = PointLightParameters::kKind;
     PointLightParameters m_parameters;
-    // Inverse-square without a pattern: sample()'s float path applies.
-    bool m_plain_inverse_square;
+    // No fade and no pattern: sample()'s float path applies.
+    bool m_plain;
+    float m_scene_radius;
 };
 
 class DirectionalLight final : public Light {

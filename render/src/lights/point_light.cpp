@@ -7,10 +7,8 @@
 
 namespace lancer {
 
-PointLight::PointLight(const Vec3& position, const Color& intensity, float fade_distance, float fade_power,
-                       const Vec3& pattern_axis, bool one_sided)
-    : m_parameters{position, intensity, fade_distance, fade_power, pattern_axis, one_sided},
-      m_plain_inverse_square(m_parameters.is_plain_inverse_square()) {}
+PointLight::PointLight(const PointLightParameters& parameters, float scene_radius)
+    : m_parameters(parameters), m_plain(parameters.is_plain()), m_scene_radius(std::max(scene_radius, 1e-6f)) {}
 
 LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     // Float where nothing can overflow or underflow: a squared distance
@@ -19,8 +17,8 @@ LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     const PointLightParameters& light = m_parameters;
     const Vec3 to_light_float = light.position - p;
     const float distance_squared = glm::dot(to_light_float, to_light_float);
-    if (m_plain_inverse_square && in_plain_point_range(distance_squared)) {
-        const PointIncidence incidence = plain_point_incidence(distance_squared);
+    if (m_plain && in_plain_point_range(distance_squared)) {
+        const PointIncidence incidence = plain_point_incidence(distance_squared, light.falloff);
         LightSample s;
         s.radiance = light.intensity * incidence.falloff;
         s.wi = to_light_float * incidence.inverse_distance;
@@ -40,8 +38,10 @@ LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     double attenuation;
     if (light.fade_distance > 0.0f)
         attenuation = 2.0 / (1.0 + std::pow(distance / light.fade_distance, double(light.fade_power)));
-    else
+    else if (light.falloff == PointFalloff::InverseSquare)
         attenuation = 1.0 / (distance * distance);
+    else
+        attenuation = 1.0;
     double pattern = 1.0;
     if (light.pattern_axis != Vec3(0.0f)) {
         const double cos_emitted = -glm::dot(glm::dvec3(light.pattern_axis), wi);  // light -> p
@@ -62,6 +62,12 @@ Color PointLight::power() const {
     // Integral of the pattern over the sphere: 4 pi isotropic, 2 pi for
     // |cos|, pi for max(0, cos).
     const PointLightParameters& light = m_parameters;
+    // A light without falloff has no finite power. For choosing among
+    // lights it counts what lands on the scene, as a parallel light's
+    // power does (DirectionalLight::power): its radiance over the disc of
+    // the scene's bounding sphere.
+    if (light.falloff == PointFalloff::None && light.fade_distance == 0.0f)
+        return kPi * m_scene_radius * m_scene_radius * light.intensity;
     const float solid_angle = light.pattern_axis == Vec3(0.0f) ? 4.0f * kPi : light.one_sided ? kPi : 2.0f * kPi;
     return solid_angle * light.intensity;
 }

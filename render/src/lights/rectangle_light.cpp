@@ -14,8 +14,10 @@ RectangleLight::RectangleLight(const AnalyticRectangle& rectangle, const Color& 
     m_normal = cross / m_area;
     // On-axis intensity Le * area equals a point light's pi * C.
     m_radiance = Color(kPiD * glm::dvec3(color) / m_area);
-    m_proxy = std::make_unique<PointLight>(Vec3(rectangle.center), kPi * color, 0.0f, 0.0f, Vec3(m_normal),
-                                           /*one_sided=*/true);
+    m_proxy = std::make_unique<PointLight>(PointLightParameters{.position = Vec3(rectangle.center),
+                                                                .intensity = kPi * color,
+                                                                .pattern_axis = Vec3(m_normal),
+                                                                .one_sided = true});
     m_parameters = {Vec3(rectangle.center), Vec3(rectangle.axis1), Vec3(rectangle.axis2), m_radiance};
 }
 

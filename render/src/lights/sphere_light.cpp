@@ -11,7 +11,7 @@ namespace lancer {
 SphereLight::SphereLight(const DVec3& center, double radius, const Color& color) : m_center(center), m_radius(radius) {
     // Intensity Le * pi R^2 = pi * C in every direction.
     m_radiance = Color(glm::dvec3(color) / (radius * radius));
-    m_proxy = std::make_unique<PointLight>(Vec3(center), kPi * color);
+    m_proxy = std::make_unique<PointLight>(PointLightParameters{.position = Vec3(center), .intensity = kPi * color});
     m_parameters = {Vec3(center), float(radius), m_radiance};
 }
 
