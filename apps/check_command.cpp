@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "lancer/parser.h"
 #include "lancer/scene_summary.h"
+#include "render_job.h"
 
 namespace lancer::app {
 
@@ -64,7 +65,7 @@ Command add_check_command(CLI::App& app) {
             return 1;
         }
         SceneSummary summary = summarize_scene(*result.scene);
-        std::fputs(format_scene_summary(summary, *result.scene, warnings).c_str(), stdout);
+        std::fputs(format_scene_summary(summary, *result.scene, warnings, kDefaultIntegrator).c_str(), stdout);
         return 0;
     };
     return command;

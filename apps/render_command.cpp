@@ -460,7 +460,7 @@ Command add_render_command(CLI::App& app) {
     CLI::App* render = app.add_subcommand("render", "Render a scene to an image with an integrator plugin");
     render->add_option("scene", arguments->scene, "Scene file (.pov)")->required();
     render->add_option("-i,--integrator", arguments->integrator,
-                       "Integrator plugin (default: the scene's, else raycast; see `lancer plugins`)");
+                       "Integrator plugin (default: the scene's, else whitted; see `lancer plugins`)");
     render->add_option("-o,--output", arguments->output,
                        "Image file: .png, .exr, .hdr, .tif (default: <scene name>.png here)");
     arguments->width_option = render->add_option("--width", arguments->width, "Image width in pixels");

@@ -20,7 +20,9 @@
 
 namespace lancer::app {
 
-inline constexpr const char* kDefaultIntegrator = "raycast";
+// What renders a scene that names no integrator: the one that shows what
+// POV-Ray shows (shadows, mirrors, refraction) for POV's scenes.
+inline constexpr const char* kDefaultIntegrator = "whitted";
 
 // A scene parsed once and compiled, with what commands read of its graph
 // after compiling consumed it.

@@ -53,7 +53,9 @@ TEST_F(CliRender, WritesTheImageAndASummary) {
     EXPECT_TRUE(wrote());
     EXPECT_CONTAINS(result.output, "32x24");
     EXPECT_CONTAINS(result.output, "1 spp");
-    EXPECT_CONTAINS(result.output, "raycast");
+    // The scene names no integrator: it renders with the one that shows
+    // what POV-Ray shows (shadows, mirrors, refraction).
+    EXPECT_CONTAINS(result.output, "whitted");
 }
 
 TEST_F(CliRender, EveryBuiltInIntegratorRenders) {
@@ -115,15 +117,15 @@ TEST_F(CliRender, UnknownOutputExtension) {
 }
 
 TEST_F(CliRender, ParametersAreCheckedAgainstThePlugin) {
-    CommandResult result = render("-p no_such_parameter=1");
+    CommandResult result = render("-i raycast -p no_such_parameter=1");
     EXPECT_EQ(result.exit_code, 1) << result.output;
     EXPECT_CONTAINS(result.output, "-p no_such_parameter=1");
     EXPECT_CONTAINS(result.output, "ambient (bool)");  // what raycast does declare
-    result = render("-p ambient=maybe");
+    result = render("-i raycast -p ambient=maybe");
     EXPECT_EQ(result.exit_code, 1) << result.output;
     EXPECT_CONTAINS(result.output, "expects a boolean");
     EXPECT_TRUE(folder_holds_only_the_scene());
-    result = render("-p ambient=off -p specular=false");
+    result = render("-i raycast -p ambient=off -p specular=false");
     EXPECT_EQ(result.exit_code, 0) << result.output;
 }
 

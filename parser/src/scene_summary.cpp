@@ -95,7 +95,8 @@ SceneSummary summarize_scene(const sg::SceneGraph& scene) {
     return summary;
 }
 
-std::string format_scene_summary(const SceneSummary& summary, const sg::SceneGraph& scene, int warnings) {
+std::string format_scene_summary(const SceneSummary& summary, const sg::SceneGraph& scene, int warnings,
+                                 const std::string& default_integrator) {
     std::ostringstream out;
     out << scene.main_file << ": ok\n";
     out << "  objects:   " << summary.object_count;
@@ -127,7 +128,10 @@ std::string format_scene_summary(const SceneSummary& summary, const sg::SceneGra
         out << "(no finite objects)";
     if (summary.unbounded_objects) out << " (" << summary.unbounded_objects << " infinite plane(s) excluded)";
     out << "\n  camera:    " << (scene.camera ? "from the scene" : "POV-Ray default") << "\n";
-    if (scene.render.integrator) out << "  integrator: " << *scene.render.integrator << "\n";
+    if (scene.render.integrator)
+        out << "  integrator: " << *scene.render.integrator << "\n";
+    else if (!default_integrator.empty())
+        out << "  integrator: " << default_integrator << " (the default: the scene names none)\n";
     out << "  warnings:  " << warnings << "\n";
     return out.str();
 }

@@ -28,7 +28,10 @@ struct SceneSummary {
 SceneSummary summarize_scene(const sg::SceneGraph& scene);
 
 // Human-readable, several lines; `warnings` is the diagnostic count to report.
-std::string format_scene_summary(const SceneSummary& summary, const sg::SceneGraph& scene, int warnings);
+// `default_integrator`: what a render of a scene that names no integrator
+// uses, printed as such (empty: nothing is printed for such a scene).
+std::string format_scene_summary(const SceneSummary& summary, const sg::SceneGraph& scene, int warnings,
+                                 const std::string& default_integrator = "");
 
 const char* object_kind_name(sg::Object::Kind kind);
 const char* light_kind_name(sg::Light::Kind kind);
