@@ -422,6 +422,7 @@ int run_render(const RenderArguments& arguments) {
         write_options.sample_count_channel =
             stats.interrupted || stats.min_samples_per_pixel != stats.max_samples_per_pixel;
         write_options.metadata = stats_metadata(report);
+        write_options.working_gamma = scene.working_gamma;
         write_image(film, output, write_options);
         if (stats.interrupted && (checkpointing || arguments.resume)) write_checkpoint(checkpoint_path, identity, film);
         report.total_seconds = seconds_so_far();

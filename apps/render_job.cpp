@@ -28,6 +28,7 @@ JobScene compile_job_scene(const std::string& path, sg::SceneGraph graph) {
     JobScene job;
     job.path = path;
     job.settings = graph.render;
+    job.working_gamma = graph.global.assumed_gamma;
     job.scene = compile_scene(std::move(graph));
     return job;
 }

@@ -29,6 +29,7 @@ inline constexpr const char* kDefaultIntegrator = "whitted";
 struct JobScene {
     std::string path;
     sg::RenderSettings settings;  // the scene's render_settings
+    double working_gamma = 1.0;   // POV's assumed_gamma: what the image writer decodes
     std::unique_ptr<RenderScene> scene;
 };
 

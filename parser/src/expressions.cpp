@@ -1,6 +1,7 @@
 // Expressions: type conversions with located errors, arithmetic with
 // POV-Ray's promotions (a float stands for a vector or colour with every
 // component equal), comparisons, components and colour keywords.
+#include <algorithm>
 #include <cmath>
 
 #include "evaluator.h"
@@ -236,8 +237,15 @@ Value Evaluator::colour_keyword(const std::string& keyword, const Value& operand
         result.v[4] = result.v[3];
         result.v[3] = 0.0;
     }
-    if (srgb)
-        for (int i = 0; i < 3; ++i) result.v[i] = srgb_to_linear(result.v[i]);
+    // POV 3.7: srgb colours are decoded into the working space, which
+    // assumed_gamma G makes linear (G = 1) or gamma-encoded.
+    if (srgb) {
+        const double gamma = scene().global.assumed_gamma;
+        for (int i = 0; i < 3; ++i) {
+            result.v[i] = srgb_to_linear(result.v[i]);
+            if (gamma != 1.0) result.v[i] = std::pow(std::max(result.v[i], 0.0), 1.0 / gamma);
+        }
+    }
     return result;
 }
 

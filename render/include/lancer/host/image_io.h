@@ -16,6 +16,10 @@ struct ImageWriteOptions {
     // Metadata stored in the file (integrator, samples, seconds ...).
     std::map<std::string, std::string> metadata;
     bool sample_count_channel = false;  // EXR only: per-pixel sample count
+    // POV-Ray's assumed_gamma: the film holds values of a working space of
+    // this gamma, which the file receives decoded to linear (v^gamma) and
+    // then encoded as its format wants. 1: the film is linear.
+    double working_gamma = 1.0;
 };
 
 // Throws std::runtime_error naming the path on failure (unknown extension,
