@@ -30,7 +30,7 @@
 // Specular terms are whitted's (see whitted.cpp): highlights from the
 // simple model's lights behind shadow rays, mirror reflection and refraction
 // followed recursively (every hit reached that way gathers again), the
-// diffuse and ambient terms scaled by (1 - ρr). Point and directional lights
+// reflection added to the diffuse (as whitted). Point and directional lights
 // have no surface for a gathered ray to find, so their direct diffuse light
 // is added as in whitted, behind a shadow ray. There is no ambient term: the
 // gathered light stands in for it (as POV-Ray drops ambient under radiosity).
@@ -148,7 +148,8 @@ const ParameterDecl kParameters[] = {
     {"max_depth", ParameterType::Int, "0",
      "deepest mirror/refraction level (camera ray = 1), at most 256; 0: the scene's max_trace_level"},
     {"fresnel", ParameterType::Bool, "false", "Fresnel split of transparent surfaces, as whitted"},
-    {"additive_reflection", ParameterType::Bool, "false", "POV-Ray's sum: reflection does not remove the diffuse term"},
+    {"additive_reflection", ParameterType::Bool, "true",
+     "POV-Ray's sum: reflection added to the diffuse term; false: a mirror takes its share from the diffuse"},
 };
 
 std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
@@ -165,7 +166,7 @@ std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
                                     std::to_string(max_depth));
     return std::make_unique<GatherIntegrator>(static_cast<int>(point_count), static_cast<float>(jitter),
                                               static_cast<int>(max_depth), parameters.get_bool("fresnel", false),
-                                              parameters.get_bool("additive_reflection", false));
+                                              parameters.get_bool("additive_reflection", true));
 }
 
 const IntegratorDescriptor kDescriptor = {

@@ -15,8 +15,10 @@
 //   - transparent surfaces with an ior are smooth dielectrics (Fresnel
 //     reflection and refraction inside the transmitted share), with
 //     radiance scaled by (eta_from/eta_to)^2 across the interface;
-//   - as in whitted (the seed: "a mirror has no diffuse"), the diffuse lobe
-//     is scaled by 1 - reflectance per channel unless additive_reflection.
+//   - as in POV-Ray and the seed, a finish is a sum: the mirror adds to the
+//     diffuse lobe (additive_reflection=false takes the mirror's share
+//     from the diffuse instead). A finish that reflects more than it
+//     receives stays finite: max_depth bounds every path.
 // Camera rays that hit a light see its emission; rays that escape see the
 // background (not importance sampled).
 //
@@ -59,7 +61,7 @@ struct PathSettings {
     SamplerKind sampler = SamplerKind::Independent;
     LightSelection light_selection = LightSelection::Power;
     Strategy strategy = Strategy::Mis;
-    bool additive_reflection = false;
+    bool additive_reflection = true;
 };
 
 class PathIntegrator final : public Integrator {
@@ -277,8 +279,8 @@ const ParameterDecl kParameters[] = {
      "light chosen per NEE: \"power\", \"uniform\", or \"all\" (every light each time)"},
     {"strategy", ParameterType::String, "mis",
      "\"mis\" (default), \"nee\" (light sampling only) or \"bsdf\" (BSDF sampling only)"},
-    {"additive_reflection", ParameterType::Bool, "false",
-     "POV-Ray's sum: reflection does not remove the diffuse term (as whitted's)"},
+    {"additive_reflection", ParameterType::Bool, "true",
+     "POV-Ray's sum: reflection added to the diffuse term; false: a mirror takes its share from the diffuse"},
 };
 
 std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
@@ -306,7 +308,7 @@ std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
         throw std::invalid_argument("path: light_sampling must be \"power\", \"uniform\" or \"all\", not \"" +
                                     selection + "\"");
 
-    settings.additive_reflection = parameters.get_bool("additive_reflection", false);
+    settings.additive_reflection = parameters.get_bool("additive_reflection", true);
     const std::string strategy = parameters.get_string("strategy", "mis");
     if (strategy == "mis")
         settings.strategy = Strategy::Mis;

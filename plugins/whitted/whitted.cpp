@@ -14,11 +14,11 @@
 // Snell's law with the interior's `ior` (outside is ior 1), and total
 // internal reflection sends the transmitted share into the reflection.
 //
-// A mirror has no diffuse (the seed): the diffuse and ambient terms are
-// scaled by (1 - ρr) per channel, so `reflection 1` shows only what it
-// reflects, whatever its `diffuse`. Highlights (phong, specular) are kept:
-// they are the mirror image of the lamps, which reflected rays cannot find.
-// `additive_reflection=true` restores POV-Ray's sum (diffuse + reflection).
+// A finish is a sum, as POV-Ray and the seed write it: colour = ρd·C_diffuse
+// + ρs·C_specular + ρr·C_reflected; `reflection` adds to the diffuse term.
+// `additive_reflection=false` makes the mirror take its share from the
+// diffuse and ambient terms instead (scaled by 1 - ρr per channel).
+// Highlights (phong, specular) are kept either way.
 //
 // Recursion follows POV-Ray's limits: the camera ray is level 1, a ray of a
 // level above `max_depth` is not traced and counts black, and a ray whose
@@ -84,7 +84,8 @@ const ParameterDecl kParameters[] = {
      "deepest ray level (camera ray = 1), at most 256; 0: the scene's max_trace_level"},
     {"fresnel", ParameterType::Bool, "false",
      "Fresnel split of transparent surfaces (reflect F, transmit 1-F); false: fixed coefficients"},
-    {"additive_reflection", ParameterType::Bool, "false", "POV-Ray's sum: reflection does not remove the diffuse term"},
+    {"additive_reflection", ParameterType::Bool, "true",
+     "POV-Ray's sum: reflection added to the diffuse term; false: a mirror takes its share from the diffuse"},
 };
 
 std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
@@ -93,7 +94,7 @@ std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
         throw std::invalid_argument("whitted: max_depth must lie in [0, " + std::to_string(kMaxDepth) + "], got " +
                                     std::to_string(max_depth));
     return std::make_unique<WhittedIntegrator>(static_cast<int>(max_depth), parameters.get_bool("fresnel", false),
-                                               parameters.get_bool("additive_reflection", false));
+                                               parameters.get_bool("additive_reflection", true));
 }
 
 const IntegratorDescriptor kDescriptor = {

@@ -14,11 +14,12 @@
 //       reflected max(R, T * F), transmitted T * (1 - F) * tint. The max
 //       keeps a material that already writes POV's `reflection {0, 1
 //       fresnel on}` from reflecting twice.
-//   "A mirror has no diffuse" (seed): the diffuse lobe and the ambient term
-//   are scaled by (1 - R) per channel, unless `additive_reflection` asks for
-//   POV-Ray's behaviour (reflection added on top of the diffuse). Highlights
-//   are kept: the seed's specular term is the mirror image of the lamps,
-//   which have no surface a reflected ray could find.
+//   A finish is a sum, as POV-Ray and the seed write it (colour = rho_d C_d
+//   + rho_s C_s + rho_r C_r): the reflection is added to the diffuse and
+//   ambient terms. With `additive_reflection` false the mirror takes its
+//   share from them instead: they are scaled by (1 - R) per channel.
+//   Highlights are kept either way: the seed's specular term is the mirror
+//   image of the lamps, which have no surface a reflected ray could find.
 #pragma once
 
 #include "lancer/sampler.h"
@@ -30,7 +31,7 @@ struct SpecularOptions {
     int max_depth = 5;                 // POV's max_trace_level: the camera ray is level 1
     float min_weight = 1.0f / 255.0f;  // POV's adc_bailout on the path weight
     bool fresnel = false;              // see the header comment
-    bool additive_reflection = false;  // true: POV-Ray's diffuse + reflection
+    bool additive_reflection = true;   // POV-Ray's diffuse + reflection; false: see above
 };
 
 // How one hit passes light on along its mirror and refracted directions.
