@@ -659,7 +659,7 @@ light_item
                          $$ = [r](sg::Light& l) { l.kind = sg::Light::Kind::AreaSphere; l.radius = r; }; }
   | "fade_distance" expr { double d = ev.to_float($2, @2); $$ = [d](sg::Light& l) { l.fade_distance = d; }; }
   | "fade_power" expr  { double p = ev.to_float($2, @2); $$ = [p](sg::Light& l) { l.fade_power = p; }; }
-  | "shadowless"       { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "shadowless"); }
+  | "shadowless"       { $$ = [](sg::Light& l) { l.shadowless = true; }; }
   | "area_illumination" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "area_illumination"); }
   | "media_interaction" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "media_interaction"); }
   | "media_attenuation" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "media_attenuation"); }

@@ -108,6 +108,13 @@ void Evaluator::add_light(const sg::Light& local, const sg::Mat4& world_from_loc
     }
     if (light.fade_distance < 0.0 || light.fade_power < 0.0)
         error(light.location, "fade_distance and fade_power must not be negative");
+    if (light.shadowless &&
+        (light.kind == sg::Light::Kind::AreaRectangle || light.kind == sg::Light::Kind::AreaSphere)) {
+        // A physical lamp is a surface that rays find: it cannot let light
+        // through what stands between.
+        warning(light.location, "shadowless is ignored on lancer's physical lamps (area_light, area_sphere)");
+        light.shadowless = false;
+    }
     m_scene.lights.push_back(light);
 }
 

@@ -250,6 +250,27 @@ TEST(ParserMaterials, DeclaredTexturesPigmentsFinishesReusable) {
     EXPECT_DOUBLE_EQ(scene.objects[1].material->finish.phong, 1);
 }
 
+TEST(ParserLights, ShadowlessIsKeptOnPointAndParallelLights) {
+    auto scene = parse_ok(R"(
+        light_source { <1, 2, 3> color rgb 1 shadowless }
+        light_source { <0, 10, 0>, 1 parallel point_at <0, 0, 0> shadowless }
+        light_source { <0, 1, 0> rgb 1 })");
+    ASSERT_EQ(scene.lights.size(), 3u);
+    EXPECT_TRUE(scene.lights[0].shadowless);
+    EXPECT_TRUE(scene.lights[1].shadowless);
+    EXPECT_FALSE(scene.lights[2].shadowless);
+}
+
+TEST(ParserLights, ShadowlessOnAPhysicalLampWarns) {
+    ParseResult result = parse_scene_string(
+        "light_source { <0, 5, 0> rgb 1 area_light <1, 0, 0>, <0, 0, 1>, 2, 2 shadowless }", "lamp.pov");
+    ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
+    EXPECT_FALSE(result.scene->lights[0].shadowless);
+    EXPECT_EQ(test::count_warnings(result), 1);
+    EXPECT_NE(test::all_diagnostics(result).find("shadowless is ignored"), std::string::npos)
+        << test::all_diagnostics(result);
+}
+
 TEST(ParserLights, PointParallelAreaSphere) {
     auto scene = parse_ok(R"(
         light_source { <1, 2, 3> color rgb <1, 0.5, 0.25> fade_distance 2 fade_power 1 }

@@ -253,7 +253,7 @@ class PathIntegrator final : public Integrator {
         if (!(incident.pdf > 0.0f) || is_black(incident.radiance)) return Color(0.0f);
         const Color f = bsdf.eval(incident.wi);
         if (is_black(f)) return Color(0.0f);
-        if (scene.occluded(hit.spawn_ray_to(incident.point))) return Color(0.0f);
+        if (light.casts_shadows() && scene.occluded(hit.spawn_ray_to(incident.point))) return Color(0.0f);
         const float light_pdf = selection * incident.pdf;
         float weight = 1.0f;
         if (!incident.is_delta && m_settings.strategy == Strategy::Mis)

@@ -83,6 +83,25 @@ TEST(ShadowIntegrator, EqualsRaycastWhereNothingOccludes) {
     }
 }
 
+// POV's shadowless light lights what faces it through anything: the ground
+// below the sphere is lit as if the sphere were not there, by shadow,
+// whitted and path's direct light alike.
+TEST(ShadowIntegrator, ShadowlessLightCastsNoShadow) {
+    sg::SceneGraph graph = floating_sphere_scene();
+    graph.lights[0].shadowless = true;
+    const auto scene = compile_scene(graph);
+    EXPECT_NEAR(mean_radiance(*load_integrator("shadow", *scene), *scene, ray_to_ground(0.0)).g,
+                lit_ground_radiance(0.0), 1e-4f);
+    EXPECT_NEAR(mean_radiance(*load_integrator("whitted", *scene), *scene, ray_to_ground(0.0)).g,
+                lit_ground_radiance(0.0), 1e-4f);
+    // path has no ambient term: the diffuse light alone.
+    const auto path = load_integrator("path", *scene, {{"max_depth", "1"}, {"light_sampling", "all"}});
+    EXPECT_NEAR(mean_radiance(*path, *scene, ray_to_ground(0.0)).g, lit_ground_radiance(0.0) - 0.1f, 1e-4f);
+    // The same light with shadows leaves only the ambient term there.
+    const auto shadowed = compile_scene(floating_sphere_scene());
+    EXPECT_NEAR(mean_radiance(*load_integrator("shadow", *shadowed), *shadowed, ray_to_ground(0.0)).g, 0.1f, 1e-5f);
+}
+
 TEST(ShadowIntegrator, FullyTransmittingBlockerCastsNoShadow) {
     sg::SceneGraph graph = floating_sphere_scene();
     graph.objects[1].material = material([](sg::Material& m) { m.pigment.color.transmit = 1.0; });

@@ -186,10 +186,12 @@ struct Light {
     bool orient = false;
     double radius = 0.0;  // AreaSphere
     // POV's fade: attenuation 2 / (1 + (d / fade_distance)^fade_power) when
-    // fade_distance > 0; otherwise physical inverse-square falloff.
+    // fade_distance > 0; otherwise a point light does not fall off (POV's)
+    // and an area light is lancer's physical lamp.
     double fade_distance = 0.0;
     double fade_power = 0.0;
     bool parallel = false;
+    bool shadowless = false;  // POV's shadowless: lights what faces it, through anything
     SourceLocation location;
 };
 

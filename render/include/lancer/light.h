@@ -47,6 +47,11 @@ class Light {
     // Total emitted power in scene units, for light selection and proxies.
     virtual Color power() const = 0;
 
+    // False for POV's `shadowless` lights: they light every surface facing
+    // them and no shadow ray is cast towards them.
+    bool casts_shadows() const { return m_casts_shadows; }
+    void set_casts_shadows(bool casts) { m_casts_shadows = casts; }
+
     // The point or directional light that stands in for this one in the
     // seed's simple local model (raycast, shadow, gather). Point and
     // directional lights are their own proxy.
@@ -65,6 +70,9 @@ class Light {
   protected:
     // The parameter struct of `kind` when this light is of that kind.
     virtual const void* parameters_of(Kind kind) const { return nullptr; }
+
+  private:
+    bool m_casts_shadows = true;
 };
 
 // How a point light's radiance changes with distance when it has no fade.

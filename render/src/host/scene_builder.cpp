@@ -346,7 +346,8 @@ class Builder {
         return m_data->materials.back().get();
     }
 
-    void add_light(std::unique_ptr<Light> light) {
+    void add_light(std::unique_ptr<Light> light, bool casts_shadows = true) {
+        light->set_casts_shadows(casts_shadows);
         m_data->lights.push_back(light.get());
         m_data->local_lights.push_back(&light->proxy());
         m_data->owned_lights.push_back(std::move(light));
@@ -369,7 +370,8 @@ class Builder {
                                      (source.kind == sg::Light::Kind::Point && source.parallel);
             if (directional) {
                 add_light(std::make_unique<DirectionalLight>(Vec3(source.point_at - source.position),
-                                                             float(kPiD) * color, centre, radius));
+                                                             float(kPiD) * color, centre, radius),
+                          !source.shadowless);
                 continue;
             }
             const bool degenerate_rectangle = source.kind == sg::Light::Kind::AreaRectangle &&
@@ -383,7 +385,7 @@ class Builder {
                 light.falloff = PointFalloff::None;
                 light.fade_distance = float(source.fade_distance);
                 light.fade_power = float(source.fade_power);
-                add_light(std::make_unique<PointLight>(light, radius));
+                add_light(std::make_unique<PointLight>(light, radius), !source.shadowless);
             } else if (degenerate_rectangle || degenerate_sphere) {
                 // A physical lamp without size: the physical point it shrank to.
                 add_light(std::make_unique<PointLight>(

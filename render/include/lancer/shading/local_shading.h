@@ -128,7 +128,7 @@ inline LobeRadiance reflect_simple_light(const RenderScene& scene, const Shading
     const LightSample sample = stand_in.sample(at.hit.position, Vec2(0.5f));
     LobeRadiance reflected = reflect_light_sample(at, sample);
     if (lobes == Lobes::GlossyOnly) reflected.diffuse = Color(0.0f);
-    if (shadows == Shadows::Hard && !reflected.is_black())
+    if (shadows == Shadows::Hard && light.casts_shadows() && !reflected.is_black())
         reflected *= transmittance_to(scene, at.hit, sample.point, &light);
     return reflected;
 }
