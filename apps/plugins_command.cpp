@@ -20,16 +20,6 @@
 namespace lancer::app {
 namespace {
 
-const char* type_name(ParameterType type) {
-    switch (type) {
-    case ParameterType::Int: return "int";
-    case ParameterType::Float: return "float";
-    case ParameterType::Bool: return "bool";
-    case ParameterType::String: return "string";
-    }
-    return "?";
-}
-
 void print_plugin(const Plugin& plugin) {
     const IntegratorDescriptor& descriptor = *plugin.descriptor;
     std::printf("%s\n    %s\n    file: %s\n", descriptor.name, descriptor.description ? descriptor.description : "",
@@ -48,7 +38,7 @@ void print_plugin(const Plugin& plugin) {
                 "default", "meaning");
     for (std::size_t i = 0; i < descriptor.parameter_count; ++i) {
         const ParameterDecl& decl = descriptor.parameters[i];
-        std::printf("      %-*s  %-6s  %-*s  %s\n", int(name_width), decl.name, type_name(decl.type),
+        std::printf("      %-*s  %-6s  %-*s  %s\n", int(name_width), decl.name, parameter_type_name(decl.type),
                     int(default_width), decl.default_value, decl.meaning ? decl.meaning : "");
     }
 }
@@ -91,7 +81,7 @@ void print_plugin_markdown(const Plugin& plugin) {
     std::printf("|-----------|------|---------|---------|\n");
     for (std::size_t i = 0; i < descriptor.parameter_count; ++i) {
         const ParameterDecl& decl = descriptor.parameters[i];
-        std::printf("| %s | %s | %s | %s |\n", markdown_code(decl.name).c_str(), type_name(decl.type),
+        std::printf("| %s | %s | %s | %s |\n", markdown_code(decl.name).c_str(), parameter_type_name(decl.type),
                     markdown_code(decl.default_value).c_str(), markdown_cell(decl.meaning).c_str());
     }
     std::printf("\n");

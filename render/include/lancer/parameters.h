@@ -11,6 +11,9 @@ namespace lancer {
 
 enum class ParameterType { Int, Float, Bool, String };
 
+// "int", "float", "bool", "string": as docs and messages name them.
+const char* parameter_type_name(ParameterType type);
+
 struct ParameterDecl {
     const char* name;
     ParameterType type;

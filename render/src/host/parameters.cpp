@@ -68,4 +68,14 @@ std::string ParameterSet::get_string(const std::string& name, const std::string&
     return found == m_values.end() ? fallback : found->second;
 }
 
+const char* parameter_type_name(ParameterType type) {
+    switch (type) {
+    case ParameterType::Int: return "int";
+    case ParameterType::Float: return "float";
+    case ParameterType::Bool: return "bool";
+    case ParameterType::String: return "string";
+    }
+    return "?";
+}
+
 }  // namespace lancer

@@ -46,16 +46,6 @@ std::string join(const std::vector<std::string>& items, const char* separator) {
     return joined;
 }
 
-const char* type_name(ParameterType type) {
-    switch (type) {
-    case ParameterType::Int: return "int";
-    case ParameterType::Float: return "float";
-    case ParameterType::Bool: return "bool";
-    case ParameterType::String: return "string";
-    }
-    return "?";
-}
-
 // The folder holding the shared library this function was linked into:
 // liblancer.so's own folder in the build tree and in an installed prefix.
 std::string folder_of_this_library() {
@@ -154,8 +144,8 @@ std::string declared_names(const IntegratorDescriptor& descriptor) {
     if (descriptor.parameter_count == 0) return "it declares no parameters";
     std::vector<std::string> names;
     for (std::size_t i = 0; i < descriptor.parameter_count; ++i) {
-        names.push_back(std::string(descriptor.parameters[i].name) + " (" + type_name(descriptor.parameters[i].type) +
-                        ")");
+        names.push_back(std::string(descriptor.parameters[i].name) + " (" +
+                        parameter_type_name(descriptor.parameters[i].type) + ")");
     }
     return "it declares: " + join(names, ", ");
 }
