@@ -664,10 +664,10 @@ light_item
   | "media_interaction" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "media_interaction"); }
   | "media_attenuation" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "media_attenuation"); }
   | "looks_like" "{" object_ref object_mods "}" { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "looks_like"); }
-  | "spotlight"        { $$ = [](sg::Light&) {}; ev.error(LOC(@1), "spotlight is not supported by lancer (supported: point, parallel, area_light, area_sphere)"); }
-  | "radius" expr      { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "radius"); }
-  | "falloff" expr     { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "falloff"); }
-  | "tightness" expr   { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "tightness"); }
+  | "spotlight"        { $$ = [](sg::Light& l) { l.spotlight = true; l.spot_radius = 30.0; l.spot_falloff = 45.0; l.tightness = 0.0; }; }
+  | "radius" expr      { double r = ev.to_float($2, @2); $$ = [r](sg::Light& l) { l.spot_radius = r; l.spot_parameters_given = true; }; }
+  | "falloff" expr     { double f = ev.to_float($2, @2); $$ = [f](sg::Light& l) { l.spot_falloff = f; l.spot_parameters_given = true; }; }
+  | "tightness" expr   { double t = ev.to_float($2, @2); $$ = [t](sg::Light& l) { l.tightness = t; l.spot_parameters_given = true; }; }
   | transform_item     { sg::Mat4 t = $1; $$ = [t](sg::Light& l) { transform_light(l, t); }; }
   ;
 

@@ -108,6 +108,15 @@ void Evaluator::add_light(const sg::Light& local, const sg::Mat4& world_from_loc
     }
     if (light.fade_distance < 0.0 || light.fade_power < 0.0)
         error(light.location, "fade_distance and fade_power must not be negative");
+    if (light.spot_parameters_given && !light.spotlight)
+        error(light.location, "radius, falloff and tightness belong to a spotlight (write `spotlight` before them)");
+    if (light.spotlight) {
+        if (light.kind != sg::Light::Kind::Point)
+            error(light.location, "spotlight cannot be combined with parallel, area_light or area_sphere in lancer");
+        else if (glm::length(light.point_at - light.position) == 0.0)
+            error(light.location, "spotlight: point_at must differ from the light's position");
+        if (light.tightness < 0.0) error(light.location, "tightness must not be negative");
+    }
     if (light.shadowless &&
         (light.kind == sg::Light::Kind::AreaRectangle || light.kind == sg::Light::Kind::AreaSphere)) {
         // A physical lamp is a surface that rays find: it cannot let light

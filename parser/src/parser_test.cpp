@@ -271,6 +271,29 @@ TEST(ParserLights, ShadowlessOnAPhysicalLampWarns) {
         << test::all_diagnostics(result);
 }
 
+TEST(ParserLights, SpotlightKeepsPovsDefaultsAndValues) {
+    auto scene = parse_ok(R"(
+        light_source { <0, 10, 0> rgb 1 spotlight point_at <0, 0, 0> }
+        light_source { <0, 10, 0> rgb 1 spotlight point_at <1, 0, 0> radius 11 falloff 25 tightness 50 })");
+    ASSERT_EQ(scene.lights.size(), 2u);
+    EXPECT_TRUE(scene.lights[0].spotlight);
+    EXPECT_DOUBLE_EQ(scene.lights[0].spot_radius, 30.0);
+    EXPECT_DOUBLE_EQ(scene.lights[0].spot_falloff, 45.0);
+    EXPECT_DOUBLE_EQ(scene.lights[0].tightness, 0.0);
+    EXPECT_DOUBLE_EQ(scene.lights[1].spot_radius, 11.0);
+    EXPECT_DOUBLE_EQ(scene.lights[1].spot_falloff, 25.0);
+    EXPECT_DOUBLE_EQ(scene.lights[1].tightness, 50.0);
+    expect_vec(scene.lights[1].point_at, {1, 0, 0});
+}
+
+TEST(ParserLights, SpotParametersNeedASpotlight) {
+    const Diagnostic d = test::first_error("light_source { <0, 10, 0> rgb 1 radius 11 }");
+    EXPECT_NE(d.message.find("belong to a spotlight"), std::string::npos) << d.message;
+    const Diagnostic parallel =
+        test::first_error("light_source { <0, 10, 0> rgb 1 spotlight parallel point_at <0, 0, 0> }");
+    EXPECT_NE(parallel.message.find("spotlight cannot be combined"), std::string::npos) << parallel.message;
+}
+
 TEST(ParserLights, PointParallelAreaSphere) {
     auto scene = parse_ok(R"(
         light_source { <1, 2, 3> color rgb <1, 0.5, 0.25> fade_distance 2 fade_power 1 }

@@ -192,6 +192,14 @@ struct Light {
     double fade_power = 0.0;
     bool parallel = false;
     bool shadowless = false;  // POV's shadowless: lights what faces it, through anything
+    // POV's spotlight: a point light whose light narrows to a cone about
+    // point_at. Angles in degrees from the axis (POV's defaults); tightness
+    // raises the cone's cosine to a power.
+    bool spotlight = false;
+    double spot_radius = 30.0;   // full light inside
+    double spot_falloff = 45.0;  // none outside; a smooth step between
+    double tightness = 0.0;
+    bool spot_parameters_given = false;  // radius, falloff or tightness was written
     SourceLocation location;
 };
 

@@ -89,14 +89,25 @@ struct PointLightParameters {
     // light of colour C: pi*C, so a white matte surface facing it shows C).
     Color intensity{0.0f};
     PointFalloff falloff = PointFalloff::InverseSquare;
-    float fade_distance = 0.0f;  // > 0: POV's fade, 2 / (1 + (d / fade_distance)^fade_power), instead
+    // POV's fade when fade_power > 0: 2 / (1 + (d / fade_distance)^fade_power),
+    // or d^-fade_power when fade_distance is 0; instead of `falloff`.
+    float fade_distance = 0.0f;
     float fade_power = 0.0f;
     Vec3 pattern_axis{0.0f};  // non-zero: a cosine pattern about it (proxies of flat emitters)
     bool one_sided = false;   // pattern max(0, cos) rather than |cos|
+    // POV's spotlight when spot_axis is non-zero (unit, light -> point_at):
+    // at cos c of the angle from the axis, c^tightness, times a smooth step
+    // from 0 at spot_cos_falloff to 1 at spot_cos_radius; nothing behind.
+    Vec3 spot_axis{0.0f};
+    float spot_cos_radius = 1.0f;
+    float spot_cos_falloff = 1.0f;
+    float tightness = 0.0f;
 
-    // No fade and no pattern: sample() is plain_point_incidence's
+    // No fade, no pattern, no cone: sample() is plain_point_incidence's
     // arithmetic wherever in_plain_point_range(d^2).
-    bool is_plain() const { return fade_distance == 0.0f && pattern_axis == Vec3(0.0f); }
+    bool is_plain() const {
+        return fade_distance == 0.0f && fade_power == 0.0f && pattern_axis == Vec3(0.0f) && spot_axis == Vec3(0.0f);
+    }
 };
 
 // POV's `parallel` light: the same irradiance from one direction everywhere.

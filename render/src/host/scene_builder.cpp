@@ -385,6 +385,12 @@ class Builder {
                 light.falloff = PointFalloff::None;
                 light.fade_distance = float(source.fade_distance);
                 light.fade_power = float(source.fade_power);
+                if (source.spotlight) {
+                    light.spot_axis = Vec3(glm::normalize(source.point_at - source.position));
+                    light.spot_cos_radius = float(std::cos(glm::radians(source.spot_radius)));
+                    light.spot_cos_falloff = float(std::cos(glm::radians(source.spot_falloff)));
+                    light.tightness = float(source.tightness);
+                }
                 add_light(std::make_unique<PointLight>(light, radius), !source.shadowless);
             } else if (degenerate_rectangle || degenerate_sphere) {
                 // A physical lamp without size: the physical point it shrank to.

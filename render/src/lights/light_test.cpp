@@ -380,5 +380,54 @@ TEST(Lights, PlainPointSampleIsPlainPointIncidence) {
     EXPECT_EQ(sample.distance, incidence.distance);
 }
 
+// POV-Ray's spotlight (its Attenuate_Light): full light within `radius` of
+// the axis, none beyond `falloff`, a cubic smooth step between, times
+// cos^tightness; nothing behind the light. No distance falloff.
+TEST(Lights, SpotlightConeFollowsPovRay) {
+    sg::Light spot = point_light({0, 10, 0}, {1, 1, 1});
+    spot.spotlight = true;
+    spot.point_at = {0, 0, 0};
+    spot.spot_radius = 20.0;
+    spot.spot_falloff = 40.0;
+    auto scene = compile_lights({spot});
+    const Light& light = *scene->lights()[0];
+    ASSERT_NE(light.parameters<PointLightParameters>(), nullptr);
+    EXPECT_FALSE(light.parameters<PointLightParameters>()->is_plain());
+    // A point of the floor y = 0 at angle a from the axis.
+    auto at_angle = [&](double degrees) {
+        const double x = 10.0 * std::tan(glm::radians(degrees));
+        return light.sample(Vec3(float(x), 0.0f, 0.0f), Vec2(0.5f)).radiance.r;
+    };
+    EXPECT_NEAR(at_angle(0.0), kPi, 1e-5f);
+    EXPECT_NEAR(at_angle(15.0), kPi, 1e-5f);  // inside the radius
+    EXPECT_EQ(at_angle(45.0), 0.0f);          // beyond the falloff
+    // Halfway between the cosines of radius and falloff: the smooth step is 1/2.
+    const double c20 = std::cos(glm::radians(20.0)), c40 = std::cos(glm::radians(40.0));
+    const double halfway = glm::degrees(std::acos(0.5 * (c20 + c40)));
+    EXPECT_NEAR(at_angle(halfway), 0.5f * kPi, 1e-4f);
+    // A quarter of the way from the falloff: 3t^2 - 2t^3 at t = 1/4.
+    const double quarter = glm::degrees(std::acos(c40 + 0.25 * (c20 - c40)));
+    EXPECT_NEAR(at_angle(quarter), float((3.0 - 0.5) * 0.0625) * kPi, 1e-4f);
+    // Behind the light: nothing.
+    EXPECT_EQ(light.sample(Vec3(0, 20, 0), Vec2(0.5f)).radiance.r, 0.0f);
+    // No falloff with distance along the axis.
+    EXPECT_NEAR(light.sample(Vec3(0, -90, 0), Vec2(0.5f)).radiance.r, kPi, 1e-5f);
+
+    // tightness multiplies by cos^tightness everywhere.
+    spot.tightness = 10.0;
+    auto tight = compile_lights({spot});
+    const double x = 10.0 * std::tan(glm::radians(15.0));
+    EXPECT_NEAR(tight->lights()[0]->sample(Vec3(float(x), 0.0f, 0.0f), Vec2(0.5f)).radiance.r,
+                float(std::pow(std::cos(glm::radians(15.0)), 10.0)) * kPi, 1e-4f);
+}
+
+// POV's fade with fade_power but no fade_distance: 1 / d^fade_power.
+TEST(Lights, FadePowerWithoutDistanceIsAPowerLaw) {
+    sg::Light l = point_light({0, 0, 0}, {1, 1, 1});
+    l.fade_power = 1.0;
+    auto scene = compile_lights({l});
+    EXPECT_NEAR(scene->lights()[0]->sample(Vec3(4, 0, 0), Vec2(0.5f)).radiance.r, kPi / 4.0f, 1e-5f);
+}
+
 }  // namespace
 }  // namespace lancer

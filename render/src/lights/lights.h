@@ -36,6 +36,11 @@ class PointLight final : public Light {
     float m_scene_radius;
 };
 
+// POV's spotlight cone at cos c of the angle between the light's axis and
+// the direction from the light to the shading point (section 5 of the POV
+// reference; POV-Ray's Attenuate_Light).
+double spot_cone(const PointLightParameters& light, double cos_from_axis);
+
 class DirectionalLight final : public Light {
   public:
     // `travel`: direction light travels (position -> point_at); the scene

@@ -10,6 +10,26 @@ namespace lancer {
 PointLight::PointLight(const PointLightParameters& parameters, float scene_radius)
     : m_parameters(parameters), m_plain(parameters.is_plain()), m_scene_radius(std::max(scene_radius, 1e-6f)) {}
 
+namespace {
+
+// 0 below `low`, 1 from `high` on, a cubic smooth step between.
+double smooth_step(double low, double high, double x) {
+    if (x < low) return 0.0;
+    if (x >= high) return 1.0;
+    const double t = (x - low) / (high - low);
+    return (3.0 - 2.0 * t) * t * t;
+}
+
+}  // namespace
+
+double spot_cone(const PointLightParameters& light, double cos_from_axis) {
+    if (!(cos_from_axis > 0.0)) return 0.0;
+    double cone = light.tightness > 0.0f ? std::pow(cos_from_axis, double(light.tightness)) : 1.0;
+    if (light.spot_cos_radius > 0.0f && cos_from_axis < light.spot_cos_radius)
+        cone *= smooth_step(light.spot_cos_falloff, light.spot_cos_radius, cos_from_axis);
+    return cone;
+}
+
 LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     // Float where nothing can overflow or underflow: a squared distance
     // well inside float's range. Every shading point of an ordinary scene
@@ -36,12 +56,15 @@ LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     if (!(distance > 0.0) || !std::isfinite(distance)) return s;  // pdf 0: no sample
     const glm::dvec3 wi = to_light / distance;
     double attenuation;
-    if (light.fade_distance > 0.0f)
-        attenuation = 2.0 / (1.0 + std::pow(distance / light.fade_distance, double(light.fade_power)));
+    if (light.fade_power > 0.0f)
+        attenuation = light.fade_distance != 0.0f
+                          ? 2.0 / (1.0 + std::pow(distance / light.fade_distance, double(light.fade_power)))
+                          : std::pow(distance, -double(light.fade_power));
     else if (light.falloff == PointFalloff::InverseSquare)
         attenuation = 1.0 / (distance * distance);
     else
         attenuation = 1.0;
+    if (light.spot_axis != Vec3(0.0f)) attenuation *= spot_cone(light, -glm::dot(glm::dvec3(light.spot_axis), wi));
     double pattern = 1.0;
     if (light.pattern_axis != Vec3(0.0f)) {
         const double cos_emitted = -glm::dot(glm::dvec3(light.pattern_axis), wi);  // light -> p
@@ -66,7 +89,7 @@ Color PointLight::power() const {
     // lights it counts what lands on the scene, as a parallel light's
     // power does (DirectionalLight::power): its radiance over the disc of
     // the scene's bounding sphere.
-    if (light.falloff == PointFalloff::None && light.fade_distance == 0.0f)
+    if (light.falloff == PointFalloff::None && light.fade_power == 0.0f)
         return kPi * m_scene_radius * m_scene_radius * light.intensity;
     const float solid_angle = light.pattern_axis == Vec3(0.0f) ? 4.0f * kPi : light.one_sided ? kPi : 2.0f * kPi;
     return solid_angle * light.intensity;
