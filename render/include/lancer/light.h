@@ -70,6 +70,11 @@ class Light {
   protected:
     // The parameter struct of `kind` when this light is of that kind.
     virtual const void* parameters_of(Kind kind) const { return nullptr; }
+    // For overrides: `parameters` when `kind` is its struct's kind.
+    template <class Parameters>
+    static const void* parameters_if(Kind kind, const Parameters& parameters) {
+        return kind == Parameters::kKind ? &parameters : nullptr;
+    }
 
   private:
     bool m_casts_shadows = true;

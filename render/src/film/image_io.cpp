@@ -12,16 +12,12 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "film/file_extension.h"
+
 namespace lancer {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lower_extension(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 enum class Encoding { Srgb8, Srgb16, LinearFloat };
 

@@ -11,18 +11,14 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "film/file_extension.h"
+
 #include "lancer/host/image_io.h"
 
 namespace lancer {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lower_extension(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 // Formats that store display-encoded values rather than linear radiance.
 bool is_srgb_encoded(const std::string& ext) {

@@ -26,10 +26,9 @@ class PointLight final : public Light {
     const Color& intensity() const { return m_parameters.intensity; }
 
   protected:
-    const void* parameters_of(Kind kind) const override { return kind == kKind ? &m_parameters : nullptr; }
+    const void* parameters_of(Kind kind) const override { return parameters_if(kind, m_parameters); }
 
   private:
-    static constexpr Kind kKind = PointLightParameters::kKind;
     PointLightParameters m_parameters;
     // No fade and no pattern: sample()'s float path applies.
     bool m_plain;
@@ -51,9 +50,7 @@ class DirectionalLight final : public Light {
     Color power() const override;
 
   protected:
-    const void* parameters_of(Kind kind) const override {
-        return kind == DirectionalLightParameters::kKind ? &m_parameters : nullptr;
-    }
+    const void* parameters_of(Kind kind) const override { return parameters_if(kind, m_parameters); }
 
   private:
     DirectionalLightParameters m_parameters;
@@ -79,9 +76,7 @@ class RectangleLight final : public Light {
     bool emits_towards(const glm::dvec3& from_surface) const { return glm::dot(m_normal, from_surface) > 0.0; }
 
   protected:
-    const void* parameters_of(Kind kind) const override {
-        return kind == RectangleLightParameters::kKind ? &m_parameters : nullptr;
-    }
+    const void* parameters_of(Kind kind) const override { return parameters_if(kind, m_parameters); }
 
   private:
     RectangleLightParameters m_parameters;
@@ -129,9 +124,7 @@ class SphereLight final : public Light {
     const Color& radiance() const { return m_radiance; }
 
   protected:
-    const void* parameters_of(Kind kind) const override {
-        return kind == SphereLightParameters::kKind ? &m_parameters : nullptr;
-    }
+    const void* parameters_of(Kind kind) const override { return parameters_if(kind, m_parameters); }
 
   private:
     SphereLightParameters m_parameters;
