@@ -29,7 +29,7 @@ plane { x, 1 texture { Green } }                    // right wall
 light_source {
     <0, 1.98, 0>
     color rgb <1, 0.85, 0.6> * 4
-    area_light <0.5, 0, 0>, <0, 0, 0.5>, 4, 4
+    area_rectangle <0.5, 0, 0>, <0, 0, 0.5>
 }
 
 box { <-0.3, 0, -0.3>, <0.3, 1.2, 0.3> rotate y * 20 translate <-0.35, 0, 0.35> texture { White } }

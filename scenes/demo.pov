@@ -28,7 +28,7 @@ background { color rgb <0.55, 0.65, 0.85> }
 light_source {
     <-2, 7, -3>
     color rgb 45
-    area_light <2, 0, 0>, <0, 0, 2>, 5, 5
+    area_rectangle <2, 0, 0>, <0, 0, 2>
 }
 // Fill light: a POV point light, the same at every distance.
 light_source { <6, 4, -6> color rgb <0.07, 0.07, 0.08> }

@@ -119,7 +119,8 @@ double relative_difference(const Film& a, const Film& b) {
 // Scale invariance and distance from the origin.
 
 // A small room-less scene lit only by things whose effect does not depend
-// on scale: a directional light, an emissive sphere (radiance = emission x
+// on scale: a directional light (its position scales too: as in POV-Ray,
+// only what lies between a surface and the light's plane casts a shadow), an emissive sphere (radiance = emission x
 // pigment), an area rectangle whose colour grows with the square of the
 // scale (its radiance is pi C / area, so this keeps its radiance fixed) and
 // the ambient term; spheres (matte, mirror, glass, emissive), a box, a
@@ -134,8 +135,8 @@ std::string scaled_scene(double scale, double offset) {
 global_settings { assumed_gamma 1.0 max_trace_level 6 }
 background { color rgb <0.05, 0.06, 0.08> }
 camera { location <0, 2.2, -6> * S + O look_at <0, 0.6, 0> * S + O right x * 4 / 3 angle 50 }
-light_source { <-3, 5, -4> color rgb 0.6 parallel point_at <0, 0, 0> }
-light_source { <0, 3.2, 0> * S + O color rgb 1.5 * S * S area_light <1.2, 0, 0> * S, <0, 0, 1.2> * S, 2, 2 }
+light_source { <-3, 5, -4> * S + O color rgb 0.6 parallel point_at O }
+light_source { <0, 3.2, 0> * S + O color rgb 1.5 * S * S area_rectangle <1.2, 0, 0> * S, <0, 0, 1.2> * S }
 #declare Matte = texture { pigment { color rgb <0.7, 0.65, 0.6> } finish { ambient 0.05 diffuse 0.8 } }
 plane { y, 0 texture { Matte } translate O }
 sphere { <-1.1, 0.8, 0> * S + O, 0.8 * S texture { pigment { color rgb <0.8, 0.3, 0.2> } finish { ambient 0.05 diffuse 0.7 phong 0.4 } } }
@@ -328,8 +329,8 @@ plane { y, 0 pigment { color rgb 1 } }
 sphere { <0, 1, 0>, 0.5 pigment { color rgb 1 } }
 )";
     const std::pair<std::string, std::string> refused[] = {
-        {"light_source { <0, 3, 0> color rgb 1 area_light <0, 0, 0>, <0, 0, 1>, 2, 2 }", "area_light axes"},
-        {"light_source { <0, 3, 0> color rgb 1 area_light <1, 0, 0>, <2, 0, 0>, 2, 2 }", "area_light axes"},
+        {"light_source { <0, 3, 0> color rgb 1 area_rectangle <0, 0, 0>, <0, 0, 1> }", "area_rectangle axes"},
+        {"light_source { <0, 3, 0> color rgb 1 area_rectangle <1, 0, 0>, <2, 0, 0> }", "area_rectangle axes"},
         {"light_source { <0, 3, 0> color rgb 1 area_sphere 0 }", "area_sphere radius"},
     };
     for (const auto& [light, message] : refused) {
@@ -343,7 +344,7 @@ sphere { <0, 1, 0>, 0.5 pigment { color rgb 1 } }
     }
     // The same lights built in code, past the parser's checks.
     sg::SceneGraph graph = parse(base +
-                                     "light_source { <0, 3, 0> color rgb 1 area_light <1, 0, 0>, <0, 0, 1>, 2, 2 }\n"
+                                     "light_source { <0, 3, 0> color rgb 1 area_rectangle <1, 0, 0>, <0, 0, 1> }\n"
                                      "light_source { <1, 3, 0> color rgb 1 area_sphere 0.5 }\n",
                                  16, 12);
     ASSERT_EQ(graph.lights.size(), 2u);
@@ -374,7 +375,7 @@ TEST(Extremes, ZeroAndHugeIntensities) {
     auto scene = [](const char* intensity, const char* ambient) {
         return std::string("camera { location <0, 2, -5> look_at <0, 0.5, 0> }\n") +
                "light_source { <2, 4, -3> color rgb " + intensity + " }\n" + "light_source { <-2, 3, 0> color rgb " +
-               intensity + " area_light <1, 0, 0>, <0, 0, 1>, 2, 2 }\n" +
+               intensity + " area_rectangle <1, 0, 0>, <0, 0, 1> }\n" +
                "plane { y, 0 pigment { color rgb 1 } finish { ambient " + ambient + " diffuse 0.8 } }\n" +
                "sphere { <0, 1, 0>, 0.6 pigment { color rgb 1 } finish { ambient " + ambient +
                " diffuse 0.8 phong 0.5 reflection 0.3 } }\n";
@@ -456,7 +457,7 @@ box { <-2, 0, -2>, <2, 2, 2> pigment { color rgb 1 } finish { ambient 0 diffuse 
 TEST(Extremes, GatherWithOneAndTenThousandDirections) {
     const std::string scene = R"(
 camera { location <0, 1, -3> look_at <0, 0.6, 0> }
-light_source { <0, 2.5, 0> color rgb 2 area_light <1, 0, 0>, <0, 0, 1>, 2, 2 }
+light_source { <0, 2.5, 0> color rgb 2 area_rectangle <1, 0, 0>, <0, 0, 1> }
 plane { y, 0 pigment { color rgb 0.8 } finish { diffuse 1 } }
 sphere { <0, 0.6, 0>, 0.6 pigment { color rgb <0.8, 0.4, 0.2> } finish { diffuse 1 } }
 )";

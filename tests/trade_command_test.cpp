@@ -39,7 +39,7 @@ class TradeCommand : public ::testing::Test {
             << "camera { location <0, 2, -5> look_at <0, 0.5, 0> angle 50 }\n"
                "plane { y, 0 texture { pigment { color rgb 0.7 } finish { ambient 0 } } }\n"
                "sphere { <0, 0.6, 0>, 0.6 texture { pigment { color rgb <0.8, 0.3, 0.2> } finish { phong 0.3 } } }\n"
-               "light_source { <0, 3, 0> color rgb 8 area_light <1, 0, 0>, <0, 0, 1>, 2, 2 }\n";
+               "light_source { <0, 3, 0> color rgb 8 area_rectangle <1, 0, 0>, <0, 0, 1> }\n";
     }
 
     // The scene at 24x18 with a 3-second budget and a cache in this test's folder.

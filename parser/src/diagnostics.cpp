@@ -148,10 +148,6 @@ void Evaluator::ignored(const sg::SourceLocation& where, const std::string& what
     warning(where, what + " is accepted but ignored by lancer");
 }
 
-void Evaluator::hint(const sg::SourceLocation& where, const std::string& what) {
-    warning(where, what + " is recorded but has no effect: lancer samples area lights physically");
-}
-
 void Evaluator::unknown_identifier(const std::string& name, const sg::SourceLocation& where,
                                    const std::string& expected) {
     std::string near = suggestion(name);

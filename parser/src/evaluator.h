@@ -74,7 +74,6 @@ class Evaluator {
     bool add_diagnostic(Diagnostic::Severity severity, const sg::SourceLocation& where, const std::string& message);
     static constexpr int kMaxWarnings = 200;
     void ignored(const sg::SourceLocation& where, const std::string& what);
-    void hint(const sg::SourceLocation& where, const std::string& what);
     void unknown_identifier(const std::string& name, const sg::SourceLocation& where, const std::string& expected);
     void syntax_error(const SourceRange& where, const std::string& message);
     std::string suggestion(const std::string& name) const;
@@ -164,9 +163,12 @@ class Evaluator {
     std::function<void(sg::Light&)> area_light(const Value& a1, const SourceRange& w1, const Value& a2,
                                                const SourceRange& w2, const Value& n1, const SourceRange& wn1,
                                                const Value& n2, const SourceRange& wn2);
+    std::function<void(sg::Light&)> area_rectangle(const Value& a1, const SourceRange& w1, const Value& a2,
+                                                   const SourceRange& w2);
     double camera_angle(const Value& v, const SourceRange& where);
     void add_object(const ShapePtr& shape);
     void add_light(const sg::Light& light, const sg::Mat4& world_from_local);
+    void check_area_light(sg::Light& light);
     void set_camera(const CameraSpec& spec);
     void render_setting(const std::string& name, const SourceRange& wn, const Value& v, const SourceRange& wv,
                         const Edits<ParameterList>& parameters);

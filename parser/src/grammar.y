@@ -80,7 +80,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        DIRECTION "direction" PERSPECTIVE "perspective" ORTHOGRAPHIC "orthographic"
        APERTURE "aperture" BLUR_SAMPLES "blur_samples" FOCAL_POINT "focal_point"
        PARALLEL "parallel" POINT_AT "point_at" AREA_LIGHT "area_light" JITTER "jitter"
-       ADAPTIVE "adaptive" CIRCULAR "circular" ORIENT "orient" AREA_SPHERE "area_sphere"
+       ADAPTIVE "adaptive" CIRCULAR "circular" ORIENT "orient" AREA_SPHERE "area_sphere" AREA_RECTANGLE "area_rectangle"
        FADE_DISTANCE "fade_distance" FADE_POWER "fade_power" SHADOWLESS "shadowless"
        AREA_ILLUMINATION "area_illumination" LOOKS_LIKE "looks_like" SPOTLIGHT "spotlight"
        RADIUS "radius" TIGHTNESS "tightness" MEDIA_INTERACTION "media_interaction"
@@ -651,16 +651,18 @@ light_item
   | "point_at" expr    { sg::Vec3 p = ev.to_vec3($2, @2); $$ = [p](sg::Light& l) { l.point_at = p; }; }
   | "area_light" expr opt_comma expr opt_comma expr opt_comma expr
       { $$ = ev.area_light($2, @2, $4, @4, $6, @6, $8, @8); }
-  | "jitter"           { $$ = [](sg::Light& l) { l.jitter = true; }; ev.hint(LOC(@1), "jitter"); }
-  | "adaptive" expr    { int a = ev.to_int($2, @2); $$ = [a](sg::Light& l) { l.adaptive = a; }; ev.hint(LOC(@1), "adaptive"); }
-  | "circular"         { $$ = [](sg::Light& l) { l.circular = true; }; ev.hint(LOC(@1), "circular"); }
-  | "orient"           { $$ = [](sg::Light& l) { l.orient = true; }; ev.hint(LOC(@1), "orient"); }
+  | "jitter"           { $$ = [](sg::Light& l) { l.jitter = true; }; }
+  | "adaptive" expr    { int a = ev.to_int($2, @2); $$ = [a](sg::Light& l) { l.adaptive = a; }; }
+  | "circular"         { $$ = [](sg::Light& l) { l.circular = true; }; }
+  | "orient"           { $$ = [](sg::Light& l) { l.orient = true; }; }
   | "area_sphere" expr { double r = ev.positive($2, @2, "area_sphere radius");
                          $$ = [r](sg::Light& l) { l.kind = sg::Light::Kind::AreaSphere; l.radius = r; }; }
+  | "area_rectangle" expr opt_comma expr
+      { $$ = ev.area_rectangle($2, @2, $4, @4); }
   | "fade_distance" expr { double d = ev.to_float($2, @2); $$ = [d](sg::Light& l) { l.fade_distance = d; }; }
   | "fade_power" expr  { double p = ev.to_float($2, @2); $$ = [p](sg::Light& l) { l.fade_power = p; }; }
   | "shadowless"       { $$ = [](sg::Light& l) { l.shadowless = true; }; }
-  | "area_illumination" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "area_illumination"); }
+  | "area_illumination" opt_bool { bool on = $2; $$ = [on](sg::Light& l) { l.area_illumination = on; }; }
   | "media_interaction" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "media_interaction"); }
   | "media_attenuation" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "media_attenuation"); }
   | "looks_like" "{" object_ref object_mods "}" { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "looks_like"); }

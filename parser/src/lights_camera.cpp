@@ -79,23 +79,48 @@ std::function<void(sg::Light&)> Evaluator::area_light(const Value& a1, const Sou
                                                       const SourceRange& w2, const Value& n1, const SourceRange& wn1,
                                                       const Value& n2, const SourceRange& wn2) {
     sg::Vec3 axis1 = to_vec3(a1, w1), axis2 = to_vec3(a2, w2);
-    int size1 = to_int(n1, wn1), size2 = to_int(n2, wn2);
+    // POV truncates the sizes to integers.
+    int size1 = int(to_float(n1, wn1, "a grid size")), size2 = int(to_float(n2, wn2, "a grid size"));
     if (size1 < 1 || size2 < 1) {
-        error((size1 < 1 ? wn1 : wn2).begin, "area_light sample counts must be at least 1");
+        error((size1 < 1 ? wn1 : wn2).begin, "area_light grid sizes must be at least 1");
         size1 = std::max(size1, 1);
         size2 = std::max(size2, 1);
     }
-    if (glm::length(glm::cross(axis1, axis2)) == 0.0) {
-        error(w1.begin, "area_light axes must be non-zero and not parallel (they span the emitting rectangle)");
+    constexpr int kMaxGridSize = 1024;  // POV traces up to size1 * size2 shadow rays per shading point
+    if (size1 > kMaxGridSize || size2 > kMaxGridSize) {
+        error((size1 > kMaxGridSize ? wn1 : wn2).begin,
+              "area_light grid sizes must be at most " + std::to_string(kMaxGridSize));
+        size1 = std::min(size1, kMaxGridSize);
+        size2 = std::min(size2, kMaxGridSize);
     }
     return [=](sg::Light& l) {
-        l.kind = sg::Light::Kind::AreaRectangle;
+        l.area_light = true;
         l.axis1 = axis1;
         l.axis2 = axis2;
         l.samples1 = size1;
         l.samples2 = size2;
     };
 }
+
+std::function<void(sg::Light&)> Evaluator::area_rectangle(const Value& a1, const SourceRange& w1, const Value& a2,
+                                                          const SourceRange& w2) {
+    sg::Vec3 axis1 = to_vec3(a1, w1), axis2 = to_vec3(a2, w2);
+    if (!(glm::length(glm::cross(axis1, axis2)) > 0.0))
+        error(w1.begin, "area_rectangle axes must be non-zero and not parallel (they span the emitting rectangle)");
+    return [=](sg::Light& l) {
+        l.kind = sg::Light::Kind::AreaRectangle;
+        l.axis1 = axis1;
+        l.axis2 = axis2;
+    };
+}
+
+namespace {
+
+bool is_physical_lamp(const sg::Light& light) {
+    return light.kind == sg::Light::Kind::AreaRectangle || light.kind == sg::Light::Kind::AreaSphere;
+}
+
+}  // namespace
 
 void Evaluator::add_light(const sg::Light& local, const sg::Mat4& world_from_local) {
     sg::Light light = local;
@@ -112,19 +137,69 @@ void Evaluator::add_light(const sg::Light& local, const sg::Mat4& world_from_loc
         error(light.location, "radius, falloff and tightness belong to a spotlight (write `spotlight` before them)");
     if (light.spotlight) {
         if (light.kind != sg::Light::Kind::Point)
-            error(light.location, "spotlight cannot be combined with parallel, area_light or area_sphere in lancer");
+            error(light.location,
+                  "spotlight cannot be combined with parallel, area_rectangle or area_sphere in lancer");
         else if (glm::length(light.point_at - light.position) == 0.0)
             error(light.location, "spotlight: point_at must differ from the light's position");
         if (light.tightness < 0.0) error(light.location, "tightness must not be negative");
     }
-    if (light.shadowless &&
-        (light.kind == sg::Light::Kind::AreaRectangle || light.kind == sg::Light::Kind::AreaSphere)) {
+    check_area_light(light);
+    if (light.shadowless && is_physical_lamp(light)) {
         // A physical lamp is a surface that rays find: it cannot let light
         // through what stands between.
-        warning(light.location, "shadowless is ignored on lancer's physical lamps (area_light, area_sphere)");
+        warning(light.location, "shadowless is ignored on lancer's physical lamps (area_rectangle, area_sphere)");
         light.shadowless = false;
     }
     m_scene.lights.push_back(light);
+}
+
+// POV's checks of an area light (parser.cpp, Parse_Light_Source and
+// Post_Process), with its warnings; the modifiers of an area light without
+// one are warned about and dropped.
+void Evaluator::check_area_light(sg::Light& light) {
+    if (light.area_light && is_physical_lamp(light)) {
+        error(light.location,
+              "area_light is POV-Ray's light (lit from its centre, shadows sampled over a grid); it cannot be "
+              "combined with lancer's physical lamps area_rectangle or area_sphere");
+        light.area_light = false;
+    }
+    if (!light.area_light) {
+        if (light.jitter || light.circular || light.orient || light.area_illumination || light.adaptive != 100)
+            warning(light.location,
+                    is_physical_lamp(light)
+                        ? "jitter, adaptive, circular, orient and area_illumination are POV's area_light "
+                          "modifiers; lancer's physical lamps are sampled physically and ignore them"
+                        : "jitter, adaptive, circular, orient and area_illumination only affect an area_light");
+        light.jitter = light.circular = light.orient = light.area_illumination = false;
+        light.adaptive = 100;
+        return;
+    }
+    if (light.kind == sg::Light::Kind::Directional) {
+        warning(light.location, "a parallel area_light is rendered as a parallel light with hard shadows in lancer");
+        light.area_light = false;
+        return;
+    }
+    if (light.adaptive < 0) {
+        error(light.location, "adaptive must not be negative");
+        light.adaptive = 0;
+    }
+    if (light.orient) {
+        if (!light.circular) {
+            warning(light.location,
+                    "orient can only be used with circular area lights: this area light is now circular");
+            light.circular = true;
+        }
+        if (std::abs(glm::length(light.axis1) - glm::length(light.axis2)) > 1e-10)
+            warning(
+                light.location,
+                "with orient, both axes of an area_light should have the same length: only the first one's is used");
+        if (light.samples1 != light.samples2)
+            warning(light.location, "with orient, both sample sizes of an area_light should be equal");
+    }
+    if (light.circular && (light.samples1 <= 1 || light.samples2 <= 1)) {
+        error(light.location, "a circular area_light must have more than one sample along each axis");
+        light.circular = light.orient = false;
+    }
 }
 
 // ---------------------------------------------------------- render_settings

@@ -263,7 +263,7 @@ TEST(ParserLights, ShadowlessIsKeptOnPointAndParallelLights) {
 
 TEST(ParserLights, ShadowlessOnAPhysicalLampWarns) {
     ParseResult result = parse_scene_string(
-        "light_source { <0, 5, 0> rgb 1 area_light <1, 0, 0>, <0, 0, 1>, 2, 2 shadowless }", "lamp.pov");
+        "light_source { <0, 5, 0> rgb 1 area_rectangle <1, 0, 0>, <0, 0, 1> shadowless }", "lamp.pov");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     EXPECT_FALSE(result.scene->lights[0].shadowless);
     EXPECT_EQ(test::count_warnings(result), 1);
@@ -298,26 +298,55 @@ TEST(ParserLights, PointParallelAreaSphere) {
     auto scene = parse_ok(R"(
         light_source { <1, 2, 3> color rgb <1, 0.5, 0.25> fade_distance 2 fade_power 1 }
         light_source { <0, 10, 0>, 1 parallel point_at <0, 0, 0> }
-        light_source { <0, 5, 0> rgb 1 area_light <2, 0, 0>, <0, 0, 1>, 5, 3 jitter adaptive 1 circular orient translate x }
+        light_source { <0, 5, 0> rgb 1 area_light <2, 0, 0>, <0, 0, 1>, 5, 3 jitter adaptive 1 translate x }
         light_source { <0, 1, 0> rgb 1 area_sphere 0.25 }
-        union { sphere { 0, 1 } light_source { <0, 1, 0> rgb 1 } translate y*2 })");
-    ASSERT_EQ(scene.lights.size(), 5u);
+        union { sphere { 0, 1 } light_source { <0, 1, 0> rgb 1 } translate y*2 }
+        light_source { <0, 5, 0> rgb 1 area_rectangle <2, 0, 0>, <0, 0, 1> rotate y*90 })");
+    ASSERT_EQ(scene.lights.size(), 6u);
     EXPECT_EQ(scene.lights[0].kind, sg::Light::Kind::Point);
     expect_vec(scene.lights[0].color, {1, 0.5, 0.25});
     EXPECT_DOUBLE_EQ(scene.lights[0].fade_distance, 2);
+    EXPECT_FALSE(scene.lights[0].area_light);
     EXPECT_EQ(scene.lights[1].kind, sg::Light::Kind::Directional);
     expect_vec(scene.lights[1].point_at, {0, 0, 0});
+    // POV's area_light is a point light with a grid of shadow samples.
     const auto& area = scene.lights[2];
-    EXPECT_EQ(area.kind, sg::Light::Kind::AreaRectangle);
+    EXPECT_EQ(area.kind, sg::Light::Kind::Point);
+    EXPECT_TRUE(area.area_light);
     expect_vec(area.position, {1, 5, 0});
     expect_vec(area.axis1, {2, 0, 0});
     EXPECT_EQ(area.samples1, 5);
     EXPECT_EQ(area.samples2, 3);
-    EXPECT_TRUE(area.jitter && area.circular && area.orient);
+    EXPECT_TRUE(area.jitter);
+    EXPECT_FALSE(area.circular || area.orient || area.area_illumination);
     EXPECT_EQ(area.adaptive, 1);
     EXPECT_EQ(scene.lights[3].kind, sg::Light::Kind::AreaSphere);
     EXPECT_DOUBLE_EQ(scene.lights[3].radius, 0.25);
     expect_vec(scene.lights[4].position, {0, 3, 0});  // follows the union
+    const auto& panel = scene.lights[5];
+    EXPECT_EQ(panel.kind, sg::Light::Kind::AreaRectangle);
+    EXPECT_FALSE(panel.area_light);
+    expect_vec(panel.axis1, {0, 0, -2});  // rotated with the light
+}
+
+TEST(ParserLights, AreaLightModifiersAsPovRay) {
+    ParseResult result = parse_scene_string(R"(
+        light_source { 0, 1 area_light x, z, 4, 4 orient area_illumination on }
+        light_source { 0, 1 area_light x, 2*z, 4, 4 circular orient }
+        light_source { 0, 1 jitter })",
+                                            "lights.pov");
+    ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
+    const auto& lights = result.scene->lights;
+    ASSERT_EQ(lights.size(), 3u);
+    EXPECT_TRUE(lights[0].orient && lights[0].circular);  // orient makes it circular, as POV does
+    EXPECT_TRUE(lights[0].area_illumination);
+    EXPECT_EQ(lights[0].adaptive, 100);  // POV's default: the full grid
+    EXPECT_FALSE(lights[2].jitter);      // dropped, with a warning: no area_light
+    const std::string diagnostics = test::all_diagnostics(result);
+    EXPECT_EQ(test::count_warnings(result), 3) << diagnostics;
+    EXPECT_NE(diagnostics.find("is now circular"), std::string::npos) << diagnostics;
+    EXPECT_NE(diagnostics.find("same length"), std::string::npos) << diagnostics;
+    EXPECT_NE(diagnostics.find("only affect an area_light"), std::string::npos) << diagnostics;
 }
 
 TEST(ParserCamera, DefaultsAndAngleLookAt) {

@@ -89,7 +89,7 @@ SceneSummary summarize_scene(const sg::SceneGraph& scene) {
     for (const auto& object : scene.objects) walker.visit(object, sg::Mat4(1.0));
     summary.materials = static_cast<int>(walker.materials.size());
     for (const auto& light : scene.lights) {
-        ++summary.lights_by_kind[light_kind_name(light.kind)];
+        ++summary.lights_by_kind[light.area_light ? "area_light" : light_kind_name(light.kind)];
         ++summary.light_count;
     }
     return summary;

@@ -8,11 +8,12 @@
 // the magnitude of the light's position (Hit::spawn_ray_to), so a lamp lying
 // on a surface does not shadow itself. Transparent objects on the way filter
 // the light by their transmission colour without bending it (POV-Ray's
-// filtered shadows); `no_shadow` objects cast none. Area lights and emitters
-// act through their point proxy, as in the seed: hard shadows from the
-// lamp's centre.
+// filtered shadows); `no_shadow` objects cast none. POV's area_light casts
+// POV-Ray's grid shadow (shading/shadow_rays.h). lancer's physical lamps and
+// emitters act through their point proxy, as in the seed: hard shadows from
+// the lamp's centre.
 //
-// Beyond the seed, `area_samples N` (N > 0) replaces each area light's proxy
+// Beyond the seed, `area_samples N` (N > 0) replaces each physical lamp's proxy
 // by N samples of its surface (Light::sample with the sampler's 2D values),
 // each with its own shadow ray, averaged: soft shadows with penumbrae, and
 // the exact direct light of the lamp as N and the pixel samples grow. Point
@@ -85,8 +86,8 @@ constexpr std::int64_t kMaxAreaSamples = 1 << 16;
 
 const ParameterDecl kParameters[] = {
     {"area_samples", ParameterType::Int, "0",
-     "0: area lights through their point proxy (hard shadows); N > 0: N surface samples per "
-     "area light (soft shadows)"},
+     "0: physical lamps (area_rectangle, area_sphere) and emitters through their point proxy (hard shadows); "
+     "N > 0: N surface samples per lamp (soft shadows). POV's area_light always casts its grid shadow"},
     {"ambient", ParameterType::Bool, "true", "add POV's ambient term (ambient x pigment x ambient_light x opacity)"},
 };
 

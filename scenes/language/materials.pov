@@ -10,7 +10,7 @@ background { color rgb <0.05, 0.05, 0.1> }
 render_settings { integrator "path" { max_depth 8 } width 320 height 240 samples 16 seed 1 }
 
 camera { location <0, 2, -6> look_at <0, 0.8, 0> angle 55 right x*image_width/image_height }
-light_source { <0, 5, 0> color rgb 1 area_light <2, 0, 0>, <0, 0, 2>, 4, 4 }
+light_source { <0, 5, 0> color rgb 1 area_rectangle <2, 0, 0>, <0, 0, 2> }
 light_source { <-3, 3, -3> color rgb <1, 0.9, 0.8> area_sphere 0.2 }
 
 #declare Mirror = texture { pigment { color Black } finish { reflection { 0.9 } ambient 0 diffuse 0 } }

@@ -170,24 +170,33 @@ struct Object {
 // ------------------------------------------------------------------ lights
 
 struct Light {
+    // Point and Directional are POV-Ray's lights (a Point may be a
+    // spotlight, and either may carry POV's area_light). AreaRectangle and
+    // AreaSphere are lancer's physical lamps (extensions `area_rectangle`,
+    // `area_sphere`): surfaces that rays hit and that emit.
     enum class Kind { Point, Directional, AreaRectangle, AreaSphere };
     Kind kind = Kind::Point;
     Vec3 position{0.0};            // world space, transforms applied
     Vec3 color{1.0};               // see docs/scene-language.md for the unit
     Vec3 point_at{0.0, 0.0, 1.0};  // Directional: light travels position -> point_at
-    // AreaRectangle: the rectangle position ± axis1/2 ± axis2/2.
+    // POV's area_light, or the rectangle of an AreaRectangle: position
+    // ± axis1/2 ± axis2/2.
     Vec3 axis1{0.0};
     Vec3 axis2{0.0};
-    int samples1 = 1;  // POV's n1, n2: accepted, used as a sampling hint
+    // POV's area_light: lit from `position`, its shadows sampled over an
+    // samples1 × samples2 grid spanning the rectangle (corners included).
+    bool area_light = false;
+    int samples1 = 1;
     int samples2 = 1;
     bool jitter = false;
-    int adaptive = 0;
+    int adaptive = 100;  // POV's default: every grid point is traced
     bool circular = false;
     bool orient = false;
-    double radius = 0.0;  // AreaSphere
+    bool area_illumination = false;  // each grid point lights with its own direction
+    double radius = 0.0;             // AreaSphere
     // POV's fade: attenuation 2 / (1 + (d / fade_distance)^fade_power) when
-    // fade_distance > 0; otherwise a point light does not fall off (POV's)
-    // and an area light is lancer's physical lamp.
+    // fade_distance > 0, d^-fade_power when fade_distance is 0; otherwise a
+    // POV light does not fall off (lancer's physical lamps do: inverse square).
     double fade_distance = 0.0;
     double fade_power = 0.0;
     bool parallel = false;

@@ -15,8 +15,9 @@ struct SceneSummary {
     // scene-language keyword that made it ("sphere", "mesh2", "union" ...).
     std::map<std::string, int> objects_by_kind;
     int object_count = 0;
-    long long triangles = 0;                    // over all mesh-like objects, instances counted
-    std::map<std::string, int> lights_by_kind;  // "point", "directional", "area_rectangle", "area_sphere"
+    long long triangles = 0;  // over all mesh-like objects, instances counted
+    std::map<std::string, int>
+        lights_by_kind;  // "point", "directional", "area_light" (POV's), "area_rectangle", "area_sphere"
     int light_count = 0;
     int materials = 0;  // distinct materials (textures, per-face and MTL materials)
     // World-space bounds of the finite objects; planes are unbounded and

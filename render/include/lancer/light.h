@@ -27,13 +27,15 @@ struct LightSample {
 
 class Light {
   public:
-    enum class Kind { Point, Directional, Rectangle, Sphere, EmissiveShape };
+    enum class Kind { Point, Directional, PovArea, Rectangle, Sphere, EmissiveShape };
 
     virtual ~Light() = default;
     virtual Kind kind() const = 0;
+    // Lights that no ray can hit: their light arrives from one direction at
+    // a time (POV's area light too: it lights from its centre).
     bool is_delta() const {
         const Kind k = kind();
-        return k == Kind::Point || k == Kind::Directional;
+        return k == Kind::Point || k == Kind::Directional || k == Kind::PovArea;
     }
 
     // Sample incident light at p; u uniform in [0,1)^2.
@@ -58,8 +60,8 @@ class Light {
     virtual const Light& proxy() const { return *this; }
 
     // This light's parameters as `Parameters` (PointLightParameters,
-    // DirectionalLightParameters, RectangleLightParameters,
-    // SphereLightParameters, below), or null when the light is of another
+    // DirectionalLightParameters, PovAreaLightParameters,
+    // RectangleLightParameters, SphereLightParameters, below), or null when the light is of another
     // kind. For integrators that evaluate a kind of light themselves; new
     // kinds of light add a parameter struct, not a method.
     template <class Parameters>
@@ -120,6 +122,29 @@ struct DirectionalLightParameters {
     static constexpr Light::Kind kKind = Light::Kind::Directional;
     Vec3 to_light{0.0f, 1.0f, 0.0f};  // unit
     Color irradiance{0.0f};           // on a surface facing the light
+};
+
+// POV-Ray's area_light: a point light at the centre of the rectangle
+// center ± axis1/2 ± axis2/2 whose shadows are sampled over its
+// size1 × size2 grid (corners included), invisible to every ray. It lights
+// from its centre: sample() gives the centre's direction and radiance and,
+// as `point`, the point of the rectangle u picks (u in [0,1]^2 spans it),
+// so a shadow ray to it is an unbiased estimate of the visible fraction of
+// the rectangle; shading/area_light_shadows.h computes POV's grid instead.
+struct PovAreaLightParameters {
+    static constexpr Light::Kind kKind = Light::Kind::PovArea;
+    PointLightParameters center;  // colour, fade and spotlight cone, at the centre
+    Vec3 axis1{0.0f};
+    Vec3 axis2{0.0f};
+    int size1 = 1;
+    int size2 = 1;
+    int adaptive = 100;     // levels subdivided whatever the corners show (POV's default: all)
+    bool jitter = false;    // each grid point moves by up to half a cell
+    bool circular = false;  // the grid squashed onto the ellipse the axes span
+    bool orient = false;    // the axes turned perpendicular to the direction of the light
+    // POV's area_illumination: each grid point lights with its own
+    // direction and attenuation, rather than the centre's.
+    bool area_illumination = false;
 };
 
 // lancer's physical rectangle lamp: centre +- axis1/2 +- axis2/2, emitting

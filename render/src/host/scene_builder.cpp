@@ -358,27 +358,29 @@ class Builder {
             if (instance.kind != ShapeKind::Plane) expand(m_data->bounds, instance.bounds_lower, instance.bounds_upper);
     }
 
-    // Point and directional lights, and area lights too small to have a
-    // surface (degraded to point lights of the same intensity pi*C).
+    // POV's point, spot, area and parallel lights, and physical lamps too
+    // small to have a surface (degraded to point lights of the same
+    // intensity pi*C).
     void add_sg_lights() {
         const Bounds& b = m_data->bounds;
-        const Vec3 centre = b.empty() ? Vec3(0.0f) : 0.5f * (b.lower + b.upper);
         const float radius = b.empty() ? 1.0f : glm::max(0.5f * glm::length(b.upper - b.lower), 1e-30f);
         for (const sg::Light& source : m_graph.lights) {
             const Color color(source.color);
             const bool directional = source.kind == sg::Light::Kind::Directional ||
                                      (source.kind == sg::Light::Kind::Point && source.parallel);
             if (directional) {
-                add_light(std::make_unique<DirectionalLight>(Vec3(source.point_at - source.position),
-                                                             float(kPiD) * color, centre, radius),
-                          !source.shadowless);
+                add_light(
+                    std::make_unique<DirectionalLight>(Vec3(source.position), Vec3(source.point_at - source.position),
+                                                       float(kPiD) * color, radius),
+                    !source.shadowless);
                 continue;
             }
             const bool degenerate_rectangle = source.kind == sg::Light::Kind::AreaRectangle &&
                                               !(glm::length(glm::cross(source.axis1, source.axis2)) > 0.0);
             const bool degenerate_sphere = source.kind == sg::Light::Kind::AreaSphere && !(source.radius > 0.0);
             if (source.kind == sg::Light::Kind::Point) {
-                // POV-Ray's point light: no falloff unless it fades.
+                // POV-Ray's point light: no falloff unless it fades; an
+                // area_light lights the same way from its centre.
                 PointLightParameters light;
                 light.position = Vec3(source.position);
                 light.intensity = float(kPiD) * color;
@@ -391,7 +393,22 @@ class Builder {
                     light.spot_cos_falloff = float(std::cos(glm::radians(source.spot_falloff)));
                     light.tightness = float(source.tightness);
                 }
-                add_light(std::make_unique<PointLight>(light, radius), !source.shadowless);
+                if (source.area_light) {
+                    PovAreaLightParameters area;
+                    area.center = light;
+                    area.axis1 = Vec3(source.axis1);
+                    area.axis2 = Vec3(source.axis2);
+                    area.size1 = source.samples1;
+                    area.size2 = source.samples2;
+                    area.adaptive = source.adaptive;
+                    area.jitter = source.jitter;
+                    area.circular = source.circular;
+                    area.orient = source.orient;
+                    area.area_illumination = source.area_illumination;
+                    add_light(std::make_unique<PovAreaLight>(area, radius), !source.shadowless);
+                } else {
+                    add_light(std::make_unique<PointLight>(light, radius), !source.shadowless);
+                }
             } else if (degenerate_rectangle || degenerate_sphere) {
                 // A physical lamp without size: the physical point it shrank to.
                 add_light(std::make_unique<PointLight>(

@@ -5,9 +5,9 @@
 
 namespace lancer {
 
-DirectionalLight::DirectionalLight(const Vec3& travel, const Color& irradiance, const Vec3& scene_center,
+DirectionalLight::DirectionalLight(const Vec3& position, const Vec3& travel, const Color& irradiance,
                                    float scene_radius)
-    : m_scene_center(scene_center), m_scene_radius(scene_radius) {
+    : m_position(position), m_scene_radius(scene_radius) {
     const float length = glm::length(travel);
     m_parameters.to_light = length > 0.0f ? -travel / length : Vec3(0.0f, 1.0f, 0.0f);
     m_parameters.irradiance = irradiance;
@@ -18,9 +18,12 @@ LightSample DirectionalLight::sample(const Vec3& p, const Vec2&) const {
     s.radiance = m_parameters.irradiance;
     s.wi = m_parameters.to_light;
     s.distance = kInfinity;
-    // A target past every object: the shadow ray sees the whole scene.
-    const float reach = 2.0f * m_scene_radius + glm::length(p - m_scene_center);
-    s.point = p + reach * m_parameters.to_light;
+    // POV-Ray's shadow ray runs from p to the light's plane (its length is
+    // the projection of position - p on the light's direction); a surface
+    // past that plane is lit with nothing in between (the point is p).
+    const glm::dvec3 to_light(m_parameters.to_light);
+    const double reach = glm::dot(m_position - glm::dvec3(p), to_light);
+    s.point = reach > 0.0 ? Vec3(glm::dvec3(p) + reach * to_light) : p;
     s.pdf = 1.0f;
     s.is_delta = true;
     return s;

@@ -35,6 +35,26 @@ class PointLight final : public Light {
     float m_scene_radius;
 };
 
+// A point light's sample at p, in double precision: fade, falloff, pattern
+// and spotlight cone (PointLight::sample's general path).
+LightSample sample_point_light(const PointLightParameters& light, const Vec3& p);
+
+// POV-Ray's area_light (lancer/light.h, PovAreaLightParameters).
+class PovAreaLight final : public Light {
+  public:
+    PovAreaLight(const PovAreaLightParameters& parameters, float scene_radius);
+    Kind kind() const override { return Kind::PovArea; }
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    Color power() const override { return m_center.power(); }
+
+  protected:
+    const void* parameters_of(Kind kind) const override { return parameters_if(kind, m_parameters); }
+
+  private:
+    PovAreaLightParameters m_parameters;
+    PointLight m_center;
+};
+
 // POV's spotlight cone at cos c of the angle between the light's axis and
 // the direction from the light to the shading point (section 5 of the POV
 // reference; POV-Ray's Attenuate_Light).
@@ -42,9 +62,11 @@ double spot_cone(const PointLightParameters& light, double cos_from_axis);
 
 class DirectionalLight final : public Light {
   public:
-    // `travel`: direction light travels (position -> point_at); the scene
-    // sphere places the shadow-ray target beyond all geometry.
-    DirectionalLight(const Vec3& travel, const Color& irradiance, const Vec3& scene_center, float scene_radius);
+    // `travel`: direction light travels (position -> point_at). As in
+    // POV-Ray, only what lies between a surface and the plane through
+    // `position` across the light casts a shadow (the shadow ray ends at
+    // that plane); the scene sphere gives the light's power.
+    DirectionalLight(const Vec3& position, const Vec3& travel, const Color& irradiance, float scene_radius);
     Kind kind() const override { return Kind::Directional; }
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     Color power() const override;
@@ -54,7 +76,7 @@ class DirectionalLight final : public Light {
 
   private:
     DirectionalLightParameters m_parameters;
-    Vec3 m_scene_center;
+    glm::dvec3 m_position;
     float m_scene_radius;
 };
 

@@ -48,6 +48,10 @@ LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
         s.is_delta = true;
         return s;
     }
+    return sample_point_light(light, p);
+}
+
+LightSample sample_point_light(const PointLightParameters& light, const Vec3& p) {
     LightSample s;
     // Difference in double: at large offsets the float subtraction is
     // exact anyway, but the length must not overflow for huge scenes.

@@ -1,7 +1,8 @@
 // The seed's simple local lighting model, shared by the shadow, whitted and
 // gather integrators (docs/integrators.md): at one surface hit, the light
-// reflected from every light of the simple model (point and directional
-// lights, and the point proxy of every area light and emitter), the
+// reflected from every light of the simple model (POV's point, spot,
+// parallel and area lights, and the point proxy of every physical lamp and
+// emitter), the
 // surface's emission and POV's ambient term, with or without shadow rays.
 // Header-only: the plugins inline it, liblancer's ABI is untouched.
 #pragma once
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "lancer/render_scene.h"
+#include "lancer/shading/shadow_rays.h"
 
 namespace lancer {
 
@@ -71,38 +73,6 @@ inline LobeRadiance reflect_light_sample(const ShadingContext& at, const LightSa
     return reflected;
 }
 
-// How much light leaving `target` reaches the hit: 1 when nothing lies
-// between, 0 behind an opaque shadow caster. Transparent surfaces on the way
-// filter it by transparency * transmission tint without bending it
-// (POV-Ray's filtered shadows), so a fully transmitting object casts no
-// shadow. `own_light`'s surface is skipped: the proxy of a sphere light sits
-// at its centre, inside the light's own geometry.
-inline Color transmittance_to(const RenderScene& scene, const Hit& from, const Vec3& target,
-                              const Light* own_light = nullptr) {
-    Ray ray = from.spawn_ray_to(target);
-    if (!scene.occluded(ray)) return Color(1.0f);  // the common case: one cheap query
-
-    // Walk the surfaces in between, nearest first. The bound only guards
-    // against pathological stacks of coplanar transparent faces.
-    constexpr int kMaxSurfacesCrossed = 64;
-    Color throughput(1.0f);
-    for (int crossed = 0; crossed < kMaxSurfacesCrossed; ++crossed) {
-        Hit blocker;
-        if (!scene.intersect(ray, blocker)) return throughput;
-        const bool filters = blocker.casts_shadow && (own_light == nullptr || blocker.emitter != own_light);
-        if (filters) {
-            const Material& material = *blocker.material;
-            const SurfaceSample surface = material.sample_surface(blocker);
-            const float transparency = material.transparency(surface);
-            if (!(transparency > 0.0f)) return Color(0.0f);
-            throughput *= transparency * material.transmission_tint(surface);
-            if (lancer::is_black(throughput)) return throughput;
-        }
-        ray = blocker.spawn_ray_to(target);
-    }
-    return Color(0.0f);
-}
-
 enum class Shadows {
     None,  // every light reaches every surface facing it (raycast, gather's secondary hits)
     Hard,  // one shadow ray per light towards its (proxy) position
@@ -119,6 +89,33 @@ enum class Lobes {
     GlossyOnly,  // the caller accounts for the diffuse light otherwise (gather)
 };
 
+// POV's area light: lit from its centre (or, with area_illumination, from
+// each grid point in turn, freshly jittered), in shadow by POV's grid.
+inline LobeRadiance reflect_pov_area_light(const RenderScene& scene, const ShadingContext& at, const Light& light,
+                                           const PovAreaLightParameters& area, const LightSample& centre,
+                                           Shadows shadows, Lobes lobes) {
+    LobeRadiance reflected;
+    Color colour = centre.radiance * (1.0f / kPi);  // POV's units, for the adaptive threshold
+    if (area.area_illumination) {
+        colour = area.center.intensity * (1.0f / kPi);
+        const float weight = 1.0f / float(area.size1 * area.size2);
+        for (int i = 0; i < area.size1; ++i)
+            for (int j = 0; j < area.size2; ++j) {
+                Vec2 u(0.5f);
+                if (area.size1 > 1) u.x = float(i) / float(area.size1 - 1);
+                if (area.size2 > 1) u.y = float(j) / float(area.size2 - 1);
+                reflected += reflect_light_sample(at, light.sample(at.hit.position, u));
+            }
+        reflected *= Color(weight);
+    } else {
+        reflected = reflect_light_sample(at, centre);
+    }
+    if (lobes == Lobes::GlossyOnly) reflected.diffuse = Color(0.0f);
+    if (shadows == Shadows::Hard && light.casts_shadows() && !reflected.is_black())
+        reflected *= PovAreaShadow(scene, at.hit, light, area, centre.wi, colour).visibility();
+    return reflected;
+}
+
 // Reflected light from one light of the simple model (see simple_model_light).
 // No shadow ray is cast for light the requested lobes do not reflect.
 inline LobeRadiance reflect_simple_light(const RenderScene& scene, const ShadingContext& at, const Light& light,
@@ -126,6 +123,8 @@ inline LobeRadiance reflect_simple_light(const RenderScene& scene, const Shading
     const Light& stand_in = simple_model_light(light);
     // Point and directional lights ignore u: one sample is exact.
     const LightSample sample = stand_in.sample(at.hit.position, Vec2(0.5f));
+    if (const auto* area = stand_in.parameters<PovAreaLightParameters>())
+        return reflect_pov_area_light(scene, at, stand_in, *area, sample, shadows, lobes);
     LobeRadiance reflected = reflect_light_sample(at, sample);
     if (lobes == Lobes::GlossyOnly) reflected.diffuse = Color(0.0f);
     if (shadows == Shadows::Hard && light.casts_shadows() && !reflected.is_black())

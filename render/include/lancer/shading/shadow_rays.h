@@ -1,0 +1,152 @@
+// Shadow rays of the simple model: how much of a light reaches a surface
+// hit, through transparent blockers, and POV-Ray's grid of shadow rays for
+// its area_light (TraceAreaLightShadowRay; pov-3.7-semantics.md §6).
+// Header-only, as local_shading.h.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "lancer/area_light_grid.h"
+#include "lancer/render_scene.h"
+
+namespace lancer {
+
+// How much light leaving `target` reaches the hit: 1 when nothing lies
+// between, 0 behind an opaque shadow caster. Transparent surfaces on the way
+// filter it by transparency * transmission tint without bending it
+// (POV-Ray's filtered shadows), so a fully transmitting object casts no
+// shadow. `own_light`'s surface is skipped: the proxy of a sphere light sits
+// at its centre, inside the light's own geometry.
+inline Color transmittance_to(const RenderScene& scene, const Hit& from, const Vec3& target,
+                              const Light* own_light = nullptr) {
+    Ray ray = from.spawn_ray_to(target);
+    if (!scene.occluded(ray)) return Color(1.0f);  // the common case: one cheap query
+
+    // Walk the surfaces in between, nearest first. The bound only guards
+    // against pathological stacks of coplanar transparent faces.
+    constexpr int kMaxSurfacesCrossed = 64;
+    Color throughput(1.0f);
+    for (int crossed = 0; crossed < kMaxSurfacesCrossed; ++crossed) {
+        Hit blocker;
+        if (!scene.intersect(ray, blocker)) return throughput;
+        const bool filters = blocker.casts_shadow && (own_light == nullptr || blocker.emitter != own_light);
+        if (filters) {
+            const Material& material = *blocker.material;
+            const SurfaceSample surface = material.sample_surface(blocker);
+            const float transparency = material.transparency(surface);
+            if (!(transparency > 0.0f)) return Color(0.0f);
+            throughput *= transparency * material.transmission_tint(surface);
+            if (lancer::is_black(throughput)) return throughput;
+        }
+        ray = blocker.spawn_ray_to(target);
+    }
+    return Color(0.0f);
+}
+
+// POV's area-light visibility from `from`: the light's colour (in POV's
+// units, for the adaptive threshold) times the transmittance to each grid
+// point, averaged as POV does: the four corners of a region, split into
+// four (sharing the midlines when sizes are odd) while the level is below
+// `adaptive` or two neighbouring corners differ by more than 0.1 (sum over
+// channels), then the mean of the four sub-results. Not the mean of all
+// grid points: the hierarchy weights them unevenly, and matching POV's
+// pixels needs this. Each grid point is traced at most once per call.
+// Returns the visibility as a transmittance (1: all of the light arrives).
+class PovAreaShadow {
+  public:
+    PovAreaShadow(const RenderScene& scene, const Hit& from, const Light& light, const PovAreaLightParameters& area,
+                  const Vec3& to_light, const Color& light_colour)
+        : m_scene(scene),
+          m_from(from),
+          m_light(light),
+          m_area(area),
+          m_axes(area_grid_axes(area, glm::dvec3(to_light))),
+          m_colour(light_colour) {
+        State& state = state_of_thread();
+        const std::size_t cells = std::size_t(area.size1) * std::size_t(area.size2);
+        if (state.stamp.size() < cells) state.stamp.resize(cells, 0);
+        if (state.value.size() < cells) state.value.resize(cells);
+        if (++state.generation == 0) {  // wrapped: forget every stamp
+            std::fill(state.stamp.begin(), state.stamp.end(), 0u);
+            state.generation = 1;
+        }
+    }
+
+    Color visibility() const {
+        if (m_area.size1 == 1 && m_area.size2 == 1) return corner(0, 0);
+        return subset(0, 0, m_area.size1 - 1, m_area.size2 - 1, 0);
+    }
+
+  private:
+    struct State {
+        std::vector<std::uint32_t> stamp;  // == generation: value holds this call's result
+        std::vector<Color> value;
+        std::uint32_t generation = 0;
+    };
+    static State& state_of_thread() {
+        thread_local State state;
+        return state;
+    }
+
+    float distance(const Color& a, const Color& b) const {
+        const Color d = glm::abs(a - b) * m_colour;
+        return d.r + d.g + d.b;
+    }
+
+    Color subset(int u1, int v1, int u2, int v2, int level) const {
+        Color c[4] = {corner(u1, v1), corner(u2, v1), corner(u1, v2), corner(u2, v2)};
+        if ((u2 - u1 > 1 || v2 - v1 > 1) &&
+            (level < m_area.adaptive || distance(c[0], c[1]) > 0.1f || distance(c[1], c[3]) > 0.1f ||
+             distance(c[3], c[2]) > 0.1f || distance(c[2], c[0]) > 0.1f)) {
+            const int low_u = (u1 + u2) / 2, high_u = (u1 + u2 + 1) / 2;  // floor and ceil of the midpoint
+            const int low_v = (v1 + v2) / 2, high_v = (v1 + v2 + 1) / 2;
+            c[0] = subset(u1, v1, low_u, low_v, level + 1);
+            c[1] = subset(high_u, v1, u2, low_v, level + 1);
+            c[2] = subset(u1, high_v, low_u, v2, level + 1);
+            c[3] = subset(high_u, high_v, u2, v2, level + 1);
+        }
+        return (c[0] + c[1] + c[2] + c[3]) * 0.25f;
+    }
+
+    Color corner(int u, int v) const {
+        State& state = state_of_thread();
+        const std::size_t index = std::size_t(u) * std::size_t(m_area.size2) + std::size_t(v);
+        if (state.stamp[index] == state.generation) return state.value[index];
+        double ju = u, jv = v;
+        if (m_area.jitter) {
+            ju += jitter(index, 0) - 0.5;
+            jv += jitter(index, 1) - 0.5;
+        }
+        const glm::dvec3 point = glm::dvec3(m_area.center.position) + area_grid_offset(m_area, m_axes, ju, jv);
+        const Color seen = transmittance_to(m_scene, m_from, Vec3(point), &m_light);
+        state.stamp[index] = state.generation;
+        state.value[index] = seen;
+        return seen;
+    }
+
+    // POV jitters at random from render to render; lancer's jitter is a
+    // hash of the shading point and the grid point, so a render repeats.
+    double jitter(std::size_t index, int axis) const {
+        std::uint32_t bits[3];
+        std::memcpy(bits, &m_from.position, sizeof bits);
+        std::uint64_t h = (std::uint64_t(bits[0]) << 32 | bits[1]) ^ (std::uint64_t(bits[2]) << 16) ^
+                          (std::uint64_t(index) << 1 | std::uint64_t(axis)) * 0x9e3779b97f4a7c15ull;
+        // splitmix64's finaliser
+        h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+        h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+        h ^= h >> 31;
+        return double(h >> 11) * 0x1.0p-53;
+    }
+
+    const RenderScene& m_scene;
+    const Hit& m_from;
+    const Light& m_light;
+    const PovAreaLightParameters& m_area;
+    AreaGridAxes m_axes;
+    Color m_colour;
+};
+
+}  // namespace lancer
