@@ -372,6 +372,7 @@ int run_render(const RenderArguments& arguments) {
         return kExitBadInput;
     }
     const std::string& integrator_name = chosen.name;
+    warn_about_scene_for(*graph, integrator_name);
     const ParameterSet& parameters = chosen.parameters;
     Integrator* const integrator = chosen.integrator.get();
 

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "cli_output.h"
+#include "lancer/finish_balance.h"
 #include "lancer/host/counting_scene.h"
 #include "lancer/host/scene_compiler.h"
 
@@ -46,6 +47,13 @@ std::map<std::string, sg::ParameterValue> scene_parameters_for(const sg::RenderS
         *ignored = warning;
     }
     return {};
+}
+
+void warn_about_scene_for(const sg::SceneGraph& scene, const std::string& integrator) {
+    // Only path follows light bounce after bounce: whitted's and gather's
+    // recursions end, so a bright finish there is just bright, as in POV.
+    if (integrator != "path") return;
+    for (const Diagnostic& warning : energy_gaining_finishes(scene)) print_diagnostic(warning);
 }
 
 JobIntegrator load_job_integrator(const sg::RenderSettings& settings, const std::string& name,

@@ -68,6 +68,10 @@ std::map<std::string, sg::ParameterValue> scene_parameters_for(const sg::RenderS
                                                                const std::string& integrator,
                                                                std::optional<Diagnostic>* ignored);
 
+// Prints what the scene means for this integrator alone: for `path`, the
+// finishes that return more light than they receive.
+void warn_about_scene_for(const sg::SceneGraph& scene, const std::string& integrator);
+
 // Loads `name` (empty: the scene's integrator, else kDefaultIntegrator),
 // resolves its parameters (the scene's, under `assignments` from -p) and
 // creates it; prints the warning of scene_parameters_for. Throws

@@ -192,6 +192,7 @@ bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
                                          : std::min(scene_width, kMaxDefaultWidth);
         prepared.height = std::max(1, int(std::lround(prepared.width / aspect)));
     }
+    warn_about_scene_for(*graph, "path");  // the reference every trade is measured against
     prepared.job = compile_job_scene(arguments.scene, std::move(*graph));
     return true;
 }

@@ -457,7 +457,7 @@ finish_item
                           $$ = [c](sg::Finish& f) { f.reflection.min = c; f.reflection.max = c; }; }
   | "reflection" "{" reflection_items "}"
       { auto edits = $3; $$ = [edits](sg::Finish& f) { f.reflection = sg::Reflection{}; for (auto& e : edits) e(f); }; }
-  | "conserve_energy"  { $$ = [](sg::Finish&) {}; ev.ignored(LOC(@1), "conserve_energy"); }
+  | "conserve_energy" opt_bool { bool on = $2; $$ = [on](sg::Finish& f) { f.conserve_energy = on; }; }
   | "crand" expr       { $$ = [](sg::Finish&) {}; ev.ignored(LOC(@1), "crand"); }
   ;
 

@@ -274,6 +274,15 @@ std::shared_ptr<sg::Pigment> Evaluator::build_pigment(const Edits<sg::Pigment>& 
 std::shared_ptr<sg::Finish> Evaluator::build_finish(const Edits<sg::Finish>& edits, const sg::SourceLocation& at) {
     auto finish = std::make_shared<sg::Finish>();
     for (const auto& edit : edits) edit(*finish);
+    // POV-Ray's Parse_Finish: a value given as an albedo becomes the peak
+    // that reflects that share, with the finish's final exponents.
+    if (finish->diffuse_albedo) finish->diffuse *= (finish->brilliance + 1.0) / 2.0;
+    if (finish->phong_albedo) finish->phong *= (finish->phong_size + 1.0) / 2.0;
+    if (finish->specular_albedo && finish->roughness > 0.0) {
+        const double k = 1.0 / finish->roughness;
+        finish->specular *= (k + 2.0) / (4.0 * (2.0 - std::pow(2.0, -k / 2.0)));
+    }
+    finish->diffuse_albedo = finish->phong_albedo = finish->specular_albedo = false;
     finish->location = at;
     return finish;
 }
@@ -291,11 +300,23 @@ std::function<void(sg::Finish&)> Evaluator::finish_scalar(const std::string& nam
     double x = to_float(v, where, "a float for " + name);
     if (x < 0.0) error(where.begin, name + " must not be negative, got " + std::to_string(x));
     if (name == "roughness" && x == 0.0) warning(where.begin, "roughness 0 gives an infinitely sharp highlight");
-    if (name == "diffuse") return [x](sg::Finish& f) { f.diffuse = x; };
+    if (name == "diffuse")
+        return [x, albedo](sg::Finish& f) {
+            f.diffuse = x;
+            f.diffuse_albedo = albedo;
+        };
     if (name == "brilliance") return [x](sg::Finish& f) { f.brilliance = x; };
-    if (name == "specular") return [x](sg::Finish& f) { f.specular = x; };
+    if (name == "specular")
+        return [x, albedo](sg::Finish& f) {
+            f.specular = x;
+            f.specular_albedo = albedo;
+        };
     if (name == "roughness") return [x](sg::Finish& f) { f.roughness = x; };
-    if (name == "phong") return [x](sg::Finish& f) { f.phong = x; };
+    if (name == "phong")
+        return [x, albedo](sg::Finish& f) {
+            f.phong = x;
+            f.phong_albedo = albedo;
+        };
     if (name == "phong_size") return [x](sg::Finish& f) { f.phong_size = x; };
     return [x](sg::Finish& f) { f.metallic = x; };
 }

@@ -4,6 +4,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "lancer/finish_balance.h"
 #include "lancer/scene_summary.h"
 #include "parse_test_helpers.h"
 
@@ -193,6 +194,24 @@ TEST(ParserMaterials, TextureFinishDefaultsAndValues) {
     EXPECT_DOUBLE_EQ(m->finish.reflection.exponent, 1.5);
     expect_vec(m->finish.emission, {1, 2, 3});
     EXPECT_DOUBLE_EQ(m->interior.ior, 1.5);
+}
+
+// POV-Ray's Parse_Finish: `albedo` values become the peaks that reflect
+// that share, with the finish's final exponents (phong_size written after).
+TEST(ParserMaterials, AlbedoBecomesPovsPeak) {
+    auto scene = parse_ok(R"(
+        #declare F = finish { phong albedo 0.5 phong_size 9 diffuse albedo 0.6 brilliance 3 }
+        sphere { 0, 1 finish { F } }
+        sphere { 0, 1 finish { specular albedo 0.2 roughness 0.1 conserve_energy } }
+        sphere { 0, 1 finish { F phong_size 99 } })");
+    const auto& first = scene.objects[0].material->finish;
+    EXPECT_DOUBLE_EQ(first.phong, 0.5 * (9.0 + 1.0) / 2.0);
+    EXPECT_DOUBLE_EQ(first.diffuse, 0.6 * (3.0 + 1.0) / 2.0);
+    const auto& second = scene.objects[1].material->finish;
+    EXPECT_NEAR(second.specular, 0.2 * 12.0 / (4.0 * (2.0 - std::pow(2.0, -5.0))), 1e-12);
+    EXPECT_TRUE(second.conserve_energy);
+    // A declared finish was rescaled once, when it was read.
+    EXPECT_DOUBLE_EQ(scene.objects[2].material->finish.phong, 2.5);
 }
 
 TEST(ParserMaterials, FinishDefaultsArePovs) {
@@ -469,6 +488,33 @@ TEST(SceneSummary, CountsAndBounds) {
     expect_vec(summary.bounds->second, {4, 3, 3});
     EXPECT_EQ(summary.lights_by_kind["point"], 1);
     EXPECT_EQ(summary.lights_by_kind["directional"], 1);
+}
+
+}  // namespace
+}  // namespace lancer
+
+namespace lancer {
+namespace {
+
+// POV's finish values are peaks: `diffuse 0.8 reflection 0.5` returns 1.3
+// of the light; path says so, at the finish.
+TEST(FinishBalance, WarnsAtFinishesThatReturnMoreThanTheyReceive) {
+    auto scene = parse_ok(R"(
+        sphere { 0, 1 pigment { color rgb 1 } finish { diffuse 0.8 reflection 0.5 } }
+        sphere { 0, 1 pigment { color rgb 1 } finish { diffuse 0.6 phong 1 } }
+        sphere { 0, 1 pigment { color rgb 0.5 } finish { diffuse 0.8 reflection 0.5 } }
+        sphere { 0, 1 pigment { color rgb 1 } finish { phong 1 phong_size 1 } })");
+    const std::vector<Diagnostic> warnings = energy_gaining_finishes(scene);
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_EQ(warnings[0].location.line, 2);
+    EXPECT_NE(warnings[0].message.find("1.3 times"), std::string::npos) << warnings[0].message;
+    EXPECT_EQ(warnings[1].location.line, 5);  // 0.6 + 1 * 2 / (1 + 1)
+    sg::Finish clear;
+    clear.diffuse = 0.6;
+    clear.reflection.min = clear.reflection.max = sg::Vec3(0.5);
+    EXPECT_NEAR(finish_reflectance_bound(clear, 1.0, 1.0), 1.5, 1e-12);  // glass: all passes, and the mirror
+    clear.conserve_energy = true;
+    EXPECT_NEAR(finish_reflectance_bound(clear, 1.0, 1.0), 1.0, 1e-12);
 }
 
 }  // namespace

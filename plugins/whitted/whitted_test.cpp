@@ -91,6 +91,56 @@ TEST(WhittedIntegrator, MirrorAddsToTheDiffuseUnlessAdditiveReflectionIsOff) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], float(kWallColour[c]), 1e-5f) << "channel " << c;
 }
 
+// POV's reflection { exponent e }: the reflected colour is raised to e;
+// metallic m tints the mirror towards the pigment (at 45 degrees POV's
+// curve F is 0.0007, so the reflectance is rho * (1 + m (1 - F)(pig - 1))).
+TEST(WhittedIntegrator, ReflectionExponentAndMetallicAsPovRay) {
+    const auto mirror = [](double exponent, double metallic) {
+        return material([=](sg::Material& m) {
+            m.pigment.color.rgb = {1.0, 0.5, 0.25};
+            m.finish.diffuse = 0.0;
+            m.finish.ambient = sg::Vec3(0.0);
+            m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.7);
+            m.finish.reflection.exponent = exponent;
+            m.finish.reflection.metallic = metallic;
+        });
+    };
+    const auto squared = compile_scene(mirror_facing_wall(mirror(2.0, 0.0)));
+    const Color seen = mean_radiance(*load_integrator("whitted", *squared), *squared, kDownAt45);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(seen[c], 0.7f * float(kWallColour[c] * kWallColour[c]), 1e-5f) << "channel " << c;
+
+    const auto tinted = compile_scene(mirror_facing_wall(mirror(1.0, 1.0)));
+    const Color tint = mean_radiance(*load_integrator("whitted", *tinted), *tinted, kDownAt45);
+    const double x = 0.5;  // the angle from the normal over pi/2
+    const double f = 0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903;
+    const sg::Vec3 pigment{1.0, 0.5, 0.25};
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(tint[c], 0.7 * (1.0 + (1.0 - f) * (pigment[c] - 1.0)) * kWallColour[c], 1e-4) << "channel " << c;
+}
+
+// POV's conserve_energy: a clear pane (transmit 1, ior 1) with reflection
+// 0.4 passes 1 - 0.4 of the wall behind it, not all of it.
+TEST(WhittedIntegrator, ConserveEnergyTakesTheReflectionFromTheTransmission) {
+    const auto pane = [](bool conserve) {
+        sg::SceneGraph graph;
+        graph.objects.push_back(plane({0.0, 0.0, 1.0}, 0.0, material([=](sg::Material& m) {
+                                          m.pigment.color.transmit = 1.0;
+                                          m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.4);
+                                          m.finish.conserve_energy = conserve;
+                                      })));
+        graph.objects.push_back(plane({0.0, 0.0, 1.0}, 10.0, flat_colour(kWallColour)));
+        return compile_scene(std::move(graph));
+    };
+    const Ray ahead = ray_towards(Vec3(0.0f, 0.0f, -5.0f), Vec3(0.0f, 0.0f, 1.0f));
+    for (bool conserve : {false, true}) {
+        const auto scene = pane(conserve);
+        const Color seen = mean_radiance(*load_integrator("whitted", *scene), *scene, ahead);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(seen[c], (conserve ? 0.6f : 1.0f) * float(kWallColour[c]), 1e-5f) << "channel " << c;
+    }
+}
+
 // A slab of dense glass (y in [-1, 0], ior 1.5) under a red sky, over a
 // black floor; inside it, a green ball. A ray inside the slab meets the top
 // face at a grazing angle, reflects totally and finds the ball; a steeper

@@ -86,12 +86,19 @@ struct Finish {
     Vec3 emission{0.0};  // radiance emitted = emission * pigment colour
     double diffuse = 0.6;
     double brilliance = 1.0;
-    double specular = 0.0;  // Blinn lobe albedo
+    double specular = 0.0;  // peak of the specular highlight (POV's meaning)
     double roughness = 0.05;
-    double phong = 0.0;  // Phong lobe albedo
+    double phong = 0.0;  // peak of the Phong highlight
     double phong_size = 40.0;
     double metallic = 0.0;
     Reflection reflection;
+    bool conserve_energy = false;  // transmitted light scaled by 1 - reflection
+    // `diffuse albedo`, `phong albedo`, `specular albedo`: the value was the
+    // reflected share; the parser rescales it to POV's peak once the whole
+    // finish is read and clears these.
+    bool diffuse_albedo = false;
+    bool phong_albedo = false;
+    bool specular_albedo = false;
     SourceLocation location;
 };
 

@@ -1,21 +1,26 @@
 // The one material model every integrator shares (docs/integrators.md).
 //
 // A surface scatters light through up to four components, each weighted by
-// the finish and the pigment at the hit:
-//   - a diffuse lobe            f = diffuse * pigment / pi * cos^(brilliance-1)
-//   - a Phong lobe              f = phong * (n+2)/(2 pi) * max(0, R.wi)^n, n = phong_size
-//   - a Blinn specular lobe     f = specular * c(k) * max(0, N.H)^k, k = 1/roughness, with
-//                               c(k) making the lobe's albedo exactly 1 at normal incidence
-//   - a perfect mirror          weight reflectance(cos) (POV's reflection{min max falloff})
+// the finish and the pigment at the hit, with POV-Ray's values as written
+// (../shared/reference/pov-3.7-semantics.md §3): under a light of colour C
+// (incident radiance pi*C) a surface shows
+//   - diffuse                   diffuse * pigment * cos^brilliance * C
+//   - a Phong highlight         phong * max(0, R.wi)^phong_size * C
+//   - a specular highlight      specular * max(0, N.H)^(1/roughness) * C
+//   (highlights light-coloured, tinted towards the pigment by `metallic`),
+// so the BRDF is each of these over pi*cos. Plus
+//   - a perfect mirror          weight reflectance(cos) (POV's reflection{min max falloff
+//                               fresnel metallic})
 //   - a smooth dielectric       weight transmittance (pigment filter/transmit), Snell with ior
 // plus emission (radiance = emission * pigment) and POV's ambient term
 // (ambient * pigment * ambient_light; used only by integrators without
 // indirect light).
 //
-// The glossy lobes are normalised so `phong` and `specular` are albedos (as
-// POV-Ray's `phong albedo` / `specular albedo`), which keeps every BSDF
-// energy conserving and lets the direct-lighting integrators and the path
-// tracer agree on directly lit scenes.
+// The values are POV's peaks, not albedos: a highlight reflects
+// phong * 2 / (phong_size + 1) of the light at normal incidence (see
+// phong_albedo, specular_albedo), so a finish can reflect more light than
+// it receives, as in POV-Ray; every integrator evaluates the same finish
+// (docs/scene-language.md says how `path` stays finite then).
 #pragma once
 
 #include <cmath>
@@ -49,8 +54,22 @@ struct MaterialParameters {
     Color reflection_max{0.0f};
     float reflection_falloff = 1.0f;
     bool reflection_fresnel = false;
+    float reflection_metallic = 0.0f;  // tints the mirror towards the pigment, as POV's
+    // POV's reflection exponent: the reflected radiance is raised to it
+    // (whitted, gather; a non-linear map that `path` cannot estimate
+    // without bias, so path ignores it).
+    float reflection_exponent = 1.0f;
+    bool conserve_energy = false;  // transmitted light is scaled by 1 - mirror reflectance
     float ior = 1.0f;
 };
+
+// The share of light a highlight of peak 1 reflects at normal incidence
+// (POV-Ray's `albedo` keyword divides by it): 2 / (n + 1) for Phong, and
+// for the specular lobe (k = 1/roughness) 8 (1 - 2^-(k+2)/2) / (k + 2).
+inline float phong_albedo(float phong_size) {
+    return 2.0f / (phong_size + 1.0f);
+}
+float specular_albedo(float exponent);
 
 // The diffuse lobe's weight on the pigment: diffuse * opacity / pi * shape
 // (shape is brilliance's cos^(brilliance-1)). The one copy of the
@@ -103,7 +122,7 @@ class Material {
         if (m_params.brilliance != 1.0f) shape = std::pow(cos_i, m_params.brilliance - 1.0f);
         return diffuse_lobe_weight(m_params.diffuse, opacity, shape) * surface.pigment;
     }
-    // The glossy part alone (phong + specular).
+    // The glossy part alone (phong + specular), POV's highlights.
     Color glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const;
 
     // Mirror reflectance for cos_i = dot(n, wo) (POV's reflection block; with
@@ -115,18 +134,20 @@ class Material {
     bool has_glossy() const { return m_params.phong > 0.0f || m_params.specular > 0.0f; }
     bool is_emissive() const { return max_component(m_params.emission) > 0.0f; }
 
+    // Share of light reflected at normal incidence by each highlight, for
+    // choosing among lobes.
+    float phong_reflectance() const { return m_params.phong * phong_albedo(m_params.phong_size); }
+    float specular_reflectance() const { return m_params.specular * m_specular_albedo; }
+
   private:
+    Color metallic_reflection(const SurfaceSample& surface, float cos_i, const Color& reflectance) const;
     MaterialParameters m_params;
-    float m_blinn_normalization;  // c(k) of the Blinn lobe, see above
+    float m_specular_albedo;
     // A pigment that does not vary, looked up once: sample_surface then
     // needs no virtual call.
     bool m_pigment_is_constant = false;
     SurfaceSample m_constant_pigment;
 };
-
-// The Blinn lobe's normalisation c(k) for exponent k: 1 over the integral of
-// max(0, N.H)^k cos(theta_i) over the hemisphere with wo = N.
-float blinn_normalization(float exponent);
 
 // Reflect `d` (pointing at the surface) about unit normal n.
 inline Vec3 reflect(const Vec3& d, const Vec3& n) {

@@ -27,6 +27,9 @@ MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment) 
     p.reflection_max = Color(m.finish.reflection.max);
     p.reflection_falloff = float(m.finish.reflection.falloff);
     p.reflection_fresnel = m.finish.reflection.fresnel;
+    p.reflection_metallic = float(m.finish.reflection.metallic);
+    p.reflection_exponent = float(m.finish.reflection.exponent);
+    p.conserve_energy = m.finish.conserve_energy;
     p.ior = float(m.interior.ior);
     return p;
 }

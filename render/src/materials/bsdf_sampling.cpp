@@ -154,8 +154,8 @@ Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hi
     const float opacity = 1.0f - m_transparency;
     const float w_diffuse =
         p.diffuse > 0.0f ? p.diffuse * std::max(0.0f, luminance(surface.pigment * m_diffuse_scale)) : 0.0f;
-    const float w_phong = std::max(0.0f, p.phong);
-    const float w_blinn = std::max(0.0f, p.specular);
+    const float w_phong = std::max(0.0f, material.phong_reflectance());
+    const float w_blinn = std::max(0.0f, material.specular_reflectance());
     const float w_smooth = w_diffuse + w_phong + w_blinn;
     if (w_smooth > 0.0f) {
         m_p_diffuse = w_diffuse / w_smooth;
@@ -190,6 +190,8 @@ Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hi
         // Radiance is compressed by (eta_wo / eta_wi)^2 crossing into the
         // denser medium (m_eta = eta_wo / eta_wi).
         transmitted = m_tint * (m_transparency * (1.0f - fresnel) * m_eta * m_eta);
+        // POV's conserve_energy: what the finish reflects is not transmitted.
+        if (p.conserve_energy) transmitted *= glm::clamp(Color(1.0f) - rho_r, Color(0.0f), Color(1.0f));
     }
     m_transmitted = transmitted;
 

@@ -32,20 +32,15 @@ Color Material::transmission_tint(const SurfaceSample& surface) const {
 }
 
 // With wo = N, N.H = cos(theta_i / 2); substituting x = cos(theta_i / 2)
-// turns the albedo integral 2 pi * int x^k cos(theta) sin(theta) dtheta into
-// 8 pi * int_{1/sqrt 2}^{1} (2 x^(k+3) - x^(k+1)) dx, integrated exactly here.
-// (The usual (k+8)/(8 pi) approximation overshoots by up to 7.5%.)
-float blinn_normalization(float exponent) {
+// turns (1/pi) * 2 pi * int x^k sin(theta) dtheta into 8 * int_{1/sqrt 2}^{1}
+// x^(k+1) dx: POV's own rescaling for `specular albedo` (parstxtr.cpp).
+float specular_albedo(float exponent) {
     const double k = exponent;
-    auto antiderivative = [k](double x) {
-        return 2.0 * std::pow(x, k + 4.0) / (k + 4.0) - std::pow(x, k + 2.0) / (k + 2.0);
-    };
-    const double integral = antiderivative(1.0) - antiderivative(std::sqrt(0.5));
-    return float(1.0 / (8.0 * 3.14159265358979323846 * integral));
+    return float(8.0 * (1.0 - std::pow(2.0, -(k + 2.0) / 2.0)) / (k + 2.0));
 }
 
 Material::Material(const MaterialParameters& parameters)
-    : m_params(parameters), m_blinn_normalization(blinn_normalization(blinn_exponent(parameters.roughness))) {
+    : m_params(parameters), m_specular_albedo(specular_albedo(blinn_exponent(parameters.roughness))) {
     if (const TextureSample* constant = parameters.pigment ? parameters.pigment->constant() : nullptr) {
         m_constant_pigment = SurfaceSample{constant->rgb, constant->filter, constant->transmit};
         m_pigment_is_constant = true;
@@ -55,29 +50,24 @@ Material::Material(const MaterialParameters& parameters)
 Color Material::glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const {
     const float cos_i = glm::dot(n, wi);
     if (!(cos_i > 0.0f) || !has_glossy()) return Color(0.0f);
-    float lobe = 0.0f;
+    // POV's highlight terms, each a fraction of the light's colour.
+    float highlight = 0.0f;
     if (m_params.phong > 0.0f) {
-        // Phong: around the mirror direction of wo, normalised to albedo `phong`.
+        // Phong: around the mirror direction of wo.
         const Vec3 mirror = reflect(-wo, n);
         const float c = glm::dot(mirror, wi);
-        if (c > 0.0f) {
-            const float exponent = m_params.phong_size;
-            lobe += m_params.phong * (exponent + 2.0f) / (2.0f * kPi) * std::pow(c, exponent);
-        }
+        if (c > 0.0f) highlight += m_params.phong * std::pow(c, m_params.phong_size);
     }
     if (m_params.specular > 0.0f) {
-        // Blinn: half-vector lobe, albedo `specular` at normal incidence.
+        // Blinn: about the half vector.
         const Vec3 half_sum = wo + wi;
         const float length = glm::length(half_sum);
         if (length > 0.0f) {
             const float c = glm::dot(n, half_sum / length);
-            if (c > 0.0f) {
-                const float k = blinn_exponent(m_params.roughness);
-                lobe += m_params.specular * m_blinn_normalization * std::pow(c, k);
-            }
+            if (c > 0.0f) highlight += m_params.specular * std::pow(c, blinn_exponent(m_params.roughness));
         }
     }
-    if (!(lobe > 0.0f)) return Color(0.0f);
+    if (!(highlight > 0.0f)) return Color(0.0f);
     const float opacity = 1.0f - transparency(surface);
     Color tint(1.0f);
     if (m_params.metallic > 0.0f) {
@@ -85,7 +75,10 @@ Color Material::glossy_brdf(const SurfaceSample& surface, const Vec3& n, const V
         const float f = metallic_curve(cos_i);
         tint = Color(1.0f) + m_params.metallic * (1.0f - f) * (surface.pigment - Color(1.0f));
     }
-    return opacity * lobe * tint;
+    // Light of colour C arrives as radiance pi*C over |cos|: the BRDF that
+    // gives highlight * C. The floor on the cosine only keeps the quotient
+    // finite; times the cosine it is below highlight / pi.
+    return opacity * highlight / (kPi * glm::max(cos_i, 1e-20f)) * tint;
 }
 
 Color Material::brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const {
@@ -106,10 +99,17 @@ Color Material::mirror_reflectance(const SurfaceSample& surface, float cos_i, bo
         const float a = (g - cos_i) / (g + cos_i);
         const float b = (cos_i * (g + cos_i) - 1.0f) / (cos_i * (g - cos_i) + 1.0f);
         const float fresnel = glm::clamp(0.5f * a * a * (1.0f + b * b), 0.0f, 1.0f);
-        return fresnel * r_max + (1.0f - fresnel) * r_min;
+        return metallic_reflection(surface, cos_i, fresnel * r_max + (1.0f - fresnel) * r_min);
     }
     const float w = std::pow(1.0f - cos_i, m_params.reflection_falloff);
-    return w * r_max + (1.0f - w) * r_min;
+    return metallic_reflection(surface, cos_i, w * r_max + (1.0f - w) * r_min);
+}
+
+Color Material::metallic_reflection(const SurfaceSample& surface, float cos_i, const Color& reflectance) const {
+    if (m_params.reflection_metallic == 0.0f) return reflectance;
+    // POV's ComputeMetallic: the same curve as the highlights'.
+    const float f = metallic_curve(cos_i);
+    return reflectance * (Color(1.0f) + m_params.reflection_metallic * (1.0f - f) * (surface.pigment - Color(1.0f)));
 }
 
 bool Material::has_mirror() const {

@@ -20,6 +20,8 @@
 //   share from them instead: they are scaled by (1 - R) per channel.
 //   Highlights are kept either way: the seed's specular term is the mirror
 //   image of the lamps, which have no surface a reflected ray could find.
+//   POV's conserve_energy scales the transmitted weight by 1 - R, and its
+//   reflection exponent raises the reflected radiance to that power.
 #pragma once
 
 #include "lancer/sampler.h"
@@ -67,6 +69,9 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
         } else {
             split.reflection = mirror + Color(transparency);  // total internal reflection
         }
+        // POV's conserve_energy: what the finish reflects is not transmitted.
+        if (at.material.parameters().conserve_energy)
+            split.transmission *= glm::clamp(Color(1.0f) - mirror, Color(0.0f), Color(1.0f));
     }
     if (!is_black(split.reflection)) split.reflected = reflect(incident, at.normal);
     return split;
@@ -94,15 +99,18 @@ Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene,
     const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
     Color radiance = surface_emission(at) + split.diffuse_scale * local.diffuse + local.glossy;
 
-    const auto follow = [&](const Color& path_weight, const Vec3& direction) {
+    const auto follow = [&](const Color& path_weight, const Vec3& direction, float exponent) {
         if (is_black(path_weight)) return;
         const float next_weight = weight * max_component(path_weight);
         if (level + 1 > options.max_depth || next_weight < options.min_weight) return;
-        radiance += path_weight * trace_specular(hit.spawn_ray(direction), scene, sampler, options, local_term,
-                                                 level + 1, next_weight);
+        Color seen =
+            trace_specular(hit.spawn_ray(direction), scene, sampler, options, local_term, level + 1, next_weight);
+        // POV's reflection exponent raises the reflected colour to a power.
+        if (exponent != 1.0f) seen = glm::pow(glm::max(seen, Color(0.0f)), Color(exponent));
+        radiance += path_weight * seen;
     };
-    follow(split.reflection, split.reflected);
-    follow(split.transmission, split.refracted);
+    follow(split.reflection, split.reflected, at.material.parameters().reflection_exponent);
+    follow(split.transmission, split.refracted, 1.0f);
     return radiance;
 }
 
