@@ -169,6 +169,8 @@ class Evaluator {
     void add_object(const ShapePtr& shape);
     void add_light(const sg::Light& light, const sg::Mat4& world_from_local);
     void check_area_light(sg::Light& light);
+    std::function<void(sg::Light&)> looks_like(const ShapePtr& shape, const Edits<ShapeValue>& edits);
+    std::function<void(sg::Light&)> projected_through(const ShapePtr& shape, const Edits<ShapeValue>& edits);
     void set_camera(const CameraSpec& spec);
     void render_setting(const std::string& name, const SourceRange& wn, const Value& v, const SourceRange& wv,
                         const Edits<ParameterList>& parameters);

@@ -80,7 +80,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        DIRECTION "direction" PERSPECTIVE "perspective" ORTHOGRAPHIC "orthographic"
        APERTURE "aperture" BLUR_SAMPLES "blur_samples" FOCAL_POINT "focal_point"
        PARALLEL "parallel" POINT_AT "point_at" AREA_LIGHT "area_light" JITTER "jitter"
-       ADAPTIVE "adaptive" CIRCULAR "circular" ORIENT "orient" AREA_SPHERE "area_sphere" AREA_RECTANGLE "area_rectangle"
+       ADAPTIVE "adaptive" CIRCULAR "circular" ORIENT "orient" AREA_SPHERE "area_sphere" AREA_RECTANGLE "area_rectangle" CYLINDER "cylinder" PROJECTED_THROUGH "projected_through"
        FADE_DISTANCE "fade_distance" FADE_POWER "fade_power" SHADOWLESS "shadowless"
        AREA_ILLUMINATION "area_illumination" LOOKS_LIKE "looks_like" SPOTLIGHT "spotlight"
        RADIUS "radius" TIGHTNESS "tightness" MEDIA_INTERACTION "media_interaction"
@@ -665,8 +665,10 @@ light_item
   | "area_illumination" opt_bool { bool on = $2; $$ = [on](sg::Light& l) { l.area_illumination = on; }; }
   | "media_interaction" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "media_interaction"); }
   | "media_attenuation" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "media_attenuation"); }
-  | "looks_like" "{" object_ref object_mods "}" { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "looks_like"); }
-  | "spotlight"        { $$ = [](sg::Light& l) { l.spotlight = true; l.spot_radius = 30.0; l.spot_falloff = 45.0; l.tightness = 0.0; }; }
+  | "looks_like" "{" object_ref object_mods "}" { $$ = ev.looks_like($3, $4); }
+  | "projected_through" "{" object_ref object_mods "}" { $$ = ev.projected_through($3, $4); }
+  | "spotlight"        { $$ = [](sg::Light& l) { l.spotlight = true; l.cylinder = false; l.spot_radius = 30.0; l.spot_falloff = 45.0; l.tightness = 0.0; }; }
+  | "cylinder"         { $$ = [](sg::Light& l) { l.cylinder = true; l.spotlight = false; l.parallel = true; l.spot_radius = 0.75; l.spot_falloff = 1.0; l.tightness = 0.0; }; }
   | "radius" expr      { double r = ev.to_float($2, @2); $$ = [r](sg::Light& l) { l.spot_radius = r; l.spot_parameters_given = true; }; }
   | "falloff" expr     { double f = ev.to_float($2, @2); $$ = [f](sg::Light& l) { l.spot_falloff = f; l.spot_parameters_given = true; }; }
   | "tightness" expr   { double t = ev.to_float($2, @2); $$ = [t](sg::Light& l) { l.tightness = t; l.spot_parameters_given = true; }; }

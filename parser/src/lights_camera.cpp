@@ -2,6 +2,8 @@
 // scene-level settings, including lancer's render_settings extension.
 #include <cmath>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "evaluator.h"
 
 namespace lancer::parse {
@@ -114,6 +116,33 @@ std::function<void(sg::Light&)> Evaluator::area_rectangle(const Value& a1, const
     };
 }
 
+// POV's Parse_Light_Source: the object moves to the light's position as it
+// is then, the block's own modifiers follow, and it casts no shadow.
+std::function<void(sg::Light&)> Evaluator::looks_like(const ShapePtr& shape, const Edits<ShapeValue>& edits) {
+    return [this, shape, edits](sg::Light& l) {
+        if (l.looks_like) warning(l.location, "only one looks_like is allowed per light_source: the last one is used");
+        auto moved = std::make_shared<ShapeValue>(*shape);
+        moved->object.parent_from_object = glm::translate(sg::Mat4(1.0), l.position) * moved->object.parent_from_object;
+        apply(moved, edits);
+        moved->object.no_shadow = true;
+        if (!moved->lights.empty()) warning(l.location, "lights inside a looks_like object are ignored");
+        l.looks_like = std::make_shared<sg::Object>(moved->object);
+    };
+}
+
+std::function<void(sg::Light&)> Evaluator::projected_through(const ShapePtr& shape, const Edits<ShapeValue>& edits) {
+    auto projector = std::make_shared<ShapeValue>(*shape);
+    apply(projector, edits);
+    const bool has_lights = !projector->lights.empty();
+    auto object = std::make_shared<const sg::Object>(projector->object);
+    return [this, object, has_lights](sg::Light& l) {
+        if (l.projected_through)
+            warning(l.location, "only one projected_through is allowed per light_source: the last one is used");
+        if (has_lights) warning(l.location, "lights inside a projected_through object are ignored");
+        l.projected_through = object;
+    };
+}
+
 namespace {
 
 bool is_physical_lamp(const sg::Light& light) {
@@ -133,8 +162,18 @@ void Evaluator::add_light(const sg::Light& local, const sg::Mat4& world_from_loc
     }
     if (light.fade_distance < 0.0 || light.fade_power < 0.0)
         error(light.location, "fade_distance and fade_power must not be negative");
-    if (light.spot_parameters_given && !light.spotlight)
-        error(light.location, "radius, falloff and tightness belong to a spotlight (write `spotlight` before them)");
+    if (light.spot_parameters_given && !light.spotlight && !light.cylinder)
+        error(light.location,
+              "radius, falloff and tightness belong to a spotlight or cylinder light (write `spotlight` or "
+              "`cylinder` before them)");
+    if (light.cylinder) {
+        if (!is_physical_lamp(light) && glm::length(light.point_at - light.position) == 0.0)
+            error(light.location, "cylinder light: point_at must differ from the light's position");
+        if (light.tightness < 0.0) error(light.location, "tightness must not be negative");
+        if (light.spot_falloff <= 0.0) error(light.location, "a cylinder light's falloff must be positive");
+        if (is_physical_lamp(light))
+            error(light.location, "cylinder cannot be combined with area_rectangle or area_sphere");
+    }
     if (light.spotlight) {
         if (light.kind != sg::Light::Kind::Point)
             error(light.location,
@@ -144,11 +183,22 @@ void Evaluator::add_light(const sg::Light& local, const sg::Mat4& world_from_loc
         if (light.tightness < 0.0) error(light.location, "tightness must not be negative");
     }
     check_area_light(light);
+    if (light.projected_through && is_physical_lamp(light)) {
+        error(light.location, "projected_through belongs to POV's lights, not to area_rectangle or area_sphere");
+        light.projected_through.reset();
+    }
     if (light.shadowless && is_physical_lamp(light)) {
         // A physical lamp is a surface that rays find: it cannot let light
         // through what stands between.
         warning(light.location, "shadowless is ignored on lancer's physical lamps (area_rectangle, area_sphere)");
         light.shadowless = false;
+    }
+    if (light.looks_like) {
+        // The object joins the scene as any other; the light keeps no copy.
+        auto shape = std::make_shared<ShapeValue>();
+        shape->object = *light.looks_like;
+        light.looks_like.reset();
+        add_object(shape);
     }
     m_scene.lights.push_back(light);
 }
@@ -175,7 +225,8 @@ void Evaluator::check_area_light(sg::Light& light) {
         return;
     }
     if (light.kind == sg::Light::Kind::Directional) {
-        warning(light.location, "a parallel area_light is rendered as a parallel light with hard shadows in lancer");
+        warning(light.location, std::string("a ") + (light.cylinder ? "cylinder" : "parallel") +
+                                    " area_light is rendered with hard shadows in lancer (its area is ignored)");
         light.area_light = false;
         return;
     }

@@ -84,6 +84,16 @@ void transform_pattern(sg::Pigment& pigment, const sg::Mat4& world_from_local) {
 }
 
 void transform_light(sg::Light& light, const sg::Mat4& m) {
+    if (light.looks_like) {
+        auto moved = std::make_shared<sg::Object>(*light.looks_like);
+        moved->parent_from_object = m * moved->parent_from_object;
+        light.looks_like = std::move(moved);
+    }
+    if (light.projected_through) {
+        auto moved = std::make_shared<sg::Object>(*light.projected_through);
+        moved->parent_from_object = m * moved->parent_from_object;
+        light.projected_through = std::move(moved);
+    }
     light.position = sg::Vec3(m * glm::dvec4(light.position, 1.0));
     light.point_at = sg::Vec3(m * glm::dvec4(light.point_at, 1.0));
     light.axis1 = sg::Vec3(m * glm::dvec4(light.axis1, 0.0));

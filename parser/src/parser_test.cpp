@@ -290,18 +290,21 @@ TEST(ParserLights, ShadowlessOnAPhysicalLampWarns) {
         << test::all_diagnostics(result);
 }
 
+// A spotlight's or cylinder light's radius, falloff and tightness.
+void expect_cone(const sg::Light& light, double radius, double falloff, double tightness) {
+    EXPECT_DOUBLE_EQ(light.spot_radius, radius);
+    EXPECT_DOUBLE_EQ(light.spot_falloff, falloff);
+    EXPECT_DOUBLE_EQ(light.tightness, tightness);
+}
+
 TEST(ParserLights, SpotlightKeepsPovsDefaultsAndValues) {
     auto scene = parse_ok(R"(
         light_source { <0, 10, 0> rgb 1 spotlight point_at <0, 0, 0> }
         light_source { <0, 10, 0> rgb 1 spotlight point_at <1, 0, 0> radius 11 falloff 25 tightness 50 })");
     ASSERT_EQ(scene.lights.size(), 2u);
     EXPECT_TRUE(scene.lights[0].spotlight);
-    EXPECT_DOUBLE_EQ(scene.lights[0].spot_radius, 30.0);
-    EXPECT_DOUBLE_EQ(scene.lights[0].spot_falloff, 45.0);
-    EXPECT_DOUBLE_EQ(scene.lights[0].tightness, 0.0);
-    EXPECT_DOUBLE_EQ(scene.lights[1].spot_radius, 11.0);
-    EXPECT_DOUBLE_EQ(scene.lights[1].spot_falloff, 25.0);
-    EXPECT_DOUBLE_EQ(scene.lights[1].tightness, 50.0);
+    expect_cone(scene.lights[0], 30.0, 45.0, 0.0);
+    expect_cone(scene.lights[1], 11.0, 25.0, 50.0);
     expect_vec(scene.lights[1].point_at, {1, 0, 0});
 }
 
@@ -311,6 +314,35 @@ TEST(ParserLights, SpotParametersNeedASpotlight) {
     const Diagnostic parallel =
         test::first_error("light_source { <0, 10, 0> rgb 1 spotlight parallel point_at <0, 0, 0> }");
     EXPECT_NE(parallel.message.find("spotlight cannot be combined"), std::string::npos) << parallel.message;
+}
+
+TEST(ParserLights, CylinderLightIsAParallelBeamWithPovsDefaults) {
+    auto scene = parse_ok(R"(
+        light_source { <0, 10, 0> rgb 1 cylinder point_at <0, 0, 0> }
+        light_source { <0, 10, 0> rgb 1 cylinder point_at <1, 0, 0> radius 2 falloff 3 tightness 4 })");
+    ASSERT_EQ(scene.lights.size(), 2u);
+    EXPECT_EQ(scene.lights[0].kind, sg::Light::Kind::Directional);
+    EXPECT_TRUE(scene.lights[0].cylinder);
+    expect_cone(scene.lights[0], 0.75, 1.0, 0.0);  // distances from the axis, for a cylinder
+    expect_cone(scene.lights[1], 2.0, 3.0, 4.0);
+    // Outside a light_source, cylinder is the shape lancer does not have yet.
+    const Diagnostic shape = test::first_error("cylinder { 0, y, 1 }");
+    EXPECT_NE(shape.message.find("does not support"), std::string::npos) << shape.message;
+}
+
+TEST(ParserLights, LooksLikeJoinsTheSceneAndProjectedThroughStaysWithTheLight) {
+    auto scene = parse_ok(R"(
+        light_source { <1, 2, 3> rgb 1 looks_like { sphere { 0, 0.5 } } translate x
+                       projected_through { box { -1, 1 } } })");
+    ASSERT_EQ(scene.lights.size(), 1u);
+    ASSERT_EQ(scene.objects.size(), 1u);  // the looks_like sphere, moved to the light, then by x
+    const sg::Object& bulb = scene.objects[0];
+    EXPECT_TRUE(bulb.no_shadow);
+    expect_vec(sg::Vec3(bulb.parent_from_object * glm::dvec4(0, 0, 0, 1)), {2, 2, 3});
+    ASSERT_TRUE(scene.lights[0].projected_through);
+    // The projector was written after the translate: it is not moved.
+    expect_vec(sg::Vec3(scene.lights[0].projected_through->parent_from_object * glm::dvec4(0, 0, 0, 1)), {0, 0, 0});
+    EXPECT_FALSE(scene.lights[0].looks_like);
 }
 
 TEST(ParserLights, PointParallelAreaSphere) {

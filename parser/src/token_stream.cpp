@@ -357,7 +357,11 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
         m_last_undeclared = name;
         return make_symbol(Parser::token::TOK_UNDECLARED_ID, raw);
     }
-    if (keyword != keyword_table().end()) return make_symbol(keyword->second, raw);
+    // `cylinder` is a light's modifier inside light_source; elsewhere it is
+    // the shape, which lancer does not have yet.
+    const bool light_modifier = name == "cylinder" && !m_block_names.empty() && m_block_names.back() == "light_source";
+    if (keyword != keyword_table().end() && (name != "cylinder" || light_modifier))
+        return make_symbol(keyword->second, raw);
     if (builtin_names().count(name)) return make_symbol(Parser::token::TOK_BUILTIN, raw);
 
     // Constants and read-only built-in identifiers.

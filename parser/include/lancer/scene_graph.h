@@ -176,6 +176,8 @@ struct Object {
 
 // ------------------------------------------------------------------ lights
 
+struct Object;
+
 struct Light {
     // Point and Directional are POV-Ray's lights (a Point may be a
     // spotlight, and either may carry POV's area_light). AreaRectangle and
@@ -216,6 +218,19 @@ struct Light {
     double spot_falloff = 45.0;  // none outside; a smooth step between
     double tightness = 0.0;
     bool spot_parameters_given = false;  // radius, falloff or tightness was written
+    // POV's cylinder light: a parallel light (Directional) confined to a
+    // beam about the line from position towards point_at; spot_radius and
+    // spot_falloff are then distances from that axis (POV's defaults 0.75
+    // and 1), and tightness sharpens the beam.
+    bool cylinder = false;
+    // POV's looks_like: an object drawn where the light is (moved to the
+    // light's position, then by the block's later transforms), which
+    // casts no shadow. The parser adds it to the scene's objects.
+    std::shared_ptr<const Object> looks_like;
+    // POV's projected_through: the light reaches a point only along rays
+    // that pass through this object (not drawn; moved by the block's
+    // transforms as the light is).
+    std::shared_ptr<const Object> projected_through;
     SourceLocation location;
 };
 

@@ -117,11 +117,25 @@ struct PointLightParameters {
     }
 };
 
-// POV's `parallel` light: the same irradiance from one direction everywhere.
+// POV's `parallel` light: the same irradiance from one direction everywhere,
+// and POV's `cylinder` light, the same confined to a beam. Its shadow rays
+// end at the plane through `position` across the light (POV's rule).
 struct DirectionalLightParameters {
     static constexpr Light::Kind kKind = Light::Kind::Directional;
     Vec3 to_light{0.0f, 1.0f, 0.0f};  // unit
     Color irradiance{0.0f};           // on a surface facing the light
+    Vec3 position{0.0f};
+    // POV's fade when fade_power > 0, at the distance to the light's plane
+    // (as PointLightParameters).
+    float fade_distance = 0.0f;
+    float fade_power = 0.0f;
+    // POV's cylinder light when beam_falloff > 0: nothing behind the
+    // light's plane or beam_falloff or more from the axis through
+    // `position`; at distance r from it, (1 - r / beam_falloff)^tightness,
+    // times a smooth step up to 1 inside beam_radius.
+    float beam_radius = 0.0f;
+    float beam_falloff = 0.0f;
+    float tightness = 0.0f;
 };
 
 // POV-Ray's area_light: a point light at the centre of the rectangle

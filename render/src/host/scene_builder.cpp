@@ -6,6 +6,7 @@
 #include <iostream>
 #include <map>
 
+#include "lancer/host/scene_compiler.h"
 #include "lancer/scene_error.h"
 
 namespace lancer {
@@ -349,8 +350,14 @@ class Builder {
         return m_data->materials.back().get();
     }
 
-    void add_light(std::unique_ptr<Light> light, bool casts_shadows = true) {
+    void add_light(std::unique_ptr<Light> light, bool casts_shadows = true,
+                   const std::shared_ptr<const sg::Object>& projected_through = nullptr) {
         light->set_casts_shadows(casts_shadows);
+        if (projected_through) {
+            sg::SceneGraph projector;
+            projector.objects.push_back(*projected_through);
+            light = std::make_unique<ProjectedLight>(std::move(light), compile_scene(std::move(projector)));
+        }
         m_data->lights.push_back(light.get());
         m_data->local_lights.push_back(&light->proxy());
         m_data->owned_lights.push_back(std::move(light));
@@ -372,10 +379,19 @@ class Builder {
             const bool directional = source.kind == sg::Light::Kind::Directional ||
                                      (source.kind == sg::Light::Kind::Point && source.parallel);
             if (directional) {
-                add_light(
-                    std::make_unique<DirectionalLight>(Vec3(source.position), Vec3(source.point_at - source.position),
-                                                       float(kPiD) * color, radius),
-                    !source.shadowless);
+                DirectionalLightParameters light;
+                light.to_light = Vec3(source.position - source.point_at);
+                light.irradiance = float(kPiD) * color;
+                light.position = Vec3(source.position);
+                light.fade_distance = float(source.fade_distance);
+                light.fade_power = float(source.fade_power);
+                if (source.cylinder) {
+                    light.beam_radius = float(source.spot_radius);
+                    light.beam_falloff = float(source.spot_falloff);
+                    light.tightness = float(source.tightness);
+                }
+                add_light(std::make_unique<DirectionalLight>(light, radius), !source.shadowless,
+                          source.projected_through);
                 continue;
             }
             const bool degenerate_rectangle = source.kind == sg::Light::Kind::AreaRectangle &&
@@ -408,9 +424,11 @@ class Builder {
                     area.circular = source.circular;
                     area.orient = source.orient;
                     area.area_illumination = source.area_illumination;
-                    add_light(std::make_unique<PovAreaLight>(area, radius), !source.shadowless);
+                    add_light(std::make_unique<PovAreaLight>(area, radius), !source.shadowless,
+                              source.projected_through);
                 } else {
-                    add_light(std::make_unique<PointLight>(light, radius), !source.shadowless);
+                    add_light(std::make_unique<PointLight>(light, radius), !source.shadowless,
+                              source.projected_through);
                 }
             } else if (degenerate_rectangle || degenerate_sphere) {
                 // A physical lamp without size: the physical point it shrank to.

@@ -98,8 +98,47 @@ TEST(Lights, DirectionalLightTravelsFromPositionToPointAt) {
     const LightSample s = scene->lights()[0]->sample(Vec3(0, 1, 0), Vec2(0.5f));
     EXPECT_EQ(s.wi, Vec3(0, 1, 0));
     EXPECT_NEAR(s.radiance.r, kPi, 1e-6f);
-    EXPECT_GT(s.point.y, 2.0f);  // beyond every object
     EXPECT_TRUE(std::isinf(s.distance));
+    // POV's parallel shadow ray ends at the light's plane (y = 10 here); a
+    // point past the plane has nothing between it and the light.
+    EXPECT_EQ(s.point, Vec3(0, 10, 0));
+    EXPECT_EQ(scene->lights()[0]->sample(Vec3(3, 2, 1), Vec2(0.5f)).point, Vec3(3, 10, 1));
+    EXPECT_EQ(scene->lights()[0]->sample(Vec3(3, 12, 1), Vec2(0.5f)).point, Vec3(3, 12, 1));
+}
+
+// POV's projected_through: the light reaches a point only along a segment
+// that meets the projector (a unit sphere halfway up, here).
+TEST(Lights, ProjectedThroughPassesOnlyThroughTheProjector) {
+    sg::Light l;
+    l.position = {0, 10, 0};
+    auto projector = std::make_shared<sg::Object>(sphere_object({0, 5, 0}, 1.0));
+    l.projected_through = projector;
+    auto scene = compile_lights({l}, {sphere_object({0, -5, 0}, 1.0)});
+    const Light& light = *scene->lights()[0];
+    EXPECT_NEAR(light.sample(Vec3(0.5f, 0, 0), Vec2(0.5f)).radiance.r, kPi, 1e-5f);  // through the sphere
+    EXPECT_EQ(light.sample(Vec3(4, 0, 0), Vec2(0.5f)).radiance.r, 0.0f);             // past it
+    EXPECT_EQ(light.parameters<PointLightParameters>(), nullptr);                    // evaluated through sample() only
+}
+
+// POV's Attenuate_Light for a cylinder source (radius 1, falloff 2,
+// tightness 2): (1 - r/2)^2 inside the radius, times a smooth step from 0
+// at the falloff to 1 at the radius; nothing behind the light.
+TEST(Lights, CylinderLightBeamFollowsPovRay) {
+    sg::Light l;
+    l.kind = sg::Light::Kind::Directional;
+    l.cylinder = l.parallel = true;
+    l.position = {0, 10, 0};
+    l.point_at = {0, 0, 0};
+    l.spot_radius = 1.0;
+    l.spot_falloff = 2.0;
+    l.tightness = 2.0;
+    auto scene = compile_lights({l}, {sphere_object({0, 0, 0}, 1.0)});
+    const Light& light = *scene->lights()[0];
+    EXPECT_NEAR(light.sample(Vec3(0.5f, 0, 0), Vec2(0.5f)).radiance.r, kPi * 0.75f * 0.75f, 1e-5f);
+    EXPECT_NEAR(light.sample(Vec3(0, -3, 1.5f), Vec2(0.5f)).radiance.r, kPi * 0.25f * 0.25f * 0.5f, 1e-5f);
+    EXPECT_EQ(light.sample(Vec3(2.5f, 0, 0), Vec2(0.5f)).radiance.r, 0.0f);
+    EXPECT_EQ(light.sample(Vec3(0, 11, 0), Vec2(0.5f)).radiance.r, 0.0f);
+    EXPECT_EQ(light.sample(Vec3(0.5f, 0, 0), Vec2(0.5f)).wi, Vec3(0, 1, 0));  // parallel beams
 }
 
 // Monte Carlo estimate of the integral of pdf() over all directions from p

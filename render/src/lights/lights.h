@@ -8,6 +8,7 @@
 
 #include "geometry/shapes.h"
 #include "lancer/light.h"
+#include "lancer/render_scene.h"
 
 namespace lancer {
 
@@ -35,6 +36,23 @@ class PointLight final : public Light {
     float m_scene_radius;
 };
 
+// POV's projected_through: `light`, reaching a point only along the
+// segments from it to the light that meet `projector` (a scene of its own,
+// holding only that object). It answers no parameters, so integrators that
+// evaluate a kind of light themselves treat it through sample().
+class ProjectedLight final : public Light {
+  public:
+    ProjectedLight(std::unique_ptr<Light> light, std::unique_ptr<RenderScene> projector);
+    ~ProjectedLight() override;
+    Kind kind() const override { return m_light->kind(); }
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    Color power() const override { return m_light->power(); }
+
+  private:
+    std::unique_ptr<Light> m_light;
+    std::unique_ptr<RenderScene> m_projector;
+};
+
 // A point light's sample at p, in double precision: fade, falloff, pattern
 // and spotlight cone (PointLight::sample's general path).
 LightSample sample_point_light(const PointLightParameters& light, const Vec3& p);
@@ -55,6 +73,10 @@ class PovAreaLight final : public Light {
     PointLight m_center;
 };
 
+// 0 below `low`, 1 from `high` on, a cubic smooth step between (POV-Ray's
+// cubic_spline).
+double smooth_step(double low, double high, double x);
+
 // POV's spotlight cone at cos c of the angle between the light's axis and
 // the direction from the light to the shading point (section 5 of the POV
 // reference; POV-Ray's Attenuate_Light).
@@ -62,11 +84,11 @@ double spot_cone(const PointLightParameters& light, double cos_from_axis);
 
 class DirectionalLight final : public Light {
   public:
-    // `travel`: direction light travels (position -> point_at). As in
-    // POV-Ray, only what lies between a surface and the plane through
-    // `position` across the light casts a shadow (the shadow ray ends at
-    // that plane); the scene sphere gives the light's power.
-    DirectionalLight(const Vec3& position, const Vec3& travel, const Color& irradiance, float scene_radius);
+    // `parameters.to_light` need not be unit (it is normalised; zero means
+    // +y). As in POV-Ray, only what lies between a surface and the plane
+    // through `position` across the light casts a shadow (the shadow ray
+    // ends at that plane); the scene sphere gives the light's power.
+    DirectionalLight(const DirectionalLightParameters& parameters, float scene_radius);
     Kind kind() const override { return Kind::Directional; }
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     Color power() const override;
@@ -76,7 +98,6 @@ class DirectionalLight final : public Light {
 
   private:
     DirectionalLightParameters m_parameters;
-    glm::dvec3 m_position;
     float m_scene_radius;
 };
 

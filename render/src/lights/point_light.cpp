@@ -10,17 +10,12 @@ namespace lancer {
 PointLight::PointLight(const PointLightParameters& parameters, float scene_radius)
     : m_parameters(parameters), m_plain(parameters.is_plain()), m_scene_radius(std::max(scene_radius, 1e-6f)) {}
 
-namespace {
-
-// 0 below `low`, 1 from `high` on, a cubic smooth step between.
 double smooth_step(double low, double high, double x) {
     if (x < low) return 0.0;
     if (x >= high) return 1.0;
     const double t = (x - low) / (high - low);
     return (3.0 - 2.0 * t) * t * t;
 }
-
-}  // namespace
 
 double spot_cone(const PointLightParameters& light, double cos_from_axis) {
     if (!(cos_from_axis > 0.0)) return 0.0;
