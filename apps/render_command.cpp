@@ -424,6 +424,7 @@ int run_render(const RenderArguments& arguments) {
             stats.interrupted || stats.min_samples_per_pixel != stats.max_samples_per_pixel;
         write_options.metadata = stats_metadata(report);
         write_options.working_gamma = scene.working_gamma;
+        write_options.gamma_correction = scene.gamma_correction;
         write_image(film, output, write_options);
         if (stats.interrupted && (checkpointing || arguments.resume)) write_checkpoint(checkpoint_path, identity, film);
         report.total_seconds = seconds_so_far();

@@ -30,6 +30,7 @@ JobScene compile_job_scene(const std::string& path, sg::SceneGraph graph) {
     job.path = path;
     job.settings = graph.render;
     job.working_gamma = graph.global.assumed_gamma;
+    job.gamma_correction = graph.global.gamma_correction;
     job.scene = compile_scene(std::move(graph));
     return job;
 }

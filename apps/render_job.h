@@ -28,8 +28,9 @@ inline constexpr const char* kDefaultIntegrator = "whitted";
 // after compiling consumed it.
 struct JobScene {
     std::string path;
-    sg::RenderSettings settings;  // the scene's render_settings
-    double working_gamma = 1.0;   // POV's assumed_gamma: what the image writer decodes
+    sg::RenderSettings settings;   // the scene's render_settings
+    double working_gamma = 1.0;    // POV's assumed_gamma: what the image writer decodes
+    bool gamma_correction = true;  // false: POV's legacy mode, files receive the values unchanged
     std::unique_ptr<RenderScene> scene;
 };
 

@@ -1,6 +1,7 @@
 // Directives, executed by the token stream as it meets them: #declare,
 // #local, #undef, conditionals, loops, #switch, #macro, #include, #version,
 // #default and the message directives.
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -526,9 +527,31 @@ void Evaluator::directive_version(const RawToken& d) {
     Value version = parse_nested(Parser::token::TOK_START_EXPR, d.location, true);
     rewind_lookahead();
     if (m_aborted) return;
-    to_float(version, SourceRange{d.location, d.location}, "a version number");
+    const double number = to_float(version, SourceRange{d.location, d.location}, "a version number");
     take_punct(";");
     m_saw_version = true;
+    if (!(number >= 1.0 && number < 100.0)) {
+        error(d.location, "#version must be a POV-Ray version such as 3.7, got " + std::to_string(number));
+        return;
+    }
+    m_language_version = number;
+}
+
+// POV-Ray's end of parsing (parser.cpp): version-dependent defaults follow
+// the #version in force when the scene ends.
+void Evaluator::settle_version_defaults() {
+    m_scene.global.language_version = m_language_version;
+    // POV compares whole hundredths: 3.7 is 370.
+    if (!m_saw_assumed_gamma && int(m_language_version * 100.0 + 0.5) < 370) {
+        m_scene.global.gamma_correction = false;
+        sg::SourceLocation where;
+        where.file = std::make_shared<const std::string>(m_scene.main_file);
+        char version[32];
+        std::snprintf(version, sizeof version, "%g", m_language_version);
+        warning(where, std::string("assumed_gamma not specified, so gamma correction is turned off for "
+                                   "compatibility with this pre-3.7 scene (#version ") +
+                           version + "): image files receive the colours unchanged, as POV-Ray 3.6 wrote them");
+    }
 }
 
 // #default { texture {...} | pigment {...} | finish {...} }

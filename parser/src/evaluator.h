@@ -169,6 +169,7 @@ class Evaluator {
     void add_object(const ShapePtr& shape);
     void add_light(const sg::Light& light, const sg::Mat4& world_from_local);
     void check_area_light(sg::Light& light);
+    void set_assumed_gamma(double gamma);
     std::function<void(sg::Light&)> looks_like(const ShapePtr& shape, const Edits<ShapeValue>& edits);
     std::function<void(sg::Light&)> projected_through(const ShapePtr& shape, const Edits<ShapeValue>& edits);
     void set_camera(const CameraSpec& spec);
@@ -288,6 +289,9 @@ class Evaluator {
     sg::SourceLocation m_last_location;  // end of the last token read, for end-of-file errors
     std::shared_ptr<sg::Material> m_default_texture;
     bool m_saw_version = false;
+    bool m_saw_assumed_gamma = false;
+    double m_language_version = 3.7;  // POV-Ray's default without #version
+    void settle_version_defaults();
     bool m_saw_camera = false;
     std::map<long, std::mt19937> m_random_streams;
     std::vector<std::unique_ptr<Parser>> m_parsers;  // reused by nested parses, one per level

@@ -712,7 +712,7 @@ global_items
   ;
 
 global_item
-  : "assumed_gamma" expr { ev.scene().global.assumed_gamma = ev.positive($2, @2, "assumed_gamma"); }
+  : "assumed_gamma" expr { ev.set_assumed_gamma(ev.positive($2, @2, "assumed_gamma")); }
   | "max_trace_level" expr {
       /* POV-Ray's own range; it also bounds the integrators' recursion. */
       int level = ev.to_int($2, @2);

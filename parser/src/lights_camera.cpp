@@ -253,6 +253,15 @@ void Evaluator::check_area_light(sg::Light& light) {
     }
 }
 
+void Evaluator::set_assumed_gamma(double gamma) {
+    if (m_saw_assumed_gamma) {
+        warning(m_last_location, "a second assumed_gamma is ignored, as in POV-Ray");
+        return;
+    }
+    m_scene.global.assumed_gamma = gamma;
+    m_saw_assumed_gamma = true;
+}
+
 // ---------------------------------------------------------- render_settings
 
 void Evaluator::render_setting(const std::string& name, const SourceRange& wn, const Value& v, const SourceRange& wv,

@@ -26,6 +26,7 @@ ParseResult Evaluator::run(const std::string& text, const std::string& label, co
         Parser parser(*this);
         parser.parse();
         while (!m_frames.empty() && !m_aborted) pop_frame();
+        if (!m_aborted) settle_version_defaults();
     }
     if (m_options.image_size_from_command_line) {
         m_scene.render.width = m_options.image_width;

@@ -551,3 +551,29 @@ TEST(FinishBalance, WarnsAtFinishesThatReturnMoreThanTheyReceive) {
 
 }  // namespace
 }  // namespace lancer
+
+namespace lancer {
+namespace {
+
+// POV-Ray's #version: `version` reads the version in force; a scene that
+// ends below 3.7 without assumed_gamma is in POV's legacy gamma mode.
+TEST(ParserVersion, VersionIsReadBackAndSetsLegacyGamma) {
+    auto legacy = parse_ok(R"(#version 3.5;
+        #declare Seen = version;
+        #version 3.7;
+        #declare Now = version;
+        #version Seen;
+        sphere { <Seen, Now, 0>, 1 })");
+    EXPECT_FALSE(legacy.global.gamma_correction);
+    EXPECT_DOUBLE_EQ(legacy.global.language_version, 3.5);
+    const auto& centre = std::get<sg::Sphere>(legacy.objects[0].shape).center;
+    expect_vec(centre, {3.5, 3.7, 0});
+    EXPECT_TRUE(parse_ok("#version 3.6; global_settings { assumed_gamma 2.2 }").global.gamma_correction);
+    EXPECT_TRUE(parse_ok("#version 3.7;").global.gamma_correction);
+    EXPECT_TRUE(parse_ok("sphere { 0, 1 }").global.gamma_correction);  // no #version: 3.7
+    const Diagnostic bad = test::first_error("#version -1;");
+    EXPECT_NE(bad.message.find("#version must be"), std::string::npos) << bad.message;
+}
+
+}  // namespace
+}  // namespace lancer

@@ -385,7 +385,7 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
         name == "initial_clock" || name == "final_clock" || name == "initial_frame" || name == "final_frame") {
         return constant(Value::number(name == "clock_delta" ? 1.0 : 0.0));
     }
-    if (name == "version") return constant(Value::number(3.7));
+    if (name == "version") return constant(Value::number(m_language_version));
     if (name == "image_width" || name == "image_height") {
         bool width = name == "image_width";
         int size = width ? m_options.image_width : m_options.image_height;

@@ -67,10 +67,11 @@ void write_image(const Film& film, const std::string& path, const ImageWriteOpti
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             Color c = film.mean(x, y);
-            if (options.working_gamma != 1.0)
+            if (options.gamma_correction && options.working_gamma != 1.0)
                 for (int k = 0; k < 3; ++k) c[k] = float(std::pow(std::max(double(c[k]), 0.0), options.working_gamma));
             float* out = &pixels[(std::size_t(y) * width + x) * channels];
-            for (int k = 0; k < 3; ++k) out[k] = encoding == Encoding::LinearFloat ? c[k] : linear_to_srgb(c[k]);
+            const bool raw = encoding == Encoding::LinearFloat || !options.gamma_correction;
+            for (int k = 0; k < 3; ++k) out[k] = raw ? c[k] : linear_to_srgb(c[k]);
             if (sample_channel) out[3] = float(film.sample_count(x, y));
         }
 

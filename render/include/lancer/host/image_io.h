@@ -20,6 +20,10 @@ struct ImageWriteOptions {
     // this gamma, which the file receives decoded to linear (v^gamma) and
     // then encoded as its format wants. 1: the film is linear.
     double working_gamma = 1.0;
+    // False: POV-Ray's legacy mode (lancer/scene_graph.h, GlobalSettings):
+    // every format receives the film's values unchanged, with no transfer
+    // curve (8 and 16 bit files then hold round(v * 255), as POV-Ray 3.6).
+    bool gamma_correction = true;
 };
 
 // Throws std::runtime_error naming the path on failure (unknown extension,
