@@ -4,7 +4,8 @@
 // pixel once through its centre at 160x120 and write 8-bit sRGB, so the
 // images should agree to the code value: the lights (point, fade,
 // shadowless, spot, cylinder, parallel, POV's area light with adaptive,
-// circular and orient, looks_like, projected_through, a negative light),
+// circular, orient and area_illumination, looks_like, projected_through,
+// a negative light),
 // the finishes (peak phong and specular, metallic, brilliance, albedo,
 // reflection metallic, exponent and fresnel, conserve_energy), gamma, and
 // a pre-3.7 scene's legacy gamma and `version`.
@@ -35,7 +36,7 @@ TEST_P(PovReference, WhittedMatchesPovRay) {
     ASSERT_EQ(result.exit_code, 0) << result.output;
     const testing::Image render = testing::load_image(output);
     const testing::Image pov = testing::load_image(reference);
-    // Measured when these references were made: seven scenes identical to the
+    // Measured when these references were made: eight scenes identical to the
     // code value, finishes.pov 0.0006 mean with 0.08 % of pixels (glass
     // edges, where one ray refracts differently) off by more than 0.1.
     constexpr double kMaxMeanDifference = 0.002;
@@ -50,7 +51,7 @@ TEST_P(PovReference, WhittedMatchesPovRay) {
 INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
                          ::testing::Values("wall_point_light", "spotlights", "area_room", "area_circular",
                                            "cylinder_parallel", "looks_like_projected", "finishes", "gamma",
-                                           "legacy_gamma"),
+                                           "legacy_gamma", "area_illumination"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 }  // namespace
