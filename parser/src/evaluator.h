@@ -42,7 +42,8 @@ namespace lancer::parse {
 // Pattern and light transforms, shared by grammar actions and objects.cpp.
 void transform_pattern(sg::Pigment& pigment, const sg::Mat4& world_from_local);
 void transform_light(sg::Light& light, const sg::Mat4& world_from_local);
-sg::Camera resolve_camera(const CameraSpec& spec);
+// `sky_along_view` (when not null) is set when look_at looks along the sky.
+sg::Camera resolve_camera(const CameraSpec& spec, bool* sky_along_view = nullptr);
 bool is_reserved_word(const std::string& name);
 // Levenshtein distance, case-insensitive: how far a typo is from a name.
 size_t edit_distance(const std::string& a, const std::string& b);

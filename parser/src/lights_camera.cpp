@@ -11,7 +11,7 @@ namespace lancer::parse {
 // POV-Ray 3.7 camera (pov-3.7-semantics.md section 1): vectors are applied in
 // the fixed order right, direction, angle, up, sky, location, look_at,
 // whatever order the block lists them in; transforms come last.
-sg::Camera resolve_camera(const CameraSpec& spec) {
+sg::Camera resolve_camera(const CameraSpec& spec, bool* sky_along_view) {
     sg::Camera camera;
     camera.projection = spec.projection;
     camera.location_in_source = spec.location_in_source;
@@ -31,13 +31,29 @@ sg::Camera resolve_camera(const CameraSpec& spec) {
             double handedness = glm::dot(glm::cross(up, direction), right) < 0.0 ? -1.0 : 1.0;
             sg::Vec3 d = glm::normalize(target - location);
             sg::Vec3 new_right = glm::cross(sky, d);
-            if (glm::length(new_right) > 0.0) {
-                right = glm::normalize(new_right) * glm::length(right) * handedness;
-                up = glm::normalize(glm::cross(d, right)) * glm::length(up);
-                // Keep up's sense when right was flipped (left-handed frame).
-                if (handedness < 0.0) up = -up;
+            // Looking along the sky: POV keeps the right vector it had
+            // (with a warning) and still turns up to face the view.
+            if (glm::length(new_right) < 1e-10) {
+                new_right = right;
+                if (sky_along_view) *sky_along_view = true;
             }
+            const double right_length = glm::length(right);
+            right = glm::normalize(new_right) * right_length * handedness;
+            up = glm::normalize(glm::cross(d, right)) * glm::length(up);
+            // Keep up's sense when right was flipped (left-handed frame).
+            if (handedness < 0.0) up = -up;
             direction = d * glm::length(direction);
+        }
+    }
+    if (spec.projection == sg::Camera::Projection::Orthographic && ((!spec.up && !spec.right) || spec.angle)) {
+        // POV-Ray's orthographic camera sees the area the perspective one
+        // sees at the look_at distance (look_at defaulting to <0,0,1>):
+        // right and up grow by |look_at - location| / |direction|.
+        const double k1 = glm::length(spec.look_at.value_or(sg::Vec3(0.0, 0.0, 1.0)) - location);
+        const double k2 = glm::length(direction);
+        if (k1 > 1e-10 && k2 > 1e-10) {
+            right *= k1 / k2;
+            up *= k1 / k2;
         }
     }
     const sg::Mat4& m = spec.world_from_camera;
@@ -61,7 +77,12 @@ void Evaluator::set_camera(const CameraSpec& spec) {
     if (m_saw_camera)
         warning(spec.location_in_source, "a second camera replaces the first (POV-Ray uses the last one)");
     m_saw_camera = true;
-    m_scene.camera = resolve_camera(spec);
+    bool sky_along_view = false;
+    m_scene.camera = resolve_camera(spec, &sky_along_view);
+    if (sky_along_view)
+        warning(spec.location_in_source,
+                "the camera looks along its sky direction: the right vector is kept as given (POV-Ray's rule); "
+                "set sky to choose which way is up");
 }
 
 sg::Light Evaluator::make_light(const Value& position, const SourceRange& wp, const Value& colour,
