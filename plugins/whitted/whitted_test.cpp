@@ -171,6 +171,23 @@ TEST(WhittedIntegrator, TotalInternalReflectionAtGrazingAngle) {
     }
 }
 
+// POV-Ray's total internal reflection reflects all of the light, whatever
+// the transparency and the finish's own reflection: a half-transparent
+// slab with reflection 0.3 shows the ball at full strength, not 0.5 + 0.3.
+TEST(WhittedIntegrator, TotalInternalReflectionReflectsEverythingAsPovRay) {
+    sg::SceneGraph graph = glass_slab();
+    graph.objects[0].material = material([](sg::Material& m) {
+        m.pigment.color.transmit = 0.5;
+        m.finish.ambient = sg::Vec3(0.0);
+        m.finish.diffuse = 0.0;
+        m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.3);
+        m.interior.ior = 1.5;
+    });
+    const auto scene = compile_scene(std::move(graph));
+    const Ray grazing{Vec3(0.0f, -0.5f, 0.0f), glm::normalize(Vec3(1.0f, 0.1f, 0.0f))};
+    EXPECT_NEAR(mean_radiance(*load_integrator("whitted", *scene), *scene, grazing).g, 1.0f, 1e-5f);
+}
+
 TEST(WhittedIntegrator, SteepRayLeavesTheDenseMedium) {
     const auto scene = compile_scene(glass_slab());
     const Ray steep{Vec3(0.0f, -0.5f, 0.0f), glm::normalize(Vec3(0.5f, 1.0f, 0.0f))};

@@ -109,7 +109,7 @@ class Material {
         return m_params.ambient * surface.pigment * ambient_light;
     }
 
-    // The non-delta BRDF (diffuse + phong + specular, times opacity) for
+    // The non-delta BRDF (diffuse times opacity, + phong + specular) for
     // light arriving from wi and leaving towards wo. All vectors unit; n is
     // the shading normal facing wo. Returns 0 when wi is below the surface.
     Color brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const;

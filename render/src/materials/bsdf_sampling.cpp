@@ -148,12 +148,13 @@ Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hi
     m_diffuse_scale = additive_reflection ? Color(1.0f) : Color(1.0f) - rho_r;
     m_mirror = rho_r;
 
-    // Smooth lobes: probabilities by albedo. brdf() scales them all by the
-    // opacity, so the mixture only needs their ratios.
+    // Smooth lobes: probabilities by albedo. The diffuse lobe is scaled by
+    // the opacity, the highlights are not (POV-Ray's rule,
+    // Material::glossy_brdf).
     m_transparency = std::clamp(material.transparency(surface), 0.0f, 1.0f);
     const float opacity = 1.0f - m_transparency;
     const float w_diffuse =
-        p.diffuse > 0.0f ? p.diffuse * std::max(0.0f, luminance(surface.pigment * m_diffuse_scale)) : 0.0f;
+        p.diffuse > 0.0f ? opacity * p.diffuse * std::max(0.0f, luminance(surface.pigment * m_diffuse_scale)) : 0.0f;
     const float w_phong = std::max(0.0f, material.phong_reflectance());
     const float w_blinn = std::max(0.0f, material.specular_reflectance());
     const float w_smooth = w_diffuse + w_phong + w_blinn;
@@ -196,7 +197,7 @@ Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hi
     m_transmitted = transmitted;
 
     // Component probabilities.
-    const float s = opacity * w_smooth;
+    const float s = w_smooth;
     const float m = std::max(0.0f, luminance(m_mirror));
     const float t = std::max(0.0f, luminance(m_transmitted));
     const float total = s + m + t;

@@ -68,7 +68,8 @@ Color Material::glossy_brdf(const SurfaceSample& surface, const Vec3& n, const V
         }
     }
     if (!(highlight > 0.0f)) return Color(0.0f);
-    const float opacity = 1.0f - transparency(surface);
+    // Unlike the diffuse term, POV-Ray's highlights are not scaled by the
+    // surface's opacity (ComputeOneDiffuseLight): clear glass shows them.
     Color tint(1.0f);
     if (m_params.metallic > 0.0f) {
         // POV's metallic highlight: tinted towards the pigment away from grazing.
@@ -78,7 +79,7 @@ Color Material::glossy_brdf(const SurfaceSample& surface, const Vec3& n, const V
     // Light of colour C arrives as radiance pi*C over |cos|: the BRDF that
     // gives highlight * C. The floor on the cosine only keeps the quotient
     // finite; times the cosine it is below highlight / pi.
-    return opacity * highlight / (kPi * glm::max(cos_i, 1e-20f)) * tint;
+    return highlight / (kPi * glm::max(cos_i, 1e-20f)) * tint;
 }
 
 Color Material::brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const {

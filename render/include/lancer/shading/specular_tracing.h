@@ -7,8 +7,10 @@
 // Weights at one hit, with R the material's mirror reflectance at this
 // angle, T its transparency and tint its transmission tint:
 //   fresnel off (the seed's fixed coefficients):
-//       reflected R, transmitted T * tint; on total internal reflection the
-//       transmitted share goes to the reflection: R + T.
+//       reflected R, transmitted T * tint; on total internal reflection
+//       the whole of the light is reflected, 1, in place of R (POV-Ray's
+//       TraceRefractionRay: the internal reflection is added unfiltered
+//       and the finish's own reflection is skipped).
 //   fresnel on (an energy-conserving dielectric), F = Fresnel reflectance of
 //   the interface (1 on total internal reflection):
 //       reflected max(R, T * F), transmitted T * (1 - F) * tint. The max
@@ -67,7 +69,7 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
         } else if (refracts) {
             split.transmission = transparency * tint;
         } else {
-            split.reflection = mirror + Color(transparency);  // total internal reflection
+            split.reflection = Color(1.0f);  // total internal reflection, as POV-Ray
         }
         // POV's conserve_energy: what the finish reflects is not transmitted.
         if (at.material.parameters().conserve_energy)
