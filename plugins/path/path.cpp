@@ -83,7 +83,9 @@ class PathIntegrator final : public Integrator {
         double total = 0.0;
         bool finite = true;
         for (std::size_t i = 0; i < lights.size(); ++i) {
-            power[i] = std::max(0.0, double(luminance(lights[i]->power())));
+            // A negative light (valid POV) darkens as much as a positive
+            // one lights: its magnitude sets how often it is sampled.
+            power[i] = std::fabs(double(luminance(lights[i]->power())));
             finite = finite && std::isfinite(power[i]);
             total += power[i];
         }
