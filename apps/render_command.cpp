@@ -32,8 +32,10 @@
 #include "lancer/host/plugin_host.h"
 #include "lancer/host/renderer.h"
 #include "lancer/host/scene_compiler.h"
+#include "lancer/host/temporary_file.h"
 #include "lancer/parser.h"
 #include "lancer/scene_error.h"
+#include "output_files.h"
 #include "render_job.h"
 #include "render_report.h"
 
@@ -106,6 +108,8 @@ struct RenderArguments {
     bool quiet = false;
     bool safe = false;  // --safe: files only from the scene's folder and the include path
     // Which options the user gave (CLI11 leaves the others untouched).
+    CLI::Option* output_option = nullptr;
+    CLI::Option* stats_option = nullptr;
     CLI::Option* width_option = nullptr;
     CLI::Option* height_option = nullptr;
     CLI::Option* spp_option = nullptr;
@@ -172,6 +176,14 @@ int check_arguments(const RenderArguments& arguments) {
             print_error("-p expects key=value, got '" + assignment + "'");
             return kExitUsage;
         }
+    }
+    if (arguments.output_option->count() && arguments.output.empty()) {
+        print_error("-o needs a file name (without -o the image is <scene name>.png here)");
+        return kExitUsage;
+    }
+    if (arguments.stats_option->count() && arguments.stats.empty()) {
+        print_error("--stats needs a file name");
+        return kExitUsage;
     }
     if (!arguments.output.empty() && !is_supported_image_extension(arguments.output)) {
         print_error("cannot write '" + arguments.output +
@@ -350,13 +362,24 @@ int run_render(const RenderArguments& arguments) {
 
     if (const int status = check_film_fits(options)) return status;
 
-    // Output: the scene's stem in the current folder unless named.
+    // Output: the scene's stem in the current folder unless named. Every
+    // file this render writes is checked now, before any work: none may be
+    // the scene or a file it read, none may share a path with another.
     const std::string output =
-        arguments.output.empty() ? fs::path(arguments.scene).stem().string() + ".png" : arguments.output;
-    const fs::path output_folder = fs::absolute(output).parent_path();
-    if (!fs::is_directory(output_folder)) {
-        print_error("cannot write '" + output + "': folder '" + output_folder.string() + "' does not exist");
-        return kExitBadInput;
+        arguments.output_option->count() ? arguments.output : fs::path(arguments.scene).stem().string() + ".png";
+    {
+        std::vector<std::string> inputs{arguments.scene};
+        inputs.insert(inputs.end(), graph->input_files.begin(), graph->input_files.end());
+        std::vector<OutputFile> outputs{{"the image (-o)", output}, {"the checkpoint", checkpoint_path_for(output)}};
+        if (arguments.stats_option->count()) outputs.push_back({"--stats", arguments.stats});
+        const std::string refused = check_output_files(outputs, inputs);
+        if (!refused.empty()) {
+            print_error(refused);
+            return kExitBadInput;
+        }
+        // What an earlier render killed mid-write (no handler runs on
+        // SIGKILL) left beside these files.
+        for (const OutputFile& file : outputs) remove_stale_temporaries(file.path);
     }
 
     // The integrator and its parameters (the scene's only for the scene's
@@ -428,7 +451,7 @@ int run_render(const RenderArguments& arguments) {
         write_image(film, output, write_options);
         if (stats.interrupted && (checkpointing || arguments.resume)) write_checkpoint(checkpoint_path, identity, film);
         report.total_seconds = seconds_so_far();
-        if (!arguments.stats.empty()) write_stats_json(report, arguments.stats);
+        if (arguments.stats_option->count()) write_stats_json(report, arguments.stats);
 
         if (stats.nonfinite_samples > 0) {
             std::fprintf(stderr, "lancer: warning: %llu non-finite samples (NaN or infinite radiance) were dropped\n",
@@ -464,8 +487,8 @@ Command add_render_command(CLI::App& app) {
     render->add_option("scene", arguments->scene, "Scene file (.pov)")->required();
     render->add_option("-i,--integrator", arguments->integrator,
                        "Integrator plugin (default: the scene's, else whitted; see `lancer plugins`)");
-    render->add_option("-o,--output", arguments->output,
-                       "Image file: .png, .exr, .hdr, .tif (default: <scene name>.png here)");
+    arguments->output_option = render->add_option(
+        "-o,--output", arguments->output, "Image file: .png, .exr, .hdr, .tif (default: <scene name>.png here)");
     arguments->width_option = render->add_option("--width", arguments->width, "Image width in pixels");
     arguments->height_option = render->add_option("--height", arguments->height, "Image height in pixels");
     arguments->spp_option = render->add_option(
@@ -476,7 +499,7 @@ Command add_render_command(CLI::App& app) {
     arguments->noise_option = render->add_option(
         "--noise", arguments->noise,
         "Adaptive: a pixel stops when its estimated relative error is under E, e.g. 0.05 (--spp caps, default 4096)");
-    render->add_option("--stats", arguments->stats, "Write what the render did to FILE.json");
+    arguments->stats_option = render->add_option("--stats", arguments->stats, "Write what the render did to FILE.json");
     arguments->checkpoint_option = render->add_option(
         "--checkpoint", arguments->checkpoint_interval,
         "Save progress every SECONDS to <output>.lancer-checkpoint (removed when the render completes)");

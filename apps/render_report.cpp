@@ -2,6 +2,8 @@
 // so the three never disagree.
 #include "render_report.h"
 
+#include "lancer/host/temporary_file.h"
+
 #include <unistd.h>
 
 #include <atomic>
@@ -102,10 +104,8 @@ std::string stats_json(const RenderReport& report) {
 }
 
 void write_stats_json(const RenderReport& report, const std::string& path) {
-    static std::atomic<unsigned> counter{0};
     const fs::path target(path);
-    const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp" +
-                                                       std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    const fs::path temporary = temporary_path_for(target);
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         out << stats_json(report);

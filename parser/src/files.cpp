@@ -87,6 +87,7 @@ Evaluator::FileSearch Evaluator::find_file(const std::string& name, const std::v
             return FileSearch::Refused;
         }
         found = candidate.string();
+        m_scene.input_files.push_back(found);
         return FileSearch::Found;
     }
     // A name that escapes is refused even when nothing is there, so that

@@ -309,6 +309,7 @@ class Evaluator::ObjMaterialReader : public tinyobj::MaterialReader {
             missing.push_back(id);
             return false;
         }
+        m_evaluator.m_scene.input_files.push_back(path.string());
         if (size > static_cast<std::uintmax_t>(m_evaluator.m_options.max_file_bytes)) {
             if (err) *err += "MTL file " + id + " is larger than the file size limit\n";
             return false;

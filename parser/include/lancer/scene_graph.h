@@ -291,6 +291,9 @@ struct SceneGraph {
     GlobalSettings global;
     RenderSettings render;
     std::string main_file;  // the scene file's path
+    // Every file the scene read (includes, images, OBJ and MTL files), as
+    // found, in reading order: what a render must never overwrite.
+    std::vector<std::string> input_files;
 };
 
 }  // namespace lancer::sg

@@ -2,6 +2,7 @@
 // raw totals, and a trailing FNV-1a hash of all of it so a torn or foreign
 // file is refused rather than resumed.
 #include "lancer/host/checkpoint.h"
+#include "lancer/host/temporary_file.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -114,10 +115,8 @@ void write_checkpoint(const std::string& path, const CheckpointIdentity& identit
 
     // Temporary beside the target, flushed to disk, then renamed over it:
     // a crash at any moment leaves the old checkpoint or the new one.
-    static std::atomic<unsigned> counter{0};
     const fs::path target(path);
-    const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp" +
-                                                       std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    const fs::path temporary = temporary_path_for(target);
     auto fail = [&](const std::string& why) {
         std::error_code ignored;
         fs::remove(temporary, ignored);

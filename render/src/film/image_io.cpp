@@ -1,5 +1,6 @@
 // Writing films through OpenImageIO, atomically.
 #include "lancer/host/image_io.h"
+#include "lancer/host/temporary_file.h"
 
 #include <unistd.h>
 
@@ -23,13 +24,6 @@ enum class Encoding { Srgb8, Srgb16, LinearFloat };
 
 // A unique temporary name beside the target, keeping its extension so
 // OpenImageIO picks the same format.
-fs::path temporary_path(const fs::path& target) {
-    static std::atomic<unsigned> counter{0};
-    const std::string name = "." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + "-" +
-                             std::to_string(counter++) + target.extension().string();
-    return target.parent_path() / name;
-}
-
 }  // namespace
 
 float linear_to_srgb(float linear) {
@@ -91,7 +85,7 @@ void write_image(const Film& film, const std::string& path, const ImageWriteOpti
     if (!target.parent_path().empty() && !fs::is_directory(target.parent_path(), ignored))
         throw std::runtime_error("cannot write '" + path + "': directory '" + target.parent_path().string() +
                                  "' does not exist");
-    const fs::path temporary = temporary_path(target);
+    const fs::path temporary = temporary_path_for(target);
     auto fail = [&](const std::string& why) {
         fs::remove(temporary, ignored);
         throw std::runtime_error("cannot write '" + path + "': " + why);

@@ -1,5 +1,6 @@
 // RgbImage I/O through OpenImageIO.
 #include "lancer/host/rgb_image.h"
+#include "lancer/host/temporary_file.h"
 
 #include <unistd.h>
 
@@ -64,11 +65,8 @@ void write_rgb_image(const RgbImage& image, const std::string& path) {
 
     // A temporary name beside the target keeps the extension (OIIO picks the
     // format from it) and a failure leaves no partial file under the name.
-    static std::atomic<unsigned> counter{0};
     const fs::path target(path);
-    const fs::path temporary =
-        target.parent_path() /
-        ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ext);
+    const fs::path temporary = temporary_path_for(target);
     OIIO::ImageSpec spec(image.width, image.height, 3, encode ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
     auto output = OIIO::ImageOutput::create(temporary.string());
     if (!output || !output->open(temporary.string(), spec))
