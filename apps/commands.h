@@ -1,6 +1,7 @@
 // Each `lancer` subcommand lives in its own file and registers itself here.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,11 @@ struct Command {
     CLI::App* cli = nullptr;
     std::function<int()> run;  // exit status: 0 ok, 1 bad input, 2 usage
 };
+
+// `--seed S` for the commands that render: a whole number that fits 64
+// bits, checked as such (a plain unsigned option would take -1 or 2^64 and
+// wrap them).
+CLI::Option* add_seed_option(CLI::App& command, std::uint64_t& seed);
 
 Command add_check_command(CLI::App& app);
 Command add_render_command(CLI::App& app);

@@ -1,6 +1,7 @@
 // lancer: parse arguments, run one subcommand. Everything else is library code.
 #include <cstdio>
 #include <exception>
+#include <string>
 #include <vector>
 
 #include "commands.h"
@@ -9,6 +10,10 @@ int main(int argc, char** argv) {
     CLI::App app{"lancer: a ray tracer for hand-written POV-Ray-like scenes"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "lancer 0.1.0");
+    // Usage errors look like every other error of lancer's.
+    app.failure_message([](const CLI::App*, const CLI::Error& error) {
+        return "lancer: error: " + std::string(error.what()) + "\nRun with --help for more information.\n";
+    });
     std::vector<lancer::app::Command> commands = {
         lancer::app::add_check_command(app),
         lancer::app::add_render_command(app),
@@ -18,7 +23,7 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
-        // CLI11 prints usage errors as "error: ..." with the offending argument.
+        // Printed by the failure message above, with the offending argument.
         int status = app.exit(error);
         return status == 0 ? 0 : 2;
     }

@@ -148,15 +148,16 @@ int check_arguments(const RenderArguments& arguments) {
         print_error("--spp must be at least 1, got " + std::to_string(arguments.spp));
         return kExitUsage;
     }
-    if (arguments.time_option->count() && !(arguments.time_budget > 0.0)) {
-        print_error("--time must be a positive number of seconds");
+    if (arguments.time_option->count() && !(arguments.time_budget > 0.0 && std::isfinite(arguments.time_budget))) {
+        print_error("--time must be a positive, finite number of seconds");
         return kExitUsage;
     }
-    if (arguments.noise_option->count() && !(arguments.noise > 0.0)) {
+    if (arguments.noise_option->count() && !(arguments.noise > 0.0 && std::isfinite(arguments.noise))) {
         print_error("--noise must be a positive relative error, e.g. 0.05");
         return kExitUsage;
     }
-    if (arguments.checkpoint_option->count() && !(arguments.checkpoint_interval > 0.0)) {
+    if (arguments.checkpoint_option->count() &&
+        !(arguments.checkpoint_interval > 0.0 && std::isfinite(arguments.checkpoint_interval))) {
         print_error("--checkpoint must be a positive number of seconds");
         return kExitUsage;
     }
@@ -506,8 +507,7 @@ Command add_render_command(CLI::App& app) {
     render->add_flag(
         "--resume", arguments->resume,
         "Continue from <output>.lancer-checkpoint (same scene and settings required); without one, start over");
-    arguments->seed_option =
-        render->add_option("--seed", arguments->seed, "Random seed (default: the scene's, else 0)");
+    arguments->seed_option = add_seed_option(*render, arguments->seed);
     render->add_option("--threads", arguments->threads, "Worker threads (default 0: every core)");
     render->add_option("--crop", arguments->crop, "Render only pixels x0 <= x < x1, y0 <= y < y1");
     CLI::Option* parameter_option =

@@ -496,7 +496,7 @@ Command add_trade_command(CLI::App& app) {
     trade->add_flag("--quick", arguments->quick, "Small images (about 160x120) and short ladders: about a minute");
     arguments->width_option = trade->add_option("--width", arguments->width, "Image width (with --height)");
     arguments->height_option = trade->add_option("--height", arguments->height, "Image height (with --width)");
-    arguments->seed_option = trade->add_option("--seed", arguments->seed, "Random seed (default: the scene's, else 0)");
+    arguments->seed_option = add_seed_option(*trade, arguments->seed);
     trade->add_option("--threads", arguments->threads, "Worker threads (default 0: every core)");
     trade->add_option("--cache", arguments->cache,
                       "Reference cache folder (default $XDG_CACHE_HOME/lancer/references or ~/.cache/...)");

@@ -99,6 +99,11 @@ TEST_F(CliRender, BadArgumentsAreUsageErrors) {
         {"--spp 0", "--spp must be at least 1"},
         {"-p ambient", "-p expects key=value"},
         {"-p =1", "-p expects key=value"},
+        {"--time inf", "--time must be a positive, finite"},
+        {"--time nan", "--time must be a positive, finite"},
+        {"--noise inf", "--noise must be a positive"},
+        {"--seed -1", "--seed: expects a whole number"},
+        {"--seed 18446744073709551616", "--seed: expects a whole number"},
     };
     for (const auto& c : cases) {
         const CommandResult result = render(c.arguments);
@@ -124,6 +129,11 @@ TEST_F(CliRender, ParametersAreCheckedAgainstThePlugin) {
     result = render("-i raycast -p ambient=maybe");
     EXPECT_EQ(result.exit_code, 1) << result.output;
     EXPECT_CONTAINS(result.output, "expects a boolean");
+    EXPECT_TRUE(folder_holds_only_the_scene());
+    // nan and inf parse as doubles, but no setting means them.
+    result = render("-i path -p clamp=nan");
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_CONTAINS(result.output, "expects a finite number");
     EXPECT_TRUE(folder_holds_only_the_scene());
     result = render("-i raycast -p ambient=off -p specular=false");
     EXPECT_EQ(result.exit_code, 0) << result.output;

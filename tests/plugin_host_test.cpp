@@ -248,7 +248,7 @@ TEST(PluginParameters, CommandLineValueMustParseAsTheDeclaredType) {
     };
     EXPECT_CONTAINS(message_for("samples=many"), "expects an integer, got 'many'");
     EXPECT_CONTAINS(message_for("samples=2.5"), "expects an integer");
-    EXPECT_CONTAINS(message_for("radius=1.5cm"), "expects a number");
+    EXPECT_CONTAINS(message_for("radius=1.5cm"), "expects a finite number");
     EXPECT_CONTAINS(message_for("shadows=maybe"), "expects a boolean");
     EXPECT_CONTAINS(message_for("samples"), "expected key=value");
     EXPECT_EQ(message_for("radius=+1e-3"), "(accepted)");
@@ -266,7 +266,7 @@ TEST(PluginParameters, SceneValueOfTheWrongKindIsLocated) {
         return "(accepted)";
     };
     EXPECT_CONTAINS(error_for("samples", scene_value(2.5, 9)), "expects an integer, got 2.5");
-    EXPECT_CONTAINS(error_for("radius", scene_value(sg::Vec3(1.0), 9)), "expects a number, got a vector");
+    EXPECT_CONTAINS(error_for("radius", scene_value(sg::Vec3(1.0), 9)), "expects a finite number, got a vector");
     EXPECT_CONTAINS(error_for("shadows", scene_value(3.0, 9)), "expects a boolean");
     EXPECT_CONTAINS(error_for("samples", scene_value(std::string("ten"), 9)), "got \"ten\"");
 }

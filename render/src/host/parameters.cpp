@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
@@ -49,7 +50,9 @@ double ParameterSet::get_float(const std::string& name, double fallback) const {
     const auto found = m_values.find(name);
     if (found == m_values.end()) return fallback;
     double value = 0.0;
-    if (!parse_whole(found->second, value)) throw_bad_value(name, found->second, "a number");
+    // nan and inf parse, but no integrator's setting means them.
+    if (!parse_whole(found->second, value) || !std::isfinite(value))
+        throw_bad_value(name, found->second, "a finite number");
     return value;
 }
 

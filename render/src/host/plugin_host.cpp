@@ -153,7 +153,7 @@ std::string declared_names(const IntegratorDescriptor& descriptor) {
 const char* expected_text(ParameterType type) {
     switch (type) {
     case ParameterType::Int: return "an integer";
-    case ParameterType::Float: return "a number";
+    case ParameterType::Float: return "a finite number";
     case ParameterType::Bool: return "a boolean (true/false, on/off, yes/no, 1/0)";
     case ParameterType::String: return "a string";
     }
