@@ -61,7 +61,8 @@ Command add_check_command(CLI::App& app) {
             int errors = 0;
             for (const auto& diagnostic : result.diagnostics)
                 if (diagnostic.severity == Diagnostic::Severity::Error) ++errors;
-            std::fprintf(stderr, "%s: %d error(s), %d warning(s)\n", options->scene.c_str(), errors, warnings);
+            std::fprintf(stderr, "%s: %d error(s), %d warning(s)\n", escape_for_terminal(options->scene).c_str(),
+                         errors, warnings);
             return 1;
         }
         SceneSummary summary = summarize_scene(*result.scene);

@@ -5,7 +5,8 @@
 namespace lancer::app {
 
 void print_error(const std::string& message) {
-    std::fprintf(stderr, "lancer: error: %s\n", message.c_str());
+    // Messages quote file names and values the user (or a scene) chose.
+    std::fprintf(stderr, "lancer: error: %s\n", escape_for_terminal(message).c_str());
 }
 
 void print_diagnostic(const Diagnostic& diagnostic) {
@@ -13,7 +14,7 @@ void print_diagnostic(const Diagnostic& diagnostic) {
         const char* severity = diagnostic.severity == Diagnostic::Severity::Error     ? "error"
                                : diagnostic.severity == Diagnostic::Severity::Warning ? "warning"
                                                                                       : "note";
-        std::fprintf(stderr, "lancer: %s: %s\n", severity, diagnostic.message.c_str());
+        std::fprintf(stderr, "lancer: %s: %s\n", severity, escape_for_terminal(diagnostic.message).c_str());
         return;
     }
     std::string text = format_diagnostic(diagnostic);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "lancer/parser.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"lancer: a ray tracer for hand-written POV-Ray-like scenes"};
@@ -32,7 +33,7 @@ int main(int argc, char** argv) {
             if (command.cli->parsed()) return command.run();
         }
     } catch (const std::exception& error) {
-        std::fprintf(stderr, "lancer: error: %s\n", error.what());
+        std::fprintf(stderr, "lancer: error: %s\n", lancer::escape_for_terminal(error.what()).c_str());
         return 1;
     }
     return 2;

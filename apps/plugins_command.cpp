@@ -16,6 +16,7 @@
 
 #include "commands.h"
 #include "lancer/host/plugin_host.h"
+#include "lancer/parser.h"
 
 namespace lancer::app {
 namespace {
@@ -111,7 +112,8 @@ int run_plugins(const std::string& only, bool markdown) {
         }
         found = true;
     }
-    for (const auto& problem : problems) std::fprintf(stderr, "lancer: warning: %s\n", problem.c_str());
+    for (const auto& problem : problems)
+        std::fprintf(stderr, "lancer: warning: %s\n", escape_for_terminal(problem).c_str());
     if (!only.empty() && !found) {
         std::fprintf(stderr, "lancer: error: no integrator plugin '%s' in the search path\n", only.c_str());
         return 1;

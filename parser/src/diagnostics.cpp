@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <fstream>
 #include <sstream>
+#include <string_view>
+#include <vector>
 
 #include "evaluator.h"
 
@@ -35,29 +37,86 @@ std::string read_line(const sg::SourceLocation& where) {
     return in ? line : "";
 }
 
+// One character of a source line as the terminal is shown it: itself when
+// printable (valid UTF-8 included), else an escape such as \x1b, so a scene
+// cannot move the cursor, recolour or retitle the user's terminal.
+struct ShownChar {
+    std::string text;
+    int width;  // columns it takes; a tab is kept and counted as one
+};
+
+std::vector<ShownChar> shown_chars(std::string_view line) {
+    std::vector<ShownChar> chars;
+    auto escaped = [](unsigned char byte) {
+        static const char* hex = "0123456789abcdef";
+        return ShownChar{std::string("\\x") + hex[byte >> 4] + hex[byte & 15], 4};
+    };
+    for (std::size_t i = 0; i < line.size();) {
+        const unsigned char lead = static_cast<unsigned char>(line[i]);
+        if (lead < 0x80) {
+            if (lead == '\t')
+                chars.push_back({"\t", 1});
+            else if (lead < 0x20 || lead == 0x7f)
+                chars.push_back(escaped(lead));
+            else
+                chars.push_back({std::string(1, char(lead)), 1});
+            ++i;
+            continue;
+        }
+        const std::size_t length = lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC2 ? 2 : 0;
+        bool valid = length > 0 && lead < 0xF5 && i + length <= line.size();
+        for (std::size_t k = 1; valid && k < length; ++k)
+            valid = (static_cast<unsigned char>(line[i + k]) & 0xC0) == 0x80;
+        // C1 controls (U+0080..U+009F) are terminal escapes too.
+        if (valid && length == 2 && lead == 0xC2 && static_cast<unsigned char>(line[i + 1]) < 0xA0) valid = false;
+        if (!valid) {
+            chars.push_back(escaped(lead));
+            ++i;
+            continue;
+        }
+        chars.push_back({std::string(line.substr(i, length)), 1});
+        i += length;
+    }
+    return chars;
+}
+
+// Source lines longer than this are shown as a window around the caret.
+constexpr std::size_t kShownColumns = 100;
+
 }  // namespace
+
+std::string escape_for_terminal(std::string_view text) {
+    std::string out;
+    for (const ShownChar& c : shown_chars(text)) out += c.text == "\t" ? std::string("\\t") : c.text;
+    return out;
+}
 
 std::string format_diagnostic(const Diagnostic& diagnostic) {
     std::ostringstream out;
-    out << location_text(diagnostic.location) << ": " << severity_name(diagnostic.severity) << ": "
-        << diagnostic.message << "\n";
+    out << escape_for_terminal(location_text(diagnostic.location)) << ": " << severity_name(diagnostic.severity) << ": "
+        << escape_for_terminal(diagnostic.message) << "\n";
     std::string line = diagnostic.source_line.empty() ? read_line(diagnostic.location) : diagnostic.source_line;
     if (!line.empty() && diagnostic.location.column > 0) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        out << "  " << line << "\n  ";
-        // The caret goes under the column-th code point; tabs are kept so it lines up.
-        int column = 1;
-        for (size_t i = 0; i < line.size() && column < diagnostic.location.column; ++i) {
-            unsigned char c = static_cast<unsigned char>(line[i]);
-            if ((c & 0xC0) == 0x80) continue;
-            out << (c == '\t' ? '\t' : ' ');
-            ++column;
+        if (line.back() == '\r') line.pop_back();
+        const std::vector<ShownChar> chars = shown_chars(line);
+        // The caret goes under the column-th code point.
+        const std::size_t caret = std::min(std::size_t(diagnostic.location.column - 1), chars.size());
+        std::size_t first = 0, last = chars.size();
+        if (chars.size() > kShownColumns) {
+            first = caret > kShownColumns / 2 ? caret - kShownColumns / 2 : 0;
+            last = std::min(chars.size(), first + kShownColumns);
         }
-        out << "^\n";
+        std::string text = first > 0 ? "..." : "", pad = first > 0 ? "   " : "";
+        for (std::size_t i = first; i < last; ++i) {
+            text += chars[i].text;
+            if (i < caret)
+                pad += chars[i].text == "\t" ? std::string("\t") : std::string(std::size_t(chars[i].width), ' ');
+        }
+        if (last < chars.size()) text += "...";
+        out << "  " << text << "\n  " << pad << "^\n";
     }
-    for (const auto& from : diagnostic.include_chain) {
-        out << location_text(from) << ": note: included from here\n";
-    }
+    for (const auto& from : diagnostic.include_chain)
+        out << escape_for_terminal(location_text(from)) << ": note: included from here\n";
     return out.str();
 }
 

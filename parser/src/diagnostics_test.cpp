@@ -90,6 +90,8 @@ const BadScene kBadScenes[] = {
      "index 1 is out of range: normal_vectors has 1", 3, 22},
     {"EmptyMesh", "mesh { }", "mesh has no triangles", 1, 1},
     {"CameraAngleTooWide", "camera { angle 180 }", "between 0 and 180", 1, 16},
+    {"CameraLooksAtItself", "camera { location <1,2,3> look_at <1,2,3> }", "must be different", 1, 1},
+    {"CameraFrameIsFlat", "camera { direction x right x up y }", "lie in one plane", 1, 1},
     {"AreaLightZeroSamples", "light_source { 0, 1 area_light x, z, 0, 2 }", "at least 1", 1, 38},
     {"AreaRectangleParallelAxes", "light_source { 0, 1 area_rectangle x, x*2 }", "not parallel", 1, 36},
     {"CircularAreaLightOfOneRow", "light_source { 0, 1 area_light x, z, 4, 1 circular }", "more than one sample", 1, 1},
@@ -129,6 +131,39 @@ TEST(ParserDiagnostics, MissingFileIsAnErrorNotAnException) {
     ParseResult result = parse_scene_file("/nonexistent/scene.pov");
     ASSERT_FALSE(result.ok());
     EXPECT_NE(result.diagnostics.front().message.find("not found"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace lancer
+
+namespace lancer {
+namespace {
+
+// What the terminal is shown of a scene: control characters escaped, in
+// the source line and in the message, and a long line cut to a window
+// around the caret.
+TEST(DiagnosticEcho, ControlCharactersAreEscapedAndLongLinesWindowed) {
+    Diagnostic d;
+    d.location.file = std::make_shared<const std::string>("evil\x1b]0;t\x07.pov");
+    d.location.line = 1;
+    d.location.column = 5;
+    d.message = "unknown identifier '\x1b[2Jx'";
+    d.source_line = "ab\x1b[c \xff\xfe y";
+    const std::string shown = format_diagnostic(d);
+    EXPECT_EQ(shown.find('\x1b'), std::string::npos) << shown;
+    EXPECT_EQ(shown.find('\x07'), std::string::npos) << shown;
+    EXPECT_NE(shown.find("ab\\x1b[c \\xff\\xfe y"), std::string::npos) << shown;
+    EXPECT_NE(shown.find("'\\x1b[2Jx'"), std::string::npos) << shown;
+    // The caret sits under column 5 ('c'): "ab" + the 4-wide escape + "[".
+    EXPECT_NE(shown.find("\n         ^"), std::string::npos) << shown;
+
+    d.source_line = std::string(5'000'000, 'x') + " here " + std::string(5'000'000, 'y');
+    d.location.column = 5'000'002;
+    d.message = "somewhere";
+    const std::string windowed = format_diagnostic(d);
+    EXPECT_LT(windowed.size(), 400u);
+    EXPECT_NE(windowed.find("...xxxx"), std::string::npos);
+    EXPECT_NE(windowed.find("here"), std::string::npos);
 }
 
 }  // namespace

@@ -77,8 +77,23 @@ void Evaluator::set_camera(const CameraSpec& spec) {
     if (m_saw_camera)
         warning(spec.location_in_source, "a second camera replaces the first (POV-Ray uses the last one)");
     m_saw_camera = true;
+    if (spec.look_at && glm::length(*spec.look_at - spec.location.value_or(sg::Vec3(0.0))) == 0.0) {
+        error(spec.location_in_source, "camera location and look_at point must be different (as in POV-Ray)");
+        return;
+    }
     bool sky_along_view = false;
     m_scene.camera = resolve_camera(spec, &sky_along_view);
+    // The three vectors must span space, or every ray is the same ray (or
+    // none): POV-Ray renders such a camera as garbage or black.
+    const sg::Camera& c = *m_scene.camera;
+    const double volume = std::fabs(glm::dot(glm::cross(c.right, c.up), c.direction));
+    const double scale = glm::length(c.right) * glm::length(c.up) * glm::length(c.direction);
+    if (!(volume > 1e-9 * scale)) {
+        error(spec.location_in_source,
+              "the camera's direction, up and right vectors lie in one plane (or one is zero): they must span "
+              "space");
+        return;
+    }
     if (sky_along_view)
         warning(spec.location_in_source,
                 "the camera looks along its sky direction: the right vector is kept as given (POV-Ray's rule); "

@@ -79,5 +79,8 @@ std::vector<std::string> default_include_path();
 // "file:line:col: error: message", then the source line and a caret under
 // the column, then "note: included from file:line" for each include.
 std::string format_diagnostic(const Diagnostic& diagnostic);
+// `text` with control characters and invalid UTF-8 shown as escapes
+// (\x1b, \t): what every echo of the user's input to a terminal goes through.
+std::string escape_for_terminal(std::string_view text);
 
 }  // namespace lancer
