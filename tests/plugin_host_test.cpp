@@ -3,6 +3,7 @@
 // parameters from the scene and the command line are checked and merged.
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iterator>
 #include <memory>
 #include <set>
@@ -134,15 +135,35 @@ TEST(PluginLoading, NameMustMatchTheFile) {
     EXPECT_CONTAINS(message, "'something_else'");
 }
 
-TEST(PluginLoading, UnreadableFileQuotesDlerror) {
+TEST(PluginLoading, TextFileIsNotALibrary) {
     const std::string path = std::string(LANCER_BINARY_DIR) + "/tests/not_a_library.so";
     FILE* file = std::fopen(path.c_str(), "w");
     ASSERT_NE(file, nullptr);
-    std::fputs("this is text, not ELF\n", file);
+    std::fputs("this is text, not ELF, and long enough to hold an ELF header's sixty-four bytes\n", file);
     std::fclose(file);
     const std::string message = plugin_error_of(path);
     EXPECT_CONTAINS(message, "cannot load plugin file '" + path + "'");
-    EXPECT_CONTAINS(message, "not_a_library.so:");  // dlerror names the file too
+    EXPECT_CONTAINS(message, "not an ELF shared library");
+    std::remove(path.c_str());
+}
+
+// A plugin still being copied onto the search path: dlopen of a cut file
+// faults (SIGBUS) when the loader touches a page past its end, so every
+// cut is refused with a message before dlopen sees it.
+TEST(PluginLoading, CutShortFileIsRefusedBeforeLoading) {
+    const Plugin whole = load_plugin("whitted");
+    std::ifstream in(whole.path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(bytes.size(), 1000u);
+    const std::string path = std::string(LANCER_BINARY_DIR) + "/tests/cut_short.so";
+    for (std::size_t length :
+         {std::size_t(0), std::size_t(63), std::size_t(64), std::size_t(4096), bytes.size() / 2, bytes.size() - 1}) {
+        std::ofstream(path, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(length));
+        const std::string message = plugin_error_of(path);
+        EXPECT_CONTAINS(message, "cannot load plugin file '" + path + "'");
+        EXPECT_TRUE(message.find("cut short") != std::string::npos || message.find("too short") != std::string::npos)
+            << length << ": " << message;
+    }
     std::remove(path.c_str());
 }
 

@@ -12,9 +12,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -61,8 +63,51 @@ std::string folder_of_this_library() {
 const char* expected_text(ParameterType type);
 bool parses_as(const ParameterDecl& decl, const std::string& text);
 
+// Why the file is not a whole shared library, or empty. dlopen maps the
+// segments its headers name; a file cut short (one still being copied)
+// then faults with SIGBUS when the loader touches a page past its end, so
+// every header and loaded segment must lie inside the file first.
+std::string incomplete_library(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::error_code error;
+    const std::uintmax_t size = fs::file_size(path, error);
+    if (!in || error) return "cannot read it";
+    unsigned char header[64] = {};
+    if (size < sizeof header || !in.read(reinterpret_cast<char*>(header), sizeof header))
+        return "it is too short to be a shared library";
+    if (header[0] != 0x7f || header[1] != 'E' || header[2] != 'L' || header[3] != 'F')
+        return "it is not an ELF shared library";
+    if (header[4] != 2 || header[5] != 1) return {};  // not 64-bit little-endian: dlopen explains
+    auto read = [](const unsigned char* at, int bytes) {
+        std::uint64_t value = 0;
+        for (int i = bytes - 1; i >= 0; --i) value = value << 8 | at[i];
+        return value;
+    };
+    const std::uint64_t program_offset = read(header + 32, 8), section_offset = read(header + 40, 8);
+    const std::uint64_t program_entry = read(header + 54, 2), program_count = read(header + 56, 2);
+    const std::uint64_t section_entry = read(header + 58, 2), section_count = read(header + 60, 2);
+    auto inside = [size](std::uint64_t offset, std::uint64_t length) {
+        return offset <= size && length <= size - offset;
+    };
+    const std::string truncated = "it is cut short (" + std::to_string(size) + " bytes; is it still being written?)";
+    if (!inside(program_offset, program_entry * program_count) ||
+        !inside(section_offset, section_entry * section_count))
+        return truncated;
+    if (program_entry < 56) return program_count == 0 ? std::string() : "its program headers are malformed";
+    for (std::uint64_t i = 0; i < program_count; ++i) {
+        unsigned char entry[56];
+        in.seekg(std::streamoff(program_offset + i * program_entry));
+        if (!in.read(reinterpret_cast<char*>(entry), sizeof entry)) return truncated;
+        constexpr std::uint64_t kLoadable = 1;  // PT_LOAD
+        if (read(entry, 4) == kLoadable && !inside(read(entry + 8, 8), read(entry + 32, 8))) return truncated;
+    }
+    return {};
+}
+
 // Opens one file and runs every check; `expected_name` empty means any name.
 Plugin open_plugin_file(const std::string& path, const std::string& expected_name) {
+    if (const std::string why = incomplete_library(path); !why.empty())
+        throw PluginError("cannot load plugin file '" + path + "': " + why);
     // RTLD_NOW: an unresolved symbol is reported here, not mid-render.
     // RTLD_LOCAL: two plugins may define the same internal names.
     dlerror();
