@@ -85,6 +85,9 @@ class Evaluator {
     int to_int(const Value& value, const SourceRange& where);
     double positive(const Value& value, const SourceRange& where, const std::string& what);
     sg::Vec3 to_vec3(const Value& value, const SourceRange& where);
+    // An error at `where` unless every value is finite and fits single
+    // precision (what the renderer stores).
+    bool check_renderable(const double* values, int count, const SourceRange& where, const std::string& what);
     sg::Vec3 nonzero_vec3(const Value& value, const SourceRange& where, const std::string& what);
     sg::Color to_color(const Value& value, const SourceRange& where);
     std::string to_string(const Value& value, const SourceRange& where);

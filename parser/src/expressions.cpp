@@ -3,6 +3,8 @@
 // component equal), comparisons, components and colour keywords.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
 #include "evaluator.h"
 
@@ -48,6 +50,7 @@ int Evaluator::to_int(const Value& value, const SourceRange& where) {
 
 double Evaluator::positive(const Value& value, const SourceRange& where, const std::string& what) {
     double f = to_float(value, where, "a float for " + what);
+    if (value.kind == Value::Kind::Float && !check_renderable(&f, 1, where, what)) return 1.0;
     if (f <= 0.0 && value.kind == Value::Kind::Float) {
         error(where.begin, what + " must be positive, got " + std::to_string(f));
         return 1.0;
@@ -55,16 +58,46 @@ double Evaluator::positive(const Value& value, const SourceRange& where, const s
     return f;
 }
 
+namespace {
+
+// What the renderer can hold: it stores geometry and colours in single
+// precision, where 1e39 is infinity and turns a surface black or NaN.
+bool fits_single_precision(double x) {
+    return std::isfinite(x) && std::fabs(x) <= double(std::numeric_limits<float>::max());
+}
+
+}  // namespace
+
+bool Evaluator::check_renderable(const double* values, int count, const SourceRange& where, const std::string& what) {
+    for (int i = 0; i < count; ++i) {
+        if (fits_single_precision(values[i])) continue;
+        char shown[32];
+        std::snprintf(shown, sizeof shown, "%g", values[i]);
+        error(where.begin, what + " " + shown + " is beyond what lancer renders (finite, magnitude at most 3.4e38)");
+        return false;
+    }
+    return true;
+}
+
 sg::Vec3 Evaluator::to_vec3(const Value& value, const SourceRange& where) {
+    sg::Vec3 v(0.0);
     switch (value.kind) {
-    case Value::Kind::Float: return sg::Vec3(value.v[0]);
+    case Value::Kind::Float: v = sg::Vec3(value.v[0]); break;
     case Value::Kind::Vector:
-        if (value.size == 2) return {value.v[0], value.v[1], 0.0};
-        if (value.size == 3) return {value.v[0], value.v[1], value.v[2]};
+        if (value.size == 2) {
+            v = {value.v[0], value.v[1], 0.0};
+            break;
+        }
+        if (value.size == 3) {
+            v = {value.v[0], value.v[1], value.v[2]};
+            break;
+        }
         error(where.begin, "expected a 3-component vector, found " + describe(value));
         return sg::Vec3(0.0);
     default: error(where.begin, "expected a vector, found " + describe(value)); return sg::Vec3(0.0);
     }
+    if (!check_renderable(&v.x, 3, where, "a vector component")) return sg::Vec3(0.0);
+    return v;
 }
 
 sg::Vec3 Evaluator::nonzero_vec3(const Value& value, const SourceRange& where, const std::string& what) {
@@ -79,18 +112,21 @@ sg::Vec3 Evaluator::nonzero_vec3(const Value& value, const SourceRange& where, c
 sg::Color Evaluator::to_color(const Value& value, const SourceRange& where) {
     sg::Color c;
     switch (value.kind) {
-    case Value::Kind::Float: c.rgb = sg::Vec3(value.v[0]); return c;
-    case Value::Kind::Color: return {{value.v[0], value.v[1], value.v[2]}, value.v[3], value.v[4]};
+    case Value::Kind::Float: c.rgb = sg::Vec3(value.v[0]); break;
+    case Value::Kind::Color: c = {{value.v[0], value.v[1], value.v[2]}, value.v[3], value.v[4]}; break;
     case Value::Kind::Vector:
         if (value.size >= 3) {
             c.rgb = {value.v[0], value.v[1], value.v[2]};
             if (value.size >= 4) c.filter = value.v[3];
             if (value.size >= 5) c.transmit = value.v[4];
-            return c;
+            break;
         }
         [[fallthrough]];
     default: error(where.begin, "expected a colour, found " + describe(value)); return c;
     }
+    const double channels[5] = {c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit};
+    if (!check_renderable(channels, 5, where, "a colour channel")) return sg::Color{};
+    return c;
 }
 
 std::string Evaluator::to_string(const Value& value, const SourceRange& where) {

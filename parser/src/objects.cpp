@@ -111,6 +111,7 @@ ShapePtr Evaluator::make_sphere(const Value& c, const SourceRange& wc, const Val
     sg::Sphere sphere;
     sphere.center = to_vec3(c, wc);
     sphere.radius = to_float(r, wr, "a float radius");
+    if (!check_renderable(&sphere.radius, 1, wr, "the sphere radius")) sphere.radius = 1.0;
     if (sphere.radius <= 0.0 && r.kind == Value::Kind::Float)
         error(wr.begin, "sphere radius must be positive, got " + std::to_string(sphere.radius));
     shape->object.shape = sphere;
@@ -308,6 +309,7 @@ std::shared_ptr<sg::Interior> Evaluator::build_interior(const Edits<sg::Interior
 std::function<void(sg::Finish&)> Evaluator::finish_scalar(const std::string& name, bool albedo, const Value& v,
                                                           const SourceRange& where) {
     double x = to_float(v, where, "a float for " + name);
+    if (!check_renderable(&x, 1, where, name)) x = 0.0;
     if (x < 0.0) error(where.begin, name + " must not be negative, got " + std::to_string(x));
     if (name == "roughness" && x == 0.0) warning(where.begin, "roughness 0 gives an infinitely sharp highlight");
     if (name == "diffuse")
