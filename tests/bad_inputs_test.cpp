@@ -2,7 +2,10 @@
 // error (or a warning and a sensible result), never a crash, a hang or a
 // partial image. The files are generated in a temporary folder.
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -184,6 +187,57 @@ TEST_F(BadImages, TruncatedPngIsALocatedErrorAndWritesNothing) {
     CommandResult result = render_with_image(kPngHead);
     EXPECT_EQ(result.exit_code, 1) << result.output;
     EXPECT_NE(result.output.find("scene.pov:4:"), std::string::npos) << result.output;
+    EXPECT_FALSE(fs::exists(output()));
+}
+
+// A PNG whose whole file is valid but for `damage` applied to the bytes
+// after its header: the real texture of scenes/assets, cut or corrupted.
+std::string damaged_texture(bool truncate) {
+    std::ifstream in(source_path("scenes/assets/uv_grid.png"), std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (truncate) return bytes.substr(0, bytes.size() / 2);
+    for (std::size_t i = bytes.size() / 3; i < bytes.size() / 3 + 64 && i < bytes.size(); ++i) bytes[i] ^= 0x5a;
+    return bytes;
+}
+
+// PNG's CRC-32 (ISO 3309), bit by bit: chunks need it to be read at all.
+std::uint32_t png_crc(const std::string& bytes) {
+    std::uint32_t crc = 0xffffffffu;
+    for (unsigned char byte : bytes) {
+        crc ^= byte;
+        for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return crc ^ 0xffffffffu;
+}
+
+// A valid header that decodes (libpng reads the IHDR only) and claims
+// 100000 x 100000 pixels in a file of a few dozen bytes.
+std::string png_claiming(std::uint32_t width, std::uint32_t height) {
+    auto big_endian = [](std::uint32_t v) { return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; };
+    auto chunk = [&](const std::string& type, const std::string& data) {
+        const std::string body = type + data;
+        return big_endian(std::uint32_t(data.size())) + body + big_endian(png_crc(body));
+    };
+    const std::string header = big_endian(width) + big_endian(height) + std::string("\x08\x02\x00\x00\x00", 5);
+    // The header is read up to the first IDAT, whose data is never reached.
+    return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", header) + chunk("IDAT", "not zlib") + chunk("IEND", "");
+}
+
+TEST_F(BadImages, TextureCutShortOrCorruptIsAnErrorNotABlackTexture) {
+    for (bool truncate : {true, false}) {
+        CommandResult result = render_with_image(damaged_texture(truncate));
+        EXPECT_EQ(result.exit_code, 1) << result.output;
+        EXPECT_NE(result.output.find("scene.pov:4:"), std::string::npos) << result.output;
+        EXPECT_NE(result.output.find("cannot read image '"), std::string::npos) << result.output;
+        EXPECT_NE(result.output.find("texture.png': "), std::string::npos) << result.output;
+        EXPECT_FALSE(fs::exists(output()));
+    }
+}
+
+TEST_F(BadImages, HeaderClaimingHugeSizeIsRefusedBeforeDecoding) {
+    CommandResult result = render_with_image(png_claiming(100000, 100000));
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_NE(result.output.find("claims 100000 x 100000 pixels"), std::string::npos) << result.output;
     EXPECT_FALSE(fs::exists(output()));
 }
 

@@ -1,8 +1,11 @@
 // POV-Ray's image_map through OpenImageIO's TextureSystem, with POV's
 // map_type projections.
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
+#include <OpenImageIO/imageio.h>
 #include <OpenImageIO/texture.h>
 
 #include "lancer/scene_error.h"
@@ -58,6 +61,53 @@ class ImageTextureSystem {
 
 namespace {
 
+// OpenImageIO's messages span lines; one diagnostic is one line.
+std::string one_line(std::string text) {
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at)) text.replace(at, 1, "; ");
+    return text;
+}
+
+// Textures larger than this many pixels are refused before any decoding:
+// a file of a few hundred bytes can claim 100000 x 100000 in its header.
+constexpr double kMaxTexturePixels = 16384.0 * 16384.0;
+
+// Decodes the whole file once, a band of rows at a time (memory bounded by
+// the band), so a truncated or corrupt image is an error naming it rather
+// than a texture that reads black, and a float image holding NaN or
+// infinite texels is refused before it reaches the film.
+void verify_image_decodes(const std::string& path, const sg::ImageMap& map) {
+    auto fail = [&](const std::string& why) {
+        throw SceneError(map.location, "cannot read image '" + map.path + "': " + one_line(why));
+    };
+    auto input = OIIO::ImageInput::open(path);
+    if (!input) fail(OIIO::geterror());
+    const OIIO::ImageSpec spec = input->spec();
+    const int channels = spec.nchannels;
+    if (channels < 1 || spec.width < 1 || spec.height < 1) fail("it has no pixels");
+    const bool floating = spec.format.is_floating_point();
+    std::vector<float> values;
+    auto check = [&](std::size_t count) {
+        if (!floating) return;
+        for (std::size_t i = 0; i < count; ++i)
+            if (!std::isfinite(values[i])) fail("it holds texels that are NaN or infinite");
+    };
+    if (spec.tile_width > 0) {
+        values.resize(std::size_t(spec.width) * spec.height * std::max(spec.depth, 1) * channels);
+        if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, values.data())) fail(input->geterror());
+        check(values.size());
+        return;
+    }
+    constexpr int kBandRows = 64;
+    values.resize(std::size_t(spec.width) * kBandRows * channels);
+    for (int y = spec.y; y < spec.y + spec.height; y += kBandRows) {
+        const int end = std::min(y + kBandRows, spec.y + spec.height);
+        if (!input->read_scanlines(0, 0, y, end, 0, 0, channels, OIIO::TypeDesc::FLOAT, values.data()))
+            fail(input->geterror());
+        check(std::size_t(spec.width) * (end - y) * channels);
+    }
+}
+
 class ImageTexture final : public Texture {
   public:
     ImageTexture(const sg::Pigment& pigment, const TextureSpaces& spaces, std::shared_ptr<ImageTextureSystem> images)
@@ -70,9 +120,14 @@ class ImageTexture final : public Texture {
         OIIO::ImageSpec spec;
         if (m_map.path.empty() || !system.get_imagespec(m_filename, 0, spec)) {
             std::string why = system.geterror();
-            throw SceneError(m_map.location,
-                             "cannot read image '" + m_map.path + "'" + (why.empty() ? std::string() : ": " + why));
+            throw SceneError(m_map.location, "cannot read image '" + m_map.path + "'" +
+                                                 (why.empty() ? std::string() : ": " + one_line(why)));
         }
+        if (double(spec.width) * double(spec.height) * double(std::max(spec.depth, 1)) > kMaxTexturePixels)
+            throw SceneError(m_map.location, "image '" + m_map.path + "' claims " + std::to_string(spec.width) + " x " +
+                                                 std::to_string(spec.height) +
+                                                 " pixels: more than lancer's limit of 16384 x 16384");
+        verify_image_decodes(m_filename.string(), m_map);
         m_channels = glm::clamp(spec.nchannels, 1, 4);
         // 8- and 16-bit files are display-encoded; float files are linear.
         m_decode_srgb = m_map.srgb && !spec.format.is_floating_point();
