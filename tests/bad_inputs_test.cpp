@@ -108,6 +108,33 @@ TEST_F(BadFiles, FaceIndexZeroOrTooNegative) {
     EXPECT_FALSE(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -9 1 2\n").empty());
 }
 
+// tinyobjloader reads face indices into int: 2^32 + 4 wrapped to vertex 4.
+TEST_F(BadFiles, FaceIndexBeyondIntIsAnError) {
+    const std::string message = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 4294967300\n");
+    EXPECT_NE(message.find("line 5: face index 4294967300 is out of range"), std::string::npos) << message;
+    const std::string slashed = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/99999999999 3/1\n");
+    EXPECT_NE(slashed.find("out of range"), std::string::npos) << slashed;
+}
+
+// Triangulating a polygon takes time growing with the square of its size:
+// a face of 200,000 vertices took 55 s. Faces are capped at 256 vertices.
+TEST_F(BadFiles, HugeFaceIsRefusedQuickly) {
+    std::string obj;
+    std::string face = "f";
+    constexpr int kVertices = 200000;
+    for (int i = 0; i < kVertices; ++i) {
+        const double angle = 6.283185307179586 * i / kVertices;
+        obj += "v " + std::to_string(std::cos(angle)) + " " + std::to_string(std::sin(angle)) + " 0\n";
+        face += " " + std::to_string(i + 1);
+    }
+    const std::string message = obj_error(obj + face + "\n");
+    EXPECT_NE(message.find("a face of 200000 vertices"), std::string::npos) << message;
+    std::string small = "f";
+    for (int i = 1; i <= 256; ++i) small += " " + std::to_string(i);
+    ParseResult result = parse_obj(obj + small + "\n");
+    EXPECT_TRUE(result.ok()) << all_text(result);
+}
+
 TEST_F(BadFiles, NegativeIndicesCountFromTheEnd) {
     ParseResult result = parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n");
     ASSERT_TRUE(result.ok()) << all_text(result);

@@ -19,6 +19,53 @@ sg::TriangleMesh& mutable_mesh(ShapeValue& shape) {
     return const_cast<sg::TriangleMesh&>(*std::get<sg::MeshRef>(shape.object.shape));
 }
 
+// Vertices one OBJ face may have: tinyobjloader triangulates a polygon in
+// time that grows with the square of its size (200,000 vertices took 55 s).
+constexpr std::size_t kMaxObjFaceVertices = 256;
+
+// The first face line tinyobjloader would misread, as "line N: why", or
+// empty: a face with more than kMaxObjFaceVertices vertices, or an index
+// outside int (tinyobjloader wraps 2^32 + 4 to 4).
+std::string bad_obj_face(const std::string& text) {
+    std::size_t line_number = 0;
+    for (std::size_t start = 0; start < text.size();) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        ++line_number;
+        std::size_t i = start;
+        while (i < end && (text[i] == ' ' || text[i] == '\t')) ++i;
+        if (i + 1 < end && text[i] == 'f' && (text[i + 1] == ' ' || text[i + 1] == '\t')) {
+            std::size_t vertices = 0;
+            for (i += 1; i < end;) {
+                while (i < end && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r')) ++i;
+                if (i >= end || text[i] == '#') break;
+                ++vertices;
+                // v, v/t, v//n, v/t/n: every number must fit an int.
+                while (i < end && text[i] != ' ' && text[i] != '\t' && text[i] != '\r') {
+                    std::size_t digits = 0;
+                    double value = 0.0;
+                    if (text[i] == '-' || text[i] == '+') ++i;
+                    for (; i < end && text[i] >= '0' && text[i] <= '9'; ++i, ++digits)
+                        value = value * 10.0 + (text[i] - '0');
+                    if (digits > 0 && value > 2147483647.0)
+                        return "line " + std::to_string(line_number) + ": face index " +
+                               text.substr(i - digits, digits) + " is out of range";
+                    if (i < end && text[i] == '/')
+                        ++i;
+                    else if (i < end && text[i] != ' ' && text[i] != '\t' && text[i] != '\r')
+                        ++i;
+                }
+            }
+            if (vertices > kMaxObjFaceVertices)
+                return "line " + std::to_string(line_number) + ": a face of " + std::to_string(vertices) +
+                       " vertices (lancer takes at most " + std::to_string(kMaxObjFaceVertices) +
+                       " per face; split it into smaller polygons)";
+        }
+        start = end + 1;
+    }
+    return {};
+}
+
 // Why `text` cannot be an OBJ/MTL file, or null when it may be one.
 const char* not_text(const std::string& text) {
     if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF')))
@@ -364,6 +411,10 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
     if (!read_file(found.string(), where.begin, "OBJ file", text)) return shape;
     if (const char* problem = not_text(text)) {
         error(where.begin, "OBJ file \"" + name + "\" " + problem);
+        return shape;
+    }
+    if (const std::string face = bad_obj_face(text); !face.empty()) {
+        error(where.begin, "OBJ \"" + name + "\", " + face);
         return shape;
     }
 
