@@ -270,6 +270,23 @@ TEST_F(BadImages, HeaderClaimingHugeSizeIsRefusedBeforeDecoding) {
 
 // ---------------------------------------------------------- resource limits
 
+// A string doubled in a loop, or grown by a recursive macro, reached 7 GB
+// before std::bad_alloc with no location; concat() now counts against one
+// budget and stops at the call that crosses it.
+TEST(ResourceLimits, GrowingStringsStopAtALocatedError) {
+    ParseOptions options;
+    options.max_string_bytes = 1 << 20;
+    for (const char* scene :
+         {"#declare S = \"ab\";\n#while (1)\n  #declare S = concat(S, S);\n#end\n",
+          "#macro Grow(S, N) #if (N > 0) Grow(concat(S, S), N - 1) #end #end\nGrow(\"abc\", 150)\n"}) {
+        ParseResult result = parse_scene_string(scene, "grow.pov", options);
+        ASSERT_FALSE(result.ok()) << scene;
+        EXPECT_NE(all_text(result).find("grow.pov:"), std::string::npos) << all_text(result);
+        EXPECT_NE(all_text(result).find("strings have grown past 1 MiB"), std::string::npos) << all_text(result);
+    }
+    EXPECT_TRUE(parse_scene_string("#declare S = concat(\"a\", \"b\");", "fine.pov", options).ok());
+}
+
 TEST(ResourceLimits, MaxTraceLevelOutOfRange) {
     ParseResult result = parse_scene_string("global_settings { max_trace_level 1e9 }", "limits.pov");
     ASSERT_FALSE(result.ok());

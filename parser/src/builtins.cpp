@@ -203,7 +203,22 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
 
     // String functions.
     if (name == "concat") {
+        std::size_t length = 0;
+        for (size_t i = 0; i < args.size(); ++i) length += c.s(i).size();
+        // Strings are the one value a scene can grow without bound (a
+        // #while that doubles one, a recursive macro that extends one):
+        // every concat counts against one budget for the whole parse.
+        m_string_bytes += length;
+        if (m_string_bytes > std::size_t(m_options.max_string_bytes)) {
+            error(where.begin, "the scene's strings have grown past " +
+                                   std::to_string(m_options.max_string_bytes >> 20) +
+                                   " MiB in all (ParseOptions::max_string_bytes): a loop or recursive macro that "
+                                   "keeps concatenating?");
+            abort_parse();
+            return Value::string("");
+        }
         std::string r;
+        r.reserve(length);
         for (size_t i = 0; i < args.size(); ++i) r += c.s(i);
         return Value::string(r);
     }

@@ -294,6 +294,7 @@ class Evaluator {
     std::shared_ptr<sg::Material> m_default_texture;
     bool m_saw_version = false;
     bool m_saw_assumed_gamma = false;
+    std::size_t m_string_bytes = 0;   // produced by concat() so far (ParseOptions::max_string_bytes)
     double m_language_version = 3.7;  // POV-Ray's default without #version
     void settle_version_defaults();
     bool m_saw_camera = false;

@@ -58,6 +58,9 @@ struct ParseOptions {
     long max_objects = 2'000'000;
     // Size of one scene, include or OBJ/MTL file; checked before reading.
     long long max_file_bytes = 1LL << 30;
+    // Bytes all of the scene's concat() calls may produce, together: a
+    // string doubled in a loop reached 7 GB before this bound.
+    long long max_string_bytes = 64LL << 20;
 };
 
 struct ParseResult {
