@@ -3,8 +3,10 @@
 # checks the C++ formatting, and builds with warnings as errors first, so it
 # works on a fresh machine), then a sanitizer stage: a
 # subset of the suite built with AddressSanitizer + UBSan in build-asan
-# (tests/sanitize/CMakeLists.txt lists it; docs/robustness.md says why).
-# LANCER_SKIP_SANITIZE=1 skips that stage.
+# (tests/sanitize/CMakeLists.txt lists it; docs/robustness.md says why),
+# then a short fuzzing stage: each libFuzzer target for LANCER_FUZZ_SECONDS
+# (default 30) from the seed corpora, failing on any crash, leak or hang.
+# LANCER_SKIP_SANITIZE=1 and LANCER_SKIP_FUZZ=1 skip those stages.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup-deps.sh
@@ -31,4 +33,16 @@ if [ "${LANCER_SKIP_SANITIZE:-0}" != 1 ]; then
   UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
     ctest --test-dir build-asan -L sanitize --output-on-failure -j "$(nproc)"
   echo "test.sh: sanitizer stage took $((SECONDS - start)) s"
+fi
+
+if [ "${LANCER_SKIP_FUZZ:-0}" != 1 ]; then
+  start=$SECONDS
+  for target in scene obj; do
+    # A finding makes libFuzzer exit non-zero and leaves the input in
+    # build-fuzz/artifacts/<target>/ (docs/robustness.md says how to replay it).
+    log="${TMPDIR:-/tmp}/lancer-fuzz-$target.log"
+    tests/fuzz/run.sh "$target" "${LANCER_FUZZ_SECONDS:-30}" >"$log" 2>&1 ||
+      { tail -40 "$log"; echo "test.sh: fuzz_$target found a failing input (log: $log)" >&2; exit 1; }
+  done
+  echo "test.sh: fuzzing stage took $((SECONDS - start)) s"
 fi
