@@ -178,6 +178,23 @@ TEST_F(BadFiles, GoodMtlStillMaps) {
     EXPECT_EQ(mesh.materials[0]->pigment.color.rgb, sg::Vec3(1, 0, 0));
 }
 
+// `Ks 1e999` is infinity to tinyobjloader and blackened the object with
+// only a count of dropped samples; `Kd -5` did the same.
+TEST_F(BadFiles, MtlValuesMustBeFiniteAndReflectancesNonNegative) {
+    temp.write("inf.mtl", "newmtl shiny\nKd 1 1 1\nKs 1e999 0 0\n");
+    ParseResult infinite = parse_obj("mtllib inf.mtl\nusemtl shiny\n" + kTriangle);
+    ASSERT_FALSE(infinite.ok());
+    EXPECT_NE(all_text(infinite).find("scene.pov:2:12: error: OBJ \"model.obj\": material 'shiny': Ks is not a finite"),
+              std::string::npos)
+        << all_text(infinite);
+    temp.write("neg.mtl", "newmtl dark\nKd -5 0.5 1\n");
+    ParseResult negative = parse_obj("mtllib neg.mtl\nusemtl dark\n" + kTriangle);
+    ASSERT_TRUE(negative.ok()) << all_text(negative);
+    EXPECT_NE(all_text(negative).find("material 'dark': Kd has a negative value"), std::string::npos)
+        << all_text(negative);
+    EXPECT_EQ(only_mesh(*negative.scene).materials[0]->pigment.color.rgb, sg::Vec3(0, 0.5, 1));
+}
+
 TEST_F(BadFiles, ObjLargerThanTheLimit) {
     temp.write("model.obj", kTriangle);
     ParseOptions options;

@@ -455,7 +455,36 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         mesh->uvs.emplace_back(attrib.texcoords[i], attrib.texcoords[i + 1]);
 
     // MTL materials, mapped onto POV's model (documented in docs/scene-language.md).
-    for (const auto& m : obj_materials) {
+    for (auto& m : obj_materials) {
+        // tinyobjloader reads 1e999 as infinity and keeps any sign: a NaN or
+        // infinite value is an error, a negative reflectance a warning (and 0).
+        const std::string material_name = "OBJ \"" + name + "\": material '" + m.name + "': ";
+        struct Field {
+            const char* key;
+            float* values;
+            int count;
+            bool reflectance;
+        };
+        const Field fields[] = {{"Kd", m.diffuse, 3, true},     {"Ka", m.ambient, 3, true},
+                                {"Ks", m.specular, 3, true},    {"Ke", m.emission, 3, true},
+                                {"Ns", &m.shininess, 1, false}, {"d", &m.dissolve, 1, false},
+                                {"Ni", &m.ior, 1, false}};
+        for (const Field& field : fields) {
+            for (int k = 0; k < field.count; ++k) {
+                if (!std::isfinite(field.values[k])) {
+                    error(where.begin, material_name + field.key + " is not a finite number");
+                    return shape;
+                }
+            }
+            if (!field.reflectance) continue;
+            bool negative = false;
+            for (int k = 0; k < field.count; ++k)
+                if (field.values[k] < 0.0f) {
+                    negative = true;
+                    field.values[k] = 0.0f;
+                }
+            if (negative) warning(where.begin, material_name + field.key + " has a negative value; it is taken as 0");
+        }
         auto material = std::make_shared<sg::Material>();
         material->name = m.name;
         material->location = where.begin;
