@@ -3,6 +3,10 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "lancer/host/temporary_file.h"
 
 namespace lancer::app {
 namespace fs = std::filesystem;
@@ -57,6 +61,46 @@ std::string check_output_files(const std::vector<OutputFile>& outputs, const std
                    "' is not writable";
     }
     return {};
+}
+
+std::string check_report_folder(const std::string& folder, const std::vector<std::string>& inputs) {
+    const fs::path report = place_of(folder);
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        const fs::path input = place_of(inputs[i]);
+        const fs::path relative = input.lexically_relative(report);
+        if (relative.empty() || *relative.begin() == "..") continue;
+        const std::string first = relative.begin()->string();
+        const std::string name = relative.filename().string();
+        const bool written = first == "renders" || first == "heatmaps" ||
+                             (relative == relative.filename() &&
+                              (name == "reference.png" || name == "results.csv" || name == "index.html" ||
+                               (name.rfind("error_vs_time_", 0) == 0 && input.extension() == ".svg")));
+        if (written)
+            return "refusing to write the report into '" + folder + "': it would replace " +
+                   (i == 0 ? std::string("the scene file") : "'" + inputs[i] + "', which the scene reads");
+    }
+    return {};
+}
+
+void write_text_file(const std::string& path, const std::string& text, const std::string& what) {
+    const fs::path target(path);
+    const fs::path temporary = temporary_path_for(target);
+    std::error_code ignored;
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out << text;
+        out.close();
+        if (!out) {
+            fs::remove(temporary, ignored);
+            throw std::runtime_error("cannot write " + what + " '" + path + "'");
+        }
+    }
+    std::error_code renamed;
+    fs::rename(temporary, target, renamed);
+    if (renamed) {
+        fs::remove(temporary, ignored);
+        throw std::runtime_error("cannot write " + what + " '" + path + "': " + renamed.message());
+    }
 }
 
 }  // namespace lancer::app

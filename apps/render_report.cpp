@@ -2,7 +2,7 @@
 // so the three never disagree.
 #include "render_report.h"
 
-#include "lancer/host/temporary_file.h"
+#include "output_files.h"
 
 #include <unistd.h>
 
@@ -104,25 +104,7 @@ std::string stats_json(const RenderReport& report) {
 }
 
 void write_stats_json(const RenderReport& report, const std::string& path) {
-    const fs::path target(path);
-    const fs::path temporary = temporary_path_for(target);
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << stats_json(report);
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            fs::remove(temporary, ignored);
-            throw std::runtime_error("cannot write stats '" + path + "'");
-        }
-    }
-    std::error_code renamed;
-    fs::rename(temporary, target, renamed);
-    if (renamed) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        throw std::runtime_error("cannot write stats '" + path + "': " + renamed.message());
-    }
+    app::write_text_file(path, stats_json(report), "stats");
 }
 
 std::map<std::string, std::string> stats_metadata(const RenderReport& report) {

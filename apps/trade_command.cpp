@@ -28,6 +28,7 @@
 #include "lancer/host/rgb_image.h"
 #include "lancer/parser.h"
 #include "lancer/scene_error.h"
+#include "output_files.h"
 #include "reference_cache.h"
 #include "render_job.h"
 #include "trade_ladder.h"
@@ -191,6 +192,12 @@ bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
         prepared.width = arguments.quick ? int(std::lround(std::sqrt(kQuickPixels * aspect)))
                                          : std::min(scene_width, kMaxDefaultWidth);
         prepared.height = std::max(1, int(std::lround(prepared.width / aspect)));
+    }
+    std::vector<std::string> inputs{arguments.scene};
+    inputs.insert(inputs.end(), graph->input_files.begin(), graph->input_files.end());
+    if (const std::string refused = check_report_folder(arguments.out, inputs); !refused.empty()) {
+        print_error(refused);
+        return false;
     }
     warn_about_scene_for(*graph, "path");  // the reference every trade is measured against
     prepared.job = compile_job_scene(arguments.scene, std::move(*graph));
@@ -457,14 +464,14 @@ int run_trade(const TradeArguments& arguments) {
         progress.close();
 
         // The report.
-        std::ofstream(out / "results.csv") << results_csv(run);
+        write_text_file((out / "results.csv").string(), results_csv(run), "the results");
         std::vector<std::string> plots;
         for (const std::string metric : {"rmse", "rel_mse", "1-ssim"}) {
             const std::string file = "error_vs_time_" + std::string(metric == "1-ssim" ? "ssim" : metric) + ".svg";
-            std::ofstream(out / file) << error_plot_svg(run, metric);
+            write_text_file((out / file).string(), error_plot_svg(run, metric), "a plot");
             plots.push_back(file);
         }
-        std::ofstream(out / "index.html") << report_html(run, plots);
+        write_text_file((out / "index.html").string(), report_html(run, plots), "the report");
 
         const double total = std::chrono::duration<double>(Clock::now() - run_start).count();
         std::set<std::string> integrators;

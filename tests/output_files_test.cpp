@@ -123,6 +123,22 @@ TEST_F(OutputFiles, TemporariesOfDeadRendersAreRemovedAtTheNextStart) {
     EXPECT_TRUE(fs::exists(other));
 }
 
+// lancer trade writes results.csv, index.html, plots and images into its
+// folder: a scene that reads a file there under one of those names is
+// refused before anything renders.
+TEST_F(OutputFiles, TradeNeverWritesOverWhatTheSceneReads) {
+    const std::string csv = m_folder.write("results.csv", "#declare Size = 1;\n");
+    const std::string scene = m_folder.write("traded.pov",
+                                             "#include \"results.csv\"\n"
+                                             "camera { location <0, 0, -5> look_at 0 }\n"
+                                             "light_source { <5, 5, -5> color rgb 1 }\n"
+                                             "sphere { 0, Size }\n");
+    const CommandResult result = run_lancer("trade '" + scene + "' -o '" + m_folder.path().string() + "' --quick");
+    EXPECT_NE(result.exit_code, 0) << result.output;
+    EXPECT_CONTAINS(result.output, "refusing to write the report");
+    EXPECT_EQ(contents(csv), "#declare Size = 1;\n");
+}
+
 TEST_F(OutputFiles, AllowedOutputsAreWritten) {
     const CommandResult result = render("-o '" + in_folder("out.png") + "' --stats '" + in_folder("stats.json") + "'");
     ASSERT_EQ(result.exit_code, 0) << result.output;
