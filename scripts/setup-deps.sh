@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git ca-certificates clang-format
-  clang
+  clang libclang-rt-14-dev
   flex bison
   libglm-dev libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools

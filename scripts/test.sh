@@ -42,7 +42,7 @@ if [ "${LANCER_SKIP_FUZZ:-0}" != 1 ]; then
     # build-fuzz/artifacts/<target>/ (docs/robustness.md says how to replay it).
     log="${TMPDIR:-/tmp}/lancer-fuzz-$target.log"
     tests/fuzz/run.sh "$target" "${LANCER_FUZZ_SECONDS:-30}" >"$log" 2>&1 ||
-      { tail -40 "$log"; echo "test.sh: fuzz_$target found a failing input (log: $log)" >&2; exit 1; }
+      { tail -40 "$log"; echo "test.sh: fuzz_$target failed: a build error or a failing input (log: $log)" >&2; exit 1; }
   done
   echo "test.sh: fuzzing stage took $((SECONDS - start)) s"
 fi
