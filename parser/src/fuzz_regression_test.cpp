@@ -72,17 +72,6 @@ TEST(FuzzRegression, NestedLoopsStopAtTheObjectLimit) {
         << all_diagnostics(result);
 }
 
-// fuzz_scene found a macro recursing inside #debug's nested parse: each
-// level stacks a parser, which overflowed ASan's stack. At the default
-// depth limit the release build stops with the located depth error (the
-// fuzzer lowers the limit to 50 for ASan's larger frames).
-TEST(FuzzRegression, MacroRecursingInsideDebugStopsAtTheDepthLimit) {
-    ParseResult result = parse_scene_string("#macro F(N)#debug F(N + 1) #end\nF(0)\n", "recursion.pov");
-    ASSERT_FALSE(result.ok());
-    EXPECT_NE(all_diagnostics(result).find("recursion.pov:1:"), std::string::npos) << all_diagnostics(result);
-    EXPECT_NE(all_diagnostics(result).find("200"), std::string::npos) << all_diagnostics(result);
-}
-
 // #debug prints a message without a caret (its location has no column).
 TEST(FuzzRegression, DebugMessageHasNoCaret) {
     ParseResult result = parse_scene_string("#debug \"hello\"\nsphere { 0, 1 }\n", "debug.pov");
