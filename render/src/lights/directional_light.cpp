@@ -40,10 +40,7 @@ LightSample DirectionalLight::sample(const Vec3& p, const Vec2&) const {
     if (light.fade_power > 0.0f) {
         // POV fades by the signed distance to the plane; its magnitude
         // gives the same for the usual even powers and stays defined.
-        const double distance = std::fabs(reach);
-        attenuation *= light.fade_distance != 0.0f
-                           ? 2.0 / (1.0 + std::pow(distance / light.fade_distance, double(light.fade_power)))
-                           : std::pow(distance, -double(light.fade_power));
+        attenuation *= pov_fade(std::fabs(reach), light.fade_distance, light.fade_power);
     }
     s.radiance = light.irradiance * float(attenuation);
     if (!std::isfinite(max_component(s.radiance))) s.radiance = Color(std::numeric_limits<float>::max());

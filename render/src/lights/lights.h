@@ -73,6 +73,10 @@ class PovAreaLight final : public Light {
     PointLight m_center;
 };
 
+// POV-Ray's fade (Attenuate_Light), for fade_power > 0:
+// 2 / (1 + (d / fade_distance)^fade_power), or d^-fade_power without a distance.
+double pov_fade(double distance, float fade_distance, float fade_power);
+
 // 0 below `low`, 1 from `high` on, a cubic smooth step between (POV-Ray's
 // cubic_spline).
 double smooth_step(double low, double high, double x);

@@ -10,6 +10,11 @@ namespace lancer {
 PointLight::PointLight(const PointLightParameters& parameters, float scene_radius)
     : m_parameters(parameters), m_plain(parameters.is_plain()), m_scene_radius(std::max(scene_radius, 1e-6f)) {}
 
+double pov_fade(double distance, float fade_distance, float fade_power) {
+    return fade_distance != 0.0f ? 2.0 / (1.0 + std::pow(distance / fade_distance, double(fade_power)))
+                                 : std::pow(distance, -double(fade_power));
+}
+
 double smooth_step(double low, double high, double x) {
     if (x < low) return 0.0;
     if (x >= high) return 1.0;
@@ -56,9 +61,7 @@ LightSample sample_point_light(const PointLightParameters& light, const Vec3& p)
     const glm::dvec3 wi = to_light / distance;
     double attenuation;
     if (light.fade_power > 0.0f)
-        attenuation = light.fade_distance != 0.0f
-                          ? 2.0 / (1.0 + std::pow(distance / light.fade_distance, double(light.fade_power)))
-                          : std::pow(distance, -double(light.fade_power));
+        attenuation = pov_fade(distance, light.fade_distance, light.fade_power);
     else if (light.falloff == PointFalloff::InverseSquare)
         attenuation = 1.0 / (distance * distance);
     else
