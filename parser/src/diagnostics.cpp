@@ -144,7 +144,8 @@ std::string Evaluator::suggestion(const std::string& name) const {
     for (int k = Parser::symbol_kind::S_SPHERE; k < Parser::symbol_kind::YYNTOKENS; ++k)
         candidates.push_back(Parser::symbol_name(static_cast<Parser::symbol_kind_type>(k)));
     std::string best;
-    size_t best_distance = std::max<size_t>(2, name.size() / 3) + 1;
+    // Short names tolerate one edit: two would make "Nope" a "cone".
+    size_t best_distance = std::max<size_t>(1, name.size() / 3) + 1;
     for (const auto& candidate : candidates) {
         if (candidate == name) continue;
         size_t distance = edit_distance(name, candidate);

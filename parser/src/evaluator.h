@@ -121,6 +121,19 @@ class Evaluator {
     ShapePtr make_mesh2(const Edits<sg::TriangleMesh>& sections, const sg::SourceLocation& at);
     ShapePtr make_obj_mesh(const Value& file, const SourceRange& where, const sg::SourceLocation& at);
     ShapePtr make_union(const sg::SourceLocation& at);
+    // cylinder { base, cap, radius } reads (base, radius, cap, radius).
+    ShapePtr make_cone(const std::vector<Value>& values, const std::vector<SourceRange>& where, bool open,
+                       const sg::SourceLocation& at, bool cylinder);
+    ShapePtr make_torus(const Value& major, const SourceRange& wm, const Value& minor, const SourceRange& wn,
+                        const sg::SourceLocation& at);
+    ShapePtr make_disc(const std::vector<Value>& values, const std::vector<SourceRange>& where,
+                       const std::optional<std::pair<Value, SourceRange>>& hole, const sg::SourceLocation& at);
+    // ---- CSG (csg.cpp)
+    ShapePtr make_csg(sg::Object::Kind kind, const sg::SourceLocation& at);
+    void finish_csg(ShapeValue& shape);
+    std::function<void(ShapeValue&)> clip_edit(const std::vector<ShapePtr>& clips, const sg::SourceLocation& at);
+    std::function<void(ShapeValue&)> clip_by_bounds_edit(const sg::SourceLocation& at);
+    std::function<void(ShapeValue&)> bound_edit(const std::vector<ShapePtr>& bounds, const sg::SourceLocation& at);
     void apply(ShapePtr& shape, const Edits<ShapeValue>& edits);
     Value object_value(const ShapePtr& shape);
 

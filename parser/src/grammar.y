@@ -88,6 +88,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        ASSUMED_GAMMA "assumed_gamma" MAX_TRACE_LEVEL "max_trace_level" AMBIENT_LIGHT "ambient_light"
        ADC_BAILOUT "adc_bailout" CHARSET "charset" NUMBER_OF_WAVES "number_of_waves"
        NOISE_GENERATOR "noise_generator" MAX_INTERSECTIONS "max_intersections"
+       CONE "cone" TORUS "torus" DISC "disc" OPEN "open" STURM "sturm"
+       CLIPPED_BY "clipped_by" BOUNDED_BY "bounded_by"
 
 %nterm <Value> expr postfix primary colour colour_base declared_value string_value
 %nterm <std::vector<Value>> expr_list opt_args vector_items expr_seq macro_args macro_arg_list
@@ -115,7 +117,9 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <Edits<CameraSpec>> camera_items
 %nterm <std::function<void(CameraSpec&)>> camera_item
 %nterm <Edits<ParameterList>> param_items
-%nterm <bool> opt_bool opt_albedo
+%nterm <bool> opt_bool opt_albedo opt_open
+%nterm <std::vector<ShapePtr>> clip_objects
+%nterm <std::optional<std::pair<Value, SourceRange>>> opt_hole
 %nterm <int> colour_channel
 %nterm <Edits<sg::TriangleMesh>> mesh2_sections
 %nterm <std::function<void(sg::TriangleMesh&)>> mesh2_section
@@ -214,6 +218,14 @@ object
       { $$ = ev.make_plane($3, @3, $5, @5, LOC(@1)); ev.apply($$, $6); }
   | "box" "{" expr opt_comma expr object_mods "}"
       { $$ = ev.make_box($3, @3, $5, @5, LOC(@1)); ev.apply($$, $6); }
+  | "cylinder" "{" expr opt_comma expr opt_comma expr opt_open object_mods "}"
+      { $$ = ev.make_cone({$3, $7, $5, $7}, {@3, @7, @5, @7}, $8, LOC(@1), true); ev.apply($$, $9); }
+  | "cone" "{" expr opt_comma expr opt_comma expr opt_comma expr opt_open object_mods "}"
+      { $$ = ev.make_cone({$3, $5, $7, $9}, {@3, @5, @7, @9}, $10, LOC(@1), false); ev.apply($$, $11); }
+  | "torus" "{" expr opt_comma expr object_mods "}"
+      { $$ = ev.make_torus($3, @3, $5, @5, LOC(@1)); ev.apply($$, $6); }
+  | "disc" "{" expr opt_comma expr opt_comma expr opt_hole object_mods "}"
+      { $$ = ev.make_disc({$3, $5, $7}, {@3, @5, @7}, $8, LOC(@1)); ev.apply($$, $9); }
   | "triangle" "{" expr opt_comma expr opt_comma expr object_mods "}"
       { $$ = ev.make_triangle({$3, $5, $7}, {@3, @5, @7}, LOC(@1)); ev.apply($$, $8); }
   | "smooth_triangle" "{" expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr object_mods "}"
@@ -228,14 +240,11 @@ object
   | "union" "{" union_items "}"
       { $$ = ev.make_union(LOC(@1)); ev.apply($$, $3); }
   | "merge" "{" union_items "}"
-      { ev.warning(LOC(@1), "merge is treated as union (lancer has no CSG merge)");
-        $$ = ev.make_union(LOC(@1)); ev.apply($$, $3); }
+      { $$ = ev.make_csg(sg::Object::Kind::Merge, LOC(@1)); ev.apply($$, $3); ev.finish_csg(*$$); }
   | "difference" "{" union_items "}"
-      { ev.error(LOC(@1), "CSG difference is not supported by lancer (supported: union)");
-        $$ = ev.make_union(LOC(@1)); }
+      { $$ = ev.make_csg(sg::Object::Kind::Difference, LOC(@1)); ev.apply($$, $3); ev.finish_csg(*$$); }
   | "intersection" "{" union_items "}"
-      { ev.error(LOC(@1), "CSG intersection is not supported by lancer (supported: union)");
-        $$ = ev.make_union(LOC(@1)); }
+      { $$ = ev.make_csg(sg::Object::Kind::Intersection, LOC(@1)); ev.apply($$, $3); ev.finish_csg(*$$); }
   | "object" "{" object_ref object_mods "}"
       { $$ = $3; $$->object.location = LOC(@1); ev.apply($$, $4); }
   ;
@@ -265,7 +274,32 @@ object_mod
   | "double_illuminate" { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "double_illuminate"); }
   | "no_image"         { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_image"); }
   | "no_reflection"    { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_reflection"); }
-  | "inverse"          { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "inverse (it only matters for CSG)"); }
+  | "inverse"          { $$ = [](ShapeValue& s) { s.object.inverse = !s.object.inverse; }; }
+  | "sturm"            { $$ = [](ShapeValue&) {}; }
+  | "clipped_by" "{" clip_objects "}" { $$ = ev.clip_edit($3, LOC(@1)); }
+  | "clipped_by" "{" "bounded_by" "}" { $$ = ev.clip_by_bounds_edit(LOC(@1)); }
+  | "bounded_by" "{" clip_objects "}" { $$ = ev.bound_edit($3, LOC(@1)); }
+  | "bounded_by" "{" "clipped_by" "}" { $$ = [](ShapeValue&) {}; }
+  ;
+
+/* The objects of clipped_by or bounded_by, then transforms for all of them. */
+clip_objects
+  : %empty             {}
+  | clip_objects object { $$ = std::move($1); $$.push_back($2); }
+  | clip_objects OBJECT_ID { $$ = std::move($1); $$.push_back(std::make_shared<ShapeValue>(*$2.value.shape)); }
+  | clip_objects transform_item { $$ = std::move($1);
+                                  for (auto& o : $$) { auto moved = std::make_shared<ShapeValue>(*o);
+                                                       ev.apply(moved, {ev.transform_edit($2)}); o = moved; } }
+  ;
+
+opt_open
+  : %empty %prec OPT_EMPTY { $$ = false; }
+  | "open"             { $$ = true; }
+  ;
+
+opt_hole
+  : %empty %prec OPT_EMPTY {}
+  | "," expr           { $$ = std::make_pair($2, @2); }
   ;
 
 union_items

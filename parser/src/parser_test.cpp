@@ -325,9 +325,10 @@ TEST(ParserLights, CylinderLightIsAParallelBeamWithPovsDefaults) {
     EXPECT_TRUE(scene.lights[0].cylinder);
     expect_cone(scene.lights[0], 0.75, 1.0, 0.0);  // distances from the axis, for a cylinder
     expect_cone(scene.lights[1], 2.0, 3.0, 4.0);
-    // Outside a light_source, cylinder is the shape lancer does not have yet.
-    const Diagnostic shape = test::first_error("cylinder { 0, y, 1 }");
-    EXPECT_NE(shape.message.find("does not support"), std::string::npos) << shape.message;
+    // Outside a light_source, cylinder is the shape.
+    const auto shapes = parse_ok("cylinder { 0, y, 1 }");
+    ASSERT_EQ(shapes.objects.size(), 1u);
+    EXPECT_EQ(shapes.objects[0].kind, sg::Object::Kind::Cylinder);
 }
 
 TEST(ParserLights, LooksLikeJoinsTheSceneAndProjectedThroughStaysWithTheLight) {

@@ -1,6 +1,7 @@
 // Scene summary for `lancer check` and tests.
 #include "lancer/scene_summary.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <set>
 #include <sstream>
@@ -18,6 +19,13 @@ const char* object_kind_name(sg::Object::Kind kind) {
     case sg::Object::Kind::Mesh2: return "mesh2";
     case sg::Object::Kind::ObjMesh: return "obj_mesh";
     case sg::Object::Kind::Union: return "union";
+    case sg::Object::Kind::Cylinder: return "cylinder";
+    case sg::Object::Kind::Cone: return "cone";
+    case sg::Object::Kind::Torus: return "torus";
+    case sg::Object::Kind::Disc: return "disc";
+    case sg::Object::Kind::Merge: return "merge";
+    case sg::Object::Kind::Intersection: return "intersection";
+    case sg::Object::Kind::Difference: return "difference";
     }
     return "object";
 }
@@ -61,6 +69,16 @@ struct Walker {
                      sphere->center + sg::Vec3(sphere->radius));
         } else if (const auto* box = std::get_if<sg::Box>(&object.shape)) {
             grow_box(world_from_object, box->corner1, box->corner2);
+        } else if (const auto* cone = std::get_if<sg::Cone>(&object.shape)) {
+            const double r = std::max(cone->base_radius, cone->cap_radius);
+            grow_box(world_from_object, glm::min(cone->base, cone->cap) - sg::Vec3(r),
+                     glm::max(cone->base, cone->cap) + sg::Vec3(r));
+        } else if (const auto* torus = std::get_if<sg::Torus>(&object.shape)) {
+            const double outer = torus->major_radius + torus->minor_radius;
+            grow_box(world_from_object, sg::Vec3(-outer, -torus->minor_radius, -outer),
+                     sg::Vec3(outer, torus->minor_radius, outer));
+        } else if (const auto* disc = std::get_if<sg::Disc>(&object.shape)) {
+            grow_box(world_from_object, disc->center - sg::Vec3(disc->radius), disc->center + sg::Vec3(disc->radius));
         } else if (std::holds_alternative<sg::Plane>(object.shape)) {
             ++summary.unbounded_objects;
         } else if (const auto* mesh = std::get_if<sg::MeshRef>(&object.shape)) {

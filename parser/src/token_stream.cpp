@@ -55,18 +55,14 @@ const std::unordered_set<std::string>& builtin_names() {
 // Ignored POV blocks: swallowed with a warning so nothing is dropped silently.
 const std::unordered_set<std::string>& ignored_blocks() {
     static const std::unordered_set<std::string> names = {
-        "normal",     "photons", "radiosity",        "media",      "fog",        "sky_sphere", "rainbow", "bounded_by",
-        "clipped_by", "irid",    "interior_texture", "subsurface", "mm_per_unit"};
+        "normal",  "photons", "radiosity",        "media",      "fog",        "sky_sphere",
+        "rainbow", "irid",    "interior_texture", "subsurface", "mm_per_unit"};
     return names;
 }
 
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
-    static const std::unordered_set<std::string> names = {"cylinder",
-                                                          "cone",
-                                                          "torus",
-                                                          "disc",
-                                                          "blob",
+    static const std::unordered_set<std::string> names = {"blob",
                                                           "lathe",
                                                           "prism",
                                                           "sor",
@@ -357,11 +353,7 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
         m_last_undeclared = name;
         return make_symbol(Parser::token::TOK_UNDECLARED_ID, raw);
     }
-    // `cylinder` is a light's modifier inside light_source; elsewhere it is
-    // the shape, which lancer does not have yet.
-    const bool light_modifier = name == "cylinder" && !m_block_names.empty() && m_block_names.back() == "light_source";
-    if (keyword != keyword_table().end() && (name != "cylinder" || light_modifier))
-        return make_symbol(keyword->second, raw);
+    if (keyword != keyword_table().end()) return make_symbol(keyword->second, raw);
     if (builtin_names().count(name)) return make_symbol(Parser::token::TOK_BUILTIN, raw);
 
     // Constants and read-only built-in identifiers.

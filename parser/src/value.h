@@ -6,7 +6,9 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lancer/scene_graph.h"
@@ -19,6 +21,9 @@ namespace lancer::parse {
 struct ShapeValue {
     sg::Object object;
     std::vector<sg::Light> lights;
+    // bounded_by's objects, in the object's space: a hint lancer does not
+    // need, kept for `clipped_by { bounded_by }`.
+    std::vector<sg::Object> bounded_by;
 };
 
 // A camera block's settings as written; resolved in POV's fixed order

@@ -136,6 +136,30 @@ struct Box {
     Vec3 corner2{1.0};
 };
 
+// POV's cone { base, base_radius, cap, cap_radius [open] }; a cylinder is
+// one with equal radii.
+struct Cone {
+    Vec3 base{0.0};
+    Vec3 cap{0.0, 1.0, 0.0};
+    double base_radius = 1.0;
+    double cap_radius = 1.0;
+    bool open = false;  // no end discs
+};
+
+// POV's torus { major, minor }: about the y axis, in the plane y = 0.
+struct Torus {
+    double major_radius = 1.0;
+    double minor_radius = 0.25;
+};
+
+// POV's disc { center, normal, radius [, hole_radius] }.
+struct Disc {
+    Vec3 center{0.0};
+    Vec3 normal{0.0, 1.0, 0.0};  // unit
+    double radius = 1.0;
+    double hole_radius = 0.0;
+};
+
 // Indexed triangles. `triangle`, `smooth_triangle`, `mesh`, `mesh2` and
 // `obj_mesh` all produce one; a mesh reused through `object { Name }` is the
 // same shared_ptr, so the renderer can build it once and instance it.
@@ -156,14 +180,38 @@ struct TriangleMesh {
 using MeshRef = std::shared_ptr<const TriangleMesh>;
 
 struct Object;
+// The children of a union, merge, intersection or difference (the kind
+// says which; POV-Ray's CSG rules are in the renderer's csg.h).
 struct Group {
     std::vector<Object> children;
 };
 
 struct Object {
-    enum class Kind { Sphere, Plane, Box, Triangle, SmoothTriangle, Mesh, Mesh2, ObjMesh, Union };
+    enum class Kind {
+        Sphere,
+        Plane,
+        Box,
+        Triangle,
+        SmoothTriangle,
+        Mesh,
+        Mesh2,
+        ObjMesh,
+        Union,
+        Cylinder,
+        Cone,
+        Torus,
+        Disc,
+        Merge,
+        Intersection,
+        Difference
+    };
     Kind kind = Kind::Sphere;
-    std::variant<Sphere, Plane, Box, MeshRef, Group> shape;
+    std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc> shape;
+    // POV's inverse: inside and outside swapped (what CSG and clipped_by see).
+    bool inverse = false;
+    // POV's clipped_by: only the parts of this object's surface inside every
+    // one of these are kept (in this object's space).
+    std::vector<Object> clipped_by;
     // Maps this object's own space to its parent's space (the group it is
     // in, or the world). Children of a union compose with their parent's.
     Mat4 parent_from_object{1.0};

@@ -1,5 +1,5 @@
-// Analytic shapes (spheres, boxes, rectangle lights, planes) as Embree
-// user geometry: bounds, intersection of single rays and packets, shadow
+// Analytic shapes (spheres, boxes, rectangle lights, planes, every Shape
+// and CSG trees) as Embree user geometry: bounds, intersection of single rays and packets, shadow
 // queries, and the filter that lets shadow rays pass no_shadow meshes.
 #include <cmath>
 
@@ -20,14 +20,32 @@ static void ray_lane_to_object(const Instance& instance, RTCRayN* rays, unsigned
     ray_to_object(instance, org, dir, o, d);
 }
 
-bool intersect_analytic(const Instance& instance, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t,
-                        int& face) {
+bool intersect_analytic(const SceneData& data, std::uint32_t self, const DVec3& o, const DVec3& d, double t_min,
+                        double t_max, double& t, int& face, std::uint32_t& leaf) {
+    const Instance& instance = data.instances[self];
     face = 0;
+    leaf = self;
     switch (instance.kind) {
     case ShapeKind::Sphere: return intersect_sphere(instance.sphere, o, d, t_min, t_max, t);
     case ShapeKind::Box: return intersect_box(instance.box, o, d, t_min, t_max, t, face);
     case ShapeKind::Rectangle: return intersect_rectangle(instance.rectangle, o, d, t_min, t_max, t);
     case ShapeKind::Plane: return intersect_plane(instance.plane, o, d, t_min, t_max, t);
+    case ShapeKind::Analytic: {
+        ShapeCrossing crossing;
+        if (!instance.shape->nearest(o, d, t_min, t_max, crossing)) return false;
+        t = crossing.t;
+        face = crossing.face;
+        return true;
+    }
+    case ShapeKind::Csg: {
+        // A tree's leaves carry world placements: the root's is the identity.
+        CsgCrossing crossing;
+        if (!instance.csg->nearest(data.instances, o, d, t_min, t_max, crossing)) return false;
+        t = crossing.t;
+        face = crossing.face;
+        leaf = crossing.instance;
+        return true;
+    }
     default: return false;
     }
 }
@@ -43,7 +61,8 @@ void analytic_bounds(const RTCBoundsFunctionArguments* args) {
 // traced together (intersect_batch); valid[i] says which lanes are live.
 void analytic_intersect(const RTCIntersectFunctionNArguments* args) {
     const auto* group = static_cast<const AnalyticGroup*>(args->geometryUserPtr);
-    const Instance& instance = group->data->instances[group->instances[args->primID]];
+    const std::uint32_t index = group->instances[args->primID];
+    const Instance& instance = group->data->instances[index];
     const unsigned n = args->N;
     RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, n);
     RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
@@ -54,12 +73,15 @@ void analytic_intersect(const RTCIntersectFunctionNArguments* args) {
         ray_lane_to_object(instance, rays, n, i, o, d);
         double t;
         int face;
-        if (!intersect_analytic(instance, o, d, RTCRayN_tnear(rays, n, i), tfar, t, face)) continue;
+        std::uint32_t leaf;
+        if (!intersect_analytic(*group->data, index, o, d, RTCRayN_tnear(rays, n, i), tfar, t, face, leaf)) continue;
         const float t_float = float(t);
         if (!(t_float < tfar)) continue;
         tfar = t_float;
+        // u: the face; v: how far before its root the CSG leaf was listed
+        // (0 for other shapes; exact in a float for trees below 2^24 leaves).
         RTCHitN_u(hits, n, i) = float(face);
-        RTCHitN_v(hits, n, i) = 0.0f;
+        RTCHitN_v(hits, n, i) = float(index - leaf);
         RTCHitN_Ng_x(hits, n, i) = 0.0f;
         RTCHitN_Ng_y(hits, n, i) = 1.0f;
         RTCHitN_Ng_z(hits, n, i) = 0.0f;
@@ -71,7 +93,8 @@ void analytic_intersect(const RTCIntersectFunctionNArguments* args) {
 
 void analytic_occluded(const RTCOccludedFunctionNArguments* args) {
     const auto* group = static_cast<const AnalyticGroup*>(args->geometryUserPtr);
-    const Instance& instance = group->data->instances[group->instances[args->primID]];
+    const std::uint32_t index = group->instances[args->primID];
+    const Instance& instance = group->data->instances[index];
     if (!instance.casts_shadow) return;
     const unsigned n = args->N;
     RTCRayN* rays = args->ray;
@@ -81,7 +104,9 @@ void analytic_occluded(const RTCOccludedFunctionNArguments* args) {
         ray_lane_to_object(instance, rays, n, i, o, d);
         double t;
         int face;
-        if (intersect_analytic(instance, o, d, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t, face))
+        std::uint32_t leaf;
+        if (intersect_analytic(*group->data, index, o, d, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t, face,
+                               leaf))
             RTCRayN_tfar(rays, n, i) = -INFINITY;
     }
 }

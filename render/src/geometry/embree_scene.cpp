@@ -75,11 +75,11 @@ void EmbreeScene::build() {
     std::map<ShapeKind, AnalyticGroup*> groups;
     for (std::uint32_t index = 0; index < data.instances.size(); ++index) {
         const Instance& instance = data.instances[index];
-        if (instance.kind == ShapeKind::Plane) {
-            m_planes.push_back(index);
+        if (instance.csg_leaf || instance.kind == ShapeKind::Mesh) continue;
+        if (!instance.bounded) {
+            m_unbounded.push_back(index);
             continue;
         }
-        if (instance.kind == ShapeKind::Mesh) continue;
         AnalyticGroup*& group = groups[instance.kind];
         if (!group) {
             m_groups.push_back(std::make_unique<AnalyticGroup>());

@@ -8,8 +8,8 @@
 // rectangle lights) are one user geometry per kind whose primitive IDs index
 // the instance table; a mesh used once is a world-space triangle geometry;
 // a mesh used several times is built once in its own Embree scene and
-// instanced. Infinite planes live outside the BVH and are tested
-// analytically after it.
+// instanced. Unbounded shapes (planes, quadrics, CSG trees without a finite
+// box) live outside the BVH and are tested analytically after it.
 #pragma once
 
 #include <embree3/rtcore.h>
@@ -89,8 +89,11 @@ inline const std::vector<float>& traced_positions(const Instance& instance) {
 
 // Analytic shapes as Embree user geometry (analytic_geometry.cpp).
 void ray_to_object(const Instance& instance, const float org[3], const float dir[3], DVec3& o, DVec3& d);
-bool intersect_analytic(const Instance& instance, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t,
-                        int& face);
+// The nearest crossing of an analytic shape or CSG tree; `leaf` receives
+// the CSG leaf's instance index (the instance's own index for other kinds:
+// `self`).
+bool intersect_analytic(const SceneData& data, std::uint32_t self, const DVec3& o, const DVec3& d, double t_min,
+                        double t_max, double& t, int& face, std::uint32_t& leaf);
 void analytic_bounds(const RTCBoundsFunctionArguments* args);
 void analytic_intersect(const RTCIntersectFunctionNArguments* args);
 void analytic_occluded(const RTCOccludedFunctionNArguments* args);
@@ -130,6 +133,9 @@ class EmbreeScene final : public RenderScene {
     // The mesh instance Embree's answer names, or null (analytic or no hit).
     const Instance* mesh_instance_of(const EmbreeHit& found) const;
     void complete_analytic_hit(const Instance& instance, const Ray& ray, float t, int face, Hit& hit) const;
+    // The Hit on analytic instance `index` (or its CSG leaf `leaf`) at t.
+    void complete_instance_hit(std::uint32_t index, std::uint32_t leaf, const Ray& ray, float t, int face,
+                               Hit& hit) const;
     void complete_mesh_hit(const Instance& instance, bool faces_are_triangles, std::uint32_t primitive, float b1,
                            float b2, Hit& hit) const;
 
@@ -140,7 +146,7 @@ class EmbreeScene final : public RenderScene {
     std::map<const MeshData*, RTCScene> m_scene_of_mesh;
     std::vector<std::unique_ptr<AnalyticGroup>> m_groups;
     std::vector<GeometryEntry> m_geometries;  // by top-level geomID
-    std::vector<std::uint32_t> m_planes;      // instance indices
+    std::vector<std::uint32_t> m_unbounded;   // instance indices, outside the BVH
     std::string m_device_error;
     bool m_has_no_shadow_mesh = false;
     // By instance: a mesh whose triangle i is its face i (no polygons split).

@@ -129,8 +129,10 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
     case ShapeKind::Sphere: g = sphere_surface(instance.sphere, p); break;
     case ShapeKind::Box: g = box_surface(instance.box, p, face); break;
     case ShapeKind::Plane: g = plane_surface(instance.plane, p); break;
+    case ShapeKind::Analytic: g = instance.shape->surface(p, face); break;
     default: g = rectangle_surface(instance.rectangle, p); break;
     }
+    if (instance.flip_normal) g.normal = -g.normal;
     const DVec3 world = instance.placement.point_to_world(g.point);
     hit.position = Vec3(world);
     hit.position_error = instance.placement.world_point_error(g.point, world);
@@ -218,7 +220,7 @@ void EmbreeScene::complete_packet(const Ray* rays, const PacketAnswers& answers,
     // outside the BVH, that may lie nearer), is completed lane-parallel;
     // any other packet lane by lane.
     const PlainTriangles* plain_mesh[kPacketLanes] = {};  // lanes past `lanes` stay null
-    bool all_plain = m_planes.empty();
+    bool all_plain = m_unbounded.empty();
     for (int k = 0; k < lanes; ++k) {
         plain_mesh[k] = plain_triangles_of(answers.geometry[k], answers.instance[k]);
         all_plain = all_plain && plain_mesh[k] != nullptr;
@@ -237,30 +239,41 @@ const Instance* EmbreeScene::mesh_instance_of(const EmbreeHit& found) const {
     return entry.group ? nullptr : &m_data->instances[entry.instance];
 }
 
+void EmbreeScene::complete_instance_hit(std::uint32_t index, std::uint32_t leaf, const Ray& ray, float t, int face,
+                                        Hit& hit) const {
+    const Instance& instance = m_data->instances[index];
+    const Instance& surface = m_data->instances[leaf];
+    hit = Hit{};
+    hit.t = t;
+    complete_analytic_hit(surface, ray, t, face, hit);
+    hit.object_id = leaf;
+    hit.casts_shadow = instance.casts_shadow;
+    hit.emitter = emitter_of(surface, hit.material);
+}
+
 bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit) const {
-    // Planes are outside the BVH: test them against the nearest so far.
-    std::uint32_t plane_hit = kInvalidId;
-    double plane_t = double(found.tfar);
-    for (std::uint32_t index : m_planes) {
+    // Unbounded shapes are outside the BVH: test them against the nearest so far.
+    std::uint32_t unbounded_hit = kInvalidId, unbounded_leaf = 0;
+    int unbounded_face = 0;
+    double unbounded_t = double(found.tfar);
+    for (std::uint32_t index : m_unbounded) {
         const Instance& instance = m_data->instances[index];
         DVec3 o, d;
         const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
         const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
         ray_to_object(instance, org, dir, o, d);
         double t;
-        if (intersect_plane(instance.plane, o, d, found.tnear, plane_t, t)) {
-            plane_t = t;
-            plane_hit = index;
+        int face;
+        std::uint32_t leaf;
+        if (intersect_analytic(*m_data, index, o, d, found.tnear, unbounded_t, t, face, leaf)) {
+            unbounded_t = t;
+            unbounded_hit = index;
+            unbounded_leaf = leaf;
+            unbounded_face = face;
         }
     }
-    if (plane_hit != kInvalidId) {
-        const Instance& instance = m_data->instances[plane_hit];
-        hit = Hit{};
-        hit.t = float(plane_t);
-        complete_analytic_hit(instance, ray, float(plane_t), 0, hit);
-        hit.object_id = plane_hit;
-        hit.casts_shadow = instance.casts_shadow;
-        hit.emitter = instance.emitter;
+    if (unbounded_hit != kInvalidId) {
+        complete_instance_hit(unbounded_hit, unbounded_leaf, ray, float(unbounded_t), unbounded_face, hit);
         return true;
     }
     if (found.geometry == kInvalidId) return false;
@@ -269,19 +282,18 @@ bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit)
         return true;
     }
 
-    hit = Hit{};
-    hit.t = found.tfar;
     const unsigned top = found.instance != kInvalidId ? found.instance : found.geometry;
     const GeometryEntry& entry = m_geometries[top];
-    std::uint32_t index;
     if (entry.group) {
-        index = entry.group->instances[found.primitive];
-        complete_analytic_hit(m_data->instances[index], ray, found.tfar, int(found.u), hit);
-    } else {
-        index = entry.instance;
-        complete_mesh_hit(m_data->instances[index], m_faces_are_triangles[index] != 0, found.primitive, found.u,
-                          found.v, hit);
+        const std::uint32_t index = entry.group->instances[found.primitive];
+        complete_instance_hit(index, index - std::uint32_t(found.v), ray, found.tfar, int(found.u), hit);
+        return true;
     }
+    hit = Hit{};
+    hit.t = found.tfar;
+    const std::uint32_t index = entry.instance;
+    complete_mesh_hit(m_data->instances[index], m_faces_are_triangles[index] != 0, found.primitive, found.u, found.v,
+                      hit);
     const Instance& instance = m_data->instances[index];
     hit.object_id = index;
     hit.casts_shadow = instance.casts_shadow;

@@ -148,7 +148,7 @@ bool EmbreeScene::occluded(const Ray& ray) const {
     fill_embree_ray(ray, shadow_ray);
     rtcOccluded1(m_scene, &context.base, &shadow_ray);
     if (shadow_ray.tfar == -INFINITY) return true;
-    for (std::uint32_t index : m_planes) {
+    for (std::uint32_t index : m_unbounded) {
         const Instance& instance = m_data->instances[index];
         if (!instance.casts_shadow) continue;
         DVec3 o, d;
@@ -156,7 +156,9 @@ bool EmbreeScene::occluded(const Ray& ray) const {
         const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
         ray_to_object(instance, org, dir, o, d);
         double t;
-        if (intersect_plane(instance.plane, o, d, glm::max(ray.t_min, 0.0f), ray.t_max, t)) return true;
+        int face;
+        std::uint32_t leaf;
+        if (intersect_analytic(*m_data, index, o, d, glm::max(ray.t_min, 0.0f), ray.t_max, t, face, leaf)) return true;
     }
     return false;
 }

@@ -8,6 +8,8 @@
 #include <memory>
 #include <vector>
 
+#include "geometry/csg.h"
+#include "geometry/shape.h"
 #include "geometry/shapes.h"
 #include "lancer/camera.h"
 #include "lancer/render_scene.h"
@@ -17,7 +19,9 @@
 
 namespace lancer {
 
-enum class ShapeKind { Sphere, Box, Plane, Rectangle, Mesh };
+// Sphere, Box, Plane and Rectangle have direct code paths (shapes.h);
+// Analytic is any other Shape (shape.h); Csg a CSG tree's root (csg.h).
+enum class ShapeKind { Sphere, Box, Plane, Rectangle, Mesh, Analytic, Csg };
 
 // One distinct sg::TriangleMesh, in its own object space. The render scene
 // owns everything hits read: once compiled, nothing refers to the graph.
@@ -43,6 +47,14 @@ struct Instance {
     AnalyticBox box;
     AnalyticPlane plane;
     AnalyticRectangle rectangle;
+    // Analytic: the shape; a CSG leaf of any analytic kind has it too.
+    std::shared_ptr<const Shape> shape;
+    const CsgTree* csg = nullptr;  // Csg
+    // A CSG leaf is traced only through its tree's root: no BVH entry, no
+    // light of its own.
+    bool csg_leaf = false;
+    bool flip_normal = false;  // an inverted CSG leaf: its normal points into its solid
+    bool bounded = true;       // false for planes and unbounded shapes and trees
     const MeshData* mesh = nullptr;
     bool mesh_in_world = false;  // world_positions used instead of instancing
     std::vector<float> world_positions;
@@ -58,6 +70,7 @@ struct Instance {
 struct SceneData {
     std::vector<Instance> instances;
     std::vector<std::unique_ptr<MeshData>> meshes;
+    std::vector<std::unique_ptr<CsgTree>> csg_trees;
     TextureSpaces texture_spaces;  // by object id
     std::unique_ptr<TextureFactory> texture_factory;
     std::vector<std::unique_ptr<Texture>> textures;

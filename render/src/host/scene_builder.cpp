@@ -163,41 +163,151 @@ class Builder {
             // lives in the space of the object it was attached to.
             const DMat4 owner = object.material ? world_from_object : inherited_owner;
             const bool object_no_shadow = no_shadow || object.no_shadow;
-            if (const auto* group = std::get_if<sg::Group>(&object.shape)) {
+            const bool plain_union =
+                object.kind == sg::Object::Kind::Union && !object.inverse && object.clipped_by.empty();
+            if (const auto* group = std::get_if<sg::Group>(&object.shape); group && plain_union) {
                 add_objects(group->children, world_from_object, material, owner, object_no_shadow);
                 continue;
             }
-            Instance instance;
-            instance.placement = Placement::from(world_from_object);
-            instance.material = material_for(material);
-            instance.casts_shadow = !object_no_shadow;
-            instance.location = object.location;
-            if (const auto* sphere = std::get_if<sg::Sphere>(&object.shape)) {
-                instance.kind = ShapeKind::Sphere;
-                instance.sphere = {sphere->center, std::fabs(sphere->radius)};
-                const DVec3 r(instance.sphere.radius);
-                world_bounds(instance.placement, sphere->center - r, sphere->center + r, instance.bounds_lower,
-                             instance.bounds_upper);
-            } else if (const auto* box = std::get_if<sg::Box>(&object.shape)) {
-                instance.kind = ShapeKind::Box;
-                instance.box = {glm::min(box->corner1, box->corner2), glm::max(box->corner1, box->corner2)};
-                world_bounds(instance.placement, instance.box.lower, instance.box.upper, instance.bounds_lower,
-                             instance.bounds_upper);
-            } else if (const auto* plane = std::get_if<sg::Plane>(&object.shape)) {
-                instance.kind = ShapeKind::Plane;
-                const double length = glm::length(plane->normal);
-                if (!(length > 0.0)) throw SceneError(object.location, "plane normal has zero length");
-                instance.plane = {plane->normal / length, plane->distance};
-            } else if (const auto* mesh_ref = std::get_if<sg::MeshRef>(&object.shape)) {
-                if (!*mesh_ref) continue;
-                instance.kind = ShapeKind::Mesh;
-                const MeshData* mesh = mesh_data(*mesh_ref, object.location);
-                instance.mesh = mesh;
-                instance.mesh_in_world = m_mesh_uses[mesh_ref->get()] <= 1;
-                add_mesh_details(instance, *mesh);
+            // CSG, or an object that an inversion or clip makes one.
+            if (std::holds_alternative<sg::Group>(object.shape) || object.inverse || !object.clipped_by.empty()) {
+                add_csg(object, world_from_parent, inherited, inherited_owner, no_shadow);
+                continue;
             }
+            Instance instance;
+            if (!make_leaf(object, world_from_object, material_for(material), object_no_shadow, instance)) continue;
             push_instance(std::move(instance), glm::inverse(owner));
         }
+    }
+
+    // The Instance of a leaf object (no group); false for an empty mesh.
+    bool make_leaf(const sg::Object& object, const DMat4& world_from_object, const Material* material, bool no_shadow,
+                   Instance& instance) {
+        instance.placement = Placement::from(world_from_object);
+        instance.material = material;
+        instance.casts_shadow = !no_shadow;
+        instance.location = object.location;
+        if (const auto* sphere = std::get_if<sg::Sphere>(&object.shape)) {
+            instance.kind = ShapeKind::Sphere;
+            instance.sphere = {sphere->center, std::fabs(sphere->radius)};
+            const DVec3 r(instance.sphere.radius);
+            world_bounds(instance.placement, sphere->center - r, sphere->center + r, instance.bounds_lower,
+                         instance.bounds_upper);
+        } else if (const auto* box = std::get_if<sg::Box>(&object.shape)) {
+            instance.kind = ShapeKind::Box;
+            instance.box = {glm::min(box->corner1, box->corner2), glm::max(box->corner1, box->corner2)};
+            world_bounds(instance.placement, instance.box.lower, instance.box.upper, instance.bounds_lower,
+                         instance.bounds_upper);
+        } else if (const auto* plane = std::get_if<sg::Plane>(&object.shape)) {
+            instance.kind = ShapeKind::Plane;
+            instance.bounded = false;
+            const double length = glm::length(plane->normal);
+            if (!(length > 0.0)) throw SceneError(object.location, "plane normal has zero length");
+            instance.plane = {plane->normal / length, plane->distance};
+        } else if (const auto* mesh_ref = std::get_if<sg::MeshRef>(&object.shape)) {
+            if (!*mesh_ref) return false;
+            instance.kind = ShapeKind::Mesh;
+            const MeshData* mesh = mesh_data(*mesh_ref, object.location);
+            instance.mesh = mesh;
+            instance.mesh_in_world = m_mesh_uses[mesh_ref->get()] <= 1;
+            add_mesh_details(instance, *mesh);
+        } else {
+            instance.kind = ShapeKind::Analytic;
+            instance.shape = analytic_shape(object);
+            DVec3 lower, upper;
+            instance.bounded = instance.shape->bounds(lower, upper);
+            if (instance.bounded)
+                world_bounds(instance.placement, lower, upper, instance.bounds_lower, instance.bounds_upper);
+        }
+        return true;
+    }
+
+    static std::shared_ptr<const Shape> analytic_shape(const sg::Object& object) {
+        if (const auto* cone = std::get_if<sg::Cone>(&object.shape))
+            return make_cone_shape(ConeParameters{cone->base, cone->cap, std::fabs(cone->base_radius),
+                                                  std::fabs(cone->cap_radius), cone->open});
+        if (const auto* torus = std::get_if<sg::Torus>(&object.shape))
+            return make_torus_shape(std::fabs(torus->major_radius), std::fabs(torus->minor_radius));
+        if (const auto* disc = std::get_if<sg::Disc>(&object.shape))
+            return make_disc_shape(DiscParameters{disc->center, glm::normalize(disc->normal), std::fabs(disc->radius),
+                                                  std::fabs(disc->hole_radius)});
+        throw SceneError(object.location, "lancer has no renderer for this kind of object");
+    }
+
+    // A CSG object (or one an inversion or clip makes one): its leaves,
+    // then the root Embree sees (csg.h).
+    void add_csg(const sg::Object& object, const DMat4& world_from_parent, const sg::MaterialRef& inherited,
+                 const DMat4& inherited_owner, bool no_shadow) {
+        auto tree = std::make_unique<CsgTree>();
+        tree->root = add_csg_node(*tree, object, world_from_parent, inherited, inherited_owner, no_shadow, false);
+        tree->compute_bounds(m_data->instances);
+        const CsgNode& root = tree->nodes[tree->root];
+        Instance instance;
+        instance.kind = ShapeKind::Csg;
+        instance.csg = tree.get();
+        instance.material = default_material();
+        instance.casts_shadow = !(no_shadow || object.no_shadow);
+        instance.location = object.location;
+        instance.bounded = root.bounded;
+        if (root.bounded) {
+            instance.bounds_lower = Vec3(root.lower);
+            instance.bounds_upper = Vec3(root.upper);
+        }
+        m_data->csg_trees.push_back(std::move(tree));
+        push_instance(std::move(instance), DMat4(1.0));
+    }
+
+    std::uint32_t add_csg_node(CsgTree& tree, const sg::Object& object, const DMat4& world_from_parent,
+                               const sg::MaterialRef& inherited, const DMat4& inherited_owner, bool no_shadow,
+                               bool inverted) {
+        const DMat4 world_from_object = world_from_parent * object.parent_from_object;
+        const sg::MaterialRef& material = object.material ? object.material : inherited;
+        const DMat4 owner = object.material ? world_from_object : inherited_owner;
+        const bool object_no_shadow = no_shadow || object.no_shadow;
+        const bool inverse = inverted != object.inverse;
+        CsgNode node;
+        using Kind = sg::Object::Kind;
+        if (const auto* group = std::get_if<sg::Group>(&object.shape)) {
+            // Inversions go down to the leaves (De Morgan, as POV's Invert).
+            switch (object.kind) {
+            case Kind::Union:
+                node.operation = inverse ? CsgNode::Operation::Intersection : CsgNode::Operation::Union;
+                break;
+            case Kind::Merge:
+                node.operation = inverse ? CsgNode::Operation::Intersection : CsgNode::Operation::Merge;
+                break;
+            default: node.operation = inverse ? CsgNode::Operation::Merge : CsgNode::Operation::Intersection; break;
+            }
+            for (std::size_t k = 0; k < group->children.size(); ++k) {
+                // A difference is its first child intersected with the inverse of the others.
+                const bool subtracted = object.kind == Kind::Difference && k > 0;
+                node.children.push_back(add_csg_node(tree, group->children[k], world_from_object, material, owner,
+                                                     object_no_shadow, inverse != subtracted));
+            }
+        } else {
+            if (std::holds_alternative<sg::MeshRef>(object.shape))
+                throw SceneError(object.location,
+                                 "a mesh or triangle inside CSG, or with inverse or clipped_by, is not supported yet "
+                                 "(lancer's CSG takes analytic shapes)");
+            Instance instance;
+            make_leaf(object, world_from_object, material_for(material), object_no_shadow, instance);
+            if (!instance.shape) {
+                switch (instance.kind) {
+                case ShapeKind::Sphere: instance.shape = make_sphere_shape(instance.sphere); break;
+                case ShapeKind::Box: instance.shape = make_box_shape(instance.box); break;
+                default: instance.shape = make_plane_shape(instance.plane); break;
+                }
+            }
+            instance.csg_leaf = true;
+            instance.flip_normal = inverse;
+            node.operation = CsgNode::Operation::Leaf;
+            node.inverted = inverse;
+            node.instance = push_instance(std::move(instance), glm::inverse(owner));
+        }
+        for (const sg::Object& clip : object.clipped_by)
+            node.clips.push_back(add_csg_node(tree, clip, world_from_object, material, owner, object_no_shadow, false));
+        tree.nodes.push_back(std::move(node));
+        return std::uint32_t(tree.nodes.size() - 1);
     }
 
     void add_mesh_details(Instance& instance, const MeshData& mesh) {
@@ -236,6 +346,7 @@ class Builder {
         const std::size_t count = m_data->instances.size();
         for (std::uint32_t index = 0; index < count; ++index) {
             Instance& instance = m_data->instances[index];
+            if (instance.csg_leaf) continue;  // only part of its surface is there
             std::unique_ptr<SurfaceSampler> surface;
             const EmissiveShapeLight::SphereShape* sphere_shape = nullptr;
             EmissiveShapeLight::SphereShape shape;
@@ -365,7 +476,8 @@ class Builder {
 
     void compute_bounds() {
         for (const Instance& instance : m_data->instances)
-            if (instance.kind != ShapeKind::Plane) expand(m_data->bounds, instance.bounds_lower, instance.bounds_upper);
+            if (instance.bounded && !instance.csg_leaf)
+                expand(m_data->bounds, instance.bounds_lower, instance.bounds_upper);
     }
 
     // POV's point, spot, area and parallel lights, and physical lamps too

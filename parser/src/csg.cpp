@@ -1,0 +1,66 @@
+// CSG objects and their modifiers: intersection, difference, merge,
+// clipped_by, bounded_by. What they mean is the renderer's (csg.h); here
+// they are built as POV-Ray's parser builds them (Parse_CSG,
+// Parse_Object_Mods).
+#include <glm/glm.hpp>
+
+#include "evaluator.h"
+
+namespace lancer::parse {
+
+namespace {
+
+// Objects written in the space `object` sits in, moved into its own space,
+// so they follow its later transforms (as POV-Ray transforms clips along
+// with their object).
+std::vector<sg::Object> in_object_space(const std::vector<ShapePtr>& shapes, const sg::Object& object) {
+    const sg::Mat4 object_from_parent = glm::inverse(object.parent_from_object);
+    std::vector<sg::Object> moved;
+    for (const ShapePtr& shape : shapes) {
+        sg::Object clip = shape->object;
+        clip.parent_from_object = object_from_parent * clip.parent_from_object;
+        moved.push_back(std::move(clip));
+    }
+    return moved;
+}
+
+}  // namespace
+
+ShapePtr Evaluator::make_csg(sg::Object::Kind kind, const sg::SourceLocation& at) {
+    ShapePtr shape = make_union(at);
+    shape->object.kind = kind;
+    return shape;
+}
+
+void Evaluator::finish_csg(ShapeValue& shape) {
+    const auto& children = std::get<sg::Group>(shape.object.shape).children;
+    if (children.size() < 2 && shape.object.kind != sg::Object::Kind::Merge)
+        warning(shape.object.location, "should have at least 2 objects in CSG (POV-Ray's warning)");
+}
+
+std::function<void(ShapeValue&)> Evaluator::clip_edit(const std::vector<ShapePtr>& clips,
+                                                      const sg::SourceLocation& at) {
+    if (clips.empty()) warning(at, "clipped_by holds no object; it has no effect");
+    return [clips](ShapeValue& s) {
+        for (sg::Object& clip : in_object_space(clips, s.object)) s.object.clipped_by.push_back(std::move(clip));
+    };
+}
+
+std::function<void(ShapeValue&)> Evaluator::clip_by_bounds_edit(const sg::SourceLocation& at) {
+    return [this, at](ShapeValue& s) {
+        if (s.bounded_by.empty()) {
+            error(at, "clipped_by { bounded_by } needs a bounded_by before it");
+            return;
+        }
+        for (const sg::Object& bound : s.bounded_by) s.object.clipped_by.push_back(bound);
+    };
+}
+
+std::function<void(ShapeValue&)> Evaluator::bound_edit(const std::vector<ShapePtr>& bounds, const sg::SourceLocation&) {
+    // A bound only speeds POV-Ray up; lancer's BVH needs none.
+    return [bounds](ShapeValue& s) {
+        for (sg::Object& bound : in_object_space(bounds, s.object)) s.bounded_by.push_back(std::move(bound));
+    };
+}
+
+}  // namespace lancer::parse

@@ -1,0 +1,93 @@
+// POV-Ray's quadric-family primitives: cylinder, cone, torus, disc, with
+// POV-Ray 3.7's argument order, defaults and checks (Parse_Cone,
+// Parse_Cylinder, Parse_Torus, Parse_Disc there).
+#include <cmath>
+
+#include "evaluator.h"
+
+namespace lancer::parse {
+
+namespace {
+
+ShapePtr new_shape(sg::Object::Kind kind, const sg::SourceLocation& at) {
+    auto shape = std::make_shared<ShapeValue>();
+    shape->object.kind = kind;
+    shape->object.location = at;
+    return shape;
+}
+
+}  // namespace
+
+ShapePtr Evaluator::make_cone(const std::vector<Value>& values, const std::vector<SourceRange>& where, bool open,
+                              const sg::SourceLocation& at, bool cylinder) {
+    auto shape = new_shape(cylinder ? sg::Object::Kind::Cylinder : sg::Object::Kind::Cone, at);
+    const char* name = cylinder ? "cylinder" : "cone";
+    sg::Cone cone;
+    cone.base = to_vec3(values[0], where[0]);
+    cone.base_radius = to_float(values[1], where[1], std::string("a float ") + (cylinder ? "radius" : "base radius"));
+    cone.cap = to_vec3(values[2], where[2]);
+    cone.cap_radius = to_float(values[3], where[3], std::string("a float ") + (cylinder ? "radius" : "cap radius"));
+    cone.open = open;
+    if (!check_renderable(&cone.base_radius, 1, where[1], "the radius")) cone.base_radius = 1.0;
+    if (!check_renderable(&cone.cap_radius, 1, where[3], "the radius")) cone.cap_radius = 1.0;
+    if (!(glm::length(cone.cap - cone.base) > 0.0)) {
+        error(where[2].begin, std::string("degenerate ") + name + ": its base and cap points are the same");
+        cone.cap = cone.base + sg::Vec3(0.0, 1.0, 0.0);
+    }
+    for (int k : {1, 3}) {
+        double& radius = k == 1 ? cone.base_radius : cone.cap_radius;
+        if (radius < 0.0) {
+            warning(where[k].begin, std::string("negative ") + name + " radius; using its magnitude");
+            radius = -radius;
+        }
+        if (cylinder) break;
+    }
+    if (cylinder) cone.cap_radius = cone.base_radius;
+    if (cylinder && cone.base_radius == 0.0) error(where[1].begin, "cylinder radius must be positive, got 0");
+    if (!cylinder && cone.base_radius == 0.0 && cone.cap_radius == 0.0)
+        error(where[3].begin, "degenerate cone: both radii are 0");
+    shape->object.shape = cone;
+    return shape;
+}
+
+ShapePtr Evaluator::make_torus(const Value& major, const SourceRange& wm, const Value& minor, const SourceRange& wn,
+                               const sg::SourceLocation& at) {
+    auto shape = new_shape(sg::Object::Kind::Torus, at);
+    sg::Torus torus;
+    torus.major_radius = to_float(major, wm, "a float major radius");
+    torus.minor_radius = to_float(minor, wn, "a float minor radius");
+    if (!check_renderable(&torus.major_radius, 1, wm, "the torus major radius")) torus.major_radius = 1.0;
+    if (!check_renderable(&torus.minor_radius, 1, wn, "the torus minor radius")) torus.minor_radius = 0.25;
+    // POV-Ray: a negative radius turns the torus inside out.
+    for (double* radius : {&torus.major_radius, &torus.minor_radius}) {
+        if (*radius >= 0.0) continue;
+        warning(radius == &torus.major_radius ? wm.begin : wn.begin,
+                "negative torus radius has the effect of inverting the object; if this is intentional, use the "
+                "'inverse' keyword instead");
+        *radius = -*radius;
+        shape->object.inverse = !shape->object.inverse;
+    }
+    if (torus.minor_radius == 0.0) error(wn.begin, "torus minor radius must be positive, got 0");
+    shape->object.shape = torus;
+    return shape;
+}
+
+ShapePtr Evaluator::make_disc(const std::vector<Value>& values, const std::vector<SourceRange>& where,
+                              const std::optional<std::pair<Value, SourceRange>>& hole, const sg::SourceLocation& at) {
+    auto shape = new_shape(sg::Object::Kind::Disc, at);
+    sg::Disc disc;
+    disc.center = to_vec3(values[0], where[0]);
+    disc.normal = glm::normalize(nonzero_vec3(values[1], where[1], "the disc normal"));
+    disc.radius = std::fabs(to_float(values[2], where[2], "a float radius"));
+    if (!check_renderable(&disc.radius, 1, where[2], "the disc radius")) disc.radius = 1.0;
+    if (hole) {
+        disc.hole_radius = std::fabs(to_float(hole->first, hole->second, "a float hole radius"));
+        if (!check_renderable(&disc.hole_radius, 1, hole->second, "the disc hole radius")) disc.hole_radius = 0.0;
+        if (disc.hole_radius >= disc.radius)
+            warning(hole->second.begin, "the disc's hole radius is not smaller than its radius: nothing is left");
+    }
+    shape->object.shape = disc;
+    return shape;
+}
+
+}  // namespace lancer::parse

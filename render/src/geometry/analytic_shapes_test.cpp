@@ -1,0 +1,189 @@
+// Closed-form checks of the analytic shapes (shape.h): hits, normals,
+// (u,v), inside tests, grazing rays and rays from on the surface, and the
+// polynomial root finder they stand on.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "geometry/polynomial_roots.h"
+#include "geometry/shape.h"
+
+namespace lancer {
+namespace {
+
+std::vector<double> sorted_crossings(const Shape& shape, const DVec3& o, const DVec3& d, double t_min = 0.0,
+                                     double t_max = INFINITY) {
+    ShapeCrossings all;
+    shape.crossings(o, d, t_min, t_max, all);
+    std::vector<double> t;
+    for (int i = 0; i < all.count; ++i) t.push_back(all.items[i].t);
+    std::sort(t.begin(), t.end());
+    return t;
+}
+
+TEST(PolynomialRoots, QuarticWithKnownRoots) {
+    // (t - 1)(t - 2)(t - 3)(t - 4) = t^4 - 10 t^3 + 35 t^2 - 50 t + 24
+    const double c[5] = {24, -50, 35, -10, 1};
+    double roots[kMaxPolynomialDegree];
+    ASSERT_EQ(polynomial_roots_in(c, 4, -100, 100, roots), 4);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(roots[i], i + 1.0, 1e-12);
+    // Only the roots inside the interval.
+    ASSERT_EQ(polynomial_roots_in(c, 4, 1.5, 3.5, roots), 2);
+    EXPECT_NEAR(roots[0], 2.0, 1e-12);
+    EXPECT_NEAR(roots[1], 3.0, 1e-12);
+}
+
+TEST(PolynomialRoots, CloseRootPairsStayApart) {
+    // Roots 1 - e, 1 + e, 5, 7: the pair a ray grazing a torus' tube gives.
+    for (double e : {1e-2, 1e-4, 1e-6}) {
+        const double r[4] = {1 - e, 1 + e, 5, 7};
+        // Expand the product.
+        double c[5] = {1, 0, 0, 0, 0};
+        int degree = 0;
+        for (double root : r) {
+            for (int i = degree + 1; i > 0; --i) c[i] = c[i - 1] - root * c[i];
+            c[0] = -root * c[0];
+            ++degree;
+        }
+        double roots[kMaxPolynomialDegree];
+        ASSERT_EQ(polynomial_roots_in(c, 4, 0, 10, roots), 4) << "e " << e;
+        EXPECT_NEAR(roots[0], 1 - e, 1e-3 * e);
+        EXPECT_NEAR(roots[1], 1 + e, 1e-3 * e);
+    }
+}
+
+TEST(PolynomialRoots, StableQuadratic) {
+    double roots[2];
+    // Roots 1e-9 and 1e9: the small one is lost by the textbook formula.
+    ASSERT_EQ(solve_quadratic(1.0, -0.5 * (1e9 + 1e-9), 1.0, roots), 2);
+    EXPECT_NEAR(roots[0], 1e-9, 1e-21);
+    EXPECT_NEAR(roots[1], 1e9, 1e-3);
+    EXPECT_EQ(solve_quadratic(1.0, 0.0, 1.0, roots), 0);
+}
+
+TEST(Cylinder, HitsNormalsUvAndInside) {
+    const auto cylinder = make_cone_shape({{0, 0, 0}, {0, 2, 0}, 0.5, 0.5, false});
+    // Across the side: x = -0.5 and x = +0.5.
+    auto t = sorted_crossings(*cylinder, {-3, 1, 0}, {1, 0, 0});
+    ASSERT_EQ(t.size(), 2u);
+    EXPECT_NEAR(t[0], 2.5, 1e-12);
+    EXPECT_NEAR(t[1], 3.5, 1e-12);
+    SurfaceGeometry g = cylinder->surface({-0.5, 1, 0}, 0);
+    EXPECT_NEAR(g.normal.x, -1.0, 1e-12);
+    EXPECT_NEAR(g.uv.y, 0.5, 1e-6);
+    // Along the axis: the two end discs, with normals -y and +y.
+    ShapeCrossings ends;
+    cylinder->crossings({0.1, -1, 0.1}, {0, 1, 0}, 0, INFINITY, ends);
+    ASSERT_EQ(ends.count, 2);
+    for (int i = 0; i < 2; ++i) {
+        const ShapeCrossing& c = ends.items[i];
+        const DVec3 p = DVec3(0.1, -1, 0.1) + c.t * DVec3(0, 1, 0);
+        EXPECT_NEAR(cylinder->surface(p, c.face).normal.y, p.y < 1 ? -1.0 : 1.0, 1e-12);
+    }
+    EXPECT_TRUE(cylinder->inside({0.2, 1.9, 0.2}));
+    EXPECT_FALSE(cylinder->inside({0.4, 1, 0.4}));
+    EXPECT_FALSE(cylinder->inside({0, 2.1, 0}));
+    // Open: no end discs, the same solid for POV's inside test.
+    const auto open = make_cone_shape({{0, 0, 0}, {0, 2, 0}, 0.5, 0.5, true});
+    EXPECT_TRUE(sorted_crossings(*open, {0.1, -1, 0.1}, {0, 1, 0}).empty());
+    EXPECT_TRUE(open->inside({0.2, 1.0, 0.2}));
+    DVec3 lower, upper;
+    ASSERT_TRUE(cylinder->bounds(lower, upper));
+    EXPECT_NEAR(lower.x, -0.5, 1e-12);
+    EXPECT_NEAR(upper.y, 2.0, 1e-12);
+}
+
+TEST(Cone, SlantedSideAndApex) {
+    // Apex at y = 1 (cap radius 0), base radius 1 at y = 0: the side is x = 1 - y.
+    const auto cone = make_cone_shape({{0, 0, 0}, {0, 1, 0}, 1.0, 0.0, false});
+    auto t = sorted_crossings(*cone, {-3, 0.25, 0}, {1, 0, 0});
+    ASSERT_EQ(t.size(), 2u);
+    EXPECT_NEAR(t[0], 3 - 0.75, 1e-12);
+    EXPECT_NEAR(t[1], 3 + 0.75, 1e-12);
+    const SurfaceGeometry g = cone->surface({0.75, 0.25, 0}, 0);
+    EXPECT_NEAR(g.normal.x, std::sqrt(0.5), 1e-12);
+    EXPECT_NEAR(g.normal.y, std::sqrt(0.5), 1e-12);
+    // The mirrored sheet above the apex is not part of the cone.
+    EXPECT_TRUE(sorted_crossings(*cone, {-3, 1.5, 0}, {1, 0, 0}).empty());
+    EXPECT_TRUE(cone->inside({0.1, 0.5, 0.1}));
+    EXPECT_FALSE(cone->inside({0.45, 0.6, 0.0}));
+}
+
+TEST(Torus, EdgeOnRayCrossesFourTimes) {
+    const double R = 2.0, r = 0.5;
+    const auto torus = make_torus_shape(R, r);
+    auto t = sorted_crossings(*torus, {-10, 0, 0}, {1, 0, 0});
+    ASSERT_EQ(t.size(), 4u);
+    const double expected[4] = {10 - R - r, 10 - R + r, 10 + R - r, 10 + R + r};
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(t[i], expected[i], 1e-10);
+    EXPECT_TRUE(torus->inside({R, 0, 0}));
+    EXPECT_FALSE(torus->inside({0, 0, 0}));
+    const SurfaceGeometry g = torus->surface({R + r, 0, 0}, 0);
+    EXPECT_NEAR(g.normal.x, 1.0, 1e-12);
+    // POV's (u,v): u = 1 - (atan2(z, x) + pi) / 2pi, v = (atan2(y, ring - R) + pi) / 2pi.
+    EXPECT_NEAR(g.uv.x, 0.5f, 1e-6);
+    EXPECT_NEAR(g.uv.y, 0.5f, 1e-6);
+}
+
+// A ray skimming the top of the tube (y just below r) crosses it twice
+// close together near x = -R and x = R: x = +-R +- sqrt(r^2 - y^2).
+TEST(Torus, GrazingRaysFindCloseRootPairs) {
+    const double R = 2.0, r = 0.5;
+    const auto torus = make_torus_shape(R, r);
+    for (double gap : {1e-3, 1e-5, 1e-7}) {
+        const double y = r - gap;
+        const double half = std::sqrt(r * r - y * y);
+        auto t = sorted_crossings(*torus, {-10, y, 0}, {1, 0, 0});
+        ASSERT_EQ(t.size(), 4u) << "gap " << gap;
+        EXPECT_NEAR(t[0], 10 - R - half, 1e-6 * half + 1e-12) << "gap " << gap;
+        EXPECT_NEAR(t[1], 10 - R + half, 1e-6 * half + 1e-12) << "gap " << gap;
+    }
+    // Just above the tube: nothing.
+    EXPECT_TRUE(sorted_crossings(*torus, {-10, r + 1e-9, 0}, {1, 0, 0}).empty());
+}
+
+TEST(Torus, FarOriginsAndScaledDirectionsAgree) {
+    const auto torus = make_torus_shape(1.0, 0.3);
+    const DVec3 target(0.9, 0.1, 0.4);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 200; ++i) {
+        DVec3 direction = glm::normalize(DVec3(u(rng), u(rng), u(rng)));
+        for (double distance : {10.0, 1e4, 1e7}) {
+            const DVec3 o = target - distance * direction;
+            // A direction of length 3: t shrinks by 3, the point is the same.
+            auto t = sorted_crossings(*torus, o, 3.0 * direction);
+            ASSERT_FALSE(t.empty()) << distance;
+            const DVec3 p = o + t[0] * 3.0 * direction;
+            const double ring = std::sqrt(p.x * p.x + p.z * p.z) - 1.0;
+            // On the surface to within the origin's own rounding.
+            EXPECT_NEAR(std::sqrt(ring * ring + p.y * p.y), 0.3, 1e-14 * distance + 1e-12) << distance;
+        }
+    }
+}
+
+TEST(Torus, RayFromTheSurfaceDoesNotFindItAgainAtZero) {
+    const auto torus = make_torus_shape(1.0, 0.25);
+    const DVec3 on(1.25, 0, 0);
+    // Leaving outward: nothing beyond (the ray points away from the torus).
+    EXPECT_TRUE(sorted_crossings(*torus, on + 1e-9 * DVec3(1, 0, 0), {1, 0, 0}, 0.0).empty());
+    // Leaving inward: the far side of the tube at x = 0.75, t = 0.5.
+    auto t = sorted_crossings(*torus, on - 1e-9 * DVec3(1, 0, 0), {-1, 0, 0}, 0.0);
+    ASSERT_FALSE(t.empty());
+    EXPECT_NEAR(t[0], 0.5, 1e-8);
+}
+
+TEST(Disc, RingHitsAndHalfSpace) {
+    const auto disc = make_disc_shape({{0, 1, 0}, {0, 1, 0}, 2.0, 0.5});
+    EXPECT_EQ(sorted_crossings(*disc, {1, 5, 0}, {0, -1, 0}), std::vector<double>{4.0});
+    EXPECT_TRUE(sorted_crossings(*disc, {0.2, 5, 0}, {0, -1, 0}).empty());  // in the hole
+    EXPECT_TRUE(sorted_crossings(*disc, {2.5, 5, 0}, {0, -1, 0}).empty());  // beyond the rim
+    EXPECT_TRUE(disc->inside({0, 0.5, 0}));                                 // POV: behind the normal
+    EXPECT_FALSE(disc->inside({0, 1.5, 0}));
+    EXPECT_NEAR(disc->surface({1, 1, 0}, 0).normal.y, 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace lancer

@@ -1,0 +1,68 @@
+// POV-Ray's CSG (internal to liblancer): intersection, difference, merge,
+// inverse and clipped_by over analytic shapes, as one Embree primitive.
+//
+// POV-Ray's rules (csg.cpp there), which a tree of nodes follows here: a
+// union keeps every crossing of its children; a merge keeps a child's
+// crossing only where no other child is solid; an intersection only where
+// every other child is; a difference is the intersection of its first
+// child with the inverse of the others; clipped_by keeps a crossing only
+// inside every clipping object, and an object's inside test includes its
+// clips. Inversions are pushed down to the leaves when the tree is built
+// (De Morgan, as POV's Invert: an inverted union is the intersection of the
+// inverted children, an inverted intersection or merge the merge of them),
+// so a leaf knows whether its solid and normal are flipped.
+//
+// Each leaf is an Instance of its own (material, placement, texture space,
+// object id), listed in no acceleration structure; the tree's root is the
+// Instance Embree sees. Hits name the leaf they landed on.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/shape.h"
+
+namespace lancer {
+
+struct Instance;
+
+struct CsgNode {
+    enum class Operation { Leaf, Union, Merge, Intersection };
+    Operation operation = Operation::Leaf;
+    std::uint32_t instance = 0;  // Leaf: the Instance whose shape it is
+    bool inverted = false;       // Leaf: solid and normal flipped
+    std::vector<std::uint32_t> children;
+    std::vector<std::uint32_t> clips;  // roots of clipped_by trees, in this tree
+    // World box holding the node's solid (and so its surface), when finite.
+    bool bounded = false;
+    DVec3 lower{0.0}, upper{0.0};
+};
+
+struct CsgCrossing {
+    double t = 0.0;
+    std::uint32_t instance = 0;  // the leaf crossed
+    int face = 0;
+};
+
+class CsgTree {
+  public:
+    std::vector<CsgNode> nodes;
+    std::uint32_t root = 0;
+
+    // Computes each node's bounds from its leaves' instances (after all
+    // nodes are added).
+    void compute_bounds(const std::vector<Instance>& instances);
+    // The nearest crossing of the world ray o + t d kept by the tree, for t
+    // in (t_min, t_max).
+    bool nearest(const std::vector<Instance>& instances, const DVec3& o, const DVec3& d, double t_min, double t_max,
+                 CsgCrossing& hit) const;
+    // POV's Inside_Object for node `node` at world point p.
+    bool inside(const std::vector<Instance>& instances, std::uint32_t node, const DVec3& p) const;
+
+  private:
+    void gather(const std::vector<Instance>& instances, std::uint32_t node, const DVec3& o, const DVec3& d,
+                double t_min, double t_max, std::vector<CsgCrossing>& out) const;
+    void bound(const std::vector<Instance>& instances, std::uint32_t node);
+};
+
+}  // namespace lancer

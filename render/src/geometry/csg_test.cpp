@@ -1,0 +1,142 @@
+// POV-Ray's CSG rules through the compiled scene: which surfaces a ray
+// meets in intersection, difference, merge, inverse and clipped_by, with
+// their normals pointing out of the solid that remains.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "lancer/host/scene_compiler.h"
+#include "lancer/parser.h"
+#include "lancer/render_scene.h"
+#include "lancer/scene_error.h"
+#include "scene_test_helpers.h"
+
+namespace lancer {
+namespace {
+
+using namespace lancer::testing;
+
+std::unique_ptr<RenderScene> compile(const std::string& text) {
+    ParseResult parsed = parse_scene_string(text, "<csg>");
+    if (!parsed.ok()) throw std::runtime_error(format_diagnostic(parsed.diagnostics.front()));
+    return compile_scene(*parsed.scene);
+}
+
+// The first hit of the ray from `from` along `direction`; t < 0 if none.
+Hit first_hit(const RenderScene& scene, const Vec3& from, const Vec3& direction) {
+    Hit hit;
+    if (!scene.intersect(make_ray(from, direction), hit)) hit.t = -1.0f;
+    return hit;
+}
+
+TEST(Csg, DifferenceShowsTheCutWithItsNormalOutOfTheSolid) {
+    // A unit sphere less its x > 0 half: from +x the ray meets the cut face at x = 0.
+    const auto scene = compile("difference { sphere { 0, 1 } box { <0, -2, -2>, <2, 2, 2> } }");
+    const Hit hit = first_hit(*scene, {5, 0.1f, 0.2f}, {-1, 0, 0});
+    EXPECT_NEAR(hit.t, 5.0f, 1e-5f);
+    EXPECT_NEAR(hit.geometric_normal.x, 1.0f, 1e-6f);  // the box's -x face, turned out of the remaining half
+    // Beside the sphere nothing is left of the box.
+    EXPECT_LT(first_hit(*scene, {5, 1.5f, 0}, {-1, 0, 0}).t, 0.0f);
+    // From -x the sphere itself.
+    EXPECT_NEAR(first_hit(*scene, {-5, 0, 0}, {1, 0, 0}).t, 4.0f, 1e-5f);
+}
+
+TEST(Csg, IntersectionKeepsOnlyTheCommonPart) {
+    const auto scene = compile("intersection { sphere { 0, 1 } box { -0.8, 0.8 } }");
+    // Through a face centre: the box face (inside the sphere).
+    EXPECT_NEAR(first_hit(*scene, {-5, 0, 0}, {1, 0, 0}).t, 4.2f, 1e-5f);
+    // Towards a box corner: the sphere (the corner is outside it).
+    const Vec3 d = glm::normalize(Vec3(1, 1, 1));
+    const Hit corner = first_hit(*scene, -5.0f * d, d);
+    EXPECT_NEAR(corner.t, 4.0f, 1e-5f);
+}
+
+TEST(Csg, MergeDropsInnerSurfacesAndUnionKeepsThem) {
+    const std::string spheres = "sphere { <-0.5, 0, 0>, 1 } sphere { <0.5, 0, 0>, 1 }";
+    const auto merged = compile("merge { " + spheres + " }");
+    const auto united = compile("union { " + spheres + " }");
+    // From the middle, inside both: a union shows the left sphere's far
+    // side at x = 0.5, a merge only the outer surface at x = 1.5.
+    EXPECT_NEAR(first_hit(*united, {0, 0, 0}, {1, 0, 0}).t, 0.5f, 1e-5f);
+    EXPECT_NEAR(first_hit(*merged, {0, 0, 0}, {1, 0, 0}).t, 1.5f, 1e-5f);
+    EXPECT_NEAR(first_hit(*merged, {-5, 0, 0}, {1, 0, 0}).t, 3.5f, 1e-5f);
+}
+
+TEST(Csg, InverseHollowsAShell) {
+    // A shell: the big sphere intersected with the inverse of the small one.
+    const auto scene = compile("intersection { sphere { 0, 2 } sphere { 0, 1 inverse } }");
+    const Hit inner = first_hit(*scene, {0, 0, 0}, {1, 0, 0});
+    EXPECT_NEAR(inner.t, 1.0f, 1e-5f);
+    // The inner wall's normal points into the cavity, out of the shell.
+    EXPECT_NEAR(inner.geometric_normal.x, -1.0f, 1e-6f);
+}
+
+TEST(Csg, DeMorganInversionOfAGroup) {
+    // difference { A union { B C } } removes both B and C from A.
+    const auto scene =
+        compile("difference { box { -1, 1 } union { sphere { <-1, 0, 0>, 0.5 } sphere { <1, 0, 0>, 0.5 } } }");
+    // From -x: the left cavity's wall at x = -0.5, its normal pointing
+    // into the cavity (out of what is left).
+    const Hit hit = first_hit(*scene, {-5, 0, 0}, {1, 0, 0});
+    EXPECT_NEAR(hit.t, 4.5f, 1e-5f);
+    EXPECT_NEAR(hit.geometric_normal.x, -1.0f, 1e-6f);
+    // Inside the box between the cavities, towards +x: the right cavity at x = 0.5.
+    EXPECT_NEAR(first_hit(*scene, {0, 0, 0}, {1, 0, 0}).t, 0.5f, 1e-5f);
+}
+
+TEST(Csg, ClippedByKeepsTheSurfaceInsideTheClip) {
+    // The lower half of a sphere: from above the ray passes the clipped-away
+    // top and meets the inside of the bottom.
+    const auto scene = compile("sphere { 0, 1 clipped_by { plane { y, 0 } } }");
+    EXPECT_NEAR(first_hit(*scene, {0, 5, 0}, {0, -1, 0}).t, 6.0f, 1e-5f);
+    // clipped_by { bounded_by } clips by the bound.
+    const auto bound =
+        compile("sphere { 0, 1 bounded_by { box { <-2, -2, -2>, <2, 0.5, 2> } } clipped_by { bounded_by } }");
+    EXPECT_NEAR(first_hit(*bound, {0, 5, 0}, {0, -1, 0}).t, 6.0f, 1e-5f);
+    // Transforms after clipped_by move the clip with the object.
+    const auto moved = compile("sphere { 0, 1 clipped_by { plane { y, 0 } } translate <0, 10, 0> }");
+    EXPECT_NEAR(first_hit(*moved, {0, 15, 0}, {0, -1, 0}).t, 6.0f, 1e-5f);
+}
+
+TEST(Csg, EachChildKeepsItsOwnTexture) {
+    const auto scene = compile(
+        "difference { box { -1, 1 pigment { rgb <1, 0, 0> } } sphere { <1, 0, 0>, 0.5 pigment { rgb <0, 0, 1> } } }");
+    const Hit box = first_hit(*scene, {-5, 0, 0}, {1, 0, 0});
+    const Hit cut = first_hit(*scene, {5, 0, 0}, {-1, 0, 0});
+    ASSERT_GT(box.t, 0.0f);
+    ASSERT_GT(cut.t, 0.0f);
+    EXPECT_NEAR(cut.t, 4.5f, 1e-5f);
+    EXPECT_NE(box.material, cut.material);
+    EXPECT_NE(box.object_id, cut.object_id);
+}
+
+TEST(Csg, ShadowRaysSeeOnlyWhatIsKept) {
+    // A box with a tunnel along x: a shadow ray through the tunnel is not blocked.
+    const auto scene = compile("difference { box { -1, 1 } cylinder { <-2, 0, 0>, <2, 0, 0>, 0.5 } }");
+    Ray through = make_ray({-5, 0, 0}, {1, 0, 0});
+    through.t_max = 10.0f;
+    EXPECT_FALSE(scene->occluded(through));
+    Ray blocked = make_ray({-5, 0.8f, 0}, {1, 0, 0});
+    blocked.t_max = 10.0f;
+    EXPECT_TRUE(scene->occluded(blocked));
+}
+
+TEST(Csg, UnboundedTreesAreTraced) {
+    // Two half-spaces: a wedge with no finite box.
+    const auto scene = compile("intersection { plane { y, 0 } plane { x, 0 } }");
+    EXPECT_NEAR(first_hit(*scene, {-3, 5, 0}, {0, -1, 0}).t, 5.0f, 1e-5f);
+    EXPECT_LT(first_hit(*scene, {3, 5, 0}, {0, -1, 0}).t, 0.0f);
+}
+
+TEST(Csg, MeshesInsideCsgAreALocatedError) {
+    try {
+        compile("difference {\n  box { -1, 1 }\n  mesh { triangle { 0, x, y } }\n}");
+        FAIL() << "expected a SceneError";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.location().line, 3);
+        EXPECT_NE(std::string(e.what()).find("not supported yet"), std::string::npos);
+    }
+}
+
+}  // namespace
+}  // namespace lancer

@@ -1,0 +1,85 @@
+// Analytic shapes behind one interface (internal to liblancer): what the
+// Embree user geometry and CSG need of a surface, in the shape's own object
+// space and in double precision (see shapes.h for why double).
+//
+// Each shape kind is one file of this room (cone.cpp, torus.cpp, disc.cpp,
+// quadric.cpp, ...); spheres, boxes and planes also have the direct
+// functions of shapes.h, which the fast paths for them call.
+#pragma once
+
+#include <memory>
+
+#include "geometry/shapes.h"
+
+namespace lancer {
+
+// Where a line crosses a surface: its parameter and which part of the
+// shape (a cap, a side; the shape's own numbering) was crossed.
+struct ShapeCrossing {
+    double t = 0.0;
+    int face = 0;
+};
+
+// The crossings of one line with one shape. No shape of POV-Ray's crosses a
+// line more often than its degree allows; the highest here is 16.
+struct ShapeCrossings {
+    static constexpr int kCapacity = 16;
+    ShapeCrossing items[kCapacity];
+    int count = 0;
+    void add(double t, int face) {
+        if (count < kCapacity) items[count++] = ShapeCrossing{t, face};
+    }
+};
+
+class Shape {
+  public:
+    virtual ~Shape() = default;
+    // Every crossing of o + t d (d need not be unit) with the surface for t
+    // in the open interval (t_min, t_max), in any order.
+    virtual void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const = 0;
+    // The nearest crossing; false if none.
+    bool nearest(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossing& hit) const;
+    // Surface details at a point already on the shape, on `face`.
+    virtual SurfaceGeometry surface(const DVec3& p, int face) const = 0;
+    // POV-Ray's inside test (what CSG and clipped_by use): the solid the
+    // surface bounds; for a flat or infinite shape POV's half-space.
+    virtual bool inside(const DVec3& p) const = 0;
+    // Object-space bounds; false for an unbounded shape.
+    virtual bool bounds(DVec3& lower, DVec3& upper) const = 0;
+};
+
+std::shared_ptr<const Shape> make_sphere_shape(const AnalyticSphere& sphere);
+std::shared_ptr<const Shape> make_box_shape(const AnalyticBox& box);
+std::shared_ptr<const Shape> make_plane_shape(const AnalyticPlane& plane);
+
+// POV's cone and cylinder: the solid between the discs about `base` and
+// `cap` (radii base_radius, cap_radius); `open` drops the end discs from the
+// surface (not from the solid POV's inside test sees).
+struct ConeParameters {
+    DVec3 base{0.0};
+    DVec3 cap{0.0, 1.0, 0.0};
+    double base_radius = 1.0;
+    double cap_radius = 1.0;
+    bool open = false;
+};
+std::shared_ptr<const Shape> make_cone_shape(const ConeParameters& cone);
+
+// POV's torus: about the y axis, centre at the origin.
+std::shared_ptr<const Shape> make_torus_shape(double major_radius, double minor_radius);
+
+// POV's disc: a flat ring about `center` facing `normal` (unit), between
+// hole_radius and radius; its inside is the half-space behind the normal.
+struct DiscParameters {
+    DVec3 center{0.0};
+    DVec3 normal{0.0, 1.0, 0.0};
+    double radius = 1.0;
+    double hole_radius = 0.0;
+};
+std::shared_ptr<const Shape> make_disc_shape(const DiscParameters& disc);
+
+// Narrows (t_min, t_max) to the stretch of o + t d inside the box
+// [lower, upper]; false when none of it is.
+bool ray_box_interval(const DVec3& lower, const DVec3& upper, const DVec3& o, const DVec3& d, double& t_min,
+                      double& t_max);
+
+}  // namespace lancer
