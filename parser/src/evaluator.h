@@ -128,6 +128,8 @@ class Evaluator {
                         const sg::SourceLocation& at);
     ShapePtr make_disc(const std::vector<Value>& values, const std::vector<SourceRange>& where,
                        const std::optional<std::pair<Value, SourceRange>>& hole, const sg::SourceLocation& at);
+    ShapePtr make_quadric(const std::vector<Value>& values, const std::vector<SourceRange>& where,
+                          const sg::SourceLocation& at);
     // ---- CSG (csg.cpp)
     ShapePtr make_csg(sg::Object::Kind kind, const sg::SourceLocation& at);
     void finish_csg(ShapeValue& shape);

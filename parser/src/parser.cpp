@@ -91,13 +91,21 @@ std::vector<std::string> default_include_path() {
     if (!ec) candidates.push_back(executable.parent_path().parent_path() / "share" / "lancer" / "include");
     candidates.emplace_back(LANCER_SOURCE_INCLUDE_DIR);
     candidates.emplace_back(LANCER_INSTALL_INCLUDE_DIR);
+    bool found_own = false;
     for (const fs::path& folder : candidates) {
         if (fs::is_regular_file(folder / "colors.inc", ec)) {
             path.push_back(folder.string());
-            return path;
+            found_own = true;
+            break;
         }
     }
-    path.push_back(LANCER_INSTALL_INCLUDE_DIR);
+    if (!found_own) path.push_back(LANCER_INSTALL_INCLUDE_DIR);
+    // Then POV-Ray's own include folder, as POV-Ray's Library_Path finds it
+    // (Debian's povray-includes, or a build installed under /usr/local):
+    // scenes written for POV-Ray include shapes.inc, textures.inc ...
+    for (const char* folder : {"/usr/local/share/povray-3.7/include", "/usr/share/povray-3.7/include"}) {
+        if (fs::is_directory(folder, ec)) path.emplace_back(folder);
+    }
     return path;
 }
 

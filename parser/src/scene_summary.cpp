@@ -23,6 +23,7 @@ const char* object_kind_name(sg::Object::Kind kind) {
     case sg::Object::Kind::Cone: return "cone";
     case sg::Object::Kind::Torus: return "torus";
     case sg::Object::Kind::Disc: return "disc";
+    case sg::Object::Kind::Quadric: return "quadric";
     case sg::Object::Kind::Merge: return "merge";
     case sg::Object::Kind::Intersection: return "intersection";
     case sg::Object::Kind::Difference: return "difference";
@@ -79,7 +80,8 @@ struct Walker {
                      sg::Vec3(outer, torus->minor_radius, outer));
         } else if (const auto* disc = std::get_if<sg::Disc>(&object.shape)) {
             grow_box(world_from_object, disc->center - sg::Vec3(disc->radius), disc->center + sg::Vec3(disc->radius));
-        } else if (std::holds_alternative<sg::Plane>(object.shape)) {
+        } else if (std::holds_alternative<sg::Plane>(object.shape) ||
+                   std::holds_alternative<sg::Quadric>(object.shape)) {
             ++summary.unbounded_objects;
         } else if (const auto* mesh = std::get_if<sg::MeshRef>(&object.shape)) {
             if (*mesh) {

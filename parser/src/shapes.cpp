@@ -1,6 +1,6 @@
-// POV-Ray's quadric-family primitives: cylinder, cone, torus, disc, with
-// POV-Ray 3.7's argument order, defaults and checks (Parse_Cone,
-// Parse_Cylinder, Parse_Torus, Parse_Disc there).
+// POV-Ray's quadric-family primitives: cylinder, cone, torus, disc,
+// quadric, with POV-Ray 3.7's argument order, defaults and checks
+// (Parse_Cone, Parse_Cylinder, Parse_Torus, Parse_Disc, Parse_Quadric there).
 #include <cmath>
 
 #include "evaluator.h"
@@ -87,6 +87,22 @@ ShapePtr Evaluator::make_disc(const std::vector<Value>& values, const std::vecto
             warning(hole->second.begin, "the disc's hole radius is not smaller than its radius: nothing is left");
     }
     shape->object.shape = disc;
+    return shape;
+}
+
+ShapePtr Evaluator::make_quadric(const std::vector<Value>& values, const std::vector<SourceRange>& where,
+                                 const sg::SourceLocation& at) {
+    auto shape = new_shape(sg::Object::Kind::Quadric, at);
+    sg::Quadric quadric;
+    quadric.square_terms = to_vec3(values[0], where[0]);
+    quadric.mixed_terms = to_vec3(values[1], where[1]);
+    quadric.linear_terms = to_vec3(values[2], where[2]);
+    quadric.constant = to_float(values[3], where[3], "a float constant term");
+    if (!check_renderable(&quadric.constant, 1, where[3], "the quadric's constant")) quadric.constant = 0.0;
+    if (quadric.square_terms == sg::Vec3(0.0) && quadric.mixed_terms == sg::Vec3(0.0) &&
+        quadric.linear_terms == sg::Vec3(0.0))
+        error(where[0].begin, "quadric has no term in x, y or z: it is no surface");
+    shape->object.shape = quadric;
     return shape;
 }
 

@@ -74,7 +74,6 @@ const std::unordered_set<std::string>& unsupported_words() {
                                                           "julia_fractal",
                                                           "bicubic_patch",
                                                           "polygon",
-                                                          "quadric",
                                                           "quartic",
                                                           "cubic",
                                                           "poly",

@@ -25,7 +25,8 @@ struct Diagnostic {
 
 struct ParseOptions {
     // Searched after the including file's folder: LANCER_INCLUDE_PATH's
-    // folders are appended by default_include_path(), then lancer's include/.
+    // folders are appended by default_include_path(), then lancer's include/,
+    // then POV-Ray's.
     std::vector<std::string> include_path;
     // Values of POV's image_width / image_height until a render_settings
     // block sets them (the command line's size when given).
@@ -76,7 +77,8 @@ ParseResult parse_scene_file(const std::string& path, const ParseOptions& option
 ParseResult parse_scene_string(std::string_view text, const std::string& name = "<string>",
                                const ParseOptions& options = {});
 
-// LANCER_INCLUDE_PATH's folders, then lancer's own include/ folder.
+// LANCER_INCLUDE_PATH's folders, then lancer's own include/ folder, then POV-Ray's
+// installed include folder when there is one.
 std::vector<std::string> default_include_path();
 
 // "file:line:col: error: message", then the source line and a caret under

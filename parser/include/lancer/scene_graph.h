@@ -152,6 +152,15 @@ struct Torus {
     double minor_radius = 0.25;
 };
 
+// POV's quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }: A x^2 + B y^2 + C z^2 +
+// D xy + E xz + F yz + G x + H y + I z + J = 0, inside where it is <= 0.
+struct Quadric {
+    Vec3 square_terms{1.0};
+    Vec3 mixed_terms{0.0};  // xy, xz, yz
+    Vec3 linear_terms{0.0};
+    double constant = -1.0;
+};
+
 // POV's disc { center, normal, radius [, hole_radius] }.
 struct Disc {
     Vec3 center{0.0};
@@ -201,12 +210,13 @@ struct Object {
         Cone,
         Torus,
         Disc,
+        Quadric,
         Merge,
         Intersection,
         Difference
     };
     Kind kind = Kind::Sphere;
-    std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc> shape;
+    std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric> shape;
     // POV's inverse: inside and outside swapped (what CSG and clipped_by see).
     bool inverse = false;
     // POV's clipped_by: only the parts of this object's surface inside every

@@ -185,5 +185,37 @@ TEST(Disc, RingHitsAndHalfSpace) {
     EXPECT_NEAR(disc->surface({1, 1, 0}, 0).normal.y, 1.0, 1e-12);
 }
 
+TEST(Quadric, EllipsoidHitsAndExactBox) {
+    // x^2/4 + y^2 + z^2 - 1 = 0: an ellipsoid with semi-axes 2, 1, 1.
+    const auto ellipsoid = make_quadric_shape({{0.25, 1, 1}, {0, 0, 0}, {0, 0, 0}, -1});
+    EXPECT_EQ(sorted_crossings(*ellipsoid, {-5, 0, 0}, {1, 0, 0}), (std::vector<double>{3.0, 7.0}));
+    DVec3 lower, upper;
+    ASSERT_TRUE(ellipsoid->bounds(lower, upper));
+    EXPECT_NEAR(lower.x, -2.0, 1e-12);
+    EXPECT_NEAR(upper.y, 1.0, 1e-12);
+    EXPECT_TRUE(ellipsoid->inside({1.9, 0, 0}));
+    EXPECT_FALSE(ellipsoid->inside({0, 1.1, 0}));
+    EXPECT_NEAR(ellipsoid->surface({0, 1, 0}, 0).normal.y, 1.0, 1e-12);
+}
+
+TEST(Quadric, InfiniteCylinderAndMixedTerms) {
+    // shapes.inc's Cylinder_Y: x^2 + z^2 - 1 = 0, unbounded.
+    const auto cylinder = make_quadric_shape({{1, 0, 1}, {0, 0, 0}, {0, 0, 0}, -1});
+    DVec3 lower, upper;
+    EXPECT_FALSE(cylinder->bounds(lower, upper));
+    auto t = sorted_crossings(*cylinder, {-3, 1e6, 0}, {1, 0, 0});
+    ASSERT_EQ(t.size(), 2u);
+    EXPECT_NEAR(t[0], 2.0, 1e-9);
+    // xy - 1 = 0 (a hyperbola extruded along z): on the line y = x at x = 1.
+    const auto saddle = make_quadric_shape({{0, 0, 0}, {1, 0, 0}, {0, 0, 0}, -1});
+    t = sorted_crossings(*saddle, {0, 0, 0}, glm::normalize(DVec3(1, 1, 0)));
+    ASSERT_EQ(t.size(), 1u);
+    EXPECT_NEAR(t[0], std::sqrt(2.0), 1e-12);
+    // A far origin (1e8 away along the ray) loses no digits.
+    t = sorted_crossings(*cylinder, {-1e8, 0.5, 0}, {1, 0, 0});
+    ASSERT_EQ(t.size(), 2u);
+    EXPECT_NEAR(t[0], 1e8 - 1.0, 1e-7);
+}
+
 }  // namespace
 }  // namespace lancer

@@ -77,6 +77,16 @@ struct DiscParameters {
 };
 std::shared_ptr<const Shape> make_disc_shape(const DiscParameters& disc);
 
+// POV's quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }: A x^2 + B y^2 + C z^2 +
+// D xy + E xz + F yz + G x + H y + I z + J = 0.
+struct QuadricParameters {
+    DVec3 square_terms{1.0};
+    DVec3 mixed_terms{0.0};
+    DVec3 linear_terms{0.0};
+    double constant = -1.0;
+};
+std::shared_ptr<const Shape> make_quadric_shape(const QuadricParameters& quadric);
+
 // Narrows (t_min, t_max) to the stretch of o + t d inside the box
 // [lower, upper]; false when none of it is.
 bool ray_box_interval(const DVec3& lower, const DVec3& upper, const DVec3& o, const DVec3& d, double& t_min,

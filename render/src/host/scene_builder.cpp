@@ -231,6 +231,9 @@ class Builder {
         if (const auto* disc = std::get_if<sg::Disc>(&object.shape))
             return make_disc_shape(DiscParameters{disc->center, glm::normalize(disc->normal), std::fabs(disc->radius),
                                                   std::fabs(disc->hole_radius)});
+        if (const auto* quadric = std::get_if<sg::Quadric>(&object.shape))
+            return make_quadric_shape(QuadricParameters{quadric->square_terms, quadric->mixed_terms,
+                                                        quadric->linear_terms, quadric->constant});
         throw SceneError(object.location, "lancer has no renderer for this kind of object");
     }
 
