@@ -8,8 +8,11 @@
 // a negative light),
 // the finishes (peak phong and specular, metallic, brilliance, albedo,
 // reflection metallic, exponent and fresnel, conserve_energy), gamma, and
-// a pre-3.7 scene's legacy gamma and `version`, and POV's sizing of
-// orthographic views (also one looking straight down its sky).
+// a pre-3.7 scene's legacy gamma and `version`, POV's sizing of
+// orthographic views (also one looking straight down its sky), and the
+// shapes: cylinder, cone, torus, disc, quadric, and CSG (difference,
+// intersection, merge, inverse, clipped_by, textures per child; in glass,
+// refracting at every face a difference keeps).
 #include <filesystem>
 #include <string>
 
@@ -53,7 +56,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
                          ::testing::Values("wall_point_light", "spotlights", "area_room", "area_circular",
                                            "cylinder_parallel", "looks_like_projected", "finishes", "gamma",
                                            "legacy_gamma", "area_illumination", "orthographic_down",
-                                           "orthographic_default_size"),
+                                           "orthographic_default_size", "quadric_family", "csg_solids", "csg_glass"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 }  // namespace

@@ -408,6 +408,9 @@ material
 
 material_items
   : %empty             {}
+  /* A declared material: its texture and its interior. */
+  | material_items TEXTURE_ID { $$ = std::move($1); auto t = $2.value.texture;
+                                $$.push_back([t](sg::Material& m) { m = *t; }); }
   | material_items texture  { $$ = std::move($1); auto t = $2;
                               $$.push_back([t](sg::Material& m) { sg::Interior keep = m.interior; m = *t; m.interior = keep; }); }
   | material_items interior { $$ = std::move($1); auto i = $2; $$.push_back([i](sg::Material& m) { m.interior = *i; }); }

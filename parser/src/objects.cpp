@@ -28,12 +28,15 @@ MaterialPtr in_child_space(const MaterialPtr& material, const sg::Mat4& parent_f
     return moved;
 }
 
-// POV: a texture on a union reaches every descendant that has none.
-void give_material(sg::Object& object, const MaterialPtr& material) {
+// POV: a texture on a union reaches every descendant that has none of its
+// own; a later pigment or finish on the union reaches them again.
+void give_material(sg::Object& object, const MaterialPtr& material, bool inherited = false) {
     object.material = material;
+    object.inherits_material = inherited;
     if (auto* group = std::get_if<sg::Group>(&object.shape)) {
         for (auto& child : group->children) {
-            if (!child.material) give_material(child, in_child_space(material, child.parent_from_object));
+            if (!child.material || child.inherits_material)
+                give_material(child, in_child_space(material, child.parent_from_object), true);
         }
     }
 }
@@ -68,7 +71,7 @@ sg::Material current_in_parent_space(const ShapeValue& shape) {
 
 void apply_default_material(sg::Object& object, const MaterialPtr& fallback) {
     if (!object.material) {
-        give_material(object, fallback);
+        give_material(object, fallback, true);
         return;
     }
     if (auto* group = std::get_if<sg::Group>(&object.shape)) {
@@ -210,7 +213,7 @@ std::function<void(ShapeValue&)> Evaluator::child_edit(ShapePtr child) {
             s.lights.push_back(light);
         }
         if (!object.material && s.object.material) {
-            give_material(object, in_child_space(s.object.material, object.parent_from_object));
+            give_material(object, in_child_space(s.object.material, object.parent_from_object), true);
         }
         std::get<sg::Group>(s.object.shape).children.push_back(std::move(object));
     };

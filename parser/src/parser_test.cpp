@@ -169,6 +169,51 @@ TEST(ParserTransforms, NestedUnionsComposeAndTexturesInherit) {
     EXPECT_EQ(summary.objects_by_kind["sphere"], 2);
 }
 
+// A pigment then a finish on a union both reach the children without a
+// texture of their own (the finish once replaced nothing: the children
+// kept the pigment-only material the first modifier gave them).
+TEST(ParserMaterials, EveryModifierOnAGroupReachesChildrenWithoutTextures) {
+    auto scene = parse_ok(R"(
+        intersection {
+          cylinder { 0, y, 1 }
+          box { -1, 1 pigment { rgb <0, 0, 1> } }
+          pigment { rgb <0, 1, 0> }
+          finish { phong 0.7 }
+        })");
+    ASSERT_EQ(scene.objects.size(), 1u);
+    const auto& children = std::get<sg::Group>(scene.objects[0].shape).children;
+    ASSERT_EQ(children.size(), 2u);
+    ASSERT_TRUE(children[0].material);
+    EXPECT_DOUBLE_EQ(children[0].material->finish.phong, 0.7);
+    EXPECT_DOUBLE_EQ(children[0].material->pigment.color.rgb.y, 1.0);
+    // The box's own texture stays.
+    EXPECT_DOUBLE_EQ(children[1].material->pigment.color.rgb.z, 1.0);
+    EXPECT_DOUBLE_EQ(children[1].material->finish.phong, 0.0);
+}
+
+TEST(ParserObjects, QuadricFamilyArguments) {
+    auto scene = parse_ok(R"(
+        cylinder { <1, 2, 3>, <1, 5, 3>, 0.5 open }
+        cone { 0, 1, y, 0.25 }
+        torus { 2, -0.5 sturm }
+        disc { 0, y, 2, 1 }
+        quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 })");
+    ASSERT_EQ(scene.objects.size(), 5u);
+    const auto& cylinder = std::get<sg::Cone>(scene.objects[0].shape);
+    EXPECT_TRUE(cylinder.open);
+    EXPECT_EQ(cylinder.cap, sg::Vec3(1, 5, 3));
+    EXPECT_DOUBLE_EQ(cylinder.cap_radius, 0.5);
+    const auto& cone = std::get<sg::Cone>(scene.objects[1].shape);
+    EXPECT_DOUBLE_EQ(cone.base_radius, 1.0);
+    EXPECT_DOUBLE_EQ(cone.cap_radius, 0.25);
+    EXPECT_FALSE(cone.open);
+    // POV: a negative radius inverts the torus (with a warning).
+    EXPECT_TRUE(scene.objects[2].inverse);
+    EXPECT_DOUBLE_EQ(std::get<sg::Torus>(scene.objects[2].shape).minor_radius, 0.5);
+    EXPECT_DOUBLE_EQ(std::get<sg::Disc>(scene.objects[3].shape).hole_radius, 1.0);
+    EXPECT_EQ(std::get<sg::Quadric>(scene.objects[4].shape).square_terms, sg::Vec3(1, 1, 0));
+}
+
 TEST(ParserMaterials, TextureFinishDefaultsAndValues) {
     auto scene = parse_ok(R"(sphere { 0, 1 texture {
         pigment { color rgbft <0.1, 0.2, 0.3, 0.4, 0.5> }

@@ -225,7 +225,8 @@ struct Object {
     // Maps this object's own space to its parent's space (the group it is
     // in, or the world). Children of a union compose with their parent's.
     Mat4 parent_from_object{1.0};
-    MaterialRef material;  // null: inherit from the enclosing group, else default
+    MaterialRef material;            // null: inherit from the enclosing group, else default
+    bool inherits_material = false;  // `material` came from an enclosing group
     bool no_shadow = false;
     bool hollow = false;
     std::string name;  // the #declare'd name it was instanced from, if any
