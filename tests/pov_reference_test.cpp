@@ -10,7 +10,8 @@
 // reflection metallic, exponent and fresnel, conserve_energy), gamma, and
 // a pre-3.7 scene's legacy gamma and `version`, POV's sizing of
 // orthographic views (also one looking straight down its sky), and the
-// shapes: cylinder, cone, torus, disc, quadric, and CSG (difference,
+// shapes: cylinder, cone, torus, disc, quadric, polygon, poly, cubic,
+// quartic, and CSG (difference,
 // intersection, merge, inverse, clipped_by, textures per child; in glass,
 // refracting at every face a difference keeps).
 #include <filesystem>

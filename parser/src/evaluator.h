@@ -130,6 +130,11 @@ class Evaluator {
                        const std::optional<std::pair<Value, SourceRange>>& hole, const sg::SourceLocation& at);
     ShapePtr make_quadric(const std::vector<Value>& values, const std::vector<SourceRange>& where,
                           const sg::SourceLocation& at);
+    ShapePtr make_polygon(const Value& count, const SourceRange& wc, const std::vector<Value>& points,
+                          const SourceRange& wp, const sg::SourceLocation& at);
+    ShapePtr make_polynomial(sg::Object::Kind kind, const Value& order, const SourceRange& wo,
+                             const std::vector<Value>& coefficients, const SourceRange& wc,
+                             const sg::SourceLocation& at);
     // ---- CSG (csg.cpp)
     ShapePtr make_csg(sg::Object::Kind kind, const sg::SourceLocation& at);
     void finish_csg(ShapeValue& shape);

@@ -88,7 +88,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        ASSUMED_GAMMA "assumed_gamma" MAX_TRACE_LEVEL "max_trace_level" AMBIENT_LIGHT "ambient_light"
        ADC_BAILOUT "adc_bailout" CHARSET "charset" NUMBER_OF_WAVES "number_of_waves"
        NOISE_GENERATOR "noise_generator" MAX_INTERSECTIONS "max_intersections"
-       CONE "cone" TORUS "torus" DISC "disc" QUADRIC "quadric" OPEN "open" STURM "sturm"
+       CONE "cone" TORUS "torus" DISC "disc" QUADRIC "quadric"
+       POLYGON "polygon" POLY "poly" CUBIC "cubic" QUARTIC "quartic" OPEN "open" STURM "sturm"
        CLIPPED_BY "clipped_by" BOUNDED_BY "bounded_by"
 
 %nterm <Value> expr postfix primary colour colour_base declared_value string_value
@@ -228,6 +229,14 @@ object
       { $$ = ev.make_disc({$3, $5, $7}, {@3, @5, @7}, $8, LOC(@1)); ev.apply($$, $9); }
   | "quadric" "{" expr opt_comma expr opt_comma expr opt_comma expr object_mods "}"
       { $$ = ev.make_quadric({$3, $5, $7, $9}, {@3, @5, @7, @9}, LOC(@1)); ev.apply($$, $10); }
+  | "polygon" "{" expr expr_seq opt_comma object_mods "}"
+      { $$ = ev.make_polygon($3, @3, $4, @4, LOC(@1)); ev.apply($$, $6); }
+  | "poly" "{" expr "," "<" vector_items ">" object_mods "}"
+      { $$ = ev.make_polynomial(sg::Object::Kind::Poly, $3, @3, $6, @6, LOC(@1)); ev.apply($$, $8); }
+  | "cubic" "{" "<" vector_items ">" object_mods "}"
+      { $$ = ev.make_polynomial(sg::Object::Kind::Cubic, Value::number(3), @1, $4, @4, LOC(@1)); ev.apply($$, $6); }
+  | "quartic" "{" "<" vector_items ">" object_mods "}"
+      { $$ = ev.make_polynomial(sg::Object::Kind::Quartic, Value::number(4), @1, $4, @4, LOC(@1)); ev.apply($$, $6); }
   | "triangle" "{" expr opt_comma expr opt_comma expr object_mods "}"
       { $$ = ev.make_triangle({$3, $5, $7}, {@3, @5, @7}, LOC(@1)); ev.apply($$, $8); }
   | "smooth_triangle" "{" expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr object_mods "}"

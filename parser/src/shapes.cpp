@@ -106,4 +106,63 @@ ShapePtr Evaluator::make_quadric(const std::vector<Value>& values, const std::ve
     return shape;
 }
 
+ShapePtr Evaluator::make_polygon(const Value& count, const SourceRange& wc, const std::vector<Value>& points,
+                                 const SourceRange& wp, const sg::SourceLocation& at) {
+    auto shape = new_shape(sg::Object::Kind::Polygon, at);
+    sg::Polygon polygon;
+    const int n = to_int(count, wc);
+    if (n < 3) error(wc.begin, "polygon needs at least three points, got " + std::to_string(n));
+    if (n >= 3 && std::size_t(n) != points.size())
+        error(wp.begin,
+              "polygon: " + std::to_string(n) + " points announced, " + std::to_string(points.size()) + " given");
+    for (const Value& point : points) {
+        const SourceRange where{point.location, point.location};
+        polygon.points.push_back(to_vec3(point, point.location.file ? where : wp));
+    }
+    // POV-Ray: an open last loop is closed, with a warning.
+    if (polygon.points.size() >= 3) {
+        std::size_t start = 0;
+        bool closed = false;
+        for (std::size_t i = 1; i < polygon.points.size(); ++i) {
+            closed = false;
+            if (polygon.points[i] == polygon.points[start]) {
+                closed = true;
+                start = i + 1;
+                ++i;
+            }
+        }
+        if (!closed && start < polygon.points.size()) {
+            warning(at, "polygon not closed; closing it (as POV-Ray does)");
+            polygon.points.push_back(polygon.points[start]);
+        }
+    }
+    shape->object.shape = std::move(polygon);
+    return shape;
+}
+
+ShapePtr Evaluator::make_polynomial(sg::Object::Kind kind, const Value& order_value, const SourceRange& wo,
+                                    const std::vector<Value>& coefficients, const SourceRange& wc,
+                                    const sg::SourceLocation& at) {
+    auto shape = new_shape(kind, at);
+    sg::Polynomial polynomial;
+    polynomial.order = to_int(order_value, wo);
+    constexpr int kMaxOrder = 15;  // the renderer's root finder's degree
+    if (polynomial.order < 2 || polynomial.order > kMaxOrder) {
+        error(wo.begin,
+              "poly order must be 2 to " + std::to_string(kMaxOrder) + ", got " + std::to_string(polynomial.order));
+        polynomial.order = 2;
+    }
+    const int n = polynomial.order;
+    const std::size_t expected = std::size_t((n + 1) * (n + 2) * (n + 3) / 6);
+    if (coefficients.size() != expected)
+        error(wc.begin, "a polynomial of order " + std::to_string(n) + " has " + std::to_string(expected) +
+                            " coefficients, got " + std::to_string(coefficients.size()));
+    for (const Value& c : coefficients) polynomial.coefficients.push_back(to_float(c, wc, "a float coefficient"));
+    if (!check_renderable(polynomial.coefficients.data(), int(polynomial.coefficients.size()), wc,
+                          "the polynomial's coefficients"))
+        polynomial.coefficients.assign(polynomial.coefficients.size(), 0.0);
+    shape->object.shape = std::move(polynomial);
+    return shape;
+}
+
 }  // namespace lancer::parse

@@ -161,6 +161,20 @@ struct Quadric {
     double constant = -1.0;
 };
 
+// POV's polygon { n, points }: flat loops, filled even-odd; a loop closes
+// where a point repeats its first point.
+struct Polygon {
+    std::vector<Vec3> points;
+};
+
+// POV's poly { order, <coefficients> }, cubic and quartic: the
+// coefficients of x^i y^j z^k in POV's order (i from `order` down, then j,
+// then k), inside where the polynomial is negative.
+struct Polynomial {
+    int order = 2;
+    std::vector<double> coefficients;
+};
+
 // POV's disc { center, normal, radius [, hole_radius] }.
 struct Disc {
     Vec3 center{0.0};
@@ -211,12 +225,16 @@ struct Object {
         Torus,
         Disc,
         Quadric,
+        Polygon,
+        Poly,
+        Cubic,
+        Quartic,
         Merge,
         Intersection,
         Difference
     };
     Kind kind = Kind::Sphere;
-    std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric> shape;
+    std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric, Polygon, Polynomial> shape;
     // POV's inverse: inside and outside swapped (what CSG and clipped_by see).
     bool inverse = false;
     // POV's clipped_by: only the parts of this object's surface inside every

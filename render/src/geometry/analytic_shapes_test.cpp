@@ -217,5 +217,60 @@ TEST(Quadric, InfiniteCylinderAndMixedTerms) {
     EXPECT_NEAR(t[0], 1e8 - 1.0, 1e-7);
 }
 
+TEST(Polygon, EvenOddAcrossLoops) {
+    // A 2 x 2 square with a 1 x 1 hole, in the plane z = 1, loops closed by
+    // repeating their first point (POV's form).
+    const std::vector<DVec3> points = {{0, 0, 1},     {2, 0, 1},     {2, 2, 1},     {0, 2, 1},     {0, 0, 1},
+                                       {0.5, 0.5, 1}, {1.5, 0.5, 1}, {1.5, 1.5, 1}, {0.5, 1.5, 1}, {0.5, 0.5, 1}};
+    const auto polygon = make_polygon_shape(points);
+    ASSERT_TRUE(polygon);
+    EXPECT_EQ(sorted_crossings(*polygon, {0.25, 0.25, -1}, {0, 0, 1}), std::vector<double>{2.0});
+    EXPECT_TRUE(sorted_crossings(*polygon, {1, 1, -1}, {0, 0, 1}).empty());  // the hole
+    EXPECT_TRUE(sorted_crossings(*polygon, {2.5, 1, -1}, {0, 0, 1}).empty());
+    EXPECT_FALSE(polygon->inside({1, 1, 1}));  // POV: a polygon is no solid
+    EXPECT_NEAR(std::fabs(polygon->surface({1, 0.2, 1}, 0).normal.z), 1.0, 1e-12);
+    // Collinear points span no plane.
+    EXPECT_FALSE(make_polygon_shape({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 0, 0}}));
+}
+
+TEST(Polynomial, QuarticTorusMatchesTheTorus) {
+    // (x^2 + y^2 + z^2 + R^2 - r^2)^2 - 4 R^2 (x^2 + z^2), R = 2, r = 0.5, in POV's order.
+    const double R = 2.0, r = 0.5, A = R * R - r * r;
+    std::vector<double> c(35, 0.0);
+    c[0] = 1;                   // x^4
+    c[4] = 2;                   // x^2 y^2
+    c[7] = 2;                   // x^2 z^2
+    c[9] = 2 * A - 4 * R * R;   // x^2
+    c[20] = 1;                  // y^4
+    c[23] = 2;                  // y^2 z^2
+    c[25] = 2 * A;              // y^2
+    c[30] = 1;                  // z^4
+    c[32] = 2 * A - 4 * R * R;  // z^2
+    c[34] = A * A;
+    const auto quartic = make_polynomial_shape(4, c);
+    ASSERT_TRUE(quartic);
+    const auto torus = make_torus_shape(R, r);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int compared = 0;
+    for (int i = 0; i < 300; ++i) {
+        const DVec3 o(6 * u(rng), 6 * u(rng), 6 * u(rng));
+        const DVec3 d = glm::normalize(DVec3(u(rng), u(rng), u(rng)) * 3.0 - o);
+        const auto expected = sorted_crossings(*torus, o, d);
+        const auto found = sorted_crossings(*quartic, o, d);
+        ASSERT_EQ(found.size(), expected.size()) << i;
+        for (std::size_t k = 0; k < found.size(); ++k) EXPECT_NEAR(found[k], expected[k], 1e-7) << i;
+        compared += int(found.size());
+    }
+    EXPECT_GT(compared, 100);
+    EXPECT_TRUE(quartic->inside({R, 0, 0}));
+    EXPECT_FALSE(quartic->inside({0, 0, 0}));
+    const SurfaceGeometry g = quartic->surface({R + r, 0, 0}, 0);
+    EXPECT_NEAR(g.normal.x, 1.0, 1e-9);
+    // Wrong coefficient counts and out-of-range orders are refused.
+    EXPECT_FALSE(make_polynomial_shape(4, std::vector<double>(34, 1.0)));
+    EXPECT_FALSE(make_polynomial_shape(16, std::vector<double>(polynomial_term_count(16), 1.0)));
+}
+
 }  // namespace
 }  // namespace lancer

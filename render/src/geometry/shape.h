@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "geometry/shapes.h"
 
@@ -86,6 +87,19 @@ struct QuadricParameters {
     double constant = -1.0;
 };
 std::shared_ptr<const Shape> make_quadric_shape(const QuadricParameters& quadric);
+
+// POV's poly { n, <coefficients> } (and cubic, n = 3; quartic, n = 4): the
+// coefficients of x^i y^j z^k for i from n down to 0, then j from n - i
+// down, then k from n - i - j down (POV's order). Null when the count is
+// not polynomial_term_count(order), the order is out of range or every
+// coefficient is 0.
+constexpr int kMaxPolynomialShapeOrder = 15;
+int polynomial_term_count(int order);
+std::shared_ptr<const Shape> make_polynomial_shape(int order, const std::vector<double>& coefficients);
+
+// POV's polygon: its points as written (a loop closes where a point repeats
+// the loop's first). Null when no loop of three points spans a plane.
+std::shared_ptr<const Shape> make_polygon_shape(const std::vector<DVec3>& points);
 
 // Narrows (t_min, t_max) to the stretch of o + t d inside the box
 // [lower, upper]; false when none of it is.

@@ -234,6 +234,17 @@ class Builder {
         if (const auto* quadric = std::get_if<sg::Quadric>(&object.shape))
             return make_quadric_shape(QuadricParameters{quadric->square_terms, quadric->mixed_terms,
                                                         quadric->linear_terms, quadric->constant});
+        if (const auto* polygon = std::get_if<sg::Polygon>(&object.shape)) {
+            if (auto shape = make_polygon_shape(polygon->points)) return shape;
+            throw SceneError(object.location, "polygon: its points span no plane (they are all in a line)");
+        }
+        if (const auto* polynomial = std::get_if<sg::Polynomial>(&object.shape)) {
+            if (auto shape = make_polynomial_shape(polynomial->order, polynomial->coefficients)) return shape;
+            throw SceneError(object.location,
+                             "poly: no renderable polynomial (every coefficient is 0, or the "
+                             "order is above " +
+                                 std::to_string(kMaxPolynomialShapeOrder) + ")");
+        }
         throw SceneError(object.location, "lancer has no renderer for this kind of object");
     }
 
