@@ -135,6 +135,7 @@ class Evaluator {
     ShapePtr make_polynomial(sg::Object::Kind kind, const Value& order, const SourceRange& wo,
                              const std::vector<Value>& coefficients, const SourceRange& wc,
                              const sg::SourceLocation& at);
+    ShapePtr make_superellipsoid(const Value& exponents, const SourceRange& where, const sg::SourceLocation& at);
     // ---- CSG (csg.cpp)
     ShapePtr make_csg(sg::Object::Kind kind, const sg::SourceLocation& at);
     void finish_csg(ShapeValue& shape);

@@ -89,7 +89,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        ADC_BAILOUT "adc_bailout" CHARSET "charset" NUMBER_OF_WAVES "number_of_waves"
        NOISE_GENERATOR "noise_generator" MAX_INTERSECTIONS "max_intersections"
        CONE "cone" TORUS "torus" DISC "disc" QUADRIC "quadric"
-       POLYGON "polygon" POLY "poly" CUBIC "cubic" QUARTIC "quartic" OPEN "open" STURM "sturm"
+       POLYGON "polygon" POLY "poly" CUBIC "cubic" QUARTIC "quartic" SUPERELLIPSOID "superellipsoid" OPEN "open" STURM "sturm"
        CLIPPED_BY "clipped_by" BOUNDED_BY "bounded_by"
 
 %nterm <Value> expr postfix primary colour colour_base declared_value string_value
@@ -229,6 +229,8 @@ object
       { $$ = ev.make_disc({$3, $5, $7}, {@3, @5, @7}, $8, LOC(@1)); ev.apply($$, $9); }
   | "quadric" "{" expr opt_comma expr opt_comma expr opt_comma expr object_mods "}"
       { $$ = ev.make_quadric({$3, $5, $7, $9}, {@3, @5, @7, @9}, LOC(@1)); ev.apply($$, $10); }
+  | "superellipsoid" "{" expr object_mods "}"
+      { $$ = ev.make_superellipsoid($3, @3, LOC(@1)); ev.apply($$, $4); }
   | "polygon" "{" expr expr_seq opt_comma object_mods "}"
       { $$ = ev.make_polygon($3, @3, $4, @4, LOC(@1)); ev.apply($$, $6); }
   | "poly" "{" expr "," "<" vector_items ">" object_mods "}"

@@ -106,6 +106,28 @@ ShapePtr Evaluator::make_quadric(const std::vector<Value>& values, const std::ve
     return shape;
 }
 
+ShapePtr Evaluator::make_superellipsoid(const Value& exponents, const SourceRange& where,
+                                        const sg::SourceLocation& at) {
+    auto shape = new_shape(sg::Object::Kind::Superellipsoid, at);
+    sg::Superellipsoid superellipsoid;
+    if (exponents.kind != Value::Kind::Vector && exponents.kind != Value::Kind::Float) {
+        error(where.begin, "superellipsoid needs a 2-D vector <e, n>");
+    } else {
+        // A float stands for <f, f>, as POV's Parse_UV_Vect reads it.
+        superellipsoid.east_west = exponents.v[0];
+        superellipsoid.north_south = exponents.kind == Value::Kind::Float ? exponents.v[0] : exponents.v[1];
+        double both[2] = {superellipsoid.east_west, superellipsoid.north_south};
+        if (!check_renderable(both, 2, where, "the superellipsoid's exponents")) {
+            superellipsoid = sg::Superellipsoid{};
+        } else if (!(both[0] > 0.0 && both[1] > 0.0)) {
+            error(where.begin, "superellipsoid exponents must be positive");
+            superellipsoid = sg::Superellipsoid{};
+        }
+    }
+    shape->object.shape = superellipsoid;
+    return shape;
+}
+
 ShapePtr Evaluator::make_polygon(const Value& count, const SourceRange& wc, const std::vector<Value>& points,
                                  const SourceRange& wp, const sg::SourceLocation& at) {
     auto shape = new_shape(sg::Object::Kind::Polygon, at);

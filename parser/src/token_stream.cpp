@@ -66,7 +66,6 @@ const std::unordered_set<std::string>& unsupported_words() {
                                                           "lathe",
                                                           "prism",
                                                           "sor",
-                                                          "superellipsoid",
                                                           "text",
                                                           "height_field",
                                                           "isosurface",

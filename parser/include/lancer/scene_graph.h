@@ -175,6 +175,13 @@ struct Polynomial {
     std::vector<double> coefficients;
 };
 
+// POV's superellipsoid { <e, n> }: within the unit box,
+// (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) <= 1.
+struct Superellipsoid {
+    double east_west = 1.0;    // e
+    double north_south = 1.0;  // n
+};
+
 // POV's disc { center, normal, radius [, hole_radius] }.
 struct Disc {
     Vec3 center{0.0};
@@ -229,12 +236,14 @@ struct Object {
         Poly,
         Cubic,
         Quartic,
+        Superellipsoid,
         Merge,
         Intersection,
         Difference
     };
     Kind kind = Kind::Sphere;
-    std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric, Polygon, Polynomial> shape;
+    std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric, Polygon, Polynomial, Superellipsoid>
+        shape;
     // POV's inverse: inside and outside swapped (what CSG and clipped_by see).
     bool inverse = false;
     // POV's clipped_by: only the parts of this object's surface inside every

@@ -272,5 +272,34 @@ TEST(Polynomial, QuarticTorusMatchesTheTorus) {
     EXPECT_FALSE(make_polynomial_shape(16, std::vector<double>(polynomial_term_count(16), 1.0)));
 }
 
+TEST(Superellipsoid, SphereBoxAndGrazingRays) {
+    // <1, 1> is the unit sphere: every crossing agrees with the sphere's.
+    const auto round = make_superellipsoid_shape(1.0, 1.0);
+    const auto sphere = make_sphere_shape(AnalyticSphere{DVec3(0.0), 1.0});
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 200; ++i) {
+        const DVec3 o(4 * u(rng), 4 * u(rng), -4.0);
+        const DVec3 d = glm::normalize(DVec3(0.8 * u(rng), 0.8 * u(rng), 0.0) - o);
+        const auto expected = sorted_crossings(*sphere, o, d);
+        const auto found = sorted_crossings(*round, o, d);
+        ASSERT_EQ(found.size(), expected.size()) << i;
+        for (std::size_t k = 0; k < found.size(); ++k) EXPECT_NEAR(found[k], expected[k], 1e-9) << i;
+    }
+    // A ray grazing the sphere 1e-6 inside its rim still finds both crossings.
+    const double y = 1.0 - 1e-6;
+    auto t = sorted_crossings(*round, {-3, y, 0}, {1, 0, 0});
+    ASSERT_EQ(t.size(), 2u);
+    EXPECT_NEAR(t[1] - t[0], 2.0 * std::sqrt(1.0 - y * y), 1e-6);
+    // Small exponents approach the cube: its faces at +-1, normals along the axes.
+    const auto boxy = make_superellipsoid_shape(0.1, 0.1);
+    t = sorted_crossings(*boxy, {-3, 0.3, 0.2}, {1, 0, 0});
+    ASSERT_EQ(t.size(), 2u);
+    EXPECT_NEAR(t[0], 2.0, 1e-6);
+    EXPECT_NEAR(boxy->surface({-1, 0.3, 0.2}, 0).normal.x, -1.0, 1e-6);
+    EXPECT_TRUE(boxy->inside({0.9, 0.9, 0.0}));
+    EXPECT_FALSE(round->inside({0.9, 0.9, 0.0}));
+}
+
 }  // namespace
 }  // namespace lancer

@@ -97,6 +97,10 @@ constexpr int kMaxPolynomialShapeOrder = 15;
 int polynomial_term_count(int order);
 std::shared_ptr<const Shape> make_polynomial_shape(int order, const std::vector<double>& coefficients);
 
+// POV's superellipsoid { <e, n> } (both positive): the unit box-bounded
+// solid ((|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n)) <= 1.
+std::shared_ptr<const Shape> make_superellipsoid_shape(double east_west, double north_south);
+
 // POV's polygon: its points as written (a loop closes where a point repeats
 // the loop's first). Null when no loop of three points spans a plane.
 std::shared_ptr<const Shape> make_polygon_shape(const std::vector<DVec3>& points);

@@ -234,6 +234,8 @@ class Builder {
         if (const auto* quadric = std::get_if<sg::Quadric>(&object.shape))
             return make_quadric_shape(QuadricParameters{quadric->square_terms, quadric->mixed_terms,
                                                         quadric->linear_terms, quadric->constant});
+        if (const auto* superellipsoid = std::get_if<sg::Superellipsoid>(&object.shape))
+            return make_superellipsoid_shape(superellipsoid->east_west, superellipsoid->north_south);
         if (const auto* polygon = std::get_if<sg::Polygon>(&object.shape)) {
             if (auto shape = make_polygon_shape(polygon->points)) return shape;
             throw SceneError(object.location, "polygon: its points span no plane (they are all in a line)");
