@@ -9,6 +9,8 @@ OUT_DIR/scene/   every scene in scenes/, every include in include/, every
 OUT_DIR/obj/     every OBJ in scenes/ (with its MTL appended after "#MTL",
                  the layout fuzz_obj.cc expects), small hand-made OBJ cases,
                  and tests/fuzz/regressions/*.obj
+OUT_DIR/shapes/  one seed per shape kind fuzz_shapes.cc builds (its first
+                 byte), each followed by a fixed stream of parameter bytes
 OUT_DIR/scene.dict  the grammar's keywords and punctuation, for -dict=
 """
 import ast
@@ -73,6 +75,10 @@ def main() -> None:
         save(obj_dir, data)
     for case in OBJ_CASES:
         save(obj_dir, case)
+    shapes_dir = out / "shapes"
+    for kind in range(8):
+        stream = bytes((kind * 37 + 11 * i) % 256 for i in range(400))
+        save(shapes_dir, bytes([kind]) + stream)
 
     # Dictionary: quoted token aliases in the grammar ("sphere", "{", ...) and directives.
     grammar = (ROOT / "parser/src/grammar.y").read_text()
@@ -83,7 +89,7 @@ def main() -> None:
     with open(out / "scene.dict", "w") as d:
         for w in words:
             d.write('"' + w.replace("\\", "\\\\").replace('"', '\\"') + '"\n')
-    counts = {d.name: len(list(d.iterdir())) for d in (scene_dir, obj_dir)}
+    counts = {d.name: len(list(d.iterdir())) for d in (scene_dir, obj_dir, shapes_dir)}
     print(f"corpus in {out}: {counts['scene']} scene seeds, {counts['obj']} OBJ seeds, {len(words)} dictionary words")
 
 

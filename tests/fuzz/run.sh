@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Builds the fuzzers if needed, assembles the seed corpora, then runs one
 # target for a given time (docs/robustness.md).
-#   tests/fuzz/run.sh scene|obj SECONDS [extra libFuzzer flags...]
+#   tests/fuzz/run.sh scene|obj|shapes SECONDS [extra libFuzzer flags...]
 # Environment: BUILD (default build-fuzz), JOBS (build jobs, default 2).
 # Findings go to $BUILD/artifacts/<target>/; the growing corpus to
 # $BUILD/corpus/<target>/ (kept between runs).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-target=${1:?usage: tests/fuzz/run.sh scene|obj SECONDS [flags...]}
-seconds=${2:?usage: tests/fuzz/run.sh scene|obj SECONDS [flags...]}
+target=${1:?usage: tests/fuzz/run.sh scene|obj|shapes SECONDS [flags...]}
+seconds=${2:?usage: tests/fuzz/run.sh scene|obj|shapes SECONDS [flags...]}
 shift 2
 build=${BUILD:-build-fuzz}
 if [ ! -f "$build/build.ninja" ]; then

@@ -1,0 +1,123 @@
+// libFuzzer target for the analytic shapes' parameters (issue 16): the
+// input picks a shape and its parameters, then rays. Every crossing must be
+// finite and inside the ray's interval and the shape's bounds, every
+// surface normal finite and of unit length; nothing may crash or hang.
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "geometry/shape.h"
+
+namespace {
+
+using lancer::DVec3;
+
+class Input {
+  public:
+    Input(const std::uint8_t* data, std::size_t size) : m_data(data), m_size(size) {}
+    std::uint8_t byte() { return m_offset < m_size ? m_data[m_offset++] : 0; }
+    // A value in [-range, range], sometimes at the extremes POV scenes reach.
+    double number(double range) {
+        std::uint32_t bits = 0;
+        for (int i = 0; i < 4; ++i) bits = bits << 8 | byte();
+        const double unit = double(bits) / 4294967295.0 * 2.0 - 1.0;
+        switch (bits & 7) {
+        case 0: return unit * 1e-6;
+        case 1: return unit * 1e5;
+        default: return unit * range;
+        }
+    }
+    DVec3 vector(double range) { return DVec3(number(range), number(range), number(range)); }
+    bool empty() const { return m_offset >= m_size; }
+
+  private:
+    const std::uint8_t* m_data;
+    std::size_t m_size;
+    std::size_t m_offset = 0;
+};
+
+[[noreturn]] void fail(const char* what, double value) {
+    std::fprintf(stderr, "fuzz_shapes: %s (%g)\n", what, value);
+    std::abort();
+}
+
+std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
+    switch (in.byte() % 8) {
+    case 0: {
+        lancer::ConeParameters cone;
+        cone.base = in.vector(4);
+        cone.cap = in.vector(4);
+        if (!(glm::length(cone.cap - cone.base) > 1e-9)) return nullptr;
+        cone.base_radius = std::fabs(in.number(3));
+        cone.cap_radius = in.byte() & 1 ? cone.base_radius : std::fabs(in.number(3));
+        cone.open = in.byte() & 1;
+        return lancer::make_cone_shape(cone);
+    }
+    case 1: return lancer::make_torus_shape(std::fabs(in.number(4)), std::fabs(in.number(2)) + 1e-9);
+    case 2: {
+        lancer::DiscParameters disc;
+        disc.center = in.vector(4);
+        const DVec3 normal = in.vector(1);
+        if (!(glm::length(normal) > 1e-9)) return nullptr;
+        disc.normal = glm::normalize(normal);
+        disc.radius = std::fabs(in.number(3));
+        disc.hole_radius = std::fabs(in.number(3));
+        return lancer::make_disc_shape(disc);
+    }
+    case 3: return lancer::make_quadric_shape({in.vector(3), in.vector(3), in.vector(3), in.number(3)});
+    case 4: {
+        const int order = 2 + in.byte() % 5;
+        std::vector<double> coefficients(std::size_t(lancer::polynomial_term_count(order)));
+        for (double& c : coefficients) c = in.byte() & 1 ? 0.0 : in.number(2);
+        return lancer::make_polynomial_shape(order, coefficients);
+    }
+    case 5: {
+        std::vector<DVec3> points(3 + in.byte() % 14);
+        for (DVec3& p : points) p = in.vector(3);
+        if (in.byte() & 1) points.push_back(points.front());
+        return lancer::make_polygon_shape(points);
+    }
+    case 6: return lancer::make_superellipsoid_shape(0.05 + std::fabs(in.number(3)), 0.05 + std::fabs(in.number(3)));
+    default: return lancer::make_sphere_shape({in.vector(3), std::fabs(in.number(3))});
+    }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    Input in(data, size);
+    const auto shape = make_shape(in);
+    if (!shape) return 0;
+    DVec3 lower, upper;
+    const bool bounded = shape->bounds(lower, upper);
+    for (int ray = 0; ray < 8 && !in.empty(); ++ray) {
+        const DVec3 o = in.vector(10);
+        const DVec3 d = in.vector(2);
+        if (!(glm::length(d) > 1e-9)) continue;
+        const double t_min = in.byte() & 1 ? 0.0 : std::fabs(in.number(2));
+        const double t_max = in.byte() & 1 ? INFINITY : t_min + std::fabs(in.number(50));
+        lancer::ShapeCrossings crossings;
+        shape->crossings(o, d, t_min, t_max, crossings);
+        for (int i = 0; i < crossings.count; ++i) {
+            const double t = crossings.items[i].t;
+            if (!std::isfinite(t)) fail("non-finite crossing", t);
+            if (!(t > t_min && t < t_max)) fail("crossing outside the ray's interval", t);
+            const DVec3 p = o + t * d;
+            if (bounded) {
+                const double slack = 1e-6 * (1.0 + glm::length(upper - lower)) + 1e-9 * glm::length(o);
+                for (int axis = 0; axis < 3; ++axis)
+                    if (p[axis] < lower[axis] - slack || p[axis] > upper[axis] + slack)
+                        fail("crossing outside the shape's bounds", p[axis]);
+            }
+            const lancer::SurfaceGeometry g = shape->surface(p, crossings.items[i].face);
+            const double length = glm::length(g.normal);
+            if (!std::isfinite(length) || std::fabs(length - 1.0) > 1e-6) fail("surface normal not of unit length", length);
+            if (!std::isfinite(g.point.x + g.point.y + g.point.z)) fail("non-finite surface point", 0.0);
+            (void)shape->inside(p);
+        }
+    }
+    return 0;
+}
