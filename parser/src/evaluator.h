@@ -136,6 +136,11 @@ class Evaluator {
                              const std::vector<Value>& coefficients, const SourceRange& wc,
                              const sg::SourceLocation& at);
     ShapePtr make_superellipsoid(const Value& exponents, const SourceRange& where, const sg::SourceLocation& at);
+    ShapePtr make_blob(const Edits<sg::Blob>& items, const sg::SourceLocation& at);
+    // values: centre (or base), apex, radius, strength.
+    std::function<void(sg::Blob&)> blob_component(bool cylinder, const std::vector<Value>& values,
+                                                  const std::vector<SourceRange>& where,
+                                                  const Edits<sg::Blob::Component>& mods, const sg::SourceLocation& at);
     // ---- CSG (csg.cpp)
     ShapePtr make_csg(sg::Object::Kind kind, const sg::SourceLocation& at);
     void finish_csg(ShapeValue& shape);

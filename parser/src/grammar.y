@@ -89,7 +89,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        ADC_BAILOUT "adc_bailout" CHARSET "charset" NUMBER_OF_WAVES "number_of_waves"
        NOISE_GENERATOR "noise_generator" MAX_INTERSECTIONS "max_intersections"
        CONE "cone" TORUS "torus" DISC "disc" QUADRIC "quadric"
-       POLYGON "polygon" POLY "poly" CUBIC "cubic" QUARTIC "quartic" SUPERELLIPSOID "superellipsoid" OPEN "open" STURM "sturm"
+       POLYGON "polygon" POLY "poly" CUBIC "cubic" QUARTIC "quartic" SUPERELLIPSOID "superellipsoid"
+       BLOB "blob" THRESHOLD "threshold" COMPONENT "component" STRENGTH "strength" HIERARCHY "hierarchy" OPEN "open" STURM "sturm"
        CLIPPED_BY "clipped_by" BOUNDED_BY "bounded_by"
 
 %nterm <Value> expr postfix primary colour colour_base declared_value string_value
@@ -119,6 +120,9 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::function<void(CameraSpec&)>> camera_item
 %nterm <Edits<ParameterList>> param_items
 %nterm <bool> opt_bool opt_albedo opt_open
+%nterm <Edits<sg::Blob>> blob_items
+%nterm <std::function<void(sg::Blob&)>> blob_item
+%nterm <Edits<sg::Blob::Component>> blob_component_mods
 %nterm <std::vector<ShapePtr>> clip_objects
 %nterm <std::optional<std::pair<Value, SourceRange>>> opt_hole
 %nterm <int> colour_channel
@@ -229,6 +233,8 @@ object
       { $$ = ev.make_disc({$3, $5, $7}, {@3, @5, @7}, $8, LOC(@1)); ev.apply($$, $9); }
   | "quadric" "{" expr opt_comma expr opt_comma expr opt_comma expr object_mods "}"
       { $$ = ev.make_quadric({$3, $5, $7, $9}, {@3, @5, @7, @9}, LOC(@1)); ev.apply($$, $10); }
+  | "blob" "{" blob_items object_mods "}"
+      { $$ = ev.make_blob($3, LOC(@1)); ev.apply($$, $4); }
   | "superellipsoid" "{" expr object_mods "}"
       { $$ = ev.make_superellipsoid($3, @3, LOC(@1)); ev.apply($$, $4); }
   | "polygon" "{" expr expr_seq opt_comma object_mods "}"
@@ -289,6 +295,7 @@ object_mod
   | "no_reflection"    { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_reflection"); }
   | "inverse"          { $$ = [](ShapeValue& s) { s.object.inverse = !s.object.inverse; }; }
   | "sturm"            { $$ = [](ShapeValue&) {}; }
+  | "hierarchy" opt_bool { $$ = [](ShapeValue&) {}; }
   | "clipped_by" "{" clip_objects "}" { $$ = ev.clip_edit($3, LOC(@1)); }
   | "clipped_by" "{" "bounded_by" "}" { $$ = ev.clip_by_bounds_edit(LOC(@1)); }
   | "bounded_by" "{" clip_objects "}" { $$ = ev.bound_edit($3, LOC(@1)); }
@@ -303,6 +310,37 @@ clip_objects
   | clip_objects transform_item { $$ = std::move($1);
                                   for (auto& o : $$) { auto moved = std::make_shared<ShapeValue>(*o);
                                                        ev.apply(moved, {ev.transform_edit($2)}); o = moved; } }
+  ;
+
+/* blob { threshold T  sphere { <c>, r, [strength] s mods }  cylinder { <a>, <b>, r, [strength] s mods }
+ *        component s, r, <c> ... } */
+blob_items
+  : %empty             {}
+  | blob_items blob_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+blob_item
+  : "threshold" expr   { double t = ev.to_float($2, @2, "a float threshold"); $$ = [t](sg::Blob& b) { b.threshold = t; }; }
+  | "component" expr opt_comma expr opt_comma expr
+      { $$ = ev.blob_component(false, {$6, $6, $4, $2}, {@6, @6, @4, @2}, {}, LOC(@1)); }
+  | "sphere" "{" expr opt_comma expr opt_comma opt_strength expr blob_component_mods "}"
+      { $$ = ev.blob_component(false, {$3, $3, $5, $8}, {@3, @3, @5, @8}, $9, LOC(@1)); }
+  | "cylinder" "{" expr opt_comma expr opt_comma expr opt_comma opt_strength expr blob_component_mods "}"
+      { $$ = ev.blob_component(true, {$3, $5, $7, $10}, {@3, @5, @7, @10}, $11, LOC(@1)); }
+  ;
+
+opt_strength
+  : %empty %prec OPT_EMPTY
+  | "strength"
+  ;
+
+blob_component_mods
+  : %empty             {}
+  | blob_component_mods transform_item { $$ = std::move($1); sg::Mat4 m = $2;
+      $$.push_back([m](sg::Blob::Component& c) { c.blob_from_component = m * c.blob_from_component; }); }
+  | blob_component_mods texture { $$ = std::move($1); ev.ignored(LOC(@2), "a blob component's own texture (the blob's is used)"); }
+  | blob_component_mods pigment { $$ = std::move($1); ev.ignored(LOC(@2), "a blob component's own pigment (the blob's is used)"); }
+  | blob_component_mods finish { $$ = std::move($1); ev.ignored(LOC(@2), "a blob component's own finish (the blob's is used)"); }
   ;
 
 opt_open

@@ -128,6 +128,40 @@ ShapePtr Evaluator::make_superellipsoid(const Value& exponents, const SourceRang
     return shape;
 }
 
+ShapePtr Evaluator::make_blob(const Edits<sg::Blob>& items, const sg::SourceLocation& at) {
+    auto shape = new_shape(sg::Object::Kind::Blob, at);
+    sg::Blob blob;
+    for (const auto& item : items) item(blob);
+    if (blob.components.empty()) error(at, "blob needs at least one component");
+    if (!check_renderable(&blob.threshold, 1, SourceRange{at, at}, "the blob threshold")) blob.threshold = 1.0;
+    if (blob.threshold <= 0.0) warning(at, "a blob threshold at or below 0 makes all space outside it inside");
+    shape->object.shape = std::move(blob);
+    return shape;
+}
+
+std::function<void(sg::Blob&)> Evaluator::blob_component(bool cylinder, const std::vector<Value>& values,
+                                                         const std::vector<SourceRange>& where,
+                                                         const Edits<sg::Blob::Component>& mods,
+                                                         const sg::SourceLocation& at) {
+    sg::Blob::Component component;
+    component.kind = cylinder ? sg::Blob::Component::Kind::Cylinder : sg::Blob::Component::Kind::Sphere;
+    component.center = to_vec3(values[0], where[0]);
+    component.apex = to_vec3(values[1], where[1]);
+    component.radius = to_float(values[2], where[2], "a float radius");
+    component.strength = to_float(values[3], where[3], "a float strength");
+    component.location = at;
+    double numbers[2] = {component.radius, component.strength};
+    if (!check_renderable(numbers, 2, where[2], "the blob component's radius and strength")) {
+        component.radius = 1.0;
+        component.strength = 0.0;
+    }
+    if (component.radius == 0.0) warning(where[2].begin, "a blob component of radius 0 adds nothing");
+    if (cylinder && !(glm::length(component.apex - component.center) > 0.0))
+        error(where[1].begin, "degenerate cylindrical component in blob: its two ends are the same point");
+    for (const auto& mod : mods) mod(component);
+    return [component](sg::Blob& blob) { blob.components.push_back(component); };
+}
+
 ShapePtr Evaluator::make_polygon(const Value& count, const SourceRange& wc, const std::vector<Value>& points,
                                  const SourceRange& wp, const sg::SourceLocation& at) {
     auto shape = new_shape(sg::Object::Kind::Polygon, at);

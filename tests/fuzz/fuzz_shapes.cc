@@ -39,13 +39,19 @@ class Input {
     std::size_t m_offset = 0;
 };
 
+const char* g_kind = "";  // the shape under test, for the failure message
+
 [[noreturn]] void fail(const char* what, double value) {
-    std::fprintf(stderr, "fuzz_shapes: %s (%g)\n", what, value);
+    std::fprintf(stderr, "fuzz_shapes: %s: %s (%g)\n", g_kind, what, value);
     std::abort();
 }
 
 std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
-    switch (in.byte() % 8) {
+    static const char* const kinds[] = {"cone", "torus",   "disc",           "quadric",
+                                        "poly", "polygon", "superellipsoid", "sphere"};
+    const int kind = in.byte() % 8;
+    g_kind = kinds[kind];
+    switch (kind) {
     case 0: {
         lancer::ConeParameters cone;
         cone.base = in.vector(4);
@@ -109,12 +115,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             if (bounded) {
                 const double slack = 1e-6 * (1.0 + glm::length(upper - lower)) + 1e-9 * glm::length(o);
                 for (int axis = 0; axis < 3; ++axis)
-                    if (p[axis] < lower[axis] - slack || p[axis] > upper[axis] + slack)
+                    if (p[axis] < lower[axis] - slack || p[axis] > upper[axis] + slack) {
+                        std::fprintf(stderr, "axis %d: %.17g not in [%.17g, %.17g], o %g %g %g d %g %g %g t %.17g\n",
+                                     axis, p[axis], lower[axis], upper[axis], o.x, o.y, o.z, d.x, d.y, d.z, t);
                         fail("crossing outside the shape's bounds", p[axis]);
+                    }
             }
             const lancer::SurfaceGeometry g = shape->surface(p, crossings.items[i].face);
             const double length = glm::length(g.normal);
-            if (!std::isfinite(length) || std::fabs(length - 1.0) > 1e-6) fail("surface normal not of unit length", length);
+            if (!std::isfinite(length) || std::fabs(length - 1.0) > 1e-6)
+                fail("surface normal not of unit length", length);
             if (!std::isfinite(g.point.x + g.point.y + g.point.z)) fail("non-finite surface point", 0.0);
             (void)shape->inside(p);
         }

@@ -182,6 +182,25 @@ struct Superellipsoid {
     double north_south = 1.0;  // n
 };
 
+// POV's blob: where the summed field of the components equals the
+// threshold (inside where it is above). A component of strength s and
+// radius R adds s (1 - r^2/R^2)^2 within distance R of its centre (sphere)
+// or of its segment (cylinder, from center to apex).
+struct Blob {
+    struct Component {
+        enum class Kind { Sphere, Cylinder };
+        Kind kind = Kind::Sphere;
+        Vec3 center{0.0};
+        Vec3 apex{0.0};
+        double radius = 1.0;
+        double strength = 1.0;
+        Mat4 blob_from_component{1.0};  // the component's own transforms
+        SourceLocation location;
+    };
+    double threshold = 1.0;
+    std::vector<Component> components;
+};
+
 // POV's disc { center, normal, radius [, hole_radius] }.
 struct Disc {
     Vec3 center{0.0};
@@ -237,12 +256,14 @@ struct Object {
         Cubic,
         Quartic,
         Superellipsoid,
+        Blob,
         Merge,
         Intersection,
         Difference
     };
     Kind kind = Kind::Sphere;
-    std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric, Polygon, Polynomial, Superellipsoid>
+    std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric, Polygon, Polynomial, Superellipsoid,
+                 Blob>
         shape;
     // POV's inverse: inside and outside swapped (what CSG and clipped_by see).
     bool inverse = false;

@@ -301,5 +301,38 @@ TEST(Superellipsoid, SphereBoxAndGrazingRays) {
     EXPECT_FALSE(round->inside({0.9, 0.9, 0.0}));
 }
 
+// One component: s (1 - r^2/R^2)^2 = T at r = R sqrt(1 - sqrt(T/s)).
+TEST(Blob, SingleComponentsHaveClosedFormRadii) {
+    const double R = 2.0, s = 1.5, T = 0.5;
+    const double r = R * std::sqrt(1.0 - std::sqrt(T / s));
+    BlobParameters sphere;
+    sphere.threshold = T;
+    sphere.components.push_back(BlobComponent{BlobComponent::Kind::Sphere, {1, 0, 0}, {1, 0, 0}, R, s, DMat4(1.0)});
+    const auto blob = make_blob_shape(sphere);
+    auto t = sorted_crossings(*blob, {-5, 0, 0}, {1, 0, 0});
+    ASSERT_EQ(t.size(), 2u);
+    EXPECT_NEAR(t[0], 6.0 - r, 1e-9);
+    EXPECT_NEAR(t[1], 6.0 + r, 1e-9);
+    EXPECT_NEAR(blob->surface({1 - r, 0, 0}, 0).normal.x, -1.0, 1e-9);
+    EXPECT_TRUE(blob->inside({1, 0, 0}));
+    EXPECT_FALSE(blob->inside({1 + 1.01 * r, 0, 0}));
+    // A cylinder component: the same radius about its segment, and about its ends.
+    BlobParameters cylinder;
+    cylinder.threshold = T;
+    cylinder.components.push_back(
+        BlobComponent{BlobComponent::Kind::Cylinder, {0, -1, 0}, {0, 1, 0}, R, s, DMat4(1.0)});
+    const auto capsule = make_blob_shape(cylinder);
+    t = sorted_crossings(*capsule, {-5, 0.5, 0}, {1, 0, 0});
+    ASSERT_EQ(t.size(), 2u);
+    EXPECT_NEAR(t[0], 5.0 - r, 1e-9);
+    t = sorted_crossings(*capsule, {0, 5, 0}, {0, -1, 0});
+    ASSERT_EQ(t.size(), 2u);
+    EXPECT_NEAR(t[0], 4.0 - r, 1e-9);  // the hemisphere about the end (0, 1, 0)
+    // A negative component subtracts: a hole through the middle.
+    BlobParameters dented = sphere;
+    dented.components.push_back(BlobComponent{BlobComponent::Kind::Sphere, {1, 0, 0}, {1, 0, 0}, 0.5, -10, DMat4(1.0)});
+    EXPECT_FALSE(make_blob_shape(dented)->inside({1, 0, 0}));
+}
+
 }  // namespace
 }  // namespace lancer

@@ -74,10 +74,8 @@ std::shared_ptr<const Shape> make_polygon_shape(const std::vector<DVec3>& points
     // Loops: a point equal to its loop's first point closes the loop.
     std::vector<std::vector<DVec3>> loops(1);
     bool open_loop = false;
-    DVec3 lower(INFINITY), upper(-INFINITY);
+    DVec3 lower, upper;
     for (std::size_t i = 0; i < points.size(); ++i) {
-        lower = glm::min(lower, points[i]);
-        upper = glm::max(upper, points[i]);
         if (open_loop && points[i] == loops.back().front()) {
             open_loop = false;
             if (i + 1 < points.size()) loops.emplace_back();

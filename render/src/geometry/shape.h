@@ -101,6 +101,25 @@ std::shared_ptr<const Shape> make_polynomial_shape(int order, const std::vector<
 // solid ((|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n)) <= 1.
 std::shared_ptr<const Shape> make_superellipsoid_shape(double east_west, double north_south);
 
+// POV's blob: components (spheres about `center`; cylinders from `center`
+// to `apex` with hemispherical ends), each in its own space
+// (blob_from_component), adding strength (1 - r^2/radius^2)^2 within reach;
+// the surface is where the sum equals the threshold.
+struct BlobComponent {
+    enum class Kind { Sphere, Cylinder };
+    Kind kind = Kind::Sphere;
+    DVec3 center{0.0};
+    DVec3 apex{0.0};
+    double radius = 1.0;
+    double strength = 1.0;
+    DMat4 blob_from_component{1.0};
+};
+struct BlobParameters {
+    double threshold = 1.0;
+    std::vector<BlobComponent> components;
+};
+std::shared_ptr<const Shape> make_blob_shape(BlobParameters blob);
+
 // POV's polygon: its points as written (a loop closes where a point repeats
 // the loop's first). Null when no loop of three points spans a plane.
 std::shared_ptr<const Shape> make_polygon_shape(const std::vector<DVec3>& points);

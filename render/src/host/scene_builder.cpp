@@ -234,6 +234,23 @@ class Builder {
         if (const auto* quadric = std::get_if<sg::Quadric>(&object.shape))
             return make_quadric_shape(QuadricParameters{quadric->square_terms, quadric->mixed_terms,
                                                         quadric->linear_terms, quadric->constant});
+        if (const auto* blob = std::get_if<sg::Blob>(&object.shape)) {
+            BlobParameters parameters;
+            parameters.threshold = blob->threshold;
+            for (const auto& c : blob->components) {
+                BlobComponent component;
+                component.kind = c.kind == sg::Blob::Component::Kind::Cylinder ? BlobComponent::Kind::Cylinder
+                                                                               : BlobComponent::Kind::Sphere;
+                component.center = c.center;
+                component.apex = c.kind == sg::Blob::Component::Kind::Cylinder ? c.apex : c.center;
+                component.radius = std::fabs(c.radius);
+                component.strength = c.strength;
+                component.blob_from_component = c.blob_from_component;
+                if (component.radius > 0.0) parameters.components.push_back(component);
+            }
+            if (auto shape = make_blob_shape(std::move(parameters))) return shape;
+            throw SceneError(object.location, "blob has no component with a positive radius");
+        }
         if (const auto* superellipsoid = std::get_if<sg::Superellipsoid>(&object.shape))
             return make_superellipsoid_shape(superellipsoid->east_west, superellipsoid->north_south);
         if (const auto* polygon = std::get_if<sg::Polygon>(&object.shape)) {

@@ -1,0 +1,259 @@
+// POV-Ray's blob: the surface where the summed field of its components
+// equals the threshold; inside where the field exceeds it (POV's
+// Blob::Inside). A component of strength s and radius R adds
+// s (1 - r^2 / R^2)^2 within distance R of its centre (a sphere) or of its
+// segment (a cylinder, whose ends are hemispheres), as POV's field.
+//
+// Along a ray each component's reach is one or three stretches (a sphere;
+// a cylinder's side and its two end caps) on which r^2 is a quadratic in t,
+// so the field is a quartic there. Between consecutive stretch ends the
+// field is one polynomial: its roots, less the threshold, come from
+// polynomial_roots_in (isolation by derivatives: POV's `sturm` asks for no
+// more). Components carry their own transforms (an ellipsoidal component
+// is a scaled sphere); the ray is mapped into each. POV-Ray 3.7 gives
+// blobs no (u, v): lancer gives (0, 0).
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "geometry/polynomial_roots.h"
+#include "geometry/shape.h"
+
+namespace lancer {
+namespace {
+
+// A stretch of the ray on which r^2 = a t^2 + b t + c.
+struct Stretch {
+    double enter, exit;
+    double a, b, c;
+    double strength, radius2;
+};
+
+// The t interval (enter, exit) where a t^2 + b t + c < limit; false if none.
+bool below(double a, double b, double c, double limit, double& enter, double& exit) {
+    double roots[2];
+    const int n = solve_quadratic(a, 0.5 * b, c - limit, roots);
+    if (n < 2 || !(a > 0.0)) return false;
+    enter = roots[0];
+    exit = roots[1];
+    return enter < exit;
+}
+
+class BlobShape final : public Shape {
+  public:
+    explicit BlobShape(BlobParameters blob) : m_blob(std::move(blob)) {
+        for (const BlobComponent& c : m_blob.components) {
+            Placed placed;
+            placed.component = c;
+            placed.component_from_blob = glm::inverse(c.blob_from_component);
+            m_placed.push_back(placed);
+        }
+    }
+
+    double field(const DVec3& p) const {
+        double sum = 0.0;
+        for (const Placed& placed : m_placed) {
+            const double r2 = distance2(placed, DVec3(placed.component_from_blob * glm::dvec4(p, 1.0)));
+            const double R2 = placed.component.radius * placed.component.radius;
+            if (r2 < R2) sum += placed.component.strength * std::pow(1.0 - r2 / R2, 2.0);
+        }
+        return sum;
+    }
+
+    void crossings(const DVec3& o_in, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
+        const double dd = glm::dot(d, d);
+        if (!(dd > 0.0)) return;
+        const double shift = -glm::dot(o_in, d) / dd;
+        const DVec3 o = o_in + shift * d;
+        std::vector<Stretch> stretches;
+        for (const Placed& placed : m_placed) add_stretches(placed, o, d, stretches);
+        if (stretches.empty()) return;
+        std::vector<double> events;
+        for (const Stretch& s : stretches) {
+            events.push_back(s.enter);
+            events.push_back(s.exit);
+        }
+        std::sort(events.begin(), events.end());
+        const double lo = t_min - shift, hi = t_max - shift;
+        for (std::size_t e = 0; e + 1 < events.size(); ++e) {
+            const double a = std::max(events[e], lo), b = std::min(events[e + 1], hi);
+            if (!(a < b)) continue;
+            const double mid = 0.5 * (events[e] + events[e + 1]);
+            // field(t) - threshold on (a, b): sum of s (1 - r^2/R^2)^2.
+            double c[5] = {-m_blob.threshold, 0.0, 0.0, 0.0, 0.0};
+            bool any = false;
+            for (const Stretch& s : stretches) {
+                if (!(s.enter <= mid && mid <= s.exit)) continue;
+                any = true;
+                // q(t) = 1 - r^2 / R^2 = q2 t^2 + q1 t + q0; field term s q^2.
+                const double q2 = -s.a / s.radius2, q1 = -s.b / s.radius2, q0 = 1.0 - s.c / s.radius2;
+                c[4] += s.strength * q2 * q2;
+                c[3] += s.strength * 2.0 * q2 * q1;
+                c[2] += s.strength * (q1 * q1 + 2.0 * q2 * q0);
+                c[1] += s.strength * 2.0 * q1 * q0;
+                c[0] += s.strength * q0 * q0;
+            }
+            if (!any) continue;
+            double roots[kMaxPolynomialDegree];
+            const int n = polynomial_roots_in(c, 4, a, b, roots);
+            for (int i = 0; i < n; ++i) {
+                const double t = roots[i] + shift;
+                if (t > t_min && t < t_max) out.add(t, 0);
+            }
+        }
+    }
+
+    SurfaceGeometry surface(const DVec3& p, int) const override {
+        SurfaceGeometry g;
+        g.point = p;
+        // Newton steps along the gradient onto field = threshold.
+        for (int step = 0; step < 2; ++step) {
+            const DVec3 gradient = field_gradient(g.point);
+            const double length2 = glm::dot(gradient, gradient);
+            if (!(length2 > 0.0)) break;
+            g.point -= ((field(g.point) - m_blob.threshold) / length2) * gradient;
+        }
+        // The field grows inwards: the outward normal is against its gradient.
+        const DVec3 gradient = field_gradient(g.point);
+        const double length = glm::length(gradient);
+        g.normal = length > 0.0 && std::isfinite(length) ? -gradient / length : DVec3(0.0, 1.0, 0.0);
+        g.uv = Vec2(0.0f);
+        return g;
+    }
+
+    bool inside(const DVec3& p) const override { return field(p) > m_blob.threshold - 1e-10; }
+
+    bool bounds(DVec3& lower, DVec3& upper) const override {
+        lower = DVec3(INFINITY);
+        upper = DVec3(-INFINITY);
+        for (const Placed& placed : m_placed) {
+            const BlobComponent& c = placed.component;
+            const DVec3 r(c.radius);
+            const DVec3 ends[2] = {c.center, c.kind == BlobComponent::Kind::Cylinder ? c.apex : c.center};
+            for (const DVec3& end : ends)
+                for (int corner = 0; corner < 8; ++corner) {
+                    const DVec3 local =
+                        end + DVec3(corner & 1 ? r.x : -r.x, corner & 2 ? r.y : -r.y, corner & 4 ? r.z : -r.z);
+                    const DVec3 p(c.blob_from_component * glm::dvec4(local, 1.0));
+                    lower = glm::min(lower, p);
+                    upper = glm::max(upper, p);
+                }
+        }
+        // A threshold at or below 0 makes all space outside the components inside.
+        return m_blob.threshold > 0.0 && lower.x <= upper.x;
+    }
+
+  private:
+    struct Placed {
+        BlobComponent component;
+        DMat4 component_from_blob{1.0};
+    };
+
+    // Squared distance from the component's centre or segment.
+    static double distance2(const Placed& placed, const DVec3& q) {
+        const BlobComponent& c = placed.component;
+        if (c.kind == BlobComponent::Kind::Sphere) return glm::dot(q - c.center, q - c.center);
+        const DVec3 axis = c.apex - c.center;
+        const double h = std::clamp(glm::dot(q - c.center, axis) / glm::dot(axis, axis), 0.0, 1.0);
+        const DVec3 nearest = c.center + h * axis;
+        return glm::dot(q - nearest, q - nearest);
+    }
+
+    DVec3 field_gradient(const DVec3& p) const {
+        DVec3 gradient(0.0);
+        for (const Placed& placed : m_placed) {
+            const BlobComponent& c = placed.component;
+            const DVec3 q(placed.component_from_blob * glm::dvec4(p, 1.0));
+            const double R2 = c.radius * c.radius;
+            const double r2 = distance2(placed, q);
+            if (!(r2 < R2)) continue;
+            // d(r^2)/dq: twice the offset from the nearest point of the centre or segment.
+            DVec3 nearest = c.center;
+            if (c.kind == BlobComponent::Kind::Cylinder) {
+                const DVec3 axis = c.apex - c.center;
+                nearest += std::clamp(glm::dot(q - c.center, axis) / glm::dot(axis, axis), 0.0, 1.0) * axis;
+            }
+            const DVec3 dr2_dq = 2.0 * (q - nearest);
+            const DVec3 dr2_dp = glm::transpose(DMat3(placed.component_from_blob)) * dr2_dq;
+            gradient += c.strength * 2.0 * (1.0 - r2 / R2) * (-1.0 / R2) * dr2_dp;
+        }
+        return gradient;
+    }
+
+    static void add_stretches(const Placed& placed, const DVec3& o_blob, const DVec3& d_blob,
+                              std::vector<Stretch>& out) {
+        const BlobComponent& c = placed.component;
+        const DVec3 o(placed.component_from_blob * glm::dvec4(o_blob, 1.0));
+        const DVec3 d(placed.component_from_blob * glm::dvec4(d_blob, 0.0));
+        const double R2 = c.radius * c.radius;
+        auto sphere_about = [&](const DVec3& centre, double& a, double& b, double& k) {
+            const DVec3 offset = o - centre;
+            a = glm::dot(d, d);
+            b = 2.0 * glm::dot(offset, d);
+            k = glm::dot(offset, offset);
+        };
+        double a, b, k, enter, exit;
+        if (c.kind == BlobComponent::Kind::Sphere) {
+            sphere_about(c.center, a, b, k);
+            if (below(a, b, k, R2, enter, exit)) out.push_back(Stretch{enter, exit, a, b, k, c.strength, R2});
+            return;
+        }
+        // Cylinder: the side, where the nearest point of the segment is inside it ...
+        const DVec3 axis = c.apex - c.center;
+        const double length2 = glm::dot(axis, axis);
+        const double h0 = glm::dot(o - c.center, axis) / length2, dh = glm::dot(d, axis) / length2;
+        double slab_enter = -INFINITY, slab_exit = INFINITY;
+        if (dh != 0.0) {
+            slab_enter = std::min(-h0 / dh, (1.0 - h0) / dh);
+            slab_exit = std::max(-h0 / dh, (1.0 - h0) / dh);
+        } else if (h0 < 0.0 || h0 > 1.0) {
+            slab_enter = INFINITY;
+            slab_exit = -INFINITY;
+        }
+        const DVec3 radial_o = o - c.center - h0 * axis, radial_d = d - dh * axis;
+        a = glm::dot(radial_d, radial_d);
+        b = 2.0 * glm::dot(radial_o, radial_d);
+        k = glm::dot(radial_o, radial_o);
+        if (a > 0.0) {
+            if (below(a, b, k, R2, enter, exit)) {
+                enter = std::max(enter, slab_enter);
+                exit = std::min(exit, slab_exit);
+                if (enter < exit) out.push_back(Stretch{enter, exit, a, b, k, c.strength, R2});
+            }
+        } else if (k < R2 && slab_enter < slab_exit) {
+            out.push_back(Stretch{slab_enter, slab_exit, 0.0, 0.0, k, c.strength, R2});
+        }
+        // ... and the hemispheres beyond each end.
+        for (int end = 0; end < 2; ++end) {
+            sphere_about(end == 0 ? c.center : c.apex, a, b, k);
+            if (!below(a, b, k, R2, enter, exit)) continue;
+            // Beyond the end: h < 0 at the base, h > 1 at the apex.
+            double beyond_enter = -INFINITY, beyond_exit = INFINITY;
+            if (dh != 0.0) {
+                const double t_end = ((end == 0 ? 0.0 : 1.0) - h0) / dh;
+                const bool beyond_after = (end == 0) == (dh < 0.0);
+                if (beyond_after)
+                    beyond_enter = t_end;
+                else
+                    beyond_exit = t_end;
+            } else if ((end == 0 && h0 >= 0.0) || (end == 1 && h0 <= 1.0)) {
+                continue;
+            }
+            enter = std::max(enter, beyond_enter);
+            exit = std::min(exit, beyond_exit);
+            if (enter < exit) out.push_back(Stretch{enter, exit, a, b, k, c.strength, R2});
+        }
+    }
+
+    BlobParameters m_blob;
+    std::vector<Placed> m_placed;
+};
+
+}  // namespace
+
+std::shared_ptr<const Shape> make_blob_shape(BlobParameters blob) {
+    if (blob.components.empty()) return nullptr;
+    return std::make_shared<BlobShape>(std::move(blob));
+}
+
+}  // namespace lancer
