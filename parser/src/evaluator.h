@@ -136,6 +136,10 @@ class Evaluator {
                              const std::vector<Value>& coefficients, const SourceRange& wc,
                              const sg::SourceLocation& at);
     ShapePtr make_superellipsoid(const Value& exponents, const SourceRange& where, const sg::SourceLocation& at);
+    // values: height1, height2, the point count.
+    ShapePtr make_prism(const Edits<sg::Prism>& options, const std::vector<Value>& values,
+                        const std::vector<SourceRange>& where, const std::vector<Value>& points, const SourceRange& wp,
+                        bool open, const sg::SourceLocation& at);
     ShapePtr make_blob(const Edits<sg::Blob>& items, const sg::SourceLocation& at);
     // values: centre (or base), apex, radius, strength.
     std::function<void(sg::Blob&)> blob_component(bool cylinder, const std::vector<Value>& values,

@@ -90,6 +90,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        NOISE_GENERATOR "noise_generator" MAX_INTERSECTIONS "max_intersections"
        CONE "cone" TORUS "torus" DISC "disc" QUADRIC "quadric"
        POLYGON "polygon" POLY "poly" CUBIC "cubic" QUARTIC "quartic" SUPERELLIPSOID "superellipsoid"
+       PRISM "prism" LINEAR_SWEEP "linear_sweep" CONIC_SWEEP "conic_sweep" LINEAR_SPLINE "linear_spline"
+       QUADRATIC_SPLINE "quadratic_spline" CUBIC_SPLINE "cubic_spline" BEZIER_SPLINE "bezier_spline"
        BLOB "blob" THRESHOLD "threshold" COMPONENT "component" STRENGTH "strength" HIERARCHY "hierarchy" OPEN "open" STURM "sturm"
        CLIPPED_BY "clipped_by" BOUNDED_BY "bounded_by"
 
@@ -120,6 +122,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::function<void(CameraSpec&)>> camera_item
 %nterm <Edits<ParameterList>> param_items
 %nterm <bool> opt_bool opt_albedo opt_open
+%nterm <Edits<sg::Prism>> prism_options
 %nterm <Edits<sg::Blob>> blob_items
 %nterm <std::function<void(sg::Blob&)>> blob_item
 %nterm <Edits<sg::Blob::Component>> blob_component_mods
@@ -233,6 +236,8 @@ object
       { $$ = ev.make_disc({$3, $5, $7}, {@3, @5, @7}, $8, LOC(@1)); ev.apply($$, $9); }
   | "quadric" "{" expr opt_comma expr opt_comma expr opt_comma expr object_mods "}"
       { $$ = ev.make_quadric({$3, $5, $7, $9}, {@3, @5, @7, @9}, LOC(@1)); ev.apply($$, $10); }
+  | "prism" "{" prism_options expr opt_comma expr opt_comma expr expr_seq opt_comma opt_open object_mods "}"
+      { $$ = ev.make_prism($3, {$4, $6, $8}, {@4, @6, @8}, $9, @9, $11, LOC(@1)); ev.apply($$, $12); }
   | "blob" "{" blob_items object_mods "}"
       { $$ = ev.make_blob($3, LOC(@1)); ev.apply($$, $4); }
   | "superellipsoid" "{" expr object_mods "}"
@@ -310,6 +315,16 @@ clip_objects
   | clip_objects transform_item { $$ = std::move($1);
                                   for (auto& o : $$) { auto moved = std::make_shared<ShapeValue>(*o);
                                                        ev.apply(moved, {ev.transform_edit($2)}); o = moved; } }
+  ;
+
+prism_options
+  : %empty             {}
+  | prism_options "linear_sweep" { $$ = std::move($1); $$.push_back([](sg::Prism& p) { p.conic = false; }); }
+  | prism_options "conic_sweep" { $$ = std::move($1); $$.push_back([](sg::Prism& p) { p.conic = true; }); }
+  | prism_options "linear_spline" { $$ = std::move($1); $$.push_back([](sg::Prism& p) { p.spline = sg::Prism::Spline::Linear; }); }
+  | prism_options "quadratic_spline" { $$ = std::move($1); $$.push_back([](sg::Prism& p) { p.spline = sg::Prism::Spline::Quadratic; }); }
+  | prism_options "cubic_spline" { $$ = std::move($1); $$.push_back([](sg::Prism& p) { p.spline = sg::Prism::Spline::Cubic; }); }
+  | prism_options "bezier_spline" { $$ = std::move($1); $$.push_back([](sg::Prism& p) { p.spline = sg::Prism::Spline::Bezier; }); }
   ;
 
 /* blob { threshold T  sphere { <c>, r, [strength] s mods }  cylinder { <a>, <b>, r, [strength] s mods }

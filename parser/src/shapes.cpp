@@ -128,6 +128,66 @@ ShapePtr Evaluator::make_superellipsoid(const Value& exponents, const SourceRang
     return shape;
 }
 
+ShapePtr Evaluator::make_prism(const Edits<sg::Prism>& options, const std::vector<Value>& values,
+                               const std::vector<SourceRange>& where, const std::vector<Value>& points,
+                               const SourceRange& wp, bool open, const sg::SourceLocation& at) {
+    auto shape = new_shape(sg::Object::Kind::Prism, at);
+    sg::Prism prism;
+    for (const auto& option : options) option(prism);
+    prism.open = open;
+    prism.height1 = to_float(values[0], where[0], "a float height");
+    prism.height2 = to_float(values[1], where[1], "a float height");
+    double heights[2] = {prism.height1, prism.height2};
+    if (!check_renderable(heights, 2, where[0], "the prism's heights")) prism.height1 = 0, prism.height2 = 1;
+    if (prism.height1 > prism.height2) std::swap(prism.height1, prism.height2);
+    const int n = to_int(values[2], where[2]);
+    using Spline = sg::Prism::Spline;
+    // POV-Ray's Parse_Prism checks.
+    if (prism.spline == Spline::Linear && n < 3)
+        error(where[2].begin, "prism with linear splines must have at least three points");
+    if (prism.spline == Spline::Quadratic && n < 5)
+        error(where[2].begin, "prism with quadratic splines must have at least five points");
+    if (prism.spline == Spline::Cubic && n < 6)
+        error(where[2].begin, "prism with cubic splines must have at least six points");
+    if (prism.spline == Spline::Bezier && (n <= 0 || n % 4 != 0))
+        error(where[2].begin, "prism with Bezier splines must have four points per segment");
+    if (n > 0 && std::size_t(n) != points.size())
+        error(wp.begin,
+              "prism: " + std::to_string(n) + " points announced, " + std::to_string(points.size()) + " given");
+    for (const Value& point : points) {
+        if (point.kind == Value::Kind::Float) {
+            prism.points.push_back(sg::Vec2(point.v[0], point.v[0]));
+        } else if (point.kind == Value::Kind::Vector) {
+            prism.points.push_back(sg::Vec2(point.v[0], point.v[1]));
+        } else {
+            error(wp.begin, "prism points are 2-D vectors <x, z>");
+        }
+    }
+    for (const sg::Vec2& p : prism.points) {
+        double xy[2] = {p.x, p.y};
+        if (!check_renderable(xy, 2, wp, "a prism point")) break;
+    }
+    if (prism.spline == Spline::Linear && prism.points.size() >= 3) {
+        // POV-Ray: an open last loop of a linear prism is closed, with a warning.
+        std::size_t start = 0;
+        bool closed = false;
+        for (std::size_t i = 1; i < prism.points.size(); ++i) {
+            closed = false;
+            if (prism.points[i] == prism.points[start]) {
+                closed = true;
+                start = i + 1;
+                ++i;
+            }
+        }
+        if (!closed && start < prism.points.size()) {
+            warning(at, "linear prism not closed; closing it (as POV-Ray does)");
+            prism.points.push_back(prism.points[start]);
+        }
+    }
+    shape->object.shape = std::move(prism);
+    return shape;
+}
+
 ShapePtr Evaluator::make_blob(const Edits<sg::Blob>& items, const sg::SourceLocation& at) {
     auto shape = new_shape(sg::Object::Kind::Blob, at);
     sg::Blob blob;

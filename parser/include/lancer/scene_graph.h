@@ -201,6 +201,18 @@ struct Blob {
     std::vector<Component> components;
 };
 
+// POV's prism: closed spline curves through `points` (x, z) swept along y
+// from height1 to height2 (height1 <= height2), straight or, with a conic
+// sweep, scaled by y towards the origin; `open` drops the caps.
+struct Prism {
+    enum class Spline { Linear, Quadratic, Cubic, Bezier };
+    Spline spline = Spline::Linear;
+    bool conic = false;
+    double height1 = 0.0, height2 = 1.0;
+    std::vector<Vec2> points;
+    bool open = false;
+};
+
 // POV's disc { center, normal, radius [, hole_radius] }.
 struct Disc {
     Vec3 center{0.0};
@@ -257,13 +269,14 @@ struct Object {
         Quartic,
         Superellipsoid,
         Blob,
+        Prism,
         Merge,
         Intersection,
         Difference
     };
     Kind kind = Kind::Sphere;
     std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric, Polygon, Polynomial, Superellipsoid,
-                 Blob>
+                 Blob, Prism>
         shape;
     // POV's inverse: inside and outside swapped (what CSG and clipped_by see).
     bool inverse = false;

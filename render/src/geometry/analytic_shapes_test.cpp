@@ -334,5 +334,39 @@ TEST(Blob, SingleComponentsHaveClosedFormRadii) {
     EXPECT_FALSE(make_blob_shape(dented)->inside({1, 0, 0}));
 }
 
+TEST(Prism, LinearAndConicSweeps) {
+    PrismParameters square;
+    square.points = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}};
+    square.height1 = 0.0;
+    square.height2 = 2.0;
+    const auto prism = make_prism_shape(square);
+    ASSERT_TRUE(prism);
+    EXPECT_EQ(sorted_crossings(*prism, {-5, 1, 0.2}, {1, 0, 0}), (std::vector<double>{4.0, 6.0}));
+    EXPECT_EQ(sorted_crossings(*prism, {0.3, 5, 0.1}, {0, -1, 0}), (std::vector<double>{3.0, 5.0}));
+    EXPECT_NEAR(prism->surface({-1, 1, 0.2}, 2 + 3).normal.x, -1.0, 1e-9);  // out of the solid
+    EXPECT_TRUE(prism->inside({0.5, 1, 0.5}));
+    EXPECT_FALSE(prism->inside({0.5, 2.5, 0.5}));
+    // Conic: the square scales with y, a pyramid with its apex at the origin.
+    PrismParameters pyramid = square;
+    pyramid.conic = true;
+    pyramid.height1 = 0.0;
+    pyramid.height2 = 1.0;
+    const auto cone = make_prism_shape(pyramid);
+    auto t = sorted_crossings(*cone, {-5, 0.5, 0}, {1, 0, 0});
+    ASSERT_EQ(t.size(), 2u);
+    EXPECT_NEAR(t[0], 4.5, 1e-9);  // at y = 0.5 the half-width is 0.5
+    EXPECT_TRUE(cone->inside({0.2, 0.5, 0.2}));
+    EXPECT_FALSE(cone->inside({0.7, 0.5, 0.0}));
+    // A Bezier circle-ish loop: the ray through its middle crosses twice.
+    PrismParameters bezier;
+    bezier.spline = SplineKind::Bezier;
+    bezier.points = {{1, 0},  {1, 0.55},   {0.55, 1},   {0, 1},  {0, 1},  {-0.55, 1}, {-1, 0.55}, {-1, 0},
+                     {-1, 0}, {-1, -0.55}, {-0.55, -1}, {0, -1}, {0, -1}, {0.55, -1}, {1, -0.55}, {1, 0}};
+    const auto round = make_prism_shape(bezier);
+    t = sorted_crossings(*round, {-5, 0.5, 0}, {1, 0, 0});
+    ASSERT_EQ(t.size(), 2u);
+    EXPECT_NEAR(t[0], 4.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace lancer

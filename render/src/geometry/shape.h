@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "geometry/planar_spline.h"
 #include "geometry/shapes.h"
 
 namespace lancer {
@@ -119,6 +120,17 @@ struct BlobParameters {
     std::vector<BlobComponent> components;
 };
 std::shared_ptr<const Shape> make_blob_shape(BlobParameters blob);
+
+// POV's prism: closed curves of `points` (x, z) swept along y from height1
+// to height2, straight or (conic) towards the origin; `open` drops the caps.
+struct PrismParameters {
+    SplineKind spline = SplineKind::Linear;
+    std::vector<glm::dvec2> points;
+    double height1 = 0.0, height2 = 1.0;
+    bool conic = false;
+    bool open = false;
+};
+std::shared_ptr<const Shape> make_prism_shape(const PrismParameters& prism);
 
 // POV's polygon: its points as written (a loop closes where a point repeats
 // the loop's first). Null when no loop of three points spans a plane.

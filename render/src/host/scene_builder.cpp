@@ -251,6 +251,17 @@ class Builder {
             if (auto shape = make_blob_shape(std::move(parameters))) return shape;
             throw SceneError(object.location, "blob has no component with a positive radius");
         }
+        if (const auto* prism = std::get_if<sg::Prism>(&object.shape)) {
+            PrismParameters parameters;
+            parameters.spline = SplineKind(int(prism->spline));
+            for (const auto& p : prism->points) parameters.points.push_back(p);
+            parameters.height1 = prism->height1;
+            parameters.height2 = prism->height2;
+            parameters.conic = prism->conic;
+            parameters.open = prism->open;
+            if (auto shape = make_prism_shape(parameters)) return shape;
+            throw SceneError(object.location, "prism: too few points for its spline");
+        }
         if (const auto* superellipsoid = std::get_if<sg::Superellipsoid>(&object.shape))
             return make_superellipsoid_shape(superellipsoid->east_west, superellipsoid->north_south);
         if (const auto* polygon = std::get_if<sg::Polygon>(&object.shape)) {

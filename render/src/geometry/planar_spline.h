@@ -1,0 +1,34 @@
+// Closed 2-D curves made of POV-Ray's spline segments (linear, quadratic,
+// cubic, Bezier), as the prism (and lathe and text after it) read them:
+// each segment is p(s) = ((A s + B) s + C) s + D for s in [0, 1].
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace lancer {
+
+enum class SplineKind { Linear, Quadratic, Cubic, Bezier };
+
+struct SplineSegment {
+    glm::dvec2 a{0.0}, b{0.0}, c{0.0}, d{0.0};
+    glm::dvec2 at(double s) const { return ((a * s + b) * s + c) * s + d; }
+    glm::dvec2 tangent(double s) const { return (3.0 * a * s + 2.0 * b) * s + c; }
+};
+
+// The segments POV-Ray's Compute_Prism makes of `points`: consecutive
+// points (linear), or with the control points quadratic and cubic splines
+// take before and after, or groups of four (Bezier); a loop ends where its
+// first point comes again. Empty when there are too few points.
+std::vector<SplineSegment> spline_segments(SplineKind kind, const std::vector<glm::dvec2>& points);
+
+// Parameters s in [0, 1) where segment coordinate `axis` (0: x, 1: y)
+// equals `value`; returns how many (at most 3).
+int segment_roots(const SplineSegment& segment, int axis, double value, double roots[3]);
+
+// Even-odd: whether q is inside the closed curves (a ray from q along +x
+// crosses them an odd number of times).
+bool inside_curves(const std::vector<SplineSegment>& segments, const glm::dvec2& q);
+
+}  // namespace lancer
