@@ -10,7 +10,8 @@ OUT_DIR/obj/     every OBJ in scenes/ (with its MTL appended after "#MTL",
                  the layout fuzz_obj.cc expects), small hand-made OBJ cases,
                  and tests/fuzz/regressions/*.obj
 OUT_DIR/shapes/  one seed per shape kind fuzz_shapes.cc builds (its first
-                 byte), each followed by a fixed stream of parameter bytes
+                 byte), each followed by a fixed stream of parameter bytes,
+                 and tests/fuzz/regressions/*.shapes
 OUT_DIR/scene.dict  the grammar's keywords and punctuation, for -dict=
 """
 import ast
@@ -79,6 +80,8 @@ def main() -> None:
     for kind in range(8):
         stream = bytes((kind * 37 + 11 * i) % 256 for i in range(400))
         save(shapes_dir, bytes([kind]) + stream)
+    for path in sorted(regressions.glob("*.shapes")):
+        save(shapes_dir, path.read_bytes())
 
     # Dictionary: quoted token aliases in the grammar ("sphere", "{", ...) and directives.
     grammar = (ROOT / "parser/src/grammar.y").read_text()

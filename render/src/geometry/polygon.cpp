@@ -74,7 +74,6 @@ std::shared_ptr<const Shape> make_polygon_shape(const std::vector<DVec3>& points
     // Loops: a point equal to its loop's first point closes the loop.
     std::vector<std::vector<DVec3>> loops(1);
     bool open_loop = false;
-    DVec3 lower, upper;
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (open_loop && points[i] == loops.back().front()) {
             open_loop = false;
@@ -102,12 +101,19 @@ std::shared_ptr<const Shape> make_polygon_shape(const std::vector<DVec3>& points
     const DVec3 axis_v = glm::normalize(glm::cross(normal, reference));
     const DVec3 axis_u = glm::cross(axis_v, normal);
     const DVec3 origin = points[0];
+    // Points off the plane count where they project onto it (and so do the bounds).
     std::vector<std::vector<glm::dvec2>> flat;
+    DVec3 lower(INFINITY), upper(-INFINITY);
     for (const auto& loop : loops) {
         if (loop.size() < 3) continue;
         flat.emplace_back();
-        for (const DVec3& p : loop)
-            flat.back().push_back(glm::dvec2(glm::dot(p - origin, axis_u), glm::dot(p - origin, axis_v)));
+        for (const DVec3& p : loop) {
+            const glm::dvec2 q(glm::dot(p - origin, axis_u), glm::dot(p - origin, axis_v));
+            flat.back().push_back(q);
+            const DVec3 on_plane = origin + q.x * axis_u + q.y * axis_v;
+            lower = glm::min(lower, on_plane);
+            upper = glm::max(upper, on_plane);
+        }
     }
     if (flat.empty()) return nullptr;
     return std::make_shared<PolygonShape>(origin, normal, axis_u, axis_v, std::move(flat), lower, upper);
