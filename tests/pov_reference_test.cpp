@@ -11,7 +11,7 @@
 // a pre-3.7 scene's legacy gamma and `version`, POV's sizing of
 // orthographic views (also one looking straight down its sky), and the
 // shapes: cylinder, cone, torus, disc, quadric, polygon, poly, cubic,
-// quartic, superellipsoid, blob, prism, and CSG (difference,
+// quartic, superellipsoid, blob, prism, lathe, and CSG (difference,
 // intersection, merge, inverse, clipped_by, textures per child; in glass,
 // refracting at every face a difference keeps).
 #include <filesystem>

@@ -140,6 +140,8 @@ class Evaluator {
     ShapePtr make_prism(const Edits<sg::Prism>& options, const std::vector<Value>& values,
                         const std::vector<SourceRange>& where, const std::vector<Value>& points, const SourceRange& wp,
                         bool open, const sg::SourceLocation& at);
+    ShapePtr make_lathe(const Edits<sg::Prism>& options, const Value& count, const SourceRange& wc,
+                        const std::vector<Value>& points, const SourceRange& wp, const sg::SourceLocation& at);
     ShapePtr make_blob(const Edits<sg::Blob>& items, const sg::SourceLocation& at);
     // values: centre (or base), apex, radius, strength.
     std::function<void(sg::Blob&)> blob_component(bool cylinder, const std::vector<Value>& values,

@@ -188,6 +188,43 @@ ShapePtr Evaluator::make_prism(const Edits<sg::Prism>& options, const std::vecto
     return shape;
 }
 
+ShapePtr Evaluator::make_lathe(const Edits<sg::Prism>& options, const Value& count, const SourceRange& wc,
+                               const std::vector<Value>& points, const SourceRange& wp, const sg::SourceLocation& at) {
+    auto shape = new_shape(sg::Object::Kind::Lathe, at);
+    sg::Prism settings;
+    for (const auto& option : options) option(settings);
+    if (settings.conic) error(at, "a lathe has no sweep (linear_sweep and conic_sweep belong to prism)");
+    sg::Lathe lathe;
+    lathe.spline = settings.spline;
+    const int n = to_int(count, wc);
+    using Spline = sg::Prism::Spline;
+    // POV-Ray's Parse_Lathe checks.
+    if (lathe.spline == Spline::Linear && n < 2)
+        error(wc.begin, "lathe with linear splines must have at least two points");
+    if (lathe.spline == Spline::Quadratic && n < 3)
+        error(wc.begin, "lathe with quadratic splines must have at least three points");
+    if (lathe.spline == Spline::Cubic && n < 4)
+        error(wc.begin, "lathe with cubic splines must have at least four points");
+    if (lathe.spline == Spline::Bezier && (n <= 0 || n % 4 != 0))
+        error(wc.begin, "lathe with Bezier splines must have four points per segment");
+    if (n > 0 && std::size_t(n) != points.size())
+        error(wp.begin,
+              "lathe: " + std::to_string(n) + " points announced, " + std::to_string(points.size()) + " given");
+    for (const Value& point : points) {
+        if (point.kind == Value::Kind::Float) {
+            lathe.points.push_back(sg::Vec2(point.v[0], point.v[0]));
+        } else if (point.kind == Value::Kind::Vector) {
+            lathe.points.push_back(sg::Vec2(point.v[0], point.v[1]));
+        } else {
+            error(wp.begin, "lathe points are 2-D vectors <radius, y>");
+        }
+        double xy[2] = {lathe.points.back().x, lathe.points.back().y};
+        if (!check_renderable(xy, 2, wp, "a lathe point")) lathe.points.back() = sg::Vec2(0.0);
+    }
+    shape->object.shape = std::move(lathe);
+    return shape;
+}
+
 ShapePtr Evaluator::make_blob(const Edits<sg::Blob>& items, const sg::SourceLocation& at) {
     auto shape = new_shape(sg::Object::Kind::Blob, at);
     sg::Blob blob;

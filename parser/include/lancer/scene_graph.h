@@ -213,6 +213,13 @@ struct Prism {
     bool open = false;
 };
 
+// POV's lathe: the open spline curve through `points` <r, y> turned about
+// the y axis.
+struct Lathe {
+    Prism::Spline spline = Prism::Spline::Linear;
+    std::vector<Vec2> points;
+};
+
 // POV's disc { center, normal, radius [, hole_radius] }.
 struct Disc {
     Vec3 center{0.0};
@@ -270,13 +277,14 @@ struct Object {
         Superellipsoid,
         Blob,
         Prism,
+        Lathe,
         Merge,
         Intersection,
         Difference
     };
     Kind kind = Kind::Sphere;
     std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric, Polygon, Polynomial, Superellipsoid,
-                 Blob, Prism>
+                 Blob, Prism, Lathe>
         shape;
     // POV's inverse: inside and outside swapped (what CSG and clipped_by see).
     bool inverse = false;

@@ -74,6 +74,24 @@ std::vector<SplineSegment> spline_segments(SplineKind kind, const std::vector<gl
     return segments;
 }
 
+std::vector<SplineSegment> open_spline_segments(SplineKind kind, const std::vector<glm::dvec2>& p) {
+    std::vector<SplineSegment> segments;
+    const int n = int(p.size());
+    const int count = kind == SplineKind::Linear      ? n - 1
+                      : kind == SplineKind::Quadratic ? n - 2
+                      : kind == SplineKind::Cubic     ? n - 3
+                                                      : n / 4;
+    for (int k = 0, i = 0; k < count; ++k) {
+        // The closed-curve reading of these points, one segment at a time.
+        const int used = kind == SplineKind::Linear ? 2 : kind == SplineKind::Quadratic ? 3 : 4;
+        std::vector<glm::dvec2> window(p.begin() + i, p.begin() + i + used);
+        std::vector<SplineSegment> one = spline_segments(kind, window);
+        if (!one.empty()) segments.push_back(one.front());
+        i += kind == SplineKind::Bezier ? 4 : 1;
+    }
+    return segments;
+}
+
 int segment_roots(const SplineSegment& segment, int axis, double value, double roots[3]) {
     const double c[4] = {segment.d[axis] - value, segment.c[axis], segment.b[axis], segment.a[axis]};
     int degree = 3;

@@ -23,6 +23,10 @@ struct SplineSegment {
 // first point comes again. Empty when there are too few points.
 std::vector<SplineSegment> spline_segments(SplineKind kind, const std::vector<glm::dvec2>& points);
 
+// The segments POV-Ray's Compute_Lathe makes of `points`: an open curve,
+// each segment starting one point after the previous (four for Bezier).
+std::vector<SplineSegment> open_spline_segments(SplineKind kind, const std::vector<glm::dvec2>& points);
+
 // Parameters s in [0, 1) where segment coordinate `axis` (0: x, 1: y)
 // equals `value`; returns how many (at most 3).
 int segment_roots(const SplineSegment& segment, int axis, double value, double roots[3]);

@@ -132,6 +132,9 @@ struct PrismParameters {
 };
 std::shared_ptr<const Shape> make_prism_shape(const PrismParameters& prism);
 
+// POV's lathe: the open spline curve through `points` <r, y> turned about y.
+std::shared_ptr<const Shape> make_lathe_shape(SplineKind spline, const std::vector<glm::dvec2>& points);
+
 // POV's polygon: its points as written (a loop closes where a point repeats
 // the loop's first). Null when no loop of three points spans a plane.
 std::shared_ptr<const Shape> make_polygon_shape(const std::vector<DVec3>& points);

@@ -262,6 +262,11 @@ class Builder {
             if (auto shape = make_prism_shape(parameters)) return shape;
             throw SceneError(object.location, "prism: too few points for its spline");
         }
+        if (const auto* lathe = std::get_if<sg::Lathe>(&object.shape)) {
+            std::vector<glm::dvec2> points(lathe->points.begin(), lathe->points.end());
+            if (auto shape = make_lathe_shape(SplineKind(int(lathe->spline)), points)) return shape;
+            throw SceneError(object.location, "lathe: too few points for its spline");
+        }
         if (const auto* superellipsoid = std::get_if<sg::Superellipsoid>(&object.shape))
             return make_superellipsoid_shape(superellipsoid->east_west, superellipsoid->north_south);
         if (const auto* polygon = std::get_if<sg::Polygon>(&object.shape)) {
