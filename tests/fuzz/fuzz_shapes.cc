@@ -40,9 +40,10 @@ class Input {
 };
 
 const char* g_kind = "";  // the shape under test, for the failure message
+char g_parameters[256] = "";
 
 [[noreturn]] void fail(const char* what, double value) {
-    std::fprintf(stderr, "fuzz_shapes: %s: %s (%g)\n", g_kind, what, value);
+    std::fprintf(stderr, "fuzz_shapes: %s (%s): %s (%g)\n", g_kind, g_parameters, what, value);
     std::abort();
 }
 
@@ -62,7 +63,11 @@ std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
         cone.open = in.byte() & 1;
         return lancer::make_cone_shape(cone);
     }
-    case 1: return lancer::make_torus_shape(std::fabs(in.number(4)), std::fabs(in.number(2)) + 1e-9);
+    case 1: {
+        const double major = std::fabs(in.number(4)), minor = std::fabs(in.number(2)) + 1e-9;
+        std::snprintf(g_parameters, sizeof g_parameters, "major %.17g minor %.17g", major, minor);
+        return lancer::make_torus_shape(major, minor);
+    }
     case 2: {
         lancer::DiscParameters disc;
         disc.center = in.vector(4);

@@ -54,7 +54,28 @@ class TorusShape final : public Shape {
         double roots[kMaxPolynomialDegree];
         const int n = polynomial_roots_in(c, 4, s_lo - shift, s_hi - shift, roots);
         for (int i = 0; i < n; ++i) {
-            const double t = (roots[i] + shift) / length;
+            // The quartic's coefficients span R^4 to R^2 r^2: for a thin
+            // torus (r << R) they lose digits, and a root may be off or
+            // spurious. Newton steps on the distance to the tube's centre
+            // circle, which is well conditioned, polish each root; one that
+            // does not land on the surface is dropped.
+            double s_root = roots[i];
+            bool on_surface = false;
+            for (int step = 0; step < 4; ++step) {
+                const DVec3 q = p + s_root * direction;
+                const double ring = std::sqrt(q.x * q.x + q.z * q.z);
+                const DVec3 centre =
+                    ring > 0.0 ? m_major * DVec3(q.x / ring, 0.0, q.z / ring) : DVec3(m_major, 0.0, 0.0);
+                const DVec3 offset = q - centre;
+                const double distance = glm::length(offset);
+                const double miss = distance - m_minor;
+                on_surface = std::fabs(miss) <= 1e-9 * (m_major + m_minor);
+                const double slope = distance > 0.0 ? glm::dot(offset, direction) / distance : 0.0;
+                if (on_surface || std::fabs(slope) < 1e-12) break;
+                s_root -= miss / slope;
+            }
+            if (!on_surface) continue;
+            const double t = (s_root + shift) / length;
             if (t > t_min && t < t_max) out.add(t, 0);
         }
     }
