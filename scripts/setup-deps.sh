@@ -9,7 +9,7 @@ packages=(
   flex bison
   libglm-dev libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools
-  libtinyobjloader-dev libcli11-dev
+  libtinyobjloader-dev libcli11-dev libfreetype-dev fonts-povray
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 

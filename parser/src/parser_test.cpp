@@ -1,5 +1,6 @@
 // Every construct of the scene language parsed from a string, with the
 // resulting scene graph asserted: values, composed transforms, defaults.
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -212,6 +213,31 @@ TEST(ParserObjects, QuadricFamilyArguments) {
     EXPECT_DOUBLE_EQ(std::get<sg::Torus>(scene.objects[2].shape).minor_radius, 0.5);
     EXPECT_DOUBLE_EQ(std::get<sg::Disc>(scene.objects[3].shape).hole_radius, 1.0);
     EXPECT_EQ(std::get<sg::Quadric>(scene.objects[4].shape).square_terms, sg::Vec3(1, 1, 0));
+}
+
+// text reads POV-Ray's fonts (Debian's fonts-povray, which setup installs)
+// and lays glyphs out from x = 0 in units of the em.
+TEST(ParserObjects, TextLaysOutGlyphOutlines) {
+    auto scene = parse_ok(R"(text { ttf "timrom.ttf" "Ho" 0.5, 0 })");
+    ASSERT_EQ(scene.objects.size(), 1u);
+    const auto& text = std::get<sg::Text>(scene.objects[0].shape);
+    ASSERT_FALSE(text.segments.empty());
+    EXPECT_DOUBLE_EQ(text.thickness, 0.5);
+    double lowest_x = 1e9, highest_x = -1e9, highest_y = -1e9;
+    for (const auto& segment : text.segments)
+        for (const auto& p : segment.p) {
+            lowest_x = std::min(lowest_x, p.x);
+            highest_x = std::max(highest_x, p.x);
+            highest_y = std::max(highest_y, p.y);
+        }
+    EXPECT_NEAR(lowest_x, 0.0, 1e-9);  // the first glyph starts at the origin
+    EXPECT_GT(highest_x, 1.0);         // two letters, each most of an em wide
+    EXPECT_GT(highest_y, 0.5);         // capital height in ems
+    EXPECT_LT(highest_y, 1.0);
+    EXPECT_EQ(scene.input_files.size(), 1u);  // the font, never to be overwritten
+    const Diagnostic missing = test::first_error(R"(text { ttf "no-such-font.ttf" "x" 1, 0 })");
+    EXPECT_NE(missing.message.find("cannot find font file"), std::string::npos) << missing.message;
+    EXPECT_EQ(missing.location.column, 12);
 }
 
 TEST(ParserMaterials, TextureFinishDefaultsAndValues) {

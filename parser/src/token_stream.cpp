@@ -63,7 +63,6 @@ const std::unordered_set<std::string>& ignored_blocks() {
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
     static const std::unordered_set<std::string> names = {"sor",
-                                                          "text",
                                                           "height_field",
                                                           "isosurface",
                                                           "parametric",

@@ -220,6 +220,20 @@ struct Lathe {
     std::vector<Vec2> points;
 };
 
+// POV's text: the closed outlines of a string's glyphs (in the x-y plane,
+// one unit per em, laid out as POV-Ray lays them), extruded along +z from
+// 0 to `thickness`. Each segment is a cubic Bezier p[0..3], or a straight
+// line from p[0] to p[3].
+struct Text {
+    struct Segment {
+        Vec2 p[4];
+        bool line = false;
+    };
+    std::vector<Segment> segments;
+    double thickness = 1.0;
+    std::string font;  // the file, as found
+};
+
 // POV's disc { center, normal, radius [, hole_radius] }.
 struct Disc {
     Vec3 center{0.0};
@@ -278,13 +292,14 @@ struct Object {
         Blob,
         Prism,
         Lathe,
+        Text,
         Merge,
         Intersection,
         Difference
     };
     Kind kind = Kind::Sphere;
     std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric, Polygon, Polynomial, Superellipsoid,
-                 Blob, Prism, Lathe>
+                 Blob, Prism, Lathe, Text>
         shape;
     // POV's inverse: inside and outside swapped (what CSG and clipped_by see).
     bool inverse = false;

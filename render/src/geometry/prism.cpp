@@ -190,4 +190,10 @@ std::shared_ptr<const Shape> make_prism_shape(const PrismParameters& prism) {
                                         std::max(prism.height1, prism.height2), prism.conic, prism.open);
 }
 
+std::shared_ptr<const Shape> make_prism_shape(std::vector<SplineSegment> segments, double height1, double height2) {
+    if (segments.empty()) return nullptr;
+    return std::make_shared<PrismShape>(std::move(segments), std::min(height1, height2), std::max(height1, height2),
+                                        false, false);
+}
+
 }  // namespace lancer

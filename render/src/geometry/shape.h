@@ -135,6 +135,12 @@ std::shared_ptr<const Shape> make_prism_shape(const PrismParameters& prism);
 // POV's lathe: the open spline curve through `points` <r, y> turned about y.
 std::shared_ptr<const Shape> make_lathe_shape(SplineKind spline, const std::vector<glm::dvec2>& points);
 
+// POV's text: closed curves in the x-y plane extruded along z from 0 to
+// thickness (a prism on its side). Null without segments.
+std::shared_ptr<const Shape> make_text_shape(std::vector<SplineSegment> segments, double thickness);
+// A linear-sweep prism straight from its curve segments.
+std::shared_ptr<const Shape> make_prism_shape(std::vector<SplineSegment> segments, double height1, double height2);
+
 // POV's polygon: its points as written (a loop closes where a point repeats
 // the loop's first). Null when no loop of three points spans a plane.
 std::shared_ptr<const Shape> make_polygon_shape(const std::vector<DVec3>& points);

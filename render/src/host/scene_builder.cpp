@@ -262,6 +262,24 @@ class Builder {
             if (auto shape = make_prism_shape(parameters)) return shape;
             throw SceneError(object.location, "prism: too few points for its spline");
         }
+        if (const auto* text = std::get_if<sg::Text>(&object.shape)) {
+            std::vector<SplineSegment> segments;
+            for (const auto& s : text->segments) {
+                SplineSegment segment;
+                if (s.line) {
+                    segment.c = s.p[3] - s.p[0];
+                    segment.d = s.p[0];
+                } else {
+                    segment.a = s.p[3] - 3.0 * s.p[2] + 3.0 * s.p[1] - s.p[0];
+                    segment.b = 3.0 * s.p[2] - 6.0 * s.p[1] + 3.0 * s.p[0];
+                    segment.c = 3.0 * s.p[1] - 3.0 * s.p[0];
+                    segment.d = s.p[0];
+                }
+                segments.push_back(segment);
+            }
+            if (auto shape = make_text_shape(std::move(segments), text->thickness)) return shape;
+            throw SceneError(object.location, "text has no glyph outlines to render (only spaces?)");
+        }
         if (const auto* lathe = std::get_if<sg::Lathe>(&object.shape)) {
             std::vector<glm::dvec2> points(lathe->points.begin(), lathe->points.end());
             if (auto shape = make_lathe_shape(SplineKind(int(lathe->spline)), points)) return shape;
