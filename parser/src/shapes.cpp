@@ -1,6 +1,7 @@
 // POV-Ray's quadric-family primitives: cylinder, cone, torus, disc,
 // quadric, with POV-Ray 3.7's argument order, defaults and checks
 // (Parse_Cone, Parse_Cylinder, Parse_Torus, Parse_Disc, Parse_Quadric there).
+#include <algorithm>
 #include <cmath>
 
 #include "evaluator.h"
@@ -122,6 +123,11 @@ ShapePtr Evaluator::make_superellipsoid(const Value& exponents, const SourceRang
         } else if (!(both[0] > 0.0 && both[1] > 0.0)) {
             error(where.begin, "superellipsoid exponents must be positive");
             superellipsoid = sg::Superellipsoid{};
+        } else if (both[0] > 100.0 || both[1] > 100.0) {
+            // The renderer's cap: beyond it the shape's powers overflow.
+            warning(where.begin, "superellipsoid exponents above 100 are taken as 100");
+            superellipsoid.east_west = std::min(both[0], 100.0);
+            superellipsoid.north_south = std::min(both[1], 100.0);
         }
     }
     shape->object.shape = superellipsoid;

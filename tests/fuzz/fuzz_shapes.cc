@@ -52,6 +52,7 @@ std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
                                         "poly", "polygon", "superellipsoid", "sphere"};
     const int kind = in.byte() % 8;
     g_kind = kinds[kind];
+    g_parameters[0] = 0;
     switch (kind) {
     case 0: {
         lancer::ConeParameters cone;
@@ -91,7 +92,11 @@ std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
         if (in.byte() & 1) points.push_back(points.front());
         return lancer::make_polygon_shape(points);
     }
-    case 6: return lancer::make_superellipsoid_shape(0.05 + std::fabs(in.number(3)), 0.05 + std::fabs(in.number(3)));
+    case 6: {
+        const double e = 0.05 + std::fabs(in.number(3)), n = 0.05 + std::fabs(in.number(3));
+        std::snprintf(g_parameters, sizeof g_parameters, "e %.17g n %.17g", e, n);
+        return lancer::make_superellipsoid_shape(e, n);
+    }
     default: return lancer::make_sphere_shape({in.vector(3), std::fabs(in.number(3))});
     }
 }

@@ -100,6 +100,8 @@ std::shared_ptr<const Shape> make_polynomial_shape(int order, const std::vector<
 
 // POV's superellipsoid { <e, n> } (both positive): the unit box-bounded
 // solid ((|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n)) <= 1.
+// Exponents are capped at kMaxSuperellipsoidExponent.
+constexpr double kMaxSuperellipsoidExponent = 100.0;
 std::shared_ptr<const Shape> make_superellipsoid_shape(double east_west, double north_south);
 
 // POV's blob: components (spheres about `center`; cylinders from `center`

@@ -146,7 +146,9 @@ class SuperellipsoidShape final : public Shape {
             gradient[axis] = norm(plus) - norm(minus);
         }
         const double length = glm::length(gradient);
-        return length > 0.0 && std::isfinite(length) ? gradient / length : glm::normalize(p);
+        if (length > 0.0 && std::isfinite(length)) return gradient / length;
+        const double radius = glm::length(p);
+        return radius > 0.0 ? p / radius : DVec3(0.0, 1.0, 0.0);
     }
 
     double m_e, m_n;
@@ -155,7 +157,10 @@ class SuperellipsoidShape final : public Shape {
 }  // namespace
 
 std::shared_ptr<const Shape> make_superellipsoid_shape(double east_west, double north_south) {
-    return std::make_shared<SuperellipsoidShape>(east_west, north_south);
+    // Above kMaxSuperellipsoidExponent the norm's powers overflow double
+    // (2^(e/2) and more); the parser warns and caps there.
+    const auto cap = [](double x) { return std::clamp(x, 1e-6, kMaxSuperellipsoidExponent); };
+    return std::make_shared<SuperellipsoidShape>(cap(east_west), cap(north_south));
 }
 
 }  // namespace lancer
