@@ -11,7 +11,7 @@
 // a pre-3.7 scene's legacy gamma and `version`, POV's sizing of
 // orthographic views (also one looking straight down its sky), and the
 // shapes: cylinder, cone, torus, disc, quadric, polygon, poly, cubic,
-// quartic, superellipsoid, blob, prism, lathe, text (POV's own fonts, from
+// quartic, superellipsoid, blob, prism, lathe, sor, text (POV's own fonts, from
 // Debian's fonts-povray), and CSG (difference,
 // intersection, merge, inverse, clipped_by, textures per child; in glass,
 // refracting at every face a difference keeps).

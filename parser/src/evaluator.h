@@ -145,6 +145,8 @@ class Evaluator {
     ShapePtr make_text(const Value& font, const SourceRange& wf, const Value& string, const SourceRange& ws,
                        const Value& thickness, const SourceRange& wt, const Value& offset, const SourceRange& wo,
                        const sg::SourceLocation& at);
+    ShapePtr make_sor(const Value& count, const SourceRange& wc, const std::vector<Value>& points,
+                      const SourceRange& wp, bool open, const sg::SourceLocation& at);
     ShapePtr make_blob(const Edits<sg::Blob>& items, const sg::SourceLocation& at);
     // values: centre (or base), apex, radius, strength.
     std::function<void(sg::Blob&)> blob_component(bool cylinder, const std::vector<Value>& values,

@@ -90,7 +90,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        NOISE_GENERATOR "noise_generator" MAX_INTERSECTIONS "max_intersections"
        CONE "cone" TORUS "torus" DISC "disc" QUADRIC "quadric"
        POLYGON "polygon" POLY "poly" CUBIC "cubic" QUARTIC "quartic" SUPERELLIPSOID "superellipsoid"
-       TEXT "text" TTF "ttf" LATHE "lathe" PRISM "prism" LINEAR_SWEEP "linear_sweep" CONIC_SWEEP "conic_sweep" LINEAR_SPLINE "linear_spline"
+       TEXT "text" TTF "ttf" SOR "sor" LATHE "lathe" PRISM "prism" LINEAR_SWEEP "linear_sweep" CONIC_SWEEP "conic_sweep" LINEAR_SPLINE "linear_spline"
        QUADRATIC_SPLINE "quadratic_spline" CUBIC_SPLINE "cubic_spline" BEZIER_SPLINE "bezier_spline"
        BLOB "blob" THRESHOLD "threshold" COMPONENT "component" STRENGTH "strength" HIERARCHY "hierarchy" OPEN "open" STURM "sturm"
        CLIPPED_BY "clipped_by" BOUNDED_BY "bounded_by"
@@ -240,6 +240,8 @@ object
       { $$ = ev.make_prism($3, {$4, $6, $8}, {@4, @6, @8}, $9, @9, $11, LOC(@1)); ev.apply($$, $12); }
   | "text" "{" "ttf" expr opt_comma expr opt_comma expr opt_comma expr object_mods "}"
       { $$ = ev.make_text($4, @4, $6, @6, $8, @8, $10, @10, LOC(@1)); ev.apply($$, $11); }
+  | "sor" "{" expr expr_seq opt_comma opt_open object_mods "}"
+      { $$ = ev.make_sor($3, @3, $4, @4, $6, LOC(@1)); ev.apply($$, $7); }
   | "lathe" "{" prism_options expr expr_seq opt_comma object_mods "}"
       { $$ = ev.make_lathe($3, $4, @4, $5, @5, LOC(@1)); ev.apply($$, $7); }
   | "blob" "{" blob_items object_mods "}"

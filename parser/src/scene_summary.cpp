@@ -34,6 +34,7 @@ const char* object_kind_name(sg::Object::Kind kind) {
     case sg::Object::Kind::Prism: return "prism";
     case sg::Object::Kind::Lathe: return "lathe";
     case sg::Object::Kind::Text: return "text";
+    case sg::Object::Kind::Sor: return "sor";
     case sg::Object::Kind::Merge: return "merge";
     case sg::Object::Kind::Intersection: return "intersection";
     case sg::Object::Kind::Difference: return "difference";

@@ -231,6 +231,35 @@ ShapePtr Evaluator::make_lathe(const Edits<sg::Prism>& options, const Value& cou
     return shape;
 }
 
+ShapePtr Evaluator::make_sor(const Value& count, const SourceRange& wc, const std::vector<Value>& points,
+                             const SourceRange& wp, bool open, const sg::SourceLocation& at) {
+    auto shape = new_shape(sg::Object::Kind::Sor, at);
+    sg::Sor sor;
+    sor.open = open;
+    const int n = to_int(count, wc);
+    if (n < 4) error(wc.begin, "sor needs at least four points, got " + std::to_string(n));
+    if (n >= 4 && std::size_t(n) != points.size())
+        error(wp.begin, "sor: " + std::to_string(n) + " points announced, " + std::to_string(points.size()) + " given");
+    for (const Value& point : points) {
+        if (point.kind == Value::Kind::Vector) {
+            sor.points.push_back(sg::Vec2(point.v[0], point.v[1]));
+        } else {
+            error(wp.begin, "sor points are 2-D vectors <radius, y>");
+            sor.points.push_back(sg::Vec2(0.0));
+        }
+        double xy[2] = {sor.points.back().x, sor.points.back().y};
+        if (!check_renderable(xy, 2, wp, "a sor point")) sor.points.back() = sg::Vec2(0.0);
+    }
+    for (std::size_t i = 0; i + 2 < sor.points.size(); ++i)
+        if (sor.points[i + 2].y == sor.points[i].y) {
+            error(wp.begin, "incorrect point in surface of revolution: points " + std::to_string(i + 1) + " and " +
+                                std::to_string(i + 3) + " share a height");
+            break;
+        }
+    shape->object.shape = std::move(sor);
+    return shape;
+}
+
 ShapePtr Evaluator::make_blob(const Edits<sg::Blob>& items, const sg::SourceLocation& at) {
     auto shape = new_shape(sg::Object::Kind::Blob, at);
     sg::Blob blob;

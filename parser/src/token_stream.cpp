@@ -62,8 +62,7 @@ const std::unordered_set<std::string>& ignored_blocks() {
 
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
-    static const std::unordered_set<std::string> names = {"sor",
-                                                          "height_field",
+    static const std::unordered_set<std::string> names = {"height_field",
                                                           "isosurface",
                                                           "parametric",
                                                           "julia_fractal",

@@ -234,6 +234,14 @@ struct Text {
     std::string font;  // the file, as found
 };
 
+// POV's sor: a surface of revolution about y whose squared radius is a
+// cubic in y between consecutive points (the first and last are control
+// points only), closed by discs unless open.
+struct Sor {
+    std::vector<Vec2> points;  // <r, y>
+    bool open = false;
+};
+
 // POV's disc { center, normal, radius [, hole_radius] }.
 struct Disc {
     Vec3 center{0.0};
@@ -293,13 +301,14 @@ struct Object {
         Prism,
         Lathe,
         Text,
+        Sor,
         Merge,
         Intersection,
         Difference
     };
     Kind kind = Kind::Sphere;
     std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric, Polygon, Polynomial, Superellipsoid,
-                 Blob, Prism, Lathe, Text>
+                 Blob, Prism, Lathe, Text, Sor>
         shape;
     // POV's inverse: inside and outside swapped (what CSG and clipped_by see).
     bool inverse = false;

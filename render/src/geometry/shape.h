@@ -143,6 +143,10 @@ std::shared_ptr<const Shape> make_text_shape(std::vector<SplineSegment> segments
 // A linear-sweep prism straight from its curve segments.
 std::shared_ptr<const Shape> make_prism_shape(std::vector<SplineSegment> segments, double height1, double height2);
 
+// POV's sor: points <r, y> (at least four, the first and last control
+// points only); null when two points a segment spans share a height.
+std::shared_ptr<const Shape> make_sor_shape(const std::vector<glm::dvec2>& points, bool open);
+
 // POV's polygon: its points as written (a loop closes where a point repeats
 // the loop's first). Null when no loop of three points spans a plane.
 std::shared_ptr<const Shape> make_polygon_shape(const std::vector<DVec3>& points);

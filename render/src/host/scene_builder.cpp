@@ -280,6 +280,13 @@ class Builder {
             if (auto shape = make_text_shape(std::move(segments), text->thickness)) return shape;
             throw SceneError(object.location, "text has no glyph outlines to render (only spaces?)");
         }
+        if (const auto* sor = std::get_if<sg::Sor>(&object.shape)) {
+            std::vector<glm::dvec2> points(sor->points.begin(), sor->points.end());
+            if (auto shape = make_sor_shape(points, sor->open)) return shape;
+            throw SceneError(object.location,
+                             "sor: two points of a segment share a height (POV-Ray's \"incorrect "
+                             "point in surface of revolution\")");
+        }
         if (const auto* lathe = std::get_if<sg::Lathe>(&object.shape)) {
             std::vector<glm::dvec2> points(lathe->points.begin(), lathe->points.end());
             if (auto shape = make_lathe_shape(SplineKind(int(lathe->spline)), points)) return shape;
