@@ -62,6 +62,8 @@ std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
         cone.base_radius = std::fabs(in.number(3));
         cone.cap_radius = in.byte() & 1 ? cone.base_radius : std::fabs(in.number(3));
         cone.open = in.byte() & 1;
+        std::snprintf(g_parameters, sizeof g_parameters, "base %g %g %g r %g cap %g %g %g r %g", cone.base.x,
+                      cone.base.y, cone.base.z, cone.base_radius, cone.cap.x, cone.cap.y, cone.cap.z, cone.cap_radius);
         return lancer::make_cone_shape(cone);
     }
     case 1: {

@@ -46,6 +46,24 @@ class ConeShape final : public Shape {
         double roots[2];
         const int n = solve_quadratic(a, b_half, c, roots);
         for (int i = 0; i < n; ++i) {
+            // Where the ray nearly follows the side's slope, a is tiny and
+            // the roots lose digits: polish each on |q| - r(h), which is well
+            // conditioned, and drop one that does not land on the side.
+            double s_root = roots[i];
+            bool on_side = false;
+            const double size = std::max({m_length, m_base_radius, m_cap_radius});
+            for (int step = 0; step < 4; ++step) {
+                const DVec3 q = q0 + s_root * dq;
+                const double h_here = h0 + s_root * dh;
+                const double radial = glm::length(q);
+                const double miss = radial - (m_base_radius + m_slope * h_here);
+                on_side = std::fabs(miss) <= 1e-9 * size;
+                const double slope = (radial > 0.0 ? glm::dot(q, dq) / radial : 0.0) - m_slope * dh;
+                if (on_side || slope == 0.0) break;
+                s_root -= miss / slope;
+            }
+            if (!on_side) continue;
+            roots[i] = s_root;
             const double h = h0 + roots[i] * dh;
             const double t = roots[i] + shift;
             // The side of the cone on the right sheet (r(h) >= 0) between the discs.
