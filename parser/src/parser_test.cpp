@@ -235,6 +235,11 @@ TEST(ParserObjects, TextLaysOutGlyphOutlines) {
     EXPECT_GT(highest_y, 0.5);         // capital height in ems
     EXPECT_LT(highest_y, 1.0);
     EXPECT_EQ(scene.input_files.size(), 1u);  // the font, never to be overwritten
+    // POV-Ray adds .ttf to a name without an extension.
+    EXPECT_EQ(
+        std::get<sg::Text>(parse_ok(R"(text { ttf "timrom" "H" 1, 0 })").objects[0].shape).segments.size(),
+        text.segments.size() -
+            std::get<sg::Text>(parse_ok(R"(text { ttf "timrom.ttf" "o" 1, 0 })").objects[0].shape).segments.size());
     const Diagnostic missing = test::first_error(R"(text { ttf "no-such-font.ttf" "x" 1, 0 })");
     EXPECT_NE(missing.message.find("cannot find font file"), std::string::npos) << missing.message;
     EXPECT_EQ(missing.location.column, 12);

@@ -128,10 +128,12 @@ ShapePtr Evaluator::make_text(const Value& font, const SourceRange& wf, const Va
     for (const auto& dir : m_options.include_path) folders.push_back(dir);
     folders.push_back("/usr/share/fonts/truetype/povray");
     std::string found;
-    const FileSearch search = find_file(name, folders, wf.begin, "font file", found);
+    // POV-Ray adds ".ttf" to a font name without an extension.
+    const std::string file = std::filesystem::path(name).has_extension() ? name : name + ".ttf";
+    const FileSearch search = find_file(file, folders, wf.begin, "font file", found);
     if (search == FileSearch::Refused) return shape;
     if (search == FileSearch::Missing) {
-        error(wf.begin, "cannot find font file \"" + name + "\"");
+        error(wf.begin, "cannot find font file \"" + file + "\"");
         return shape;
     }
     std::string bytes;
