@@ -127,11 +127,16 @@ double relative_difference(const Film& a, const Film& b) {
 // triangle and a plane cover every intersector. Every length is multiplied
 // by `scale` and shifted by `offset`, camera included; the picture should
 // not change.
-std::string scaled_scene(double scale, double offset) {
+// The declarations both scaled scenes start with: S the scale, O the offset.
+std::string scale_and_offset(double scale, double offset) {
     char head[512];
     std::snprintf(head, sizeof head, "#declare S = %.17g;\n#declare O = <%.17g, %.17g, %.17g>;\n", scale, offset,
                   offset * 0.5, -offset);
-    return std::string(head) + R"(
+    return head;
+}
+
+std::string scaled_scene(double scale, double offset) {
+    return scale_and_offset(scale, offset) + R"(
 global_settings { assumed_gamma 1.0 max_trace_level 6 }
 background { color rgb <0.05, 0.06, 0.08> }
 camera { location <0, 2.2, -6> * S + O look_at <0, 0.6, 0> * S + O right x * 4 / 3 angle 50 }
@@ -152,10 +157,7 @@ triangle { <-2.6, 0, 1> * S + O, <-1.4, 0, 1.6> * S + O, <-2.2, 1.6, 1.4> * S + 
 // size and then scaled by `scale` and moved by `offset` (so the shapes'
 // own parameters stay the same and only the placement changes).
 std::string scaled_shapes_scene(double scale, double offset) {
-    char head[512];
-    std::snprintf(head, sizeof head, "#declare S = %.17g;\n#declare O = <%.17g, %.17g, %.17g>;\n", scale, offset,
-                  offset * 0.5, -offset);
-    return std::string(head) + R"(
+    return scale_and_offset(scale, offset) + R"(
 global_settings { assumed_gamma 1.0 max_trace_level 6 }
 background { color rgb <0.05, 0.06, 0.08> }
 camera { location <0, 3, -7> * S + O look_at <0, 0.5, 0> * S + O right x * 4 / 3 angle 55 }

@@ -105,14 +105,9 @@ class BlobShape final : public Shape {
 
     SurfaceGeometry surface(const DVec3& p, int) const override {
         SurfaceGeometry g;
-        g.point = p;
-        // Newton steps along the gradient onto field = threshold.
-        for (int step = 0; step < 2; ++step) {
-            const DVec3 gradient = field_gradient(g.point);
-            const double length2 = glm::dot(gradient, gradient);
-            if (!(length2 > 0.0)) break;
-            g.point -= ((field(g.point) - m_blob.threshold) / length2) * gradient;
-        }
+        g.point = project_onto_level(
+            p, [this](const DVec3& q) { return field(q); }, [this](const DVec3& q) { return field_gradient(q); },
+            m_blob.threshold);
         // The field grows inwards: the outward normal is against its gradient.
         const DVec3 gradient = field_gradient(g.point);
         const double length = glm::length(gradient);

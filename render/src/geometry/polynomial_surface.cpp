@@ -82,17 +82,8 @@ class PolynomialShape final : public Shape {
 
     SurfaceGeometry surface(const DVec3& p, int) const override {
         SurfaceGeometry g;
-        // Onto the surface by Newton steps along the gradient (the hit's t
-        // was rounded to float).
-        g.point = p;
-        for (int step = 0; step < 2; ++step) {
-            const DVec3 n = gradient(g.point);
-            const double length2 = glm::dot(n, n);
-            if (!(length2 > 0.0)) break;
-            const DVec3 moved = g.point - (value(g.point) / length2) * n;
-            if (!std::isfinite(moved.x + moved.y + moved.z)) break;
-            g.point = moved;
-        }
+        g.point = project_onto_level(
+            p, [this](const DVec3& q) { return value(q); }, [this](const DVec3& q) { return gradient(q); }, 0.0);
         const DVec3 n = gradient(g.point);
         const double length = glm::length(n);
         g.normal = length > 0.0 && std::isfinite(length) ? n / length : DVec3(0.0, 1.0, 0.0);

@@ -43,16 +43,9 @@ class QuadricShape final : public Shape {
 
     SurfaceGeometry surface(const DVec3& p, int) const override {
         SurfaceGeometry g;
-        // Onto the surface by Newton steps along the gradient: the point
-        // from the ray carries the float rounding of the hit's t, far more
-        // than the error bound spawned rays are offset by.
-        g.point = p;
-        for (int step = 0; step < 2; ++step) {
-            const DVec3 half_gradient = m_matrix * g.point + m_linear;
-            const double length2 = glm::dot(half_gradient, half_gradient);
-            if (!(length2 > 0.0)) break;
-            g.point -= (0.5 * value(g.point) / length2) * half_gradient;
-        }
+        g.point = project_onto_level(
+            p, [this](const DVec3& q) { return value(q); },
+            [this](const DVec3& q) { return 2.0 * (m_matrix * q + m_linear); }, 0.0);
         const DVec3 gradient = m_matrix * g.point + m_linear;
         const double length = glm::length(gradient);
         g.normal = length > 0.0 ? gradient / length : DVec3(0.0, 1.0, 0.0);

@@ -7,6 +7,7 @@
 // functions of shapes.h, which the fast paths for them call.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -49,6 +50,23 @@ class Shape {
     // Object-space bounds; false for an unbounded shape.
     virtual bool bounds(DVec3& lower, DVec3& upper) const = 0;
 };
+
+// Newton steps from p along the gradient onto value = level (an implicit
+// surface): a hit point from the ray carries the float rounding of its t,
+// far more than the error bound spawned rays are offset by. Stops where the
+// gradient vanishes or a step would leave the finite numbers.
+template <class Value, class Gradient>
+DVec3 project_onto_level(DVec3 p, const Value& value, const Gradient& gradient, double level) {
+    for (int step = 0; step < 2; ++step) {
+        const DVec3 g = gradient(p);
+        const double length2 = glm::dot(g, g);
+        if (!(length2 > 0.0)) break;
+        const DVec3 moved = p - ((value(p) - level) / length2) * g;
+        if (!std::isfinite(moved.x + moved.y + moved.z)) break;
+        p = moved;
+    }
+    return p;
+}
 
 std::shared_ptr<const Shape> make_sphere_shape(const AnalyticSphere& sphere);
 std::shared_ptr<const Shape> make_box_shape(const AnalyticBox& box);
