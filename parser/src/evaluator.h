@@ -225,6 +225,9 @@ class Evaluator {
     // the current folder). Refused (already reported at `where`) when safe
     // mode forbids the path; a forbidden name is refused whether or not the
     // file exists, so errors reveal nothing about the disk outside.
+    // Where a file named at `where` is looked for: the folder of the file
+    // naming it, then the include path.
+    std::vector<std::string> search_folders(const sg::SourceLocation& where) const;
     FileSearch find_file(const std::string& name, const std::vector<std::string>& folders,
                          const sg::SourceLocation& where, const std::string& what, std::string& found);
     // Safe mode's allowed folders: safe_root (else the scene's folder) and include_path.

@@ -69,6 +69,14 @@ void Evaluator::refuse_file(const sg::SourceLocation& where, const std::string& 
     error(where, what + " \"" + name + "\" is outside the scene's folder and the include path (refused by --safe)");
 }
 
+std::vector<std::string> Evaluator::search_folders(const sg::SourceLocation& where) const {
+    std::vector<std::string> folders;
+    auto buffer = m_buffers.find(where.file.get());
+    if (buffer != m_buffers.end()) folders.push_back(buffer->second->folder);
+    for (const auto& dir : m_options.include_path) folders.push_back(dir);
+    return folders;
+}
+
 Evaluator::FileSearch Evaluator::find_file(const std::string& name, const std::vector<std::string>& folders,
                                            const sg::SourceLocation& where, const std::string& what,
                                            std::string& found) {

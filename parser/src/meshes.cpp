@@ -391,10 +391,7 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
     if (name.empty()) return shape;
 
     // Relative to the file that names it, then the include path.
-    std::vector<std::string> folders;
-    auto buffer = m_buffers.find(where.begin.file.get());
-    if (buffer != m_buffers.end()) folders.push_back(buffer->second->folder);
-    for (const auto& dir : m_options.include_path) folders.push_back(dir);
+    std::vector<std::string> folders = search_folders(where.begin);
     std::string found_name;
     FileSearch search = find_file(name, folders, where.begin, "OBJ file", found_name);
     if (search == FileSearch::Refused) return shape;

@@ -358,10 +358,7 @@ void Evaluator::finish_image_map(sg::ImageMap& image, const sg::SourceLocation& 
     }
     if (!image.location.file) image.location = at;
     // Relative to the file that names the image, then the include path.
-    std::vector<std::string> folders;
-    auto buffer = m_buffers.find(image.location.file.get());
-    if (buffer != m_buffers.end()) folders.push_back(buffer->second->folder);
-    for (const auto& dir : m_options.include_path) folders.push_back(dir);
+    std::vector<std::string> folders = search_folders(image.location);
     // Last, the current folder, as before the include path existed.
     folders.push_back("");
     std::string found;

@@ -17,6 +17,26 @@ ShapePtr new_shape(sg::Object::Kind kind, const sg::SourceLocation& at) {
     return shape;
 }
 
+// POV's loops of points (Parse_Polygon, Parse_Prism): a loop ends where
+// its first point comes again, the next starts after it. Closes an open
+// last loop by repeating its first point; true if it had to.
+template <class Point>
+bool close_last_loop(std::vector<Point>& points) {
+    std::size_t start = 0;
+    bool closed = false;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        closed = false;
+        if (points[i] == points[start]) {
+            closed = true;
+            start = i + 1;
+            ++i;
+        }
+    }
+    if (closed || start >= points.size()) return false;
+    points.push_back(points[start]);
+    return true;
+}
+
 }  // namespace
 
 ShapePtr Evaluator::make_cone(const std::vector<Value>& values, const std::vector<SourceRange>& where, bool open,
@@ -173,23 +193,9 @@ ShapePtr Evaluator::make_prism(const Edits<sg::Prism>& options, const std::vecto
         double xy[2] = {p.x, p.y};
         if (!check_renderable(xy, 2, wp, "a prism point")) break;
     }
-    if (prism.spline == Spline::Linear && prism.points.size() >= 3) {
-        // POV-Ray: an open last loop of a linear prism is closed, with a warning.
-        std::size_t start = 0;
-        bool closed = false;
-        for (std::size_t i = 1; i < prism.points.size(); ++i) {
-            closed = false;
-            if (prism.points[i] == prism.points[start]) {
-                closed = true;
-                start = i + 1;
-                ++i;
-            }
-        }
-        if (!closed && start < prism.points.size()) {
-            warning(at, "linear prism not closed; closing it (as POV-Ray does)");
-            prism.points.push_back(prism.points[start]);
-        }
-    }
+    // POV-Ray: an open last loop of a linear prism is closed, with a warning.
+    if (prism.spline == Spline::Linear && prism.points.size() >= 3 && close_last_loop(prism.points))
+        warning(at, "linear prism not closed; closing it (as POV-Ray does)");
     shape->object.shape = std::move(prism);
     return shape;
 }
@@ -308,22 +314,8 @@ ShapePtr Evaluator::make_polygon(const Value& count, const SourceRange& wc, cons
         polygon.points.push_back(to_vec3(point, point.location.file ? where : wp));
     }
     // POV-Ray: an open last loop is closed, with a warning.
-    if (polygon.points.size() >= 3) {
-        std::size_t start = 0;
-        bool closed = false;
-        for (std::size_t i = 1; i < polygon.points.size(); ++i) {
-            closed = false;
-            if (polygon.points[i] == polygon.points[start]) {
-                closed = true;
-                start = i + 1;
-                ++i;
-            }
-        }
-        if (!closed && start < polygon.points.size()) {
-            warning(at, "polygon not closed; closing it (as POV-Ray does)");
-            polygon.points.push_back(polygon.points[start]);
-        }
-    }
+    if (polygon.points.size() >= 3 && close_last_loop(polygon.points))
+        warning(at, "polygon not closed; closing it (as POV-Ray does)");
     shape->object.shape = std::move(polygon);
     return shape;
 }

@@ -122,10 +122,7 @@ ShapePtr Evaluator::make_text(const Value& font, const SourceRange& wf, const Va
 
     // Beside the file naming it, then the include path (POV-Ray's fonts are
     // in its include folder), then where Debian's fonts-povray puts them.
-    std::vector<std::string> folders;
-    auto buffer = m_buffers.find(wf.begin.file.get());
-    if (buffer != m_buffers.end()) folders.push_back(buffer->second->folder);
-    for (const auto& dir : m_options.include_path) folders.push_back(dir);
+    std::vector<std::string> folders = search_folders(wf.begin);
     folders.push_back("/usr/share/fonts/truetype/povray");
     std::string found;
     // POV-Ray adds ".ttf" to a font name without an extension.

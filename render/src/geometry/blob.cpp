@@ -96,10 +96,7 @@ class BlobShape final : public Shape {
             if (!any) continue;
             double roots[kMaxPolynomialDegree];
             const int n = polynomial_roots_in(c, 4, a, b, roots);
-            for (int i = 0; i < n; ++i) {
-                const double t = roots[i] + shift;
-                if (t > t_min && t < t_max) out.add(t, 0);
-            }
+            add_shifted_roots(roots, n, shift, t_min, t_max, 0, out);
         }
     }
 

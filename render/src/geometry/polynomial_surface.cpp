@@ -74,10 +74,7 @@ class PolynomialShape final : public Shape {
         }
         double roots[kMaxPolynomialDegree];
         const int n = polynomial_roots_in(c, m_order, t_min - shift, t_max - shift, roots);
-        for (int i = 0; i < n; ++i) {
-            const double t = roots[i] + shift;
-            if (t > t_min && t < t_max) out.add(t, 0);
-        }
+        add_shifted_roots(roots, n, shift, t_min, t_max, 0, out);
     }
 
     SurfaceGeometry surface(const DVec3& p, int) const override {

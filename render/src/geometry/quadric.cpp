@@ -35,10 +35,7 @@ class QuadricShape final : public Shape {
         const double c = value(p);
         double roots[2];
         const int n = solve_quadratic(a, b_half, c, roots);
-        for (int i = 0; i < n; ++i) {
-            const double t = roots[i] + shift;
-            if (t > t_min && t < t_max) out.add(t, 0);
-        }
+        add_shifted_roots(roots, n, shift, t_min, t_max, 0, out);
     }
 
     SurfaceGeometry surface(const DVec3& p, int) const override {

@@ -68,6 +68,16 @@ DVec3 project_onto_level(DVec3 p, const Value& value, const Gradient& gradient, 
     return p;
 }
 
+// Adds the roots of a polynomial solved from an origin moved `shift` along
+// the ray (t = root + shift) that lie in (t_min, t_max).
+inline void add_shifted_roots(const double* roots, int count, double shift, double t_min, double t_max, int face,
+                              ShapeCrossings& out) {
+    for (int i = 0; i < count; ++i) {
+        const double t = roots[i] + shift;
+        if (t > t_min && t < t_max) out.add(t, face);
+    }
+}
+
 std::shared_ptr<const Shape> make_sphere_shape(const AnalyticSphere& sphere);
 std::shared_ptr<const Shape> make_box_shape(const AnalyticBox& box);
 std::shared_ptr<const Shape> make_plane_shape(const AnalyticPlane& plane);
