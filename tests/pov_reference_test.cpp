@@ -12,7 +12,8 @@
 // orthographic views (also one looking straight down its sky), and the
 // shapes: cylinder, cone, torus, disc, quadric, polygon, poly, cubic,
 // quartic, superellipsoid, blob, prism, lathe, sor, text (POV's own fonts, from
-// Debian's fonts-povray), and CSG (difference,
+// Debian's fonts-povray), ovus, sphere_sweep, bicubic_patch, julia_fractal,
+// height_field (8- and 16-bit grey images), and CSG (difference,
 // intersection, merge, inverse, clipped_by, textures per child; in glass,
 // refracting at every face a difference keeps).
 #include <filesystem>
@@ -58,7 +59,10 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
                          ::testing::Values("wall_point_light", "spotlights", "area_room", "area_circular",
                                            "cylinder_parallel", "looks_like_projected", "finishes", "gamma",
                                            "legacy_gamma", "area_illumination", "orthographic_down",
-                                           "orthographic_default_size", "quadric_family", "csg_solids", "csg_glass"),
+                                           "orthographic_default_size", "quadric_family", "csg_solids", "csg_glass",
+                                           "polygons_polynomials", "superellipsoids", "blobs", "prisms", "lathes",
+                                           "text", "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals",
+                                           "height_fields"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 }  // namespace

@@ -45,6 +45,13 @@ void transform_light(sg::Light& light, const sg::Mat4& world_from_local);
 // `sky_along_view` (when not null) is set when look_at looks along the sky.
 sg::Camera resolve_camera(const CameraSpec& spec, bool* sky_along_view = nullptr);
 bool is_reserved_word(const std::string& name);
+// A new object of `kind` written at `at`, its shape still to be set.
+inline ShapePtr new_shape(sg::Object::Kind kind, const sg::SourceLocation& at) {
+    auto shape = std::make_shared<ShapeValue>();
+    shape->object.kind = kind;
+    shape->object.location = at;
+    return shape;
+}
 // Levenshtein distance, case-insensitive: how far a typo is from a name.
 size_t edit_distance(const std::string& a, const std::string& b);
 
@@ -152,6 +159,35 @@ class Evaluator {
     std::function<void(sg::Blob&)> blob_component(bool cylinder, const std::vector<Value>& values,
                                                   const std::vector<SourceRange>& where,
                                                   const Edits<sg::Blob::Component>& mods, const sg::SourceLocation& at);
+    // polynomial { order, xyz(i, j, k): c, ... } (shapes.cpp)
+    std::function<void(sg::Polynomial&)> polynomial_term(const std::vector<Value>& values,
+                                                         const std::vector<SourceRange>& where);
+    ShapePtr make_polynomial_from_terms(const Value& order, const SourceRange& wo, const Edits<sg::Polynomial>& terms,
+                                        const sg::SourceLocation& at);
+    // ---- ovus, sphere_sweep, bicubic_patch, julia_fractal, height_field (curved_shapes.cpp)
+    ShapePtr make_ovus(const Value& bottom, const SourceRange& wb, const Value& top, const SourceRange& wt,
+                       const sg::SourceLocation& at);
+    ShapePtr make_sphere_sweep(int spline, const Value& count, const SourceRange& wc, const std::vector<Value>& items,
+                               const SourceRange& wi, const std::optional<std::pair<Value, SourceRange>>& tolerance,
+                               const sg::SourceLocation& at);
+    std::function<void(sg::BicubicPatch&)> patch_option(const std::string& keyword, const Value& value,
+                                                        const SourceRange& where);
+    std::function<void(sg::BicubicPatch&)> patch_uv_vectors(const std::vector<Value>& corners,
+                                                            const std::vector<SourceRange>& where);
+    ShapePtr make_bicubic_patch(const Edits<sg::BicubicPatch>& options, std::vector<Value> values,
+                                const SourceRange& where, const sg::SourceLocation& at);
+    std::function<void(sg::JuliaFractal&)> julia_max_iteration(const Value& value, const SourceRange& where);
+    std::function<void(sg::JuliaFractal&)> julia_precision(const Value& value, const SourceRange& where);
+    std::function<void(sg::JuliaFractal&)> julia_slice(const Value& normal, const SourceRange& wn,
+                                                       const Value& distance, const SourceRange& wd);
+    std::function<void(sg::JuliaFractal&)> julia_power(const Value& x, const SourceRange& wx, const Value& y,
+                                                       const SourceRange& wy);
+    std::function<void(sg::JuliaFractal&)> julia_function(const std::string& name, const sg::SourceLocation& at);
+    ShapePtr make_julia_fractal(const Value& julia, const SourceRange& where, const Edits<sg::JuliaFractal>& items,
+                                const sg::SourceLocation& at);
+    std::function<void(sg::HeightField&)> unsupported_height_field_format(const std::string& keyword,
+                                                                          const sg::SourceLocation& at);
+    ShapePtr make_height_field(const Edits<sg::HeightField>& items, const sg::SourceLocation& at);
     // ---- CSG (csg.cpp)
     ShapePtr make_csg(sg::Object::Kind kind, const sg::SourceLocation& at);
     void finish_csg(ShapeValue& shape);

@@ -94,9 +94,17 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        QUADRATIC_SPLINE "quadratic_spline" CUBIC_SPLINE "cubic_spline" BEZIER_SPLINE "bezier_spline"
        BLOB "blob" THRESHOLD "threshold" COMPONENT "component" STRENGTH "strength" HIERARCHY "hierarchy" OPEN "open" STURM "sturm"
        CLIPPED_BY "clipped_by" BOUNDED_BY "bounded_by"
+       OVUS "ovus" SPHERE_SWEEP "sphere_sweep" B_SPLINE "b_spline" TOLERANCE "tolerance"
+       BICUBIC_PATCH "bicubic_patch" TYPE "type" FLATNESS "flatness" U_STEPS "u_steps" V_STEPS "v_steps"
+       ACCURACY "accuracy"
+       JULIA_FRACTAL "julia_fractal" QUATERNION "quaternion" HYPERCOMPLEX "hypercomplex"
+       MAX_ITERATION "max_iteration" PRECISION "precision" SLICE "slice" CUBE "cube" RECIPROCAL "reciprocal" PWR "pwr"
+       HEIGHT_FIELD "height_field" WATER_LEVEL "water_level" SMOOTH "smooth" PREMULTIPLIED "premultiplied"
+       GIF "gif" PGM "pgm" PPM "ppm" BMP "bmp" SYS "sys" IFF "iff" POT "pot"
+       POLYNOMIAL "polynomial" XYZ "xyz"
 
-%nterm <Value> expr postfix primary colour colour_base declared_value string_value
-%nterm <std::vector<Value>> expr_list opt_args vector_items expr_seq macro_args macro_arg_list
+%nterm <Value> expr arith postfix primary colour colour_base declared_value string_value
+%nterm <std::vector<Value>> arith_seq expr_list opt_args vector_items expr_seq macro_args macro_arg_list
 %nterm <Value> macro_arg vector_item
 %nterm <std::string> component param_name
 %nterm <ShapePtr> object object_ref
@@ -127,7 +135,15 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::function<void(sg::Blob&)>> blob_item
 %nterm <Edits<sg::Blob::Component>> blob_component_mods
 %nterm <std::vector<ShapePtr>> clip_objects
-%nterm <std::optional<std::pair<Value, SourceRange>>> opt_hole
+%nterm <std::optional<std::pair<Value, SourceRange>>> opt_hole opt_tolerance
+%nterm <int> sweep_spline
+%nterm <Edits<sg::BicubicPatch>> patch_options
+%nterm <std::function<void(sg::BicubicPatch&)>> patch_option
+%nterm <Edits<sg::JuliaFractal>> julia_items
+%nterm <std::function<void(sg::JuliaFractal&)>> julia_item
+%nterm <Edits<sg::HeightField>> height_field_items
+%nterm <std::function<void(sg::HeightField&)>> height_field_item
+%nterm <Edits<sg::Polynomial>> polynomial_terms
 %nterm <int> colour_channel
 %nterm <Edits<sg::TriangleMesh>> mesh2_sections
 %nterm <std::function<void(sg::TriangleMesh&)>> mesh2_section
@@ -256,6 +272,18 @@ object
       { $$ = ev.make_polynomial(sg::Object::Kind::Cubic, Value::number(3), @1, $4, @4, LOC(@1)); ev.apply($$, $6); }
   | "quartic" "{" "<" vector_items ">" object_mods "}"
       { $$ = ev.make_polynomial(sg::Object::Kind::Quartic, Value::number(4), @1, $4, @4, LOC(@1)); ev.apply($$, $6); }
+  | "polynomial" "{" expr opt_comma polynomial_terms object_mods "}"
+      { $$ = ev.make_polynomial_from_terms($3, @3, $5, LOC(@1)); ev.apply($$, $6); }
+  | "ovus" "{" expr opt_comma expr object_mods "}"
+      { $$ = ev.make_ovus($3, @3, $5, @5, LOC(@1)); ev.apply($$, $6); }
+  | "sphere_sweep" "{" sweep_spline opt_comma expr expr_seq opt_comma opt_tolerance object_mods "}"
+      { $$ = ev.make_sphere_sweep($3, $5, @5, $6, @6, $8, LOC(@1)); ev.apply($$, $9); }
+  | "bicubic_patch" "{" patch_options opt_comma arith_seq opt_comma object_mods "}"
+      { $$ = ev.make_bicubic_patch($3, $5, @5, LOC(@1)); ev.apply($$, $7); }
+  | "julia_fractal" "{" expr julia_items object_mods "}"
+      { $$ = ev.make_julia_fractal($3, @3, $4, LOC(@1)); ev.apply($$, $5); }
+  | "height_field" "{" height_field_items object_mods "}"
+      { $$ = ev.make_height_field($3, LOC(@1)); ev.apply($$, $4); }
   | "triangle" "{" expr opt_comma expr opt_comma expr object_mods "}"
       { $$ = ev.make_triangle({$3, $5, $7}, {@3, @5, @7}, LOC(@1)); ev.apply($$, $8); }
   | "smooth_triangle" "{" expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr object_mods "}"
@@ -374,6 +402,91 @@ opt_hole
   | "," expr           { $$ = std::make_pair($2, @2); }
   ;
 
+/* polynomial { order, xyz(i, j, k): c, ... } (POV 3.7's Parse_Polynom) */
+polynomial_terms
+  : %empty             {}
+  | polynomial_terms "xyz" "(" expr "," expr "," expr ")" ":" expr opt_comma
+      { $$ = std::move($1); $$.push_back(ev.polynomial_term({$4, $6, $8, $11}, {@4, @6, @8, @11})); }
+  ;
+
+sweep_spline
+  : "linear_spline"    { $$ = int(sg::SphereSweep::Spline::Linear); }
+  | "b_spline"         { $$ = int(sg::SphereSweep::Spline::BSpline); }
+  | "cubic_spline"     { $$ = int(sg::SphereSweep::Spline::CubicSpline); }
+  ;
+
+opt_tolerance
+  : %empty             {}
+  | "tolerance" expr   { $$ = std::make_pair($2, @2); }
+  ;
+
+/* bicubic_patch's keywords before its points (Parse_Bicubic_Patch) */
+patch_options
+  : %empty             {}
+  | patch_options patch_option { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+patch_option
+  : "type" arith %prec OPT_EMPTY { $$ = ev.patch_option("type", $2, @2); }
+  | "flatness" arith %prec OPT_EMPTY { $$ = ev.patch_option("flatness", $2, @2); }
+  | "u_steps" arith %prec OPT_EMPTY { $$ = ev.patch_option("u_steps", $2, @2); }
+  | "v_steps" arith %prec OPT_EMPTY { $$ = ev.patch_option("v_steps", $2, @2); }
+  | "accuracy" arith %prec OPT_EMPTY { $$ = ev.patch_option("accuracy", $2, @2); }
+  | "uv_vectors" arith opt_comma arith opt_comma arith opt_comma arith %prec OPT_EMPTY
+      { $$ = ev.patch_uv_vectors({$2, $4, $6, $8}, {@2, @4, @6, @8}); }
+  ;
+
+/* julia_fractal's options (Parse_Julia_Fractal): the function keywords
+ * that are also builtins (sqr, exp, sin, ...) arrive as BUILTIN */
+julia_items
+  : %empty             {}
+  | julia_items julia_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+julia_item
+  : "quaternion"       { $$ = [](sg::JuliaFractal& j) { j.algebra = sg::JuliaFractal::Algebra::Quaternion; }; }
+  | "hypercomplex"     { $$ = [](sg::JuliaFractal& j) { j.algebra = sg::JuliaFractal::Algebra::Hypercomplex; }; }
+  | "max_iteration" expr %prec OPT_EMPTY { $$ = ev.julia_max_iteration($2, @2); }
+  | "precision" expr %prec OPT_EMPTY { $$ = ev.julia_precision($2, @2); }
+  | "slice" expr opt_comma expr %prec OPT_EMPTY { $$ = ev.julia_slice($2, @2, $4, @4); }
+  | "cube"             { $$ = [](sg::JuliaFractal& j) { j.function = sg::JuliaFractal::Function::Cube; }; }
+  | "reciprocal"       { $$ = [](sg::JuliaFractal& j) { j.function = sg::JuliaFractal::Function::Reciprocal; }; }
+  | "pwr" "(" expr "," expr ")" { $$ = ev.julia_power($3, @3, $5, @5); }
+  | BUILTIN            { $$ = ev.julia_function($1.text, LOC(@1)); }
+  ;
+
+/* height_field { [type] "file" [gamma g] [premultiplied b] [smooth] [water_level w] } */
+height_field_items
+  : %empty             {}
+  | height_field_items height_field_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+height_field_item
+  : "png"              { $$ = [](sg::HeightField& h) { h.format = sg::ImageFormat::Png; }; }
+  | "jpeg"             { $$ = [](sg::HeightField& h) { h.format = sg::ImageFormat::Jpeg; }; }
+  | "exr"              { $$ = [](sg::HeightField& h) { h.format = sg::ImageFormat::Exr; }; }
+  | "hdr"              { $$ = [](sg::HeightField& h) { h.format = sg::ImageFormat::Hdr; }; }
+  | "tga"              { $$ = [](sg::HeightField& h) { h.format = sg::ImageFormat::Tga; }; }
+  | "tiff"             { $$ = [](sg::HeightField& h) { h.format = sg::ImageFormat::Tiff; }; }
+  | "gif"              { $$ = [](sg::HeightField&) {}; }
+  | "pgm"              { $$ = [](sg::HeightField&) {}; }
+  | "ppm"              { $$ = [](sg::HeightField&) {}; }
+  | "bmp"              { $$ = [](sg::HeightField&) {}; }
+  | "sys"              { $$ = ev.unsupported_height_field_format("sys", LOC(@1)); }
+  | "iff"              { $$ = ev.unsupported_height_field_format("iff", LOC(@1)); }
+  | "pot"              { $$ = ev.unsupported_height_field_format("pot", LOC(@1)); }
+  | STRING             { std::string path = $1.text; auto at = LOC(@1);
+                         $$ = [path, at](sg::HeightField& h) { h.written = path; h.location = at; }; }
+  | VALUE_ID           { std::string path = ev.to_string($1.value, @1); auto at = LOC(@1);
+                         $$ = [path, at](sg::HeightField& h) { h.written = path; h.location = at; }; }
+  | "gamma" expr       { double g = ev.to_float($2, @2, "a float gamma"); $$ = [g](sg::HeightField& h) { h.gamma = g; }; }
+  | "premultiplied" expr { bool on = ev.to_float($2, @2, "a boolean") != 0.0;
+                           $$ = [on](sg::HeightField& h) { h.premultiplied = on; }; }
+  | "smooth"           { $$ = [](sg::HeightField& h) { h.smooth = true; }; }
+  | "water_level" expr { double w = ev.to_float($2, @2, "a float water level");
+                         $$ = [w](sg::HeightField& h) { h.water_level = w; }; }
+  ;
+
 union_items
   : %empty             {}
   | union_items union_item { $$ = std::move($1); $$.push_back($2); }
@@ -425,6 +538,12 @@ mesh2_section
   | "uv_indices" "{" expr expr_seq opt_comma "}"     { $$ = ev.mesh2_indices("uv_indices", $3, @3, $4, @4, LOC(@1)); }
   | "texture_list" "{" expr opt_comma texture_list "}" { $$ = ev.mesh2_textures($3, @3, $5, LOC(@1)); }
   | "inside_vector" expr { $$ = [](sg::TriangleMesh&) {}; }
+  ;
+
+/* Separated by optional commas, as POV reads a patch's points. */
+arith_seq
+  : arith %prec OPT_EMPTY { ev.remember_location($1, @1); $$.push_back($1); }
+  | arith_seq opt_comma arith %prec OPT_EMPTY { $$ = std::move($1); ev.remember_location($3, @3); $$.push_back($3); }
   ;
 
 /* "," separated, each item located for index errors. */
@@ -639,12 +758,12 @@ colour_keyword: "color" | "colour" ;
 
 /* ------------------------------------------------------------- expressions */
 
+/* POV reads an object's float and vector arguments without relational,
+ * logical or conditional operators at their top level (Parse_Float is
+ * Parse_Rel_Factor): `v_steps 8 <0, 0, 2>` is a count, then a point.
+ * `arith` is that expression; `expr` adds the rest. */
 expr
-  : postfix            { $$ = std::move($1); }
-  | expr "+" expr      { $$ = ev.arithmetic('+', $1, $3, @2); }
-  | expr "-" expr      { $$ = ev.arithmetic('-', $1, $3, @2); }
-  | expr "*" expr      { $$ = ev.arithmetic('*', $1, $3, @2); }
-  | expr "/" expr      { $$ = ev.arithmetic('/', $1, $3, @2); }
+  : arith %prec OPT_EMPTY { $$ = std::move($1); }
   | expr "<" expr      { $$ = ev.compare("<", $1, @1, $3, @3); }
   | expr "<=" expr     { $$ = ev.compare("<=", $1, @1, $3, @3); }
   | expr ">" expr      { $$ = ev.compare(">", $1, @1, $3, @3); }
@@ -654,17 +773,25 @@ expr
   | expr "&" expr      { $$ = ev.logical('&', $1, @1, $3, @3); }
   | expr "|" expr      { $$ = ev.logical('|', $1, @1, $3, @3); }
   | expr "?" expr ":" expr { $$ = ev.to_float($1, @1, "a condition") != 0.0 ? $3 : $5; }
-  | "-" expr %prec UNARY { $$ = ev.negate($2, @2); }
-  | "+" expr %prec UNARY { $$ = std::move($2); }
-  | "!" expr %prec UNARY { $$ = Value::number(ev.to_float($2, @2, "an operand of '!'") == 0.0 ? 1.0 : 0.0); }
-  | "rgb" expr %prec UNARY    { $$ = ev.colour_keyword("rgb", $2, @2); }
-  | "rgbf" expr %prec UNARY   { $$ = ev.colour_keyword("rgbf", $2, @2); }
-  | "rgbt" expr %prec UNARY   { $$ = ev.colour_keyword("rgbt", $2, @2); }
-  | "rgbft" expr %prec UNARY  { $$ = ev.colour_keyword("rgbft", $2, @2); }
-  | "srgb" expr %prec UNARY   { $$ = ev.colour_keyword("srgb", $2, @2); }
-  | "srgbf" expr %prec UNARY  { $$ = ev.colour_keyword("srgbf", $2, @2); }
-  | "srgbt" expr %prec UNARY  { $$ = ev.colour_keyword("srgbt", $2, @2); }
-  | "srgbft" expr %prec UNARY { $$ = ev.colour_keyword("srgbft", $2, @2); }
+  ;
+
+arith
+  : postfix            { $$ = std::move($1); }
+  | arith "+" arith    { $$ = ev.arithmetic('+', $1, $3, @2); }
+  | arith "-" arith    { $$ = ev.arithmetic('-', $1, $3, @2); }
+  | arith "*" arith    { $$ = ev.arithmetic('*', $1, $3, @2); }
+  | arith "/" arith    { $$ = ev.arithmetic('/', $1, $3, @2); }
+  | "-" arith %prec UNARY { $$ = ev.negate($2, @2); }
+  | "+" arith %prec UNARY { $$ = std::move($2); }
+  | "!" arith %prec UNARY { $$ = Value::number(ev.to_float($2, @2, "an operand of '!'") == 0.0 ? 1.0 : 0.0); }
+  | "rgb" arith %prec UNARY    { $$ = ev.colour_keyword("rgb", $2, @2); }
+  | "rgbf" arith %prec UNARY   { $$ = ev.colour_keyword("rgbf", $2, @2); }
+  | "rgbt" arith %prec UNARY   { $$ = ev.colour_keyword("rgbt", $2, @2); }
+  | "rgbft" arith %prec UNARY  { $$ = ev.colour_keyword("rgbft", $2, @2); }
+  | "srgb" arith %prec UNARY   { $$ = ev.colour_keyword("srgb", $2, @2); }
+  | "srgbf" arith %prec UNARY  { $$ = ev.colour_keyword("srgbf", $2, @2); }
+  | "srgbt" arith %prec UNARY  { $$ = ev.colour_keyword("srgbt", $2, @2); }
+  | "srgbft" arith %prec UNARY { $$ = ev.colour_keyword("srgbft", $2, @2); }
   ;
 
 postfix

@@ -38,6 +38,11 @@ const char* object_kind_name(sg::Object::Kind kind) {
     case sg::Object::Kind::Merge: return "merge";
     case sg::Object::Kind::Intersection: return "intersection";
     case sg::Object::Kind::Difference: return "difference";
+    case sg::Object::Kind::Ovus: return "ovus";
+    case sg::Object::Kind::SphereSweep: return "sphere_sweep";
+    case sg::Object::Kind::BicubicPatch: return "bicubic_patch";
+    case sg::Object::Kind::JuliaFractal: return "julia_fractal";
+    case sg::Object::Kind::HeightField: return "height_field";
     }
     return "object";
 }

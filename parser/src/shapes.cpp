@@ -10,12 +10,7 @@ namespace lancer::parse {
 
 namespace {
 
-ShapePtr new_shape(sg::Object::Kind kind, const sg::SourceLocation& at) {
-    auto shape = std::make_shared<ShapeValue>();
-    shape->object.kind = kind;
-    shape->object.location = at;
-    return shape;
-}
+constexpr int kMaxPolynomialOrder = 15;  // the renderer's root finder's degree
 
 // POV's loops of points (Parse_Polygon, Parse_Prism): a loop ends where
 // its first point comes again, the next starts after it. Closes an open
@@ -326,10 +321,9 @@ ShapePtr Evaluator::make_polynomial(sg::Object::Kind kind, const Value& order_va
     auto shape = new_shape(kind, at);
     sg::Polynomial polynomial;
     polynomial.order = to_int(order_value, wo);
-    constexpr int kMaxOrder = 15;  // the renderer's root finder's degree
-    if (polynomial.order < 2 || polynomial.order > kMaxOrder) {
-        error(wo.begin,
-              "poly order must be 2 to " + std::to_string(kMaxOrder) + ", got " + std::to_string(polynomial.order));
+    if (polynomial.order < 2 || polynomial.order > kMaxPolynomialOrder) {
+        error(wo.begin, "poly order must be 2 to " + std::to_string(kMaxPolynomialOrder) + ", got " +
+                            std::to_string(polynomial.order));
         polynomial.order = 2;
     }
     const int n = polynomial.order;
@@ -342,6 +336,56 @@ ShapePtr Evaluator::make_polynomial(sg::Object::Kind kind, const Value& order_va
                           "the polynomial's coefficients"))
         polynomial.coefficients.assign(polynomial.coefficients.size(), 0.0);
     shape->object.shape = std::move(polynomial);
+    return shape;
+}
+
+namespace {
+
+// Where x^i y^j z^k sits in POV's coefficient order (make_polynomial); -1
+// when i + j + k exceeds the order.
+int polynomial_term_index(int order, int i, int j, int k) {
+    int index = 0;
+    for (int x = order; x >= 0; --x)
+        for (int y = order - x; y >= 0; --y)
+            for (int z = order - x - y; z >= 0; --z, ++index)
+                if (x == i && y == j && z == k) return index;
+    return -1;
+}
+
+}  // namespace
+
+std::function<void(sg::Polynomial&)> Evaluator::polynomial_term(const std::vector<Value>& values,
+                                                                const std::vector<SourceRange>& where) {
+    int powers[3];
+    for (int axis = 0; axis < 3; ++axis) powers[axis] = to_int(values[axis], where[axis]);
+    double coefficient = to_float(values[3], where[3], "a float coefficient");
+    if (!check_renderable(&coefficient, 1, where[3], "the coefficient")) coefficient = 0.0;
+    const sg::SourceLocation at = where[0].begin;
+    return [this, powers0 = powers[0], powers1 = powers[1], powers2 = powers[2], coefficient,
+            at](sg::Polynomial& polynomial) {
+        const int index = powers0 < 0 || powers1 < 0 || powers2 < 0
+                              ? -1
+                              : polynomial_term_index(polynomial.order, powers0, powers1, powers2);
+        if (index < 0) {
+            error(at, "xyz(" + std::to_string(powers0) + ", " + std::to_string(powers1) + ", " +
+                          std::to_string(powers2) + ") is not a term of a polynomial of order " +
+                          std::to_string(polynomial.order) + " (POV-Ray's \"coefficient of polynom is out of range\")");
+            return;
+        }
+        polynomial.coefficients[std::size_t(index)] = coefficient;
+    };
+}
+
+ShapePtr Evaluator::make_polynomial_from_terms(const Value& order_value, const SourceRange& wo,
+                                               const Edits<sg::Polynomial>& terms, const sg::SourceLocation& at) {
+    // The order's checks and the coefficient count are make_polynomial's.
+    int order = to_int(order_value, wo);
+    if (order < 2 || order > kMaxPolynomialOrder) order = 2;  // make_polynomial says why
+    std::vector<Value> zeros(std::size_t((order + 1) * (order + 2) * (order + 3) / 6), Value::number(0.0));
+    auto shape = make_polynomial(sg::Object::Kind::Poly, order_value, wo, zeros, wo, at);
+    auto& polynomial = std::get<sg::Polynomial>(shape->object.shape);
+    polynomial.coefficients.resize(zeros.size(), 0.0);
+    for (const auto& term : terms) term(polynomial);
     return shape;
 }
 

@@ -62,13 +62,8 @@ const std::unordered_set<std::string>& ignored_blocks() {
 
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
-    static const std::unordered_set<std::string> names = {"height_field",
-                                                          "isosurface",
+    static const std::unordered_set<std::string> names = {"isosurface",
                                                           "parametric",
-                                                          "julia_fractal",
-                                                          "bicubic_patch",
-                                                          "sphere_sweep",
-                                                          "ovus",
                                                           "lemon",
                                                           "array",
                                                           "spline",

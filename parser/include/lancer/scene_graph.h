@@ -242,6 +242,84 @@ struct Sor {
     bool open = false;
 };
 
+// POV's ovus { bottom_radius, top_radius }: an egg about the y axis, a
+// sphere of bottom_radius at the origin joined smoothly to a sphere of
+// top_radius above it.
+struct Ovus {
+    double bottom_radius = 1.0;
+    double top_radius = 0.5;
+};
+
+// POV's sphere_sweep: the surface a sphere sweeps moving along a spline
+// through the modelling spheres (centre, radius), both interpolated.
+struct SphereSweep {
+    enum class Spline { Linear, BSpline, CubicSpline };
+    struct Sphere {
+        Vec3 center{0.0};
+        double radius = 1.0;
+    };
+    Spline spline = Spline::Linear;
+    std::vector<Sphere> spheres;
+    double tolerance = 1e-6;  // POV's depth tolerance
+};
+
+// POV's bicubic_patch: a Bezier patch over 4 x 4 control points (row by
+// row as written), subdivided into 2^u_steps x 2^v_steps flat pieces.
+struct BicubicPatch {
+    int type = -1;  // required: 0 or 1
+    double flatness = 0.0;
+    int u_steps = 0, v_steps = 0;
+    Vec3 points[16];
+    Vec2 uv_corners[4] = {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};
+};
+
+// POV's julia_fractal: the 3-D slice of a 4-D Julia set of z -> f(z) + c,
+// c = julia, in quaternion or hypercomplex algebra.
+struct JuliaFractal {
+    enum class Algebra { Quaternion, Hypercomplex };
+    enum class Function {
+        Sqr,
+        Cube,
+        Exp,
+        Reciprocal,
+        Sin,
+        Asin,
+        Sinh,
+        Asinh,
+        Cos,
+        Acos,
+        Cosh,
+        Acosh,
+        Tan,
+        Atan,
+        Tanh,
+        Atanh,
+        Ln,
+        Pwr
+    };
+    glm::dvec4 julia{0.0};
+    Algebra algebra = Algebra::Quaternion;
+    Function function = Function::Sqr;
+    Vec2 power{0.0};  // pwr(x, y)
+    int max_iteration = 20;
+    double precision = 20.0;       // as written, at least 1
+    glm::dvec4 slice{0, 0, 0, 1};  // unit, t component not 0
+    double slice_distance = 0.0;
+};
+
+// POV's height_field: an image's values as heights over the unit square
+// (x across the image, z along it), in the box <0,0,0> .. <1,1,1>.
+struct HeightField {
+    std::string path;     // the file found
+    std::string written;  // as the scene wrote it, for messages
+    ImageFormat format = ImageFormat::Unknown;
+    double gamma = 0.0;  // 0: none given
+    bool premultiplied = false;
+    bool smooth = false;
+    double water_level = 0.0;
+    SourceLocation location;  // of the file name
+};
+
 // POV's disc { center, normal, radius [, hole_radius] }.
 struct Disc {
     Vec3 center{0.0};
@@ -304,11 +382,16 @@ struct Object {
         Sor,
         Merge,
         Intersection,
-        Difference
+        Difference,
+        Ovus,
+        SphereSweep,
+        BicubicPatch,
+        JuliaFractal,
+        HeightField
     };
     Kind kind = Kind::Sphere;
     std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric, Polygon, Polynomial, Superellipsoid,
-                 Blob, Prism, Lathe, Text, Sor>
+                 Blob, Prism, Lathe, Text, Sor, Ovus, SphereSweep, BicubicPatch, JuliaFractal, HeightField>
         shape;
     // POV's inverse: inside and outside swapped (what CSG and clipped_by see).
     bool inverse = false;

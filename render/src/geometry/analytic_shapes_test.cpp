@@ -9,19 +9,12 @@
 
 #include "geometry/polynomial_roots.h"
 #include "geometry/shape.h"
+#include "geometry/shape_test_support.h"
 
 namespace lancer {
 namespace {
 
-std::vector<double> sorted_crossings(const Shape& shape, const DVec3& o, const DVec3& d, double t_min = 0.0,
-                                     double t_max = INFINITY) {
-    ShapeCrossings all;
-    shape.crossings(o, d, t_min, t_max, all);
-    std::vector<double> t;
-    for (int i = 0; i < all.count; ++i) t.push_back(all.items[i].t);
-    std::sort(t.begin(), t.end());
-    return t;
-}
+using test::sorted_crossings;
 
 TEST(PolynomialRoots, QuarticWithKnownRoots) {
     // (t - 1)(t - 2)(t - 3)(t - 4) = t^4 - 10 t^3 + 35 t^2 - 50 t + 24

@@ -6,6 +6,11 @@
 #include <iostream>
 #include <map>
 
+#include "geometry/bicubic_patch.h"
+#include "geometry/height_field.h"
+#include "geometry/julia_fractal.h"
+#include "geometry/ovus.h"
+#include "geometry/sphere_sweep.h"
 #include "lancer/host/scene_compiler.h"
 #include "lancer/scene_error.h"
 
@@ -213,7 +218,7 @@ class Builder {
             add_mesh_details(instance, *mesh);
         } else {
             instance.kind = ShapeKind::Analytic;
-            instance.shape = analytic_shape(object);
+            instance.shape = analytic_shape(object, world_from_object);
             DVec3 lower, upper;
             instance.bounded = instance.shape->bounds(lower, upper);
             if (instance.bounded)
@@ -222,7 +227,68 @@ class Builder {
         return true;
     }
 
-    static std::shared_ptr<const Shape> analytic_shape(const sg::Object& object) {
+    static JuliaFractalParameters julia_parameters(const sg::JuliaFractal& julia) {
+        using In = sg::JuliaFractal::Function;
+        using Out = JuliaFractalParameters::Function;
+        static const std::map<In, Out> functions = {
+            {In::Sqr, Out::Sqr}, {In::Cube, Out::Cube}, {In::Exp, Out::Exp},   {In::Reciprocal, Out::Reciprocal},
+            {In::Sin, Out::Sin}, {In::Asin, Out::Asin}, {In::Sinh, Out::Sinh}, {In::Asinh, Out::Asinh},
+            {In::Cos, Out::Cos}, {In::Acos, Out::Acos}, {In::Cosh, Out::Cosh}, {In::Acosh, Out::Acosh},
+            {In::Tan, Out::Tan}, {In::Atan, Out::Atan}, {In::Tanh, Out::Tanh}, {In::Atanh, Out::Atanh},
+            {In::Ln, Out::Ln},   {In::Pwr, Out::Pwr}};
+        JuliaFractalParameters parameters;
+        parameters.julia_parameter = julia.julia;
+        parameters.algebra = julia.algebra == sg::JuliaFractal::Algebra::Quaternion
+                                 ? JuliaFractalParameters::Algebra::Quaternion
+                                 : JuliaFractalParameters::Algebra::Hypercomplex;
+        parameters.function = functions.at(julia.function);
+        parameters.power = julia.power;
+        parameters.max_iteration = julia.max_iteration;
+        parameters.precision = julia.precision;
+        parameters.slice_normal = julia.slice;
+        parameters.slice_distance = julia.slice_distance;
+        return parameters;
+    }
+
+    static std::shared_ptr<const Shape> analytic_shape(const sg::Object& object, const DMat4& world_from_object) {
+        if (const auto* ovus = std::get_if<sg::Ovus>(&object.shape)) {
+            if (auto shape = make_ovus_shape(ovus->bottom_radius, ovus->top_radius)) return shape;
+            throw SceneError(object.location, "ovus: its radii must be positive");
+        }
+        if (const auto* sweep = std::get_if<sg::SphereSweep>(&object.shape)) {
+            std::vector<glm::dvec4> spheres;
+            for (const auto& sphere : sweep->spheres) spheres.emplace_back(sphere.center, sphere.radius);
+            if (auto shape = make_sphere_sweep_shape(SphereSweepSpline(int(sweep->spline)), spheres, sweep->tolerance))
+                return shape;
+            throw SceneError(object.location, "sphere_sweep: too few spheres for its spline");
+        }
+        if (const auto* julia = std::get_if<sg::JuliaFractal>(&object.shape)) {
+            if (auto shape = make_julia_fractal_shape(julia_parameters(*julia))) return shape;
+            throw SceneError(object.location, "julia_fractal: its slice or function is not one POV-Ray accepts");
+        }
+        if (const auto* field = std::get_if<sg::HeightField>(&object.shape)) {
+            HeightFieldGrid grid;
+            try {
+                grid = read_height_field_image(field->path, field->gamma > 0.0 ? field->gamma : std::nan(""));
+            } catch (const std::exception& e) {
+                throw SceneError(field->location, std::string("height_field: ") + e.what());
+            }
+            if (auto shape = make_height_field_shape(std::move(grid), field->smooth, field->water_level)) return shape;
+            throw SceneError(field->location, "height_field: the image '" + field->written +
+                                                  "' gives no height field (it needs at least 2 x 2 pixels)");
+        }
+        if (const auto* patch = std::get_if<sg::BicubicPatch>(&object.shape)) {
+            BicubicPatchParameters parameters;
+            parameters.type = patch->type;
+            parameters.flatness = patch->flatness;
+            parameters.u_steps = patch->u_steps;
+            parameters.v_steps = patch->v_steps;
+            for (int i = 0; i < 16; ++i) parameters.points[std::size_t(i)] = patch->points[i];
+            for (int i = 0; i < 4; ++i) parameters.uv_corners[std::size_t(i)] = patch->uv_corners[i];
+            parameters.world_from_object = world_from_object;
+            if (auto shape = make_bicubic_patch_shape(parameters)) return shape;
+            throw SceneError(object.location, "bicubic_patch: needs a type (0 or 1) and finite control points");
+        }
         if (const auto* cone = std::get_if<sg::Cone>(&object.shape))
             return make_cone_shape(ConeParameters{cone->base, cone->cap, std::fabs(cone->base_radius),
                                                   std::fabs(cone->cap_radius), cone->open});
