@@ -29,6 +29,7 @@
 #include "lancer/render_scene.h"
 #include "lancer/scene_error.h"
 #include "lancer/scene_graph.h"
+#include "run_command.h"
 
 namespace lancer {
 namespace {
@@ -188,6 +189,40 @@ union {
 )";
 }
 
+// The shapes that scene leaves out (ovus, sphere_sweep, bicubic_patch,
+// julia_fractal, height_field, sor, polygon, poly, text), placed the same way.
+std::string scaled_curved_shapes_scene(double scale, double offset) {
+    const std::string height_map = test::source_path("tests/reference/pov/height_field_16.png");
+    return scale_and_offset(scale, offset) + R"(
+global_settings { assumed_gamma 1.0 max_trace_level 6 }
+background { color rgb <0.05, 0.06, 0.08> }
+camera { location <0, 3, -7> * S + O look_at <0, 0.5, 0> * S + O right x * 4 / 3 angle 55 }
+light_source { <-3, 5, -4> * S + O color rgb 0.8 parallel point_at O }
+#declare M = texture { pigment { color rgb <0.7, 0.65, 0.6> } finish { ambient 0.05 diffuse 0.8 phong 0.3 } }
+union {
+  plane { y, 0 texture { M } }
+  ovus { 0.5, 0.3 translate <-3, 0.5, 1> texture { M } }
+  sphere_sweep { cubic_spline 5, <-0.6, 0.2, 0>, 0.1, <-0.3, 0.8, 0>, 0.15, <0, 0.3, 0>, 0.2, <0.3, 0.9, 0.2>, 0.12,
+                 <0.6, 0.2, 0>, 0.1 translate <-1.6, 0, 1> texture { M } }
+  bicubic_patch { type 1 u_steps 3 v_steps 3
+    <-0.5, 0, -0.5>, <-0.2, 0, -0.5>, <0.2, 0, -0.5>, <0.5, 0, -0.5>,
+    <-0.5, 0, -0.2>, <-0.2, 1.2, -0.2>, <0.2, 1.2, -0.2>, <0.5, 0, -0.2>,
+    <-0.5, 0, 0.2>, <-0.2, 1.2, 0.2>, <0.2, 1.2, 0.2>, <0.5, 0, 0.2>,
+    <-0.5, 0, 0.5>, <-0.2, 0, 0.5>, <0.2, 0, 0.5>, <0.5, 0, 0.5> translate <0, 0.01, 1> texture { M } }
+  julia_fractal { <-0.083, 0.0, -0.83, -0.025> quaternion sqr max_iteration 8 precision 15
+                  scale 0.4 translate <1.4, 0.6, 1> texture { M } }
+  height_field { png ")" +
+           height_map + R"(" gamma 1 smooth translate <-0.5, 0, -0.5> scale <1.2, 0.5, 1.2>
+                 translate <2.8, 0.01, 1> texture { M } }
+  sor { 5, <0, 0>, <0.4, 0.01>, <0.2, 0.5>, <0.4, 0.9>, <0.3, 1.2> translate <-2.2, 0.01, -1.2> texture { M } }
+  polygon { 5, <0, 0>, <0.8, 0>, <0.8, 0.7>, <0, 0.7>, <0, 0> rotate x*60 translate <-0.9, 0.3, -1.4> texture { M } }
+  poly { 2, <1, 0, 0, 0, 4, 0, 0, 1, 0, -0.16> translate <0.6, 0.4, -1.2> texture { M } }
+  text { ttf "timrom.ttf" "Ab" 0.2, 0 scale 0.8 translate <1.4, 0.01, -1.4> texture { M } }
+  scale S translate O
+}
+)";
+}
+
 struct Variant {
     const char* label;
     std::string integrator;
@@ -256,26 +291,28 @@ TEST(Extremes, FarFromTheOrigin) {
 // Expected: as for the first scene, within 1% of scale 1 and of the origin.
 TEST(Extremes, EveryShapeScaledAndFarFromTheOrigin) {
     constexpr int kWidth = 48, kHeight = 36;
-    for (const Variant& v : every_integrator()) {
-        if (v.integrator != "shadow" && v.integrator != "whitted" && v.integrator != "path") continue;
-        const Film reference =
-            render(scaled_shapes_scene(1.0, 0.0), v.integrator, v.parameters, kWidth, kHeight, v.spp);
-        EXPECT_TRUE(all_finite(reference)) << v.label;
-        for (double scale : {1e-4, 1e4}) {
-            const Film scaled =
-                render(scaled_shapes_scene(scale, 0.0), v.integrator, v.parameters, kWidth, kHeight, v.spp);
-            EXPECT_TRUE(all_finite(scaled)) << v.label << " at scale " << scale;
-            const double difference = relative_difference(scaled, reference);
-            std::cout << "[ shapes   ] " << v.label << " x" << scale << ": " << 100.0 * difference << " %\n";
-            EXPECT_LT(difference, 0.01) << v.label << " at scale " << scale;
+    const std::pair<const char*, std::string (*)(double, double)> scenes[] = {{"shapes", scaled_shapes_scene},
+                                                                              {"curved", scaled_curved_shapes_scene}};
+    for (const auto& [name, scene] : scenes)
+        for (const Variant& v : every_integrator()) {
+            if (v.integrator != "shadow" && v.integrator != "whitted" && v.integrator != "path") continue;
+            const std::string label = std::string(name) + " " + v.label;
+            const Film reference = render(scene(1.0, 0.0), v.integrator, v.parameters, kWidth, kHeight, v.spp);
+            EXPECT_TRUE(all_finite(reference)) << label;
+            for (double scale : {1e-4, 1e4}) {
+                const Film scaled = render(scene(scale, 0.0), v.integrator, v.parameters, kWidth, kHeight, v.spp);
+                EXPECT_TRUE(all_finite(scaled)) << label << " at scale " << scale;
+                const double difference = relative_difference(scaled, reference);
+                std::cout << "[ shapes   ] " << label << " x" << scale << ": " << 100.0 * difference << " %\n";
+                EXPECT_LT(difference, 0.01) << label << " at scale " << scale;
+            }
+            if (v.integrator == "path") continue;  // its offset render differs by noise (see FarFromTheOrigin)
+            const Film moved = render(scene(1.0, 1e5), v.integrator, v.parameters, kWidth, kHeight, v.spp);
+            EXPECT_TRUE(all_finite(moved)) << label;
+            const double difference = relative_difference(moved, reference);
+            std::cout << "[ shapes   ] " << label << " +1e5: " << 100.0 * difference << " %\n";
+            EXPECT_LT(difference, 0.01) << label << " offset by 1e5";
         }
-        if (v.integrator == "path") continue;  // its offset render differs by noise (see FarFromTheOrigin)
-        const Film moved = render(scaled_shapes_scene(1.0, 1e5), v.integrator, v.parameters, kWidth, kHeight, v.spp);
-        EXPECT_TRUE(all_finite(moved)) << v.label;
-        const double difference = relative_difference(moved, reference);
-        std::cout << "[ shapes   ] " << v.label << " +1e5: " << 100.0 * difference << " %\n";
-        EXPECT_LT(difference, 0.01) << v.label << " offset by 1e5";
-    }
 }
 
 // ---------------------------------------------------------------------------

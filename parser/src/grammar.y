@@ -509,7 +509,7 @@ mesh_item
       { $$ = ev.mesh_triangle_edit({$3, $5, $7}, {@3, @5, @7}, $8, LOC(@1)); }
   | "smooth_triangle" "{" expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr texture_seq "}"
       { $$ = ev.mesh_triangle_edit({$3, $5, $7, $9, $11, $13}, {@3, @5, @7, @9, @11, @13}, $14, LOC(@1)); }
-  | "inside_vector" expr { $$ = [](ShapeValue&) {}; }
+  | "inside_vector" expr { $$ = ev.mesh_inside_vector_edit($2, @2); }
   | object_mod         { $$ = std::move($1); }
   ;
 
@@ -537,7 +537,8 @@ mesh2_section
   | "normal_indices" "{" expr expr_seq opt_comma "}" { $$ = ev.mesh2_indices("normal_indices", $3, @3, $4, @4, LOC(@1)); }
   | "uv_indices" "{" expr expr_seq opt_comma "}"     { $$ = ev.mesh2_indices("uv_indices", $3, @3, $4, @4, LOC(@1)); }
   | "texture_list" "{" expr opt_comma texture_list "}" { $$ = ev.mesh2_textures($3, @3, $5, LOC(@1)); }
-  | "inside_vector" expr { $$ = [](sg::TriangleMesh&) {}; }
+  | "inside_vector" expr { sg::Vec3 v = ev.nonzero_vec3($2, @2, "inside_vector");
+                           $$ = [v](sg::TriangleMesh& m) { m.inside_vector = v; }; }
   ;
 
 /* Separated by optional commas, as POV reads a patch's points. */

@@ -129,6 +129,11 @@ void Evaluator::finish_mesh(ShapeValue& shape, const sg::SourceLocation& at) {
     if (mutable_mesh(shape).faces.empty()) error(at, "mesh has no triangles");
 }
 
+std::function<void(ShapeValue&)> Evaluator::mesh_inside_vector_edit(const Value& vector, const SourceRange& where) {
+    const sg::Vec3 v = nonzero_vec3(vector, where, "inside_vector");
+    return [v](ShapeValue& shape) { mutable_mesh(shape).inside_vector = v; };
+}
+
 // One triangle (3 points) or smooth triangle (point, normal) x 3, with an
 // optional per-triangle texture.
 std::function<void(ShapeValue&)> Evaluator::mesh_triangle_edit(

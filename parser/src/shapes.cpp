@@ -251,6 +251,21 @@ ShapePtr Evaluator::make_sor(const Value& count, const SourceRange& wc, const st
         double xy[2] = {sor.points.back().x, sor.points.back().y};
         if (!check_renderable(xy, 2, wp, "a sor point")) sor.points.back() = sg::Vec2(0.0);
     }
+    // POV-Ray's checks (Parse_Sor): radii not negative, heights rising
+    // from the second point to the last but one.
+    for (std::size_t i = 0; i < sor.points.size(); ++i) {
+        if (sor.points[i].x < 0.0) {
+            error(wp.begin, "incorrect point in surface of revolution: point " + std::to_string(i + 1) +
+                                " has a negative radius");
+            break;
+        }
+        if (i > 1 && i + 1 < sor.points.size() && !(sor.points[i].y > sor.points[i - 1].y)) {
+            error(wp.begin, "incorrect point in surface of revolution: point " + std::to_string(i + 1) +
+                                " is not above point " + std::to_string(i) +
+                                " (the heights of the second to the last but one point must rise)");
+            break;
+        }
+    }
     for (std::size_t i = 0; i + 2 < sor.points.size(); ++i)
         if (sor.points[i + 2].y == sor.points[i].y) {
             error(wp.begin, "incorrect point in surface of revolution: points " + std::to_string(i + 1) + " and " +

@@ -9,7 +9,12 @@
 #include <cstring>
 #include <vector>
 
+#include "geometry/bicubic_patch.h"
+#include "geometry/height_field.h"
+#include "geometry/julia_fractal.h"
+#include "geometry/ovus.h"
 #include "geometry/shape.h"
+#include "geometry/sphere_sweep.h"
 
 namespace {
 
@@ -48,9 +53,11 @@ char g_parameters[256] = "";
 }
 
 std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
-    static const char* const kinds[] = {"cone", "torus",   "disc",           "quadric",
-                                        "poly", "polygon", "superellipsoid", "sphere"};
-    const int kind = in.byte() % 8;
+    // 16 kinds: a regression file's first byte keeps naming its shape.
+    static const char* const kinds[] = {
+        "cone", "torus",        "disc",          "quadric",       "poly",         "polygon", "superellipsoid", "sphere",
+        "ovus", "sphere_sweep", "bicubic_patch", "julia_fractal", "height_field", "blob",    "lathe",          "sor"};
+    const int kind = in.byte() % 16;
     g_kind = kinds[kind];
     g_parameters[0] = 0;
     switch (kind) {
@@ -99,7 +106,71 @@ std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
         std::snprintf(g_parameters, sizeof g_parameters, "e %.17g n %.17g", e, n);
         return lancer::make_superellipsoid_shape(e, n);
     }
-    default: return lancer::make_sphere_shape({in.vector(3), std::fabs(in.number(3))});
+    case 7: return lancer::make_sphere_shape({in.vector(3), std::fabs(in.number(3))});
+    case 8: {
+        const double bottom = std::fabs(in.number(3)), top = std::fabs(in.number(3));
+        std::snprintf(g_parameters, sizeof g_parameters, "bottom %.17g top %.17g", bottom, top);
+        return lancer::make_ovus_shape(bottom, top);
+    }
+    case 9: {
+        const auto spline = lancer::SphereSweepSpline(in.byte() % 3);
+        std::vector<glm::dvec4> spheres(2 + in.byte() % 8);
+        for (auto& sphere : spheres) sphere = glm::dvec4(in.vector(3), std::fabs(in.number(1)));
+        return lancer::make_sphere_sweep_shape(spline, spheres, in.byte() & 1 ? 1e-6 : std::fabs(in.number(1)));
+    }
+    case 10: {
+        lancer::BicubicPatchParameters patch;
+        patch.type = in.byte() % 2;
+        patch.u_steps = in.byte() % 6;
+        patch.v_steps = in.byte() % 6;
+        patch.flatness = in.byte() & 1 ? 0.0 : std::fabs(in.number(1));
+        for (auto& p : patch.points) p = in.vector(3);
+        return lancer::make_bicubic_patch_shape(patch);
+    }
+    case 11: {
+        lancer::JuliaFractalParameters julia;
+        julia.julia_parameter = glm::dvec4(in.vector(1), in.number(1));
+        julia.algebra = in.byte() & 1 ? lancer::JuliaFractalParameters::Algebra::Hypercomplex
+                                      : lancer::JuliaFractalParameters::Algebra::Quaternion;
+        julia.function = lancer::JuliaFractalParameters::Function(in.byte() % 18);
+        julia.power = glm::dvec2(in.number(3), in.number(3));
+        julia.max_iteration = 1 + in.byte() % 40;
+        julia.precision = 1.0 + std::fabs(in.number(50));
+        julia.slice_normal = glm::dvec4(in.vector(1), in.number(1));
+        julia.slice_distance = in.number(1);
+        return lancer::make_julia_fractal_shape(julia);
+    }
+    case 12: {
+        lancer::HeightFieldGrid grid;
+        grid.columns = 2 + in.byte() % 20;
+        grid.rows = 2 + in.byte() % 20;
+        grid.heights.resize(std::size_t(grid.columns) * grid.rows);
+        for (float& h : grid.heights) h = float(in.byte()) / 255.0f;
+        return lancer::make_height_field_shape(std::move(grid), in.byte() & 1, in.byte() / 255.0);
+    }
+    case 13: {
+        lancer::BlobParameters blob;
+        blob.threshold = in.number(2);
+        blob.components.resize(1 + in.byte() % 6);
+        for (auto& c : blob.components) {
+            c.kind = in.byte() & 1 ? lancer::BlobComponent::Kind::Cylinder : lancer::BlobComponent::Kind::Sphere;
+            c.center = in.vector(2);
+            c.apex = in.vector(2);
+            c.radius = std::fabs(in.number(2)) + 1e-6;
+            c.strength = in.number(3);
+        }
+        return lancer::make_blob_shape(blob);
+    }
+    case 14: {
+        std::vector<glm::dvec2> points(2 + in.byte() % 10);
+        for (auto& p : points) p = glm::dvec2(std::fabs(in.number(2)), in.number(3));
+        return lancer::make_lathe_shape(lancer::SplineKind(in.byte() % 4), points);
+    }
+    default: {
+        std::vector<glm::dvec2> points(4 + in.byte() % 8);
+        for (auto& p : points) p = glm::dvec2(std::fabs(in.number(2)), in.number(3));
+        return lancer::make_sor_shape(points, in.byte() & 1);
+    }
     }
 }
 

@@ -344,6 +344,9 @@ struct TriangleMesh {
     std::vector<Face> faces;
     std::vector<MaterialRef> materials;  // per-face textures, MTL materials
     std::string source;                  // OBJ path, when loaded from a file
+    // POV's inside_vector: the mesh is a solid (for CSG) whose inside is
+    // where a ray along this vector crosses it an odd number of times.
+    std::optional<Vec3> inside_vector;
 };
 using MeshRef = std::shared_ptr<const TriangleMesh>;
 

@@ -49,6 +49,14 @@ class LatheShape final : public Shape {
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
         const double scale = glm::length(d);
         if (!(scale > 0.0)) return;
+        // Only the stretch inside the bounds: a nearly horizontal ray's
+        // polynomial (scaled by d.y^2) has roots far along it that are
+        // rounding, not surface.
+        double near = t_min, far = t_max;
+        if (!ray_box_interval(DVec3(-m_radius, m_y_low, -m_radius), DVec3(m_radius, m_y_high, m_radius), o, d, near,
+                              far))
+            return;
+        const double tolerance = 1e-6 * (m_radius + (m_y_high - m_y_low));
         const bool horizontal = std::fabs(d.y) <= 1e-9 * scale;
         for (std::size_t index = 0; index < m_segments.size(); ++index) {
             const SplineSegment& segment = m_segments[index];
@@ -84,8 +92,12 @@ class LatheShape final : public Shape {
             const int n = polynomial_roots_in(c, 6, -1e-12, 1.0 + 1e-12, roots);
             for (int i = 0; i < n; ++i) {
                 const double s = std::clamp(roots[i], 0.0, 1.0);
-                const double t = (segment.at(s).y - o.y) / d.y;
-                if (t > t_min && t < t_max) out.add(t, int(index));
+                const glm::dvec2 curve = segment.at(s);
+                const double t = (curve.y - o.y) / d.y;
+                if (!(t > t_min && t < t_max && t >= near && t <= far)) continue;
+                const DVec3 p = o + t * d;
+                if (std::fabs(std::sqrt(p.x * p.x + p.z * p.z) - std::fabs(curve.x)) > tolerance) continue;
+                out.add(t, int(index));
             }
         }
     }

@@ -117,6 +117,10 @@ class SorShape final : public Shape {
 std::shared_ptr<const Shape> make_sor_shape(const std::vector<glm::dvec2>& p, bool open) {
     const int n = int(p.size());
     if (n < 4) return nullptr;
+    // POV's Parse_Sor: radii not negative, the heights of the points a
+    // segment spans (the second to the last but one) increasing.
+    for (int i = 0; i < n; ++i)
+        if (p[i].x < 0.0 || (i > 1 && i < n - 1 && !(p[i].y > p[i - 1].y))) return nullptr;
     std::vector<SorSegment> segments;
     for (int i = 0; i + 3 < n; ++i) {
         if (!(std::fabs(p[i + 2].y - p[i].y) > 0.0) || !(std::fabs(p[i + 3].y - p[i + 1].y) > 0.0)) return nullptr;

@@ -350,7 +350,7 @@ class Builder {
             std::vector<glm::dvec2> points(sor->points.begin(), sor->points.end());
             if (auto shape = make_sor_shape(points, sor->open)) return shape;
             throw SceneError(object.location,
-                             "sor: two points of a segment share a height (POV-Ray's \"incorrect "
+                             "sor: a negative radius, or heights that do not rise (POV-Ray's \"incorrect "
                              "point in surface of revolution\")");
         }
         if (const auto* lathe = std::get_if<sg::Lathe>(&object.shape)) {
