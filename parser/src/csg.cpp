@@ -32,15 +32,38 @@ ShapePtr Evaluator::make_csg(sg::Object::Kind kind, const sg::SourceLocation& at
     return shape;
 }
 
+namespace {
+
+// POV-Ray's patch objects: a triangle, or a mesh without inside_vector, has
+// no inside (lancer's CSG, as POV's, keeps or drops pieces of its surface).
+bool is_patch_object(const sg::Object& object) {
+    const auto* mesh = std::get_if<sg::MeshRef>(&object.shape);
+    return mesh && *mesh && !(*mesh)->inside_vector;
+}
+
+}  // namespace
+
 void Evaluator::finish_csg(ShapeValue& shape) {
     const auto& children = std::get<sg::Group>(shape.object.shape).children;
     if (children.size() < 2 && shape.object.kind != sg::Object::Kind::Merge)
         warning(shape.object.location, "should have at least 2 objects in CSG (POV-Ray's warning)");
+    if (shape.object.kind == sg::Object::Kind::Intersection || shape.object.kind == sg::Object::Kind::Difference)
+        for (const sg::Object& child : children)
+            if (is_patch_object(child))
+                warning(child.location,
+                        "a triangle or a mesh without inside_vector has no inside: in an "
+                        "intersection or difference only pieces of its surface are kept "
+                        "(POV-Ray's \"patch objects not allowed in intersection\")");
 }
 
 std::function<void(ShapeValue&)> Evaluator::clip_edit(const std::vector<ShapePtr>& clips,
                                                       const sg::SourceLocation& at) {
     if (clips.empty()) warning(at, "clipped_by holds no object; it has no effect");
+    for (const ShapePtr& clip : clips)
+        if (is_patch_object(clip->object))
+            error(clip->object.location,
+                  "a triangle or a mesh without inside_vector cannot clip: it has no inside "
+                  "(POV-Ray's \"illegal patch in clip\")");
     return [clips](ShapeValue& s) {
         for (sg::Object& clip : in_object_space(clips, s.object)) s.object.clipped_by.push_back(std::move(clip));
     };

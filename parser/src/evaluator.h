@@ -214,6 +214,8 @@ class Evaluator {
     std::function<void(sg::TriangleMesh&)> mesh2_indices(const std::string& section, const Value& count,
                                                          const SourceRange& wc, const std::vector<Value>& items,
                                                          const SourceRange& wi, const sg::SourceLocation& at);
+    // POV's inside_vector of a mesh or mesh2: normalised; none when zero.
+    std::optional<sg::Vec3> inside_vector(const Value& vector, const SourceRange& where);
     std::function<void(ShapeValue&)> mesh_inside_vector_edit(const Value& vector, const SourceRange& where);
     std::function<void(sg::TriangleMesh&)> mesh2_textures(const Value& count, const SourceRange& wc,
                                                           const std::vector<std::shared_ptr<sg::Material>>& textures,

@@ -537,8 +537,7 @@ mesh2_section
   | "normal_indices" "{" expr expr_seq opt_comma "}" { $$ = ev.mesh2_indices("normal_indices", $3, @3, $4, @4, LOC(@1)); }
   | "uv_indices" "{" expr expr_seq opt_comma "}"     { $$ = ev.mesh2_indices("uv_indices", $3, @3, $4, @4, LOC(@1)); }
   | "texture_list" "{" expr opt_comma texture_list "}" { $$ = ev.mesh2_textures($3, @3, $5, LOC(@1)); }
-  | "inside_vector" expr { sg::Vec3 v = ev.nonzero_vec3($2, @2, "inside_vector");
-                           $$ = [v](sg::TriangleMesh& m) { m.inside_vector = v; }; }
+  | "inside_vector" expr { auto v = ev.inside_vector($2, @2); $$ = [v](sg::TriangleMesh& m) { m.inside_vector = v; }; }
   ;
 
 /* Separated by optional commas, as POV reads a patch's points. */

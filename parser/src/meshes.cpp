@@ -129,8 +129,20 @@ void Evaluator::finish_mesh(ShapeValue& shape, const sg::SourceLocation& at) {
     if (mutable_mesh(shape).faces.empty()) error(at, "mesh has no triangles");
 }
 
+std::optional<sg::Vec3> Evaluator::inside_vector(const Value& vector, const SourceRange& where) {
+    const sg::Vec3 v = to_vec3(vector, where);
+    double xyz[3] = {v.x, v.y, v.z};
+    if (!check_renderable(xyz, 3, where, "inside_vector")) return std::nullopt;
+    // POV-Ray takes a zero vector as none.
+    if (glm::length(v) < 1e-10) {
+        warning(where.begin, "inside_vector is zero: the mesh has no inside (as in POV-Ray)");
+        return std::nullopt;
+    }
+    return glm::normalize(v);
+}
+
 std::function<void(ShapeValue&)> Evaluator::mesh_inside_vector_edit(const Value& vector, const SourceRange& where) {
-    const sg::Vec3 v = nonzero_vec3(vector, where, "inside_vector");
+    const std::optional<sg::Vec3> v = inside_vector(vector, where);
     return [v](ShapeValue& shape) { mutable_mesh(shape).inside_vector = v; };
 }
 

@@ -652,5 +652,29 @@ TEST(ParserVersion, VersionIsReadBackAndSetsLegacyGamma) {
     EXPECT_NE(bad.message.find("#version must be"), std::string::npos) << bad.message;
 }
 
+// inside_vector makes a mesh a solid for CSG (POV-Ray 3.7: mesh and mesh2);
+// a triangle or a mesh without it is a patch object: a warning in an
+// intersection or difference, an error as a clip.
+TEST(ParserObjects, InsideVectorAndPatchObjectsInCsg) {
+    auto scene = parse_ok(R"(
+        mesh { triangle { 0, x, y } triangle { 0, y, z } inside_vector <0, 0, 2> }
+        mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0, 1, 2> } inside_vector y })");
+    ASSERT_EQ(scene.objects.size(), 2u);
+    EXPECT_EQ(*std::get<sg::MeshRef>(scene.objects[0].shape)->inside_vector, sg::Vec3(0, 0, 1));
+    EXPECT_EQ(*std::get<sg::MeshRef>(scene.objects[1].shape)->inside_vector, sg::Vec3(0, 1, 0));  // normalised
+
+    ParseResult patch = parse_scene_string("difference { sphere { 0, 1 } triangle { 0, x, y } }");
+    ASSERT_TRUE(patch.ok()) << test::all_diagnostics(patch);
+    EXPECT_NE(test::all_diagnostics(patch).find("has no inside"), std::string::npos);
+    EXPECT_EQ(test::count_warnings(
+                  parse_scene_string("difference { sphere { 0, 1 } mesh { triangle { 0, x, y } inside_vector z } }")),
+              0);
+    const Diagnostic clip = test::first_error("sphere { 0, 1 clipped_by { triangle { 0, x, y } } }");
+    EXPECT_NE(clip.message.find("cannot clip"), std::string::npos) << clip.message;
+    // POV-Ray takes a zero inside_vector as none.
+    auto zero = parse_ok("mesh { triangle { 0, x, y } inside_vector 0 }");
+    EXPECT_FALSE(std::get<sg::MeshRef>(zero.objects[0].shape)->inside_vector);
+}
+
 }  // namespace
 }  // namespace lancer

@@ -42,7 +42,9 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
     switch (node.operation) {
     case CsgNode::Operation::Leaf: {
         const Instance& leaf = instances[node.instance];
-        if (!node.inverted && leaf.bounded) {
+        // An inverted solid fills all space but its own; a patch object's
+        // inside stays empty, so its box still holds all it keeps.
+        if ((!node.inverted || !leaf.shape->solid()) && leaf.bounded) {
             node.bounded = true;
             node.lower = DVec3(leaf.bounds_lower);
             node.upper = DVec3(leaf.bounds_upper);
@@ -75,7 +77,7 @@ bool CsgTree::inside(const std::vector<Instance>& instances, std::uint32_t index
     switch (node.operation) {
     case CsgNode::Operation::Leaf: {
         const Instance& leaf = instances[node.instance];
-        result = leaf.shape->inside(leaf.placement.point_to_object(p)) != node.inverted;
+        result = leaf.shape->solid() && leaf.shape->inside(leaf.placement.point_to_object(p)) != node.inverted;
         break;
     }
     case CsgNode::Operation::Union:

@@ -128,14 +128,45 @@ TEST(Csg, UnboundedTreesAreTraced) {
     EXPECT_LT(first_hit(*scene, {3, 5, 0}, {0, -1, 0}).t, 0.0f);
 }
 
-TEST(Csg, MeshesInsideCsgAreALocatedError) {
-    try {
-        compile("difference {\n  box { -1, 1 }\n  mesh { triangle { 0, x, y } }\n}");
-        FAIL() << "expected a SceneError";
-    } catch (const SceneError& e) {
-        EXPECT_EQ(e.location().line, 3);
-        EXPECT_NE(std::string(e.what()).find("not supported yet"), std::string::npos);
-    }
+// A mesh2 cube: its 12 triangles, wound outwards, between -1 and 1.
+std::string mesh_cube(const std::string& extra) {
+    return R"(mesh2 { vertex_vectors { 8, <-1,-1,-1>, <1,-1,-1>, <1,1,-1>, <-1,1,-1>, <-1,-1,1>, <1,-1,1>, <1,1,1>, <-1,1,1> }
+      face_indices { 12, <0,2,1>, <0,3,2>, <4,5,6>, <4,6,7>, <0,1,5>, <0,5,4>, <3,7,6>, <3,6,2>,
+                         <0,4,7>, <0,7,3>, <1,2,6>, <1,6,5> } )" +
+           extra + " }";
+}
+
+TEST(Csg, AMeshWithInsideVectorIsASolid) {
+    // The cube less a sphere of radius 1.2: only the cube's corners remain,
+    // so a ray through a face centre passes, one towards a corner stops at
+    // the cube's face; the sphere's surface shows inside the corners.
+    const auto scene = compile("difference { " + mesh_cube("inside_vector <0.3, 0.4, 1>") + " sphere { 0, 1.2 } }");
+    EXPECT_LT(first_hit(*scene, {-5, 0, 0}, {1, 0, 0}).t, 0.0f);
+    const Hit corner = first_hit(*scene, {-5, 0.9f, 0.9f}, {1, 0, 0});
+    EXPECT_NEAR(corner.t, 4.0f, 1e-5f);
+    // From inside the cut (at the origin) towards a corner: the sphere's
+    // surface, its normal turned out of what remains (towards the origin).
+    const Vec3 d = glm::normalize(Vec3(1, 1, 1));
+    const Hit cut = first_hit(*scene, {0, 0, 0}, d);
+    EXPECT_NEAR(cut.t, 1.2f, 1e-5f);
+    EXPECT_LT(glm::dot(cut.geometric_normal, d), -0.99f);
+    // An intersection with a sphere keeps the cube's faces inside it.
+    const auto both = compile("intersection { " + mesh_cube("inside_vector z") + " sphere { 0, 1.2 } }");
+    EXPECT_NEAR(first_hit(*both, {-5, 0, 0}, {1, 0, 0}).t, 4.0f, 1e-5f);
+    EXPECT_LT(first_hit(*both, {-5, 0.95f, 0.95f}, {1, 0, 0}).t, 0.0f);  // that corner is outside the sphere
+}
+
+TEST(Csg, AMeshWithoutInsideVectorHasNoInsideEvenInverted) {
+    // POV-Ray: a patch object is never inside, so subtracting it removes
+    // nothing and the sphere in a difference with it stays whole...
+    const auto kept = compile("difference { sphere { 0, 1 } " + mesh_cube("") + " }");
+    EXPECT_NEAR(first_hit(*kept, {-5, 0, 0}, {1, 0, 0}).t, 4.0f, 1e-5f);
+    // ...and a sphere less such a mesh (the mesh inverted) keeps none of
+    // the mesh's surface, which is never inside the sphere... while the
+    // mesh less the sphere keeps its faces outside the sphere only.
+    const auto faces = compile("difference { " + mesh_cube("") + " sphere { 0, 1.2 } }");
+    EXPECT_LT(first_hit(*faces, {-5, 0, 0}, {1, 0, 0}).t, 0.0f);
+    EXPECT_NEAR(first_hit(*faces, {-5, 0.9f, 0.9f}, {1, 0, 0}).t, 4.0f, 1e-5f);
 }
 
 }  // namespace

@@ -42,6 +42,7 @@ class PolygonShape final : public Shape {
     }
 
     bool inside(const DVec3&) const override { return false; }
+    bool solid() const override { return false; }
 
     bool bounds(DVec3& lower, DVec3& upper) const override {
         lower = m_lower;

@@ -49,6 +49,10 @@ class Shape {
     virtual bool inside(const DVec3& p) const = 0;
     // Object-space bounds; false for an unbounded shape.
     virtual bool bounds(DVec3& lower, DVec3& upper) const = 0;
+    // False for what POV-Ray calls a patch object (a triangle, a mesh
+    // without inside_vector, a polygon, a bicubic patch): it has no inside,
+    // inverted or not, and CSG only keeps or drops pieces of its surface.
+    virtual bool solid() const { return true; }
 };
 
 // Newton steps from p along the gradient onto value = level (an implicit

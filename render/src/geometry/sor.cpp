@@ -41,6 +41,14 @@ class SorShape final : public Shape {
     }
 
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
+        // Only the stretch inside the bounds, and only where the point lies
+        // on the surface: a cubic fitted to close heights far from the
+        // origin is ill-conditioned away from its segment, and the ray's
+        // polynomial then has roots that are rounding, not surface.
+        double near = t_min, far = t_max;
+        if (!ray_box_interval(DVec3(-m_radius, m_bottom, -m_radius), DVec3(m_radius, m_top, m_radius), o, d, near, far))
+            return;
+        const double tolerance = 1e-6 * (m_radius + (m_top - m_bottom));
         for (std::size_t index = 0; index < m_segments.size(); ++index) {
             const SorSegment& s = m_segments[index];
             // x(t)^2 + z(t)^2 - r^2(o.y + t d.y) = 0.
@@ -53,8 +61,12 @@ class SorShape final : public Shape {
             double roots[kMaxPolynomialDegree];
             const int n = polynomial_roots_in(c, 3, t_min, t_max, roots);
             for (int i = 0; i < n; ++i) {
-                const double y = y0 + roots[i] * dy;
-                if (y >= s.y_low && y <= s.y_high) out.add(roots[i], int(index));
+                const double t = roots[i];
+                const double y = y0 + t * dy;
+                if (!(y >= s.y_low && y <= s.y_high && t >= near && t <= far)) continue;
+                const double x = o.x + t * d.x, z = o.z + t * d.z;
+                if (std::fabs(std::sqrt(x * x + z * z) - std::sqrt(std::max(0.0, s.r2(y)))) > tolerance) continue;
+                out.add(t, int(index));
             }
         }
         if (m_open || d.y == 0.0) return;

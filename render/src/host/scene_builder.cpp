@@ -9,6 +9,7 @@
 #include "geometry/bicubic_patch.h"
 #include "geometry/height_field.h"
 #include "geometry/julia_fractal.h"
+#include "geometry/mesh_shape.h"
 #include "geometry/ovus.h"
 #include "geometry/sphere_sweep.h"
 #include "lancer/host/scene_compiler.h"
@@ -227,6 +228,45 @@ class Builder {
         return true;
     }
 
+    // A mesh (or triangle) as a CSG leaf: traced through its tree's root as
+    // an analytic shape, a solid only with POV's inside_vector.
+    void make_mesh_leaf(const sg::Object& object, const sg::TriangleMesh& mesh, const DMat4& world_from_object,
+                        const Material* material, bool no_shadow, Instance& instance) {
+        instance.kind = ShapeKind::Analytic;
+        instance.placement = Placement::from(world_from_object);
+        instance.material = material;
+        instance.casts_shadow = !no_shadow;
+        instance.location = object.location;
+        MeshShapeParameters parameters;
+        parameters.positions.assign(mesh.positions.begin(), mesh.positions.end());
+        parameters.normals.assign(mesh.normals.begin(), mesh.normals.end());
+        parameters.uvs.assign(mesh.uvs.begin(), mesh.uvs.end());
+        bool per_face_materials = false;
+        for (const sg::TriangleMesh::Face& face : mesh.faces) {
+            MeshShapeParameters::Face f;
+            for (int k = 0; k < 3; ++k) {
+                f.position[k] = face.position[k];
+                f.normal[k] = face.normal[k];
+                f.uv[k] = face.uv[k];
+            }
+            parameters.faces.push_back(f);
+            per_face_materials = per_face_materials || face.material >= 0;
+        }
+        if (per_face_materials)
+            std::cerr << (object.location.file ? *object.location.file : std::string("<scene>")) << ":"
+                      << object.location.line << ":" << object.location.column
+                      << ": warning: the mesh's per-triangle textures are not used inside CSG yet; it takes the "
+                         "mesh's own texture\n";
+        // POV-Ray reads inside_vector in world space (it never transforms it).
+        if (mesh.inside_vector) parameters.inside_vector = instance.placement.vector_to_object(*mesh.inside_vector);
+        instance.shape = make_mesh_shape(std::move(parameters));
+        if (!instance.shape) throw SceneError(object.location, "the mesh has no triangle with an area");
+        DVec3 lower, upper;
+        instance.bounded = instance.shape->bounds(lower, upper);
+        if (instance.bounded)
+            world_bounds(instance.placement, lower, upper, instance.bounds_lower, instance.bounds_upper);
+    }
+
     static JuliaFractalParameters julia_parameters(const sg::JuliaFractal& julia) {
         using In = sg::JuliaFractal::Function;
         using Out = JuliaFractalParameters::Function;
@@ -425,12 +465,12 @@ class Builder {
                                                      object_no_shadow, inverse != subtracted));
             }
         } else {
-            if (std::holds_alternative<sg::MeshRef>(object.shape))
-                throw SceneError(object.location,
-                                 "a mesh or triangle inside CSG, or with inverse or clipped_by, is not supported yet "
-                                 "(lancer's CSG takes analytic shapes)");
             Instance instance;
-            make_leaf(object, world_from_object, material_for(material), object_no_shadow, instance);
+            if (const auto* mesh = std::get_if<sg::MeshRef>(&object.shape)) {
+                make_mesh_leaf(object, **mesh, world_from_object, material_for(material), object_no_shadow, instance);
+            } else {
+                make_leaf(object, world_from_object, material_for(material), object_no_shadow, instance);
+            }
             if (!instance.shape) {
                 switch (instance.kind) {
                 case ShapeKind::Sphere: instance.shape = make_sphere_shape(instance.sphere); break;
