@@ -161,5 +161,21 @@ TEST(ParserCurvedShapes, PolynomialTermsInPovOrder) {
     EXPECT_EQ(out.location.column, 21);
 }
 
+// POV reads an object's arguments without relational operators at their
+// top level and with optional commas, so these sample-scene spellings parse:
+// radiosity/cornell.pov's box and triangle, objects/prism3a.pov's prism.
+TEST(ParserCurvedShapes, ArgumentsWithoutCommas) {
+    auto scene = parse_ok(R"(
+        box { <21.3, 54.87, 33.2><34.3, 54.88, 22.7> }
+        triangle { <42.3, 33, 24.7>, <31.4, 33, 45.6>, <47.2 33.00 40.6> }
+        prism { 0.0, 1.0, 4 <-1, -1>, <1, -1>, <0, 1>, <-1, -1> }
+        sphere { <1 -2, 0, 0> 0.5 })");
+    ASSERT_EQ(scene.objects.size(), 4u);
+    EXPECT_DOUBLE_EQ(std::get<sg::Box>(scene.objects[0].shape).corner2.y, 54.88);
+    EXPECT_EQ(std::get<sg::MeshRef>(scene.objects[1].shape)->positions[2], sg::Vec3(47.2, 33, 40.6));
+    EXPECT_EQ(std::get<sg::Prism>(scene.objects[2].shape).points.size(), 4u);
+    EXPECT_EQ(std::get<sg::Sphere>(scene.objects[3].shape).center, sg::Vec3(-1, 0, 0));  // "1 -2" is 1 - 2, as POV
+}
+
 }  // namespace
 }  // namespace lancer

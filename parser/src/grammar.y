@@ -101,7 +101,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        MAX_ITERATION "max_iteration" PRECISION "precision" SLICE "slice" CUBE "cube" RECIPROCAL "reciprocal" PWR "pwr"
        HEIGHT_FIELD "height_field" WATER_LEVEL "water_level" SMOOTH "smooth" PREMULTIPLIED "premultiplied"
        GIF "gif" PGM "pgm" PPM "ppm" BMP "bmp" SYS "sys" IFF "iff" POT "pot"
-       POLYNOMIAL "polynomial" XYZ "xyz"
+       POLYNOMIAL "polynomial" XYZ "xyz" HF_GRAY_16 "hf_gray_16"
 
 %nterm <Value> expr arith postfix primary colour colour_base declared_value string_value
 %nterm <std::vector<Value>> arith_seq expr_list opt_args vector_items expr_seq macro_args macro_arg_list
@@ -236,36 +236,36 @@ opt_bool
 /* ---------------------------------------------------------------- objects */
 
 object
-  : "sphere" "{" expr opt_comma expr object_mods "}"
+  : "sphere" "{" arith opt_comma arith object_mods "}"
       { $$ = ev.make_sphere($3, @3, $5, @5, LOC(@1)); ev.apply($$, $6); }
-  | "plane" "{" expr opt_comma expr object_mods "}"
+  | "plane" "{" arith opt_comma arith object_mods "}"
       { $$ = ev.make_plane($3, @3, $5, @5, LOC(@1)); ev.apply($$, $6); }
-  | "box" "{" expr opt_comma expr object_mods "}"
+  | "box" "{" arith opt_comma arith object_mods "}"
       { $$ = ev.make_box($3, @3, $5, @5, LOC(@1)); ev.apply($$, $6); }
-  | "cylinder" "{" expr opt_comma expr opt_comma expr opt_open object_mods "}"
+  | "cylinder" "{" arith opt_comma arith opt_comma arith opt_open object_mods "}"
       { $$ = ev.make_cone({$3, $7, $5, $7}, {@3, @7, @5, @7}, $8, LOC(@1), true); ev.apply($$, $9); }
-  | "cone" "{" expr opt_comma expr opt_comma expr opt_comma expr opt_open object_mods "}"
+  | "cone" "{" arith opt_comma arith opt_comma arith opt_comma arith opt_open object_mods "}"
       { $$ = ev.make_cone({$3, $5, $7, $9}, {@3, @5, @7, @9}, $10, LOC(@1), false); ev.apply($$, $11); }
-  | "torus" "{" expr opt_comma expr object_mods "}"
+  | "torus" "{" arith opt_comma arith object_mods "}"
       { $$ = ev.make_torus($3, @3, $5, @5, LOC(@1)); ev.apply($$, $6); }
-  | "disc" "{" expr opt_comma expr opt_comma expr opt_hole object_mods "}"
+  | "disc" "{" arith opt_comma arith opt_comma arith opt_hole object_mods "}"
       { $$ = ev.make_disc({$3, $5, $7}, {@3, @5, @7}, $8, LOC(@1)); ev.apply($$, $9); }
-  | "quadric" "{" expr opt_comma expr opt_comma expr opt_comma expr object_mods "}"
+  | "quadric" "{" arith opt_comma arith opt_comma arith opt_comma arith object_mods "}"
       { $$ = ev.make_quadric({$3, $5, $7, $9}, {@3, @5, @7, @9}, LOC(@1)); ev.apply($$, $10); }
-  | "prism" "{" prism_options expr opt_comma expr opt_comma expr expr_seq opt_comma opt_open object_mods "}"
-      { $$ = ev.make_prism($3, {$4, $6, $8}, {@4, @6, @8}, $9, @9, $11, LOC(@1)); ev.apply($$, $12); }
-  | "text" "{" "ttf" expr opt_comma expr opt_comma expr opt_comma expr object_mods "}"
+  | "prism" "{" prism_options arith opt_comma arith opt_comma arith opt_comma arith_seq opt_comma opt_open object_mods "}"
+      { $$ = ev.make_prism($3, {$4, $6, $8}, {@4, @6, @8}, $10, @10, $12, LOC(@1)); ev.apply($$, $13); }
+  | "text" "{" "ttf" arith opt_comma arith opt_comma arith opt_comma arith object_mods "}"
       { $$ = ev.make_text($4, @4, $6, @6, $8, @8, $10, @10, LOC(@1)); ev.apply($$, $11); }
-  | "sor" "{" expr expr_seq opt_comma opt_open object_mods "}"
-      { $$ = ev.make_sor($3, @3, $4, @4, $6, LOC(@1)); ev.apply($$, $7); }
-  | "lathe" "{" prism_options expr expr_seq opt_comma object_mods "}"
-      { $$ = ev.make_lathe($3, $4, @4, $5, @5, LOC(@1)); ev.apply($$, $7); }
+  | "sor" "{" arith opt_comma arith_seq opt_comma opt_open object_mods "}"
+      { $$ = ev.make_sor($3, @3, $5, @5, $7, LOC(@1)); ev.apply($$, $8); }
+  | "lathe" "{" prism_options arith opt_comma arith_seq opt_comma object_mods "}"
+      { $$ = ev.make_lathe($3, $4, @4, $6, @6, LOC(@1)); ev.apply($$, $8); }
   | "blob" "{" blob_items object_mods "}"
       { $$ = ev.make_blob($3, LOC(@1)); ev.apply($$, $4); }
-  | "superellipsoid" "{" expr object_mods "}"
+  | "superellipsoid" "{" arith object_mods "}"
       { $$ = ev.make_superellipsoid($3, @3, LOC(@1)); ev.apply($$, $4); }
-  | "polygon" "{" expr expr_seq opt_comma object_mods "}"
-      { $$ = ev.make_polygon($3, @3, $4, @4, LOC(@1)); ev.apply($$, $6); }
+  | "polygon" "{" arith opt_comma arith_seq opt_comma object_mods "}"
+      { $$ = ev.make_polygon($3, @3, $5, @5, LOC(@1)); ev.apply($$, $7); }
   | "poly" "{" expr "," "<" vector_items ">" object_mods "}"
       { $$ = ev.make_polynomial(sg::Object::Kind::Poly, $3, @3, $6, @6, LOC(@1)); ev.apply($$, $8); }
   | "cubic" "{" "<" vector_items ">" object_mods "}"
@@ -274,19 +274,19 @@ object
       { $$ = ev.make_polynomial(sg::Object::Kind::Quartic, Value::number(4), @1, $4, @4, LOC(@1)); ev.apply($$, $6); }
   | "polynomial" "{" expr opt_comma polynomial_terms object_mods "}"
       { $$ = ev.make_polynomial_from_terms($3, @3, $5, LOC(@1)); ev.apply($$, $6); }
-  | "ovus" "{" expr opt_comma expr object_mods "}"
+  | "ovus" "{" arith opt_comma arith object_mods "}"
       { $$ = ev.make_ovus($3, @3, $5, @5, LOC(@1)); ev.apply($$, $6); }
-  | "sphere_sweep" "{" sweep_spline opt_comma expr expr_seq opt_comma opt_tolerance object_mods "}"
-      { $$ = ev.make_sphere_sweep($3, $5, @5, $6, @6, $8, LOC(@1)); ev.apply($$, $9); }
+  | "sphere_sweep" "{" sweep_spline opt_comma arith opt_comma arith_seq opt_comma opt_tolerance object_mods "}"
+      { $$ = ev.make_sphere_sweep($3, $5, @5, $7, @7, $9, LOC(@1)); ev.apply($$, $10); }
   | "bicubic_patch" "{" patch_options opt_comma arith_seq opt_comma object_mods "}"
       { $$ = ev.make_bicubic_patch($3, $5, @5, LOC(@1)); ev.apply($$, $7); }
   | "julia_fractal" "{" expr julia_items object_mods "}"
       { $$ = ev.make_julia_fractal($3, @3, $4, LOC(@1)); ev.apply($$, $5); }
   | "height_field" "{" height_field_items object_mods "}"
       { $$ = ev.make_height_field($3, LOC(@1)); ev.apply($$, $4); }
-  | "triangle" "{" expr opt_comma expr opt_comma expr object_mods "}"
+  | "triangle" "{" arith opt_comma arith opt_comma arith object_mods "}"
       { $$ = ev.make_triangle({$3, $5, $7}, {@3, @5, @7}, LOC(@1)); ev.apply($$, $8); }
-  | "smooth_triangle" "{" expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr object_mods "}"
+  | "smooth_triangle" "{" arith opt_comma arith opt_comma arith opt_comma arith opt_comma arith opt_comma arith object_mods "}"
       { $$ = ev.make_triangle({$3, $5, $7, $9, $11, $13}, {@3, @5, @7, @9, @11, @13}, LOC(@1));
         ev.apply($$, $14); }
   | "mesh" "{" mesh_items "}"
@@ -399,7 +399,7 @@ opt_open
 
 opt_hole
   : %empty %prec OPT_EMPTY {}
-  | "," expr           { $$ = std::make_pair($2, @2); }
+  | "," arith          { $$ = std::make_pair($2, @2); }
   ;
 
 /* polynomial { order, xyz(i, j, k): c, ... } (POV 3.7's Parse_Polynom) */
@@ -505,9 +505,9 @@ mesh_items
   ;
 
 mesh_item
-  : "triangle" "{" expr opt_comma expr opt_comma expr texture_seq "}"
+  : "triangle" "{" arith opt_comma arith opt_comma arith texture_seq "}"
       { $$ = ev.mesh_triangle_edit({$3, $5, $7}, {@3, @5, @7}, $8, LOC(@1)); }
-  | "smooth_triangle" "{" expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr opt_comma expr texture_seq "}"
+  | "smooth_triangle" "{" arith opt_comma arith opt_comma arith opt_comma arith opt_comma arith opt_comma arith texture_seq "}"
       { $$ = ev.mesh_triangle_edit({$3, $5, $7, $9, $11, $13}, {@3, @5, @7, @9, @11, @13}, $14, LOC(@1)); }
   | "inside_vector" expr { $$ = ev.mesh_inside_vector_edit($2, @2); }
   | object_mod         { $$ = std::move($1); }
@@ -825,6 +825,7 @@ primary
 vector_items
   : vector_item        { $$.push_back($1); }
   | vector_items "," vector_item { $$ = std::move($1); $$.push_back($3); }
+  | vector_items vector_item %prec OPT_EMPTY { $$ = std::move($1); $$.push_back($2); }
   ;
 
 /* Inside < >, a '>' closes the vector (write (a > b) to compare). */
@@ -961,6 +962,7 @@ global_item
   | "number_of_waves" expr { ev.ignored(LOC(@1), "number_of_waves"); }
   | "noise_generator" expr { ev.ignored(LOC(@1), "noise_generator"); }
   | "max_intersections" expr { ev.ignored(LOC(@1), "max_intersections"); }
+  | "hf_gray_16" opt_bool { ev.ignored(LOC(@1), "hf_gray_16 (how POV-Ray writes height-field images)"); }
   ;
 
 /* lancer extension: render_settings { integrator "path" { depth 8 } width 640
