@@ -156,6 +156,21 @@ TEST(Csg, AMeshWithInsideVectorIsASolid) {
     EXPECT_LT(first_hit(*both, {-5, 0.95f, 0.95f}, {1, 0, 0}).t, 0.0f);  // that corner is outside the sphere
 }
 
+TEST(Csg, AMeshKeepsItsPerTriangleTexturesInCsg) {
+    // Two parallel triangles, the nearer (z = 0) with its own texture, the
+    // farther (z = 1) with the mesh's: each hit shows its own.
+    const auto scene = compile(R"(difference {
+        mesh { triangle { <-1, -1, 0>, <1, -1, 0>, <0, 1, 0> texture { pigment { rgb x } } }
+               triangle { <-1, -1, 1>, <1, -1, 1>, <0, 1, 1> } pigment { rgb z } }
+        sphere { <10, 0, 0>, 1 } })");
+    const Hit near = first_hit(*scene, {0, 0, -5}, {0, 0, 1});
+    const Hit far = first_hit(*scene, {0, 0, 5}, {0, 0, -1});
+    ASSERT_NEAR(near.t, 5.0f, 1e-5f);
+    ASSERT_NEAR(far.t, 4.0f, 1e-5f);
+    ASSERT_TRUE(near.material && far.material);
+    EXPECT_NE(near.material, far.material);
+}
+
 TEST(Csg, AMeshWithoutInsideVectorHasNoInsideEvenInverted) {
     // POV-Ray: a patch object is never inside, so subtracting it removes
     // nothing and the sphere in a difference with it stays whole...

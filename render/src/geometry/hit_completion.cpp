@@ -139,7 +139,11 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
     hit.geometric_normal = Vec3(instance.placement.normal_to_world_unit(g.normal));
     hit.shading_normal = hit.geometric_normal;
     hit.uv = g.uv;
-    hit.material = instance.material;
+    // A mesh in CSG keeps its per-triangle textures.
+    const std::size_t face_index = std::size_t(face);
+    hit.material = face >= 0 && face_index < instance.face_materials.size() && instance.face_materials[face_index]
+                       ? instance.face_materials[face_index]
+                       : instance.material;
     hit.primitive_id = std::uint32_t(face);
 }
 

@@ -241,7 +241,6 @@ class Builder {
         parameters.positions.assign(mesh.positions.begin(), mesh.positions.end());
         parameters.normals.assign(mesh.normals.begin(), mesh.normals.end());
         parameters.uvs.assign(mesh.uvs.begin(), mesh.uvs.end());
-        bool per_face_materials = false;
         for (const sg::TriangleMesh::Face& face : mesh.faces) {
             MeshShapeParameters::Face f;
             for (int k = 0; k < 3; ++k) {
@@ -250,13 +249,14 @@ class Builder {
                 f.uv[k] = face.uv[k];
             }
             parameters.faces.push_back(f);
-            per_face_materials = per_face_materials || face.material >= 0;
         }
-        if (per_face_materials)
-            std::cerr << (object.location.file ? *object.location.file : std::string("<scene>")) << ":"
-                      << object.location.line << ":" << object.location.column
-                      << ": warning: the mesh's per-triangle textures are not used inside CSG yet; it takes the "
-                         "mesh's own texture\n";
+        // Per-triangle textures, by the face the shape reports.
+        for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+            const int m = mesh.faces[f].material;
+            if (m < 0 || std::size_t(m) >= mesh.materials.size() || !mesh.materials[std::size_t(m)]) continue;
+            instance.face_materials.resize(mesh.faces.size(), nullptr);
+            instance.face_materials[f] = material_for(mesh.materials[std::size_t(m)]);
+        }
         // POV-Ray reads inside_vector in world space (it never transforms it).
         if (mesh.inside_vector) parameters.inside_vector = instance.placement.vector_to_object(*mesh.inside_vector);
         instance.shape = make_mesh_shape(std::move(parameters));
