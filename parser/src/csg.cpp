@@ -4,6 +4,8 @@
 // Parse_Object_Mods).
 #include <glm/glm.hpp>
 
+#include <algorithm>
+
 #include "evaluator.h"
 
 namespace lancer::parse {
@@ -34,12 +36,17 @@ ShapePtr Evaluator::make_csg(sg::Object::Kind kind, const sg::SourceLocation& at
 
 namespace {
 
-// POV-Ray's patch objects: a triangle, or a mesh without inside_vector, has
-// no inside (lancer's CSG, as POV's, keeps or drops pieces of its surface).
+// POV-Ray's patch objects (a triangle, a mesh without inside_vector, a
+// polygon, a bicubic patch, or a group holding one) have no inside
+// (lancer's CSG, as POV's, keeps or drops pieces of their surface).
 bool is_patch_object(const sg::Object& object) {
-    const auto* mesh = std::get_if<sg::MeshRef>(&object.shape);
-    return mesh && *mesh && !(*mesh)->inside_vector;
+    if (const auto* mesh = std::get_if<sg::MeshRef>(&object.shape)) return *mesh && !(*mesh)->inside_vector;
+    if (const auto* group = std::get_if<sg::Group>(&object.shape))
+        return std::any_of(group->children.begin(), group->children.end(), is_patch_object);
+    return std::holds_alternative<sg::Polygon>(object.shape) || std::holds_alternative<sg::BicubicPatch>(object.shape);
 }
+
+constexpr const char* kPatchObject = "a triangle, polygon, bicubic_patch or mesh without inside_vector";
 
 }  // namespace
 
@@ -80,6 +87,10 @@ std::function<void(ShapeValue&)> Evaluator::clip_by_bounds_edit(const sg::Source
 }
 
 std::function<void(ShapeValue&)> Evaluator::bound_edit(const std::vector<ShapePtr>& bounds, const sg::SourceLocation&) {
+    for (const ShapePtr& bound : bounds)
+        if (is_patch_object(bound->object))
+            error(bound->object.location,
+                  std::string(kPatchObject) + " cannot bound: it has no inside (POV-Ray's \"illegal patch in bound\")");
     // A bound only speeds POV-Ray up; lancer's BVH needs none.
     return [bounds](ShapeValue& s) {
         for (sg::Object& bound : in_object_space(bounds, s.object)) s.bounded_by.push_back(std::move(bound));

@@ -45,6 +45,10 @@ ShapePtr Evaluator::make_ovus(const Value& bottom, const SourceRange& wb, const 
     } else if (ovus.top_radius < 0.0) {
         error(wt.begin, "ovus: the top radius must not be negative (POV-Ray's \"both ovus radii must be positive\")");
         ovus = sg::Ovus{};
+    } else if (ovus.top_radius >= 2.0 * ovus.bottom_radius) {
+        warning(wt.begin,
+                "ovus: a top radius of twice the bottom radius or more makes a sphere; POV-Ray substitutes "
+                "sphere { <0, bottom_radius, 0>, top_radius }, and so does lancer");
     }
     shape->object.shape = ovus;
     return shape;
@@ -80,10 +84,7 @@ ShapePtr Evaluator::make_sphere_sweep(int spline, const Value& count_value, cons
             sphere.radius = to_float(radius, wradius, "a float radius");
             double values[4] = {sphere.center.x, sphere.center.y, sphere.center.z, sphere.radius};
             if (!check_renderable(values, 4, wcentre, "the sphere")) continue;
-            if (sphere.radius < 0.0) {
-                error(wradius.begin, "sphere_sweep: a sphere's radius must not be negative");
-                continue;
-            }
+            sphere.radius = std::fabs(sphere.radius);  // POV-Ray does not check; its magnitude counts
             sweep.spheres.push_back(sphere);
         }
     }
@@ -169,7 +170,9 @@ ShapePtr Evaluator::make_bicubic_patch(const Edits<sg::BicubicPatch>& options, s
     std::size_t numbers = 0;
     while (numbers < values.size() && values[numbers].kind == Value::Kind::Float) ++numbers;
     if (numbers > 0) {
-        const int type = int(values[0].v[0]);
+        // Clamped before the casts: a huge or NaN number is not an int.
+        auto small_int = [](double v) { return std::isfinite(v) ? int(std::clamp(v, -1.0, 11.0)) : -1; };
+        const int type = small_int(values[0].v[0]);
         const std::size_t expected = type == 2 || type == 3 ? 4 : 3;
         if (numbers != expected) {
             error(where.begin,
@@ -182,9 +185,9 @@ ShapePtr Evaluator::make_bicubic_patch(const Edits<sg::BicubicPatch>& options, s
                 "bicubic_patch: bare numbers before the points are POV-Ray 1's syntax; "
                 "write type, flatness, u_steps and v_steps");
         patch.type = std::clamp(type, 0, 1);
-        if (expected == 4) patch.flatness = values[1].v[0];
-        patch.u_steps = std::clamp(int(values[expected - 2].v[0]), 0, 10);
-        patch.v_steps = std::clamp(int(values[expected - 1].v[0]), 0, 10);
+        if (expected == 4 && std::isfinite(values[1].v[0])) patch.flatness = values[1].v[0];
+        patch.u_steps = std::clamp(small_int(values[expected - 2].v[0]), 0, 10);
+        patch.v_steps = std::clamp(small_int(values[expected - 1].v[0]), 0, 10);
         values.erase(values.begin(), values.begin() + std::ptrdiff_t(numbers));
     }
     if (patch.type < 0) {
@@ -218,7 +221,7 @@ std::function<void(sg::JuliaFractal&)> Evaluator::julia_max_iteration(const Valu
         n = kMaxIterations;
     }
     // POV floors it and takes at least one iteration.
-    const int iterations = std::max(1, int(std::floor(n)));
+    const int iterations = int(std::floor(std::max(n, 1.0)));
     return [iterations](sg::JuliaFractal& j) { j.max_iteration = iterations; };
 }
 
@@ -226,6 +229,12 @@ std::function<void(sg::JuliaFractal&)> Evaluator::julia_precision(const Value& v
     double precision = to_float(value, where, "a float precision");
     if (!check_renderable(&precision, 1, where, "the precision")) precision = 20.0;
     precision = std::max(precision, 1.0);  // as POV-Ray
+    // A march takes up to about 2 R precision steps: bound what one ray costs.
+    constexpr double kMaxPrecision = 10000.0;
+    if (precision > kMaxPrecision) {
+        warning(where.begin, "julia_fractal: precision above 10000 is taken as 10000");
+        precision = kMaxPrecision;
+    }
     return [precision](sg::JuliaFractal& j) { j.precision = precision; };
 }
 
@@ -332,14 +341,6 @@ ShapePtr Evaluator::make_height_field(const Edits<sg::HeightField>& items, const
     const FileSearch search = find_file(field.written, folders, field.location, "image file", found);
     if (search == FileSearch::Missing) error(field.location, "cannot find image file \"" + field.written + "\"");
     if (search == FileSearch::Found) field.path = found;
-    if (field.format == sg::ImageFormat::Unknown) {
-        std::string ext = fs::path(field.written).extension().string();
-        for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        if (ext == ".exr")
-            field.format = sg::ImageFormat::Exr;
-        else if (ext == ".hdr")
-            field.format = sg::ImageFormat::Hdr;
-    }
     shape->object.shape = std::move(field);
     return shape;
 }

@@ -132,7 +132,6 @@ TEST(ParserCurvedShapes, HeightFieldOptionsAndFile) {
     auto scene = parse_ok("height_field { png \"" + image + "\" gamma 1 smooth water_level 0.25 scale 2 }");
     const auto& field = std::get<sg::HeightField>(scene.objects[0].shape);
     EXPECT_EQ(field.path, image);
-    EXPECT_EQ(field.format, sg::ImageFormat::Png);
     EXPECT_TRUE(field.smooth);
     EXPECT_DOUBLE_EQ(field.water_level, 0.25);
     EXPECT_DOUBLE_EQ(field.gamma, 1.0);
@@ -175,6 +174,35 @@ TEST(ParserCurvedShapes, ArgumentsWithoutCommas) {
     EXPECT_EQ(std::get<sg::MeshRef>(scene.objects[1].shape)->positions[2], sg::Vec3(47.2, 33, 40.6));
     EXPECT_EQ(std::get<sg::Prism>(scene.objects[2].shape).points.size(), 4u);
     EXPECT_EQ(std::get<sg::Sphere>(scene.objects[3].shape).center, sg::Vec3(-1, 0, 0));  // "1 -2" is 1 - 2, as POV
+}
+
+// What review found: POV's patch objects include polygons and bicubic
+// patches; values POV accepts are accepted; no cast of a huge number to int.
+TEST(ParserCurvedShapes, PatchObjectsAndEdgeValues) {
+    EXPECT_TRUE(
+        contains(first_error("sphere { 0, 1 clipped_by { polygon { 4, <0,0>, <1,0>, <1,1>, <0,0> } } }").message,
+                 "cannot clip"));
+    EXPECT_TRUE(contains(first_error("sphere { 0, 1 bounded_by { triangle { 0, x, y } } }").message, "cannot bound"));
+    // A negative sphere_sweep radius counts as its magnitude (POV does not check it).
+    auto sweep = parse_ok("sphere_sweep { linear_spline 2, <0,0,0>, -0.5, <1,0,0>, 0.5 }");
+    EXPECT_DOUBLE_EQ(std::get<sg::SphereSweep>(sweep.objects[0].shape).spheres[0].radius, 0.5);
+    ParseResult fine = parse_scene_string("julia_fractal { <0,0,0,0> precision 1e9 max_iteration -1e30 }");
+    ASSERT_TRUE(fine.ok()) << test::all_diagnostics(fine);
+    const auto& julia = std::get<sg::JuliaFractal>(fine.scene->objects[0].shape);
+    EXPECT_DOUBLE_EQ(julia.precision, 10000.0);  // one ray's cost bounded, with a warning
+    EXPECT_EQ(julia.max_iteration, 1);
+    EXPECT_EQ(test::count_warnings(fine), 1);
+    EXPECT_TRUE(contains(first_error("bicubic_patch { 1e30, 3, 3, 0,1,2,3,4,5,6,7,8,9,10,11,12,13,14,15 }").message,
+                         "16 control points"));
+    // The point at fault is named.
+    const Diagnostic sor = first_error("sor { 4, <1, 0>, <1, 1>, <1, 0.5>, <1, 2> }");
+    EXPECT_TRUE(contains(sor.message, "point 3 is not above point 2")) << sor.message;
+    EXPECT_EQ(sor.location.column, 26);
+    // Optional commas where POV's Parse_Comma is optional.
+    auto blob = parse_ok("blob { threshold 0.5 component 1 1 <0, 0, 0> sphere { <1, 0, 0> 1 strength 1 } }");
+    EXPECT_EQ(std::get<sg::Blob>(blob.objects[0].shape).components.size(), 2u);
+    auto terms = parse_ok("polynomial { 2 xyz(2 0 0): 1 xyz(0, 0, 0): -1 }");
+    EXPECT_DOUBLE_EQ(std::get<sg::Polynomial>(terms.objects[0].shape).coefficients[0], 1.0);
 }
 
 }  // namespace

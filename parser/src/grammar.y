@@ -370,11 +370,11 @@ blob_items
 
 blob_item
   : "threshold" expr   { double t = ev.to_float($2, @2, "a float threshold"); $$ = [t](sg::Blob& b) { b.threshold = t; }; }
-  | "component" expr opt_comma expr opt_comma expr
+  | "component" arith opt_comma arith opt_comma arith
       { $$ = ev.blob_component(false, {$6, $6, $4, $2}, {@6, @6, @4, @2}, {}, LOC(@1)); }
-  | "sphere" "{" expr opt_comma expr opt_comma opt_strength expr blob_component_mods "}"
+  | "sphere" "{" arith opt_comma arith opt_comma opt_strength arith blob_component_mods "}"
       { $$ = ev.blob_component(false, {$3, $3, $5, $8}, {@3, @3, @5, @8}, $9, LOC(@1)); }
-  | "cylinder" "{" expr opt_comma expr opt_comma expr opt_comma opt_strength expr blob_component_mods "}"
+  | "cylinder" "{" arith opt_comma arith opt_comma arith opt_comma opt_strength arith blob_component_mods "}"
       { $$ = ev.blob_component(true, {$3, $5, $7, $10}, {@3, @5, @7, @10}, $11, LOC(@1)); }
   ;
 
@@ -405,7 +405,7 @@ opt_hole
 /* polynomial { order, xyz(i, j, k): c, ... } (POV 3.7's Parse_Polynom) */
 polynomial_terms
   : %empty             {}
-  | polynomial_terms "xyz" "(" expr "," expr "," expr ")" ":" expr opt_comma
+  | polynomial_terms "xyz" "(" expr opt_comma expr opt_comma expr ")" ":" arith opt_comma
       { $$ = std::move($1); $$.push_back(ev.polynomial_term({$4, $6, $8, $11}, {@4, @6, @8, @11})); }
   ;
 
@@ -448,7 +448,7 @@ julia_item
   | "hypercomplex"     { $$ = [](sg::JuliaFractal& j) { j.algebra = sg::JuliaFractal::Algebra::Hypercomplex; }; }
   | "max_iteration" expr %prec OPT_EMPTY { $$ = ev.julia_max_iteration($2, @2); }
   | "precision" expr %prec OPT_EMPTY { $$ = ev.julia_precision($2, @2); }
-  | "slice" expr opt_comma expr %prec OPT_EMPTY { $$ = ev.julia_slice($2, @2, $4, @4); }
+  | "slice" arith opt_comma arith %prec OPT_EMPTY { $$ = ev.julia_slice($2, @2, $4, @4); }
   | "cube"             { $$ = [](sg::JuliaFractal& j) { j.function = sg::JuliaFractal::Function::Cube; }; }
   | "reciprocal"       { $$ = [](sg::JuliaFractal& j) { j.function = sg::JuliaFractal::Function::Reciprocal; }; }
   | "pwr" "(" expr "," expr ")" { $$ = ev.julia_power($3, @3, $5, @5); }
@@ -462,22 +462,21 @@ height_field_items
   ;
 
 height_field_item
-  : "png"              { $$ = [](sg::HeightField& h) { h.format = sg::ImageFormat::Png; }; }
-  | "jpeg"             { $$ = [](sg::HeightField& h) { h.format = sg::ImageFormat::Jpeg; }; }
-  | "exr"              { $$ = [](sg::HeightField& h) { h.format = sg::ImageFormat::Exr; }; }
-  | "hdr"              { $$ = [](sg::HeightField& h) { h.format = sg::ImageFormat::Hdr; }; }
-  | "tga"              { $$ = [](sg::HeightField& h) { h.format = sg::ImageFormat::Tga; }; }
-  | "tiff"             { $$ = [](sg::HeightField& h) { h.format = sg::ImageFormat::Tiff; }; }
+  /* The type keyword only names what the reader finds in the file. */
+  : "png"              { $$ = [](sg::HeightField&) {}; }
+  | "jpeg"             { $$ = [](sg::HeightField&) {}; }
+  | "exr"              { $$ = [](sg::HeightField&) {}; }
+  | "hdr"              { $$ = [](sg::HeightField&) {}; }
+  | "tga"              { $$ = [](sg::HeightField&) {}; }
+  | "tiff"             { $$ = [](sg::HeightField&) {}; }
   | "gif"              { $$ = [](sg::HeightField&) {}; }
   | "pgm"              { $$ = [](sg::HeightField&) {}; }
   | "ppm"              { $$ = [](sg::HeightField&) {}; }
   | "bmp"              { $$ = [](sg::HeightField&) {}; }
+  | "pot"              { $$ = [](sg::HeightField&) {}; }
   | "sys"              { $$ = ev.unsupported_height_field_format("sys", LOC(@1)); }
   | "iff"              { $$ = ev.unsupported_height_field_format("iff", LOC(@1)); }
-  | "pot"              { $$ = ev.unsupported_height_field_format("pot", LOC(@1)); }
-  | STRING             { std::string path = $1.text; auto at = LOC(@1);
-                         $$ = [path, at](sg::HeightField& h) { h.written = path; h.location = at; }; }
-  | VALUE_ID           { std::string path = ev.to_string($1.value, @1); auto at = LOC(@1);
+  | string_value       { std::string path = ev.to_string($1, @1); auto at = LOC(@1);
                          $$ = [path, at](sg::HeightField& h) { h.written = path; h.location = at; }; }
   | "gamma" expr       { double g = ev.to_float($2, @2, "a float gamma"); $$ = [g](sg::HeightField& h) { h.gamma = g; }; }
   | "premultiplied" expr { bool on = ev.to_float($2, @2, "a boolean") != 0.0;
@@ -872,7 +871,7 @@ macro_arg
 /* ------------------------------------------------------------------ lights */
 
 light
-  : "light_source" "{" expr opt_comma colour light_items "}"
+  : "light_source" "{" arith opt_comma colour light_items "}"
       { $$ = ev.make_light($3, @3, $5, @5, LOC(@1)); ev.apply_light($$, $6); }
   | "light_source" "{" LIGHT_ID light_items "}"
       { $$ = *$3.value.light; ev.apply_light($$, $4); }
@@ -886,7 +885,7 @@ light_items
 light_item
   : "parallel"         { $$ = [](sg::Light& l) { l.parallel = true; }; }
   | "point_at" expr    { sg::Vec3 p = ev.to_vec3($2, @2); $$ = [p](sg::Light& l) { l.point_at = p; }; }
-  | "area_light" expr opt_comma expr opt_comma expr opt_comma expr
+  | "area_light" arith opt_comma arith opt_comma arith opt_comma arith
       { $$ = ev.area_light($2, @2, $4, @4, $6, @6, $8, @8); }
   | "jitter"           { $$ = [](sg::Light& l) { l.jitter = true; }; }
   | "adaptive" expr    { int a = ev.to_int($2, @2); $$ = [a](sg::Light& l) { l.adaptive = a; }; }

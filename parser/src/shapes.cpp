@@ -224,6 +224,7 @@ ShapePtr Evaluator::make_lathe(const Edits<sg::Prism>& options, const Value& cou
             lathe.points.push_back(sg::Vec2(point.v[0], point.v[1]));
         } else {
             error(wp.begin, "lathe points are 2-D vectors <radius, y>");
+            lathe.points.push_back(sg::Vec2(0.0));
         }
         double xy[2] = {lathe.points.back().x, lathe.points.back().y};
         if (!check_renderable(xy, 2, wp, "a lathe point")) lathe.points.back() = sg::Vec2(0.0);
@@ -253,20 +254,21 @@ ShapePtr Evaluator::make_sor(const Value& count, const SourceRange& wc, const st
     }
     // POV-Ray's checks (Parse_Sor): radii not negative, heights rising
     // from the second point to the last but one.
-    for (std::size_t i = 0; i < sor.points.size(); ++i) {
+    bool rising = true;
+    for (std::size_t i = 0; i < sor.points.size() && rising; ++i) {
+        const sg::SourceLocation where = i < points.size() && points[i].location.file ? points[i].location : wp.begin;
         if (sor.points[i].x < 0.0) {
-            error(wp.begin, "incorrect point in surface of revolution: point " + std::to_string(i + 1) +
-                                " has a negative radius");
-            break;
-        }
-        if (i > 1 && i + 1 < sor.points.size() && !(sor.points[i].y > sor.points[i - 1].y)) {
-            error(wp.begin, "incorrect point in surface of revolution: point " + std::to_string(i + 1) +
-                                " is not above point " + std::to_string(i) +
-                                " (the heights of the second to the last but one point must rise)");
-            break;
+            error(where, "incorrect point in surface of revolution: point " + std::to_string(i + 1) +
+                             " has a negative radius");
+            rising = false;
+        } else if (i > 1 && i + 1 < sor.points.size() && !(sor.points[i].y > sor.points[i - 1].y)) {
+            error(where, "incorrect point in surface of revolution: point " + std::to_string(i + 1) +
+                             " is not above point " + std::to_string(i) +
+                             " (the heights of the second to the last but one point must rise)");
+            rising = false;
         }
     }
-    for (std::size_t i = 0; i + 2 < sor.points.size(); ++i)
+    for (std::size_t i = 0; rising && i + 2 < sor.points.size(); ++i)
         if (sor.points[i + 2].y == sor.points[i].y) {
             error(wp.begin, "incorrect point in surface of revolution: points " + std::to_string(i + 1) + " and " +
                                 std::to_string(i + 3) + " share a height");
@@ -395,12 +397,13 @@ ShapePtr Evaluator::make_polynomial_from_terms(const Value& order_value, const S
                                                const Edits<sg::Polynomial>& terms, const sg::SourceLocation& at) {
     // The order's checks and the coefficient count are make_polynomial's.
     int order = to_int(order_value, wo);
-    if (order < 2 || order > kMaxPolynomialOrder) order = 2;  // make_polynomial says why
+    const bool valid = order >= 2 && order <= kMaxPolynomialOrder;
+    if (!valid) order = 2;  // make_polynomial says why
     std::vector<Value> zeros(std::size_t((order + 1) * (order + 2) * (order + 3) / 6), Value::number(0.0));
     auto shape = make_polynomial(sg::Object::Kind::Poly, order_value, wo, zeros, wo, at);
     auto& polynomial = std::get<sg::Polynomial>(shape->object.shape);
-    polynomial.coefficients.resize(zeros.size(), 0.0);
-    for (const auto& term : terms) term(polynomial);
+    if (valid)
+        for (const auto& term : terms) term(polynomial);
     return shape;
 }
 

@@ -312,8 +312,7 @@ struct JuliaFractal {
 struct HeightField {
     std::string path;     // the file found
     std::string written;  // as the scene wrote it, for messages
-    ImageFormat format = ImageFormat::Unknown;
-    double gamma = 0.0;  // 0: none given
+    double gamma = 0.0;   // 0: none given
     bool premultiplied = false;
     bool smooth = false;
     double water_level = 0.0;

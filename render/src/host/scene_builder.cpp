@@ -467,6 +467,7 @@ class Builder {
         } else {
             Instance instance;
             if (const auto* mesh = std::get_if<sg::MeshRef>(&object.shape)) {
+                if (!*mesh) throw SceneError(object.location, "a mesh in CSG has no triangles");
                 make_mesh_leaf(object, **mesh, world_from_object, material_for(material), object_no_shadow, instance);
             } else {
                 make_leaf(object, world_from_object, material_for(material), object_no_shadow, instance);
