@@ -282,6 +282,16 @@ std::shared_ptr<sg::Pigment> Evaluator::build_pigment(const Edits<sg::Pigment>& 
     auto pigment = std::make_shared<sg::Pigment>();
     for (const auto& edit : edits) edit(*pigment);
     pigment->location = at;
+    // POV-Ray accepts a negative colour; on a surface it takes light away
+    // from what it reflects, which surprises more often than it is meant.
+    auto negative = [](const sg::Color& c) { return c.rgb.x < 0.0 || c.rgb.y < 0.0 || c.rgb.z < 0.0; };
+    const bool any_negative = pigment->kind == sg::Pigment::Kind::Checker
+                                  ? negative(pigment->checker[0]) || negative(pigment->checker[1])
+                                  : pigment->kind == sg::Pigment::Kind::Solid && negative(pigment->color);
+    if (any_negative)
+        warning(at,
+                "the pigment has a negative colour component: the surface will take light away (POV-Ray "
+                "accepts it too)");
     return pigment;
 }
 
@@ -298,6 +308,12 @@ std::shared_ptr<sg::Finish> Evaluator::build_finish(const Edits<sg::Finish>& edi
     }
     finish->diffuse_albedo = finish->phong_albedo = finish->specular_albedo = false;
     finish->location = at;
+    const glm::dvec3 ambient = finish->ambient, emission = finish->emission;
+    if (glm::any(glm::lessThan(ambient, glm::dvec3(0.0))) || glm::any(glm::lessThan(emission, glm::dvec3(0.0))) ||
+        finish->diffuse < 0.0 || finish->phong < 0.0 || finish->specular < 0.0)
+        warning(at,
+                "the finish has a negative ambient, emission, diffuse, phong or specular: the surface will "
+                "take light away (POV-Ray accepts it too)");
     return finish;
 }
 

@@ -245,6 +245,21 @@ TEST(ParserObjects, TextLaysOutGlyphOutlines) {
     EXPECT_EQ(missing.location.column, 12);
 }
 
+// POV-Ray accepts negative colours; on a surface they take light away, so
+// lancer keeps them and says so where they are written. A negative light
+// (POV's documented trick for darkening) gets no warning.
+TEST(ParserMaterials, NegativeSurfaceColoursWarn) {
+    ParseResult result = parse_scene_string(
+        "light_source { <5, 5, -5> rgb -0.5 }\n"
+        "sphere { 0, 1 pigment { rgb <-1, 0.5, 0.5> } finish { ambient -0.2 } }");
+    ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
+    EXPECT_EQ(test::count_warnings(result), 2) << test::all_diagnostics(result);
+    EXPECT_EQ(std::get<sg::Sphere>(result.scene->objects[0].shape).radius, 1.0);
+    for (const Diagnostic& d : result.diagnostics) EXPECT_EQ(d.location.line, 2);
+    EXPECT_EQ(test::count_warnings(parse_scene_string("sphere { 0, 1 pigment { rgb 0.5 } finish { ambient 0.1 } }")),
+              0);
+}
+
 TEST(ParserMaterials, TextureFinishDefaultsAndValues) {
     auto scene = parse_ok(R"(sphere { 0, 1 texture {
         pigment { color rgbft <0.1, 0.2, 0.3, 0.4, 0.5> }
