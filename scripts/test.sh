@@ -27,9 +27,12 @@ if [ "${LANCER_SKIP_SANITIZE:-0}" != 1 ]; then
   # ASan intercepts their allocations all the same. One check is off:
   # Debian's OpenImageIO 2.4 itself frees its TextureSystem with a sized
   # delete of the wrong size (TextureSystem::destroy, reproduced without any
-  # lancer code), which ASan reports as new-delete-type-mismatch. Nothing else
-  # is suppressed; a UBSan finding fails the test (-fno-sanitize-recover).
+  # lancer code), which ASan reports as new-delete-type-mismatch; and its PNG
+  # reader leaks an error message when libpng longjmps out of a truncated file
+  # (tests/sanitize/lsan.supp says how it was reproduced). Nothing else is
+  # suppressed; a UBSan finding fails the test (-fno-sanitize-recover).
   ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:new_delete_type_mismatch=0} \
+  LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/sanitize/lsan.supp} \
   UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
     ctest --test-dir build-asan -L sanitize --output-on-failure -j "$(nproc)"
   echo "test.sh: sanitizer stage took $((SECONDS - start)) s"
