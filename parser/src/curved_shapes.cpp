@@ -282,8 +282,8 @@ std::function<void(sg::JuliaFractal&)> Evaluator::julia_function(const std::stri
         {"sqr", F::Sqr},     {"exp", F::Exp},     {"ln", F::Ln},     {"sin", F::Sin},   {"asin", F::Asin},
         {"sinh", F::Sinh},   {"asinh", F::Asinh}, {"cos", F::Cos},   {"acos", F::Acos}, {"cosh", F::Cosh},
         {"acosh", F::Acosh}, {"tan", F::Tan},     {"atan", F::Atan}, {"tanh", F::Tanh}, {"atanh", F::Atanh}};
-    for (const auto& [spelling, function] : kFunctions)
-        if (name == spelling) return [function](sg::JuliaFractal& j) { j.function = function; };
+    for (const auto& entry : kFunctions)
+        if (name == entry.first) return [function = entry.second](sg::JuliaFractal& j) { j.function = function; };
     error(at, "julia_fractal has no function '" + name +
                   "' (it takes sqr, cube, exp, reciprocal, ln, pwr(x, y) and the sin/cos/tan family)");
     return [](sg::JuliaFractal&) {};
