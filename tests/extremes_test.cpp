@@ -154,10 +154,9 @@ triangle { <-2.6, 0, 1> * S + O, <-1.4, 0, 1.6> * S + O, <-2.2, 1.6, 1.4> * S + 
 )";
 }
 
-// Every analytic shape of issue 16 and a glass CSG, each written at unit
-// size and then scaled by `scale` and moved by `offset` (so the shapes'
-// own parameters stay the same and only the placement changes).
-std::string scaled_shapes_scene(double scale, double offset) {
+// What both shape scenes share: camera, light, texture M, the floor, and
+// an open union that the scene closes with `scale S translate O }`.
+std::string shapes_scene_start(double scale, double offset) {
     return scale_and_offset(scale, offset) + R"(
 global_settings { assumed_gamma 1.0 max_trace_level 6 }
 background { color rgb <0.05, 0.06, 0.08> }
@@ -166,6 +165,14 @@ light_source { <-3, 5, -4> * S + O color rgb 0.8 parallel point_at O }
 #declare M = texture { pigment { color rgb <0.7, 0.65, 0.6> } finish { ambient 0.05 diffuse 0.8 phong 0.3 } }
 union {
   plane { y, 0 texture { M } }
+)";
+}
+
+// Every analytic shape of issue 16 and a glass CSG, each written at unit
+// size and then scaled by `scale` and moved by `offset` (so the shapes'
+// own parameters stay the same and only the placement changes).
+std::string scaled_shapes_scene(double scale, double offset) {
+    return shapes_scene_start(scale, offset) + R"(
   cylinder { <-3, 0, 1>, <-3, 1.2, 1>, 0.4 texture { M } }
   cone { <-2, 0, 1>, 0.5, <-2, 1.2, 1>, 0 texture { M } }
   torus { 0.5, 0.15 rotate x*80 translate <-0.8, 0.7, 1> texture { M } }
@@ -193,14 +200,7 @@ union {
 // julia_fractal, height_field, sor, polygon, poly, text), placed the same way.
 std::string scaled_curved_shapes_scene(double scale, double offset) {
     const std::string height_map = test::source_path("tests/reference/pov/height_field_16.png");
-    return scale_and_offset(scale, offset) + R"(
-global_settings { assumed_gamma 1.0 max_trace_level 6 }
-background { color rgb <0.05, 0.06, 0.08> }
-camera { location <0, 3, -7> * S + O look_at <0, 0.5, 0> * S + O right x * 4 / 3 angle 55 }
-light_source { <-3, 5, -4> * S + O color rgb 0.8 parallel point_at O }
-#declare M = texture { pigment { color rgb <0.7, 0.65, 0.6> } finish { ambient 0.05 diffuse 0.8 phong 0.3 } }
-union {
-  plane { y, 0 texture { M } }
+    return shapes_scene_start(scale, offset) + R"(
   ovus { 0.5, 0.3 translate <-3, 0.5, 1> texture { M } }
   sphere_sweep { cubic_spline 5, <-0.6, 0.2, 0>, 0.1, <-0.3, 0.8, 0>, 0.15, <0, 0.3, 0>, 0.2, <0.3, 0.9, 0.2>, 0.12,
                  <0.6, 0.2, 0>, 0.1 translate <-1.6, 0, 1> texture { M } }

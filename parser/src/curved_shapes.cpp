@@ -335,12 +335,8 @@ ShapePtr Evaluator::make_height_field(const Edits<sg::HeightField>& items, const
     if (!check_renderable(&field.water_level, 1, SourceRange{at, at}, "the water level")) field.water_level = 0.0;
     // Found as image_map's files are: beside the scene file, on the
     // include path, then the current folder.
-    std::vector<std::string> folders = search_folders(field.location);
-    folders.push_back("");
     std::string found;
-    const FileSearch search = find_file(field.written, folders, field.location, "image file", found);
-    if (search == FileSearch::Missing) error(field.location, "cannot find image file \"" + field.written + "\"");
-    if (search == FileSearch::Found) field.path = found;
+    if (find_image_file(field.written, field.location, found)) field.path = found;
     shape->object.shape = std::move(field);
     return shape;
 }

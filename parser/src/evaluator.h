@@ -269,6 +269,10 @@ class Evaluator {
     std::vector<std::string> search_folders(const sg::SourceLocation& where) const;
     FileSearch find_file(const std::string& name, const std::vector<std::string>& folders,
                          const sg::SourceLocation& where, const std::string& what, std::string& found);
+    // An image a scene names (image_map, height_field): beside the file that
+    // names it, on the include path, then in the current folder. False
+    // (reported at `where`) when missing or refused by safe mode.
+    bool find_image_file(const std::string& name, const sg::SourceLocation& where, std::string& found);
     // Safe mode's allowed folders: safe_root (else the scene's folder) and include_path.
     void init_safe_roots(const std::string& scene_folder);
     // False only in safe mode, for a path outside the allowed folders.

@@ -366,6 +366,16 @@ sg::MapType Evaluator::map_type(const Value& v, const SourceRange& where) {
     }
 }
 
+bool Evaluator::find_image_file(const std::string& name, const sg::SourceLocation& where, std::string& found) {
+    // Relative to the file that names the image, then the include path.
+    std::vector<std::string> folders = search_folders(where);
+    // Last, the current folder, as before the include path existed.
+    folders.push_back("");
+    const FileSearch search = find_file(name, folders, where, "image file", found);
+    if (search == FileSearch::Missing) error(where, "cannot find image file \"" + name + "\"");
+    return search == FileSearch::Found;
+}
+
 void Evaluator::finish_image_map(sg::ImageMap& image, const sg::SourceLocation& at) {
     namespace fs = std::filesystem;
     if (image.path.empty()) {
@@ -373,17 +383,8 @@ void Evaluator::finish_image_map(sg::ImageMap& image, const sg::SourceLocation& 
         return;
     }
     if (!image.location.file) image.location = at;
-    // Relative to the file that names the image, then the include path.
-    std::vector<std::string> folders = search_folders(image.location);
-    // Last, the current folder, as before the include path existed.
-    folders.push_back("");
     std::string found;
-    FileSearch search = find_file(image.path, folders, image.location, "image file", found);
-    if (search == FileSearch::Refused) return;
-    if (search == FileSearch::Missing) {
-        error(image.location, "cannot find image file \"" + image.path + "\"");
-        return;
-    }
+    if (!find_image_file(image.path, image.location, found)) return;
     image.path = found;
     if (image.format == sg::ImageFormat::Unknown) {
         std::string ext = fs::path(found).extension().string();
