@@ -13,9 +13,12 @@
 // shapes: cylinder, cone, torus, disc, quadric, polygon, poly, cubic,
 // quartic, superellipsoid, blob, prism, lathe, sor, text (POV's own fonts, from
 // Debian's fonts-povray), ovus, sphere_sweep, bicubic_patch, julia_fractal,
-// height_field (8- and 16-bit grey images), and CSG (difference,
+// height_field (8- and 16-bit grey images), CSG (difference,
 // intersection, merge, inverse, clipped_by, textures per child; in glass,
-// refracting at every face a difference keeps).
+// refracting at every face a difference keeps), and the patterns (each on a
+// flat tile showing the pigment itself: the geometric, block and noise
+// patterns, wave types, warps, colour and pigment maps, average) and
+// normals (own normals, slopes of values, slope_map, normal_map).
 #include <filesystem>
 #include <string>
 
@@ -62,7 +65,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
                                            "orthographic_default_size", "quadric_family", "csg_solids", "csg_glass",
                                            "polygons_polynomials", "superellipsoids", "blobs", "prisms", "lathes",
                                            "text", "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals",
-                                           "height_fields"),
+                                           "height_fields", "patterns_geometric", "patterns_blocks", "patterns_noise",
+                                           "patterns_warps", "normals"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 }  // namespace

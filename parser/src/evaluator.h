@@ -41,6 +41,12 @@ namespace lancer::parse {
 
 // Pattern and light transforms, shared by grammar actions and objects.cpp.
 void transform_pattern(sg::Pigment& pigment, const sg::Mat4& world_from_local);
+void transform_normal(sg::Normal& normal, const sg::Mat4& world_from_local);
+void transform_material(sg::Material& material, const sg::Mat4& world_from_local);
+// Re-expresses every pattern of a material (pigments, normals, nested
+// maps) for a point that is first mapped by `inner_from_outer`: what
+// attaching a texture to a transformed object does.
+void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer);
 void transform_light(sg::Light& light, const sg::Mat4& world_from_local);
 // `sky_along_view` (when not null) is set when look_at looks along the sky.
 sg::Camera resolve_camera(const CameraSpec& spec, bool* sky_along_view = nullptr);
@@ -235,6 +241,55 @@ class Evaluator {
     sg::MapType map_type(const Value& v, const SourceRange& where);
     std::function<void(sg::Finish&)> finish_scalar(const std::string& name, bool albedo, const Value& v,
                                                    const SourceRange& where);
+
+    // ---- patterns, maps and normals (patterns.cpp)
+    using PatternEdit = std::function<void(sg::Pattern&)>;
+    using PigmentEdit = std::function<void(sg::Pigment&)>;
+    PatternEdit pattern_kind(sg::Pattern::Kind kind);
+    PatternEdit gradient_pattern(const Value& v, const SourceRange& where);
+    PatternEdit spiral_pattern(sg::Pattern::Kind kind, const Value& arms, const SourceRange& where);
+    PatternEdit tiling_pattern(const Value& v, const SourceRange& where);
+    PatternEdit slope_pattern(const Value& v, const SourceRange& where);
+    PatternEdit fractal_pattern(sg::Pattern::Kind kind, const Value& iterations, const SourceRange& where,
+                                const Value* julia_parameter, const SourceRange& wj);
+    PatternEdit magnet_pattern(const Value& type, const SourceRange& where, PatternEdit fractal);
+    PatternEdit pattern_scalar(const std::string& name, const Value& v, const SourceRange& where);
+    PatternEdit pattern_vector(const std::string& name, const Value& v, const SourceRange& where);
+    PatternEdit pattern_pair(const std::string& name, const Value& a, const SourceRange& wa, const Value& b,
+                             const SourceRange& wb);
+    PatternEdit warp_edit(const Edits<sg::Warp>& items, const sg::SourceLocation& at);
+    std::function<void(sg::Warp&)> warp_scalar(const std::string& name, const Value& v, const SourceRange& where);
+    std::function<void(sg::Warp&)> warp_vector(const std::string& name, const Value& v, const SourceRange& where);
+    std::function<void(sg::Warp&)> warp_kind(sg::Warp::Kind kind);
+    std::function<void(sg::Warp&)> black_hole(const Value& center, const SourceRange& wc, const Value& radius,
+                                              const SourceRange& wr);
+    std::function<void(sg::Warp&)> planar_warp(const Value& normal, const SourceRange& wn, const Value& distance,
+                                               const SourceRange& wd);
+    int noise_generator(const Value& v, const SourceRange& where);
+
+    PigmentEdit patterned_pigment(const PatternEdit& pattern, const sg::SourceLocation& at);
+    PigmentEdit block_pigment(const PatternEdit& pattern, const std::vector<Value>& colours, const SourceRange& where,
+                              const sg::SourceLocation& at);
+    PigmentEdit block_pigment(const PatternEdit& pattern, const std::vector<std::shared_ptr<sg::Pigment>>& pigments,
+                              const sg::SourceLocation& at);
+    PigmentEdit average_pigment(const sg::SourceLocation& at);
+    PigmentEdit pigment_pattern_edit(const PatternEdit& edit, const sg::SourceLocation& at);
+    PigmentEdit color_map_edit(const sg::ColorMapRef& map, const sg::SourceLocation& at);
+    PigmentEdit pigment_map_edit(const std::shared_ptr<std::vector<sg::PigmentMapEntry>>& map,
+                                 const sg::SourceLocation& at);
+    sg::ColorMapRef build_color_map(const std::vector<std::pair<Value, std::vector<Value>>>& entries,
+                                    const sg::SourceLocation& at);
+
+    using NormalEdit = std::function<void(sg::Normal&)>;
+    sg::NormalRef build_normal(const Edits<sg::Normal>& edits, const sg::SourceLocation& at);
+    NormalEdit patterned_normal(const PatternEdit& pattern, const std::optional<std::pair<Value, SourceRange>>& amount,
+                                const sg::SourceLocation& at);
+    NormalEdit bump_map_normal(const sg::ImageMap& image, const std::optional<std::pair<Value, SourceRange>>& amount,
+                               const sg::SourceLocation& at);
+    NormalEdit normal_pattern_edit(const PatternEdit& edit, const sg::SourceLocation& at);
+    NormalEdit normal_accuracy(const Value& v, const SourceRange& where);
+    sg::SlopeMapEntry slope_entry(const Value& value, const SourceRange& wv, const Value& slope, const SourceRange& ws);
+    std::function<void(ShapeValue&)> normal_edit(sg::NormalRef normal);
 
     // ---- lights, camera, settings (lights_camera.cpp)
     sg::Light make_light(const Value& position, const SourceRange& wp, const Value& colour, const SourceRange& wc,

@@ -48,6 +48,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %token <TokenValue> NUMBER "number" STRING "string" CONSTANT "constant" BUILTIN "function"
        VALUE_ID "identifier" OBJECT_ID "object identifier" TEXTURE_ID "texture identifier"
        PIGMENT_ID "pigment identifier" FINISH_ID "finish identifier"
+       NORMAL_ID "normal identifier" COLOR_MAP_ID "color_map identifier"
+       PIGMENT_MAP_ID "pigment_map identifier" NORMAL_MAP_ID "normal_map identifier"
        INTERIOR_ID "interior identifier" CAMERA_ID "camera identifier"
        LIGHT_ID "light_source identifier" TRANSFORM_ID "transform identifier"
        UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" UNSUPPORTED "unsupported keyword"
@@ -102,6 +104,23 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        HEIGHT_FIELD "height_field" WATER_LEVEL "water_level" SMOOTH "smooth" PREMULTIPLIED "premultiplied"
        GIF "gif" PGM "pgm" PPM "ppm" BMP "bmp" SYS "sys" IFF "iff" POT "pot"
        POLYNOMIAL "polynomial" XYZ "xyz" HF_GRAY_16 "hf_gray_16"
+       NORMAL "normal" COLOR_MAP "color_map" COLOUR_MAP "colour_map" PIGMENT_MAP "pigment_map"
+       NORMAL_MAP "normal_map" SLOPE_MAP "slope_map" BUMP_SIZE "bump_size" BUMP_MAP "bump_map"
+       USE_COLOR "use_color" USE_COLOUR "use_colour" USE_INDEX "use_index" AVERAGE "average"
+       AGATE "agate" AOI "aoi" BOXED "boxed" BOZO "bozo" SPOTTED "spotted" BUMPS "bumps" CELLS "cells"
+       CRACKLE "crackle" CYLINDRICAL "cylindrical" DENTS "dents" FACETS "facets" GRADIENT "gradient"
+       GRANITE "granite" HEXAGON "hexagon" LEOPARD "leopard" MARBLE "marble" ONION "onion" PAVEMENT "pavement"
+       PLANAR "planar" QUILTED "quilted" RADIAL "radial" RIPPLES "ripples" SLOPE "slope" SPHERICAL "spherical"
+       SPIRAL1 "spiral1" SPIRAL2 "spiral2" SQUARE "square" TILING "tiling" TRIANGULAR "triangular"
+       WAVES "waves" WOOD "wood" WRINKLES "wrinkles" BRICK "brick" MANDEL "mandel" JULIA "julia" MAGNET "magnet"
+       TURBULENCE "turbulence" OCTAVES "octaves" OMEGA "omega" LAMBDA "lambda" FREQUENCY "frequency"
+       PHASE "phase" RAMP_WAVE "ramp_wave" TRIANGLE_WAVE "triangle_wave" SINE_WAVE "sine_wave"
+       SCALLOP_WAVE "scallop_wave" CUBIC_WAVE "cubic_wave" POLY_WAVE "poly_wave" WARP "warp"
+       REPEAT "repeat" OFFSET "offset" FLIP "flip" BLACK_HOLE "black_hole" TOROIDAL "toroidal"
+       ORIENTATION "orientation" DIST_EXP "dist_exp" MAJOR_RADIUS "major_radius"
+       AGATE_TURB "agate_turb" BRICK_SIZE "brick_size" MORTAR "mortar" FORM "form" METRIC "metric"
+       SOLID "solid" COORDS "coords" SIZE "size" EXTERIOR "exterior" CONTROL0 "control0" CONTROL1 "control1"
+       NUMBER_OF_SIDES "number_of_sides" NUMBER_OF_TILES "number_of_tiles" ALTITUDE "altitude"
 
 %nterm <Value> expr arith postfix primary colour colour_base declared_value string_value
 %nterm <std::vector<Value>> arith_seq expr_list opt_args vector_items expr_seq macro_args macro_arg_list
@@ -148,6 +167,22 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <Edits<sg::TriangleMesh>> mesh2_sections
 %nterm <std::function<void(sg::TriangleMesh&)>> mesh2_section
 %nterm <std::vector<std::shared_ptr<sg::Material>>> texture_seq texture_list
+%nterm <std::function<void(sg::Pattern&)>> pattern_name pattern_modifier block_pattern_name
+%nterm <std::vector<Value>> block_colours
+%nterm <std::vector<std::shared_ptr<sg::Pigment>>> block_pigments
+%nterm <Edits<sg::Warp>> warp_items
+%nterm <std::function<void(sg::Warp&)>> warp_item
+%nterm <sg::ColorMapRef> color_map color_map_body
+%nterm <std::vector<std::pair<Value, std::vector<Value>>>> color_map_entries
+%nterm <std::vector<Value>> colour_seq
+%nterm <std::shared_ptr<std::vector<sg::PigmentMapEntry>>> pigment_map pigment_map_entries
+%nterm <std::shared_ptr<sg::Pigment>> pigment_body
+%nterm <sg::NormalRef> normal normal_body
+%nterm <Edits<sg::Normal>> normal_mods
+%nterm <std::function<void(sg::Normal&)>> normal_start normal_mod
+%nterm <std::shared_ptr<std::vector<sg::NormalMapEntry>>> normal_map normal_map_entries
+%nterm <std::vector<sg::SlopeMapEntry>> slope_map_entries
+%nterm <std::optional<std::pair<Value, SourceRange>>> opt_amount
 
 %precedence OPT_EMPTY
 %right "?" ":"
@@ -208,6 +243,14 @@ declared_value
   | camera             { $$.kind = Value::Kind::Camera; $$.camera = std::make_shared<CameraSpec>($1); }
   | light              { $$.kind = Value::Kind::Light; $$.light = std::make_shared<sg::Light>($1); }
   | transform_block    { $$.kind = Value::Kind::Transform; $$.transform = $1; }
+  | normal             { $$.kind = Value::Kind::Normal; $$.normal = $1; }
+  | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
+  | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
+  | normal_map         { $$.kind = Value::Kind::NormalMap; $$.normal_map = $1; }
+  | NORMAL_ID          { $$ = std::move($1.value); }
+  | COLOR_MAP_ID       { $$ = std::move($1.value); }
+  | PIGMENT_MAP_ID     { $$ = std::move($1.value); }
+  | NORMAL_MAP_ID      { $$ = std::move($1.value); }
   | OBJECT_ID          { $$ = std::move($1.value); }
   | TEXTURE_ID         { $$ = std::move($1.value); }
   | PIGMENT_ID         { $$ = std::move($1.value); }
@@ -324,6 +367,7 @@ object_mod
   | texture            { $$ = ev.texture_edit($1); }
   | pigment            { $$ = ev.pigment_edit($1); }
   | finish             { $$ = ev.finish_edit($1); }
+  | normal             { $$ = ev.normal_edit($1); }
   | interior           { $$ = ev.interior_edit($1); }
   | material           { $$ = ev.material_edit($1); }
   | "no_shadow"        { $$ = [](ShapeValue& s) { s.object.no_shadow = true; }; }
@@ -586,8 +630,9 @@ texture_items
   | texture_items UNDECLARED_ID { $$ = std::move($1); ev.unknown_identifier($2.text, LOC(@2), "a texture"); }
   | texture_items pigment { $$ = std::move($1); auto p = $2; $$.push_back([p](sg::Material& m) { m.pigment = *p; }); }
   | texture_items finish  { $$ = std::move($1); auto f = $2; $$.push_back([f](sg::Material& m) { m.finish = *f; }); }
+  | texture_items normal  { $$ = std::move($1); auto n = $2; $$.push_back([n](sg::Material& m) { m.normal = n; }); }
   | texture_items transform_item { $$ = std::move($1); sg::Mat4 t = $2;
-                               $$.push_back([t](sg::Material& m) { transform_pattern(m.pigment, t); }); }
+                               $$.push_back([t](sg::Material& m) { transform_material(m, t); }); }
   ;
 
 material
@@ -603,13 +648,17 @@ material_items
                               $$.push_back([t](sg::Material& m) { sg::Interior keep = m.interior; m = *t; m.interior = keep; }); }
   | material_items interior { $$ = std::move($1); auto i = $2; $$.push_back([i](sg::Material& m) { m.interior = *i; }); }
   | material_items transform_item { $$ = std::move($1); sg::Mat4 t = $2;
-                              $$.push_back([t](sg::Material& m) { transform_pattern(m.pigment, t); }); }
+                              $$.push_back([t](sg::Material& m) { transform_material(m, t); }); }
   ;
 
 /* POV's order: the colour or pattern first, then modifiers. */
 pigment
-  : "pigment" "{" pigment_start pigment_mods "}"
-      { $4.insert($4.begin(), $3); $$ = ev.build_pigment($4, LOC(@1)); }
+  : "pigment" "{" pigment_body "}" { $$ = $3; $$->location = LOC(@1); }
+  ;
+
+/* A pigment's items, also a pigment_map entry's (without braces). */
+pigment_body
+  : pigment_start pigment_mods { $2.insert($2.begin(), $1); $$ = ev.build_pigment($2, LOC(@1)); }
   ;
 
 pigment_start
@@ -617,12 +666,23 @@ pigment_start
   | PIGMENT_ID         { auto p = $1.value.pigment; $$ = [p](sg::Pigment& target) { target = *p; }; }
   | colour             { sg::Color c = ev.to_color($1, @1);
                          $$ = [c](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Solid; p.color = c; }; }
-  | "checker"          { $$ = [](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Checker; }; }
-  | "checker" colour opt_comma colour
-      { sg::Color a = ev.to_color($2, @2), b = ev.to_color($4, @4);
-        $$ = [a, b](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Checker; p.checker[0] = a; p.checker[1] = b; }; }
   | image_map          { sg::ImageMap image = $1;
                          $$ = [image](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Image; p.image = image; }; }
+  | pattern_name       { $$ = ev.patterned_pigment($1, LOC(@1)); }
+  | block_pattern_name { $$ = ev.patterned_pigment($1, LOC(@1)); }
+  | block_pattern_name block_colours { $$ = ev.block_pigment($1, $2, @2, LOC(@1)); }
+  | block_pattern_name block_pigments { $$ = ev.block_pigment($1, $2, LOC(@1)); }
+  | "average"          { $$ = ev.average_pigment(LOC(@1)); }
+  ;
+
+block_colours
+  : colour             { $$.push_back($1); }
+  | block_colours opt_comma colour { $$ = std::move($1); $$.push_back($3); }
+  ;
+
+block_pigments
+  : pigment            { $$.push_back($1); }
+  | block_pigments opt_comma pigment { $$ = std::move($1); $$.push_back($3); }
   ;
 
 pigment_mods
@@ -630,6 +690,210 @@ pigment_mods
   | pigment_mods transform_item { $$ = std::move($1); sg::Mat4 t = $2;
                                   $$.push_back([t](sg::Pigment& p) { transform_pattern(p, t); }); }
   | pigment_mods "quick_color" colour { $$ = std::move($1); ev.ignored(LOC(@2), "quick_color"); }
+  | pigment_mods pattern_modifier { $$ = std::move($1); $$.push_back(ev.pigment_pattern_edit($2, LOC(@2))); }
+  | pigment_mods color_map { $$ = std::move($1); $$.push_back(ev.color_map_edit($2, LOC(@2))); }
+  | pigment_mods pigment_map { $$ = std::move($1); $$.push_back(ev.pigment_map_edit($2, LOC(@2))); }
+  ;
+
+/* ---------------------------------------------------------------- patterns */
+
+pattern_name
+  : "agate"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Agate); }
+  | "aoi"              { $$ = ev.pattern_kind(sg::Pattern::Kind::Aoi); }
+  | "boxed"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Boxed); }
+  | "bozo"             { $$ = ev.pattern_kind(sg::Pattern::Kind::Bozo); }
+  | "spotted"          { $$ = ev.pattern_kind(sg::Pattern::Kind::Spotted); }
+  | "bumps"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Bumps); }
+  | "cells"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Cells); }
+  | "crackle"          { $$ = ev.pattern_kind(sg::Pattern::Kind::Crackle); }
+  | "cylindrical"      { $$ = ev.pattern_kind(sg::Pattern::Kind::Cylindrical); }
+  | "dents"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Dents); }
+  | "facets"           { $$ = ev.pattern_kind(sg::Pattern::Kind::Facets); }
+  | "gradient" arith %prec OPT_EMPTY  { $$ = ev.gradient_pattern($2, @2); }
+  | "granite"          { $$ = ev.pattern_kind(sg::Pattern::Kind::Granite); }
+  | "leopard"          { $$ = ev.pattern_kind(sg::Pattern::Kind::Leopard); }
+  | "marble"           { $$ = ev.pattern_kind(sg::Pattern::Kind::Marble); }
+  | "onion"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Onion); }
+  | "planar"           { $$ = ev.pattern_kind(sg::Pattern::Kind::Planar); }
+  | "quilted"          { $$ = ev.pattern_kind(sg::Pattern::Kind::Quilted); }
+  | "radial"           { $$ = ev.pattern_kind(sg::Pattern::Kind::Radial); }
+  | "ripples"          { $$ = ev.pattern_kind(sg::Pattern::Kind::Ripples); }
+  | "spherical"        { $$ = ev.pattern_kind(sg::Pattern::Kind::Spherical); }
+  | "spiral1" arith %prec OPT_EMPTY   { $$ = ev.spiral_pattern(sg::Pattern::Kind::Spiral1, $2, @2); }
+  | "spiral2" arith %prec OPT_EMPTY   { $$ = ev.spiral_pattern(sg::Pattern::Kind::Spiral2, $2, @2); }
+  | "waves"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Waves); }
+  | "wood"             { $$ = ev.pattern_kind(sg::Pattern::Kind::Wood); }
+  | "wrinkles"         { $$ = ev.pattern_kind(sg::Pattern::Kind::Wrinkles); }
+  | "pavement"         { $$ = ev.pattern_kind(sg::Pattern::Kind::Pavement); }
+  | "tiling" arith %prec OPT_EMPTY    { $$ = ev.tiling_pattern($2, @2); }
+  | "slope" arith %prec OPT_EMPTY     { $$ = ev.slope_pattern($2, @2); }
+  | "mandel" arith %prec OPT_EMPTY    { $$ = ev.fractal_pattern(sg::Pattern::Kind::Mandel, $2, @2, nullptr, {}); }
+  | "julia" arith opt_comma arith %prec OPT_EMPTY { $$ = ev.fractal_pattern(sg::Pattern::Kind::Julia, $4, @4, &$2, @2); }
+  | "magnet" arith "mandel" arith %prec OPT_EMPTY
+      { $$ = ev.magnet_pattern($2, @2, ev.fractal_pattern(sg::Pattern::Kind::Mandel, $4, @4, nullptr, {})); }
+  | "magnet" arith "julia" arith opt_comma arith %prec OPT_EMPTY
+      { $$ = ev.magnet_pattern($2, @2, ev.fractal_pattern(sg::Pattern::Kind::Julia, $6, @6, &$4, @4)); }
+  ;
+
+/* Patterns whose values are a list of entries (POV's block patterns). */
+block_pattern_name
+  : "checker"          { $$ = ev.pattern_kind(sg::Pattern::Kind::Checker); }
+  | "hexagon"          { $$ = ev.pattern_kind(sg::Pattern::Kind::Hexagon); }
+  | "brick"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Brick); }
+  | "square"           { $$ = ev.pattern_kind(sg::Pattern::Kind::Square); }
+  | "triangular"       { $$ = ev.pattern_kind(sg::Pattern::Kind::Triangular); }
+  | "cubic"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Cubic); }
+  ;
+
+pattern_modifier
+  : "turbulence" arith { $$ = ev.pattern_vector("turbulence", $2, @2); }
+  | "octaves" arith    { $$ = ev.pattern_scalar("octaves", $2, @2); }
+  | "omega" arith      { $$ = ev.pattern_scalar("omega", $2, @2); }
+  | "lambda" arith     { $$ = ev.pattern_scalar("lambda", $2, @2); }
+  | "frequency" arith  { $$ = ev.pattern_scalar("frequency", $2, @2); }
+  | "phase" arith      { $$ = ev.pattern_scalar("phase", $2, @2); }
+  | "ramp_wave"        { $$ = [](sg::Pattern& p) { p.wave = sg::WaveType::Ramp; }; }
+  | "triangle_wave"    { $$ = [](sg::Pattern& p) { p.wave = sg::WaveType::Triangle; }; }
+  | "sine_wave"        { $$ = [](sg::Pattern& p) { p.wave = sg::WaveType::Sine; }; }
+  | "scallop_wave"     { $$ = [](sg::Pattern& p) { p.wave = sg::WaveType::Scallop; }; }
+  | "cubic_wave"       { $$ = [](sg::Pattern& p) { p.wave = sg::WaveType::Cubic; }; }
+  | "poly_wave"        { $$ = [](sg::Pattern& p) { p.wave = sg::WaveType::Poly; p.wave_exponent = 1.0; }; }
+  | "poly_wave" arith  { $$ = ev.pattern_scalar("poly_wave", $2, @2); }
+  | "noise_generator" arith { $$ = ev.pattern_scalar("noise_generator", $2, @2); }
+  | "warp" "{" warp_items "}" { $$ = ev.warp_edit($3, LOC(@1)); }
+  | "agate_turb" arith { $$ = ev.pattern_scalar("agate_turb", $2, @2); }
+  | "brick_size" arith { $$ = ev.pattern_vector("brick_size", $2, @2); }
+  | "mortar" arith     { $$ = ev.pattern_scalar("mortar", $2, @2); }
+  | "form" arith       { $$ = ev.pattern_vector("form", $2, @2); }
+  | "metric" arith     { $$ = ev.pattern_scalar("metric", $2, @2); }
+  | "offset" arith     { $$ = ev.pattern_scalar("offset", $2, @2); }
+  | "solid"            { $$ = [](sg::Pattern& p) { p.crackle_solid = true; }; }
+  | "coords" arith     { $$ = ev.pattern_scalar("coords", $2, @2); }
+  | "size" arith       { $$ = ev.pattern_scalar("size", $2, @2); }
+  | "exponent" arith   { $$ = ev.pattern_scalar("exponent", $2, @2); }
+  | "exterior" arith opt_comma arith { $$ = ev.pattern_pair("exterior", $2, @2, $4, @4); }
+  | "interior" arith opt_comma arith { $$ = ev.pattern_pair("interior", $2, @2, $4, @4); }
+  | "control0" arith   { $$ = ev.pattern_scalar("control0", $2, @2); }
+  | "control1" arith   { $$ = ev.pattern_scalar("control1", $2, @2); }
+  | "number_of_sides" arith { $$ = ev.pattern_scalar("number_of_sides", $2, @2); }
+  | "number_of_tiles" arith { $$ = ev.pattern_scalar("number_of_tiles", $2, @2); }
+  | "altitude" arith   { $$ = ev.pattern_vector("altitude", $2, @2); }
+  ;
+
+warp_items
+  : %empty             {}
+  | warp_items warp_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+warp_item
+  : "turbulence" arith { $$ = ev.warp_vector("turbulence", $2, @2); }
+  | "octaves" arith    { $$ = ev.warp_scalar("octaves", $2, @2); }
+  | "omega" arith      { $$ = ev.warp_scalar("omega", $2, @2); }
+  | "lambda" arith     { $$ = ev.warp_scalar("lambda", $2, @2); }
+  | "repeat" arith     { $$ = ev.warp_vector("repeat", $2, @2); }
+  | "offset" arith     { $$ = ev.warp_vector("offset", $2, @2); }
+  | "flip" arith       { $$ = ev.warp_vector("flip", $2, @2); }
+  | "black_hole" arith opt_comma arith { $$ = ev.black_hole($2, @2, $4, @4); }
+  | "falloff" arith    { $$ = ev.warp_scalar("falloff", $2, @2); }
+  | "strength" arith   { $$ = ev.warp_scalar("strength", $2, @2); }
+  | "inverse"          { $$ = [](sg::Warp& w) { w.inverse = true; }; }
+  | "cylindrical"      { $$ = ev.warp_kind(sg::Warp::Kind::Cylindrical); }
+  | "spherical"        { $$ = ev.warp_kind(sg::Warp::Kind::Spherical); }
+  | "toroidal"         { $$ = ev.warp_kind(sg::Warp::Kind::Toroidal); }
+  | "planar"           { $$ = ev.warp_kind(sg::Warp::Kind::Planar); }
+  | "planar" arith opt_comma arith { $$ = ev.planar_warp($2, @2, $4, @4); }
+  | "orientation" arith { $$ = ev.warp_vector("orientation", $2, @2); }
+  | "dist_exp" arith   { $$ = ev.warp_scalar("dist_exp", $2, @2); }
+  | "major_radius" arith { $$ = ev.warp_scalar("major_radius", $2, @2); }
+  ;
+
+/* color_map { [value colour] ... }, POV's old [v1 v2 colour1 colour2] too. */
+color_map
+  : "color_map" "{" color_map_body "}" { $$ = $3; }
+  | "colour_map" "{" color_map_body "}" { $$ = $3; }
+  ;
+
+color_map_body
+  : COLOR_MAP_ID       { $$ = $1.value.color_map; }
+  | color_map_entries  { $$ = ev.build_color_map($1, LOC(@1)); }
+  ;
+
+color_map_entries
+  : %empty             {}
+  | color_map_entries "[" arith opt_comma colour_seq "]" { $$ = std::move($1); $$.emplace_back($3, $5); }
+  ;
+
+colour_seq
+  : colour             { $$.push_back($1); }
+  | colour_seq opt_comma colour { $$ = std::move($1); $$.push_back($3); }
+  ;
+
+pigment_map
+  : "pigment_map" "{" PIGMENT_MAP_ID "}" { $$ = std::make_shared<std::vector<sg::PigmentMapEntry>>(*$3.value.pigment_map); }
+  | "pigment_map" "{" pigment_map_entries "}" { $$ = $3; }
+  ;
+
+pigment_map_entries
+  : %empty             { $$ = std::make_shared<std::vector<sg::PigmentMapEntry>>(); }
+  | pigment_map_entries "[" arith opt_comma pigment_body "]"
+      { $$ = $1; $$->push_back(sg::PigmentMapEntry{ev.to_float($3, @3, "a map value"), $5}); }
+  ;
+
+/* ----------------------------------------------------------------- normals */
+
+normal
+  : "normal" "{" normal_body "}" { $$ = $3; }
+  ;
+
+normal_body
+  : normal_start normal_mods { $2.insert($2.begin(), $1); $$ = ev.build_normal($2, LOC(@1)); }
+  ;
+
+normal_start
+  : %empty             { $$ = [](sg::Normal&) {}; }
+  | NORMAL_ID          { auto n = $1.value.normal; $$ = [n](sg::Normal& target) { target = *n; }; }
+  | pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
+  | block_pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
+  | "bump_map" "{" image_items "}" opt_amount { $$ = ev.bump_map_normal($3, $5, LOC(@1)); }
+  | "average"          { $$ = [](sg::Normal& n) { n.kind = sg::Normal::Kind::Average; }; }
+  ;
+
+opt_amount
+  : %empty %prec OPT_EMPTY { }
+  | arith %prec OPT_EMPTY { $$ = std::make_pair($1, @1); }
+  ;
+
+normal_mods
+  : %empty             {}
+  | normal_mods normal_mod { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+normal_mod
+  : transform_item     { sg::Mat4 t = $1; $$ = [t](sg::Normal& n) { transform_normal(n, t); }; }
+  | pattern_modifier   { $$ = ev.normal_pattern_edit($1, LOC(@1)); }
+  | "bump_size" arith  { double v = ev.to_float($2, @2, "a bump_size"); $$ = [v](sg::Normal& n) { n.bump_size = v; }; }
+  | "accuracy" arith   { $$ = ev.normal_accuracy($2, @2); }
+  | "slope_map" "{" slope_map_entries "}" { auto m = $3; $$ = [m](sg::Normal& n) { n.slope_map = m; }; }
+  | normal_map         { auto m = $1; $$ = [m](sg::Normal& n) { n.normal_map = *m; n.block_normals.clear(); }; }
+  | "use_color"        { $$ = [](sg::Normal& n) { n.bump_map_use_color = true; }; }
+  | "use_colour"       { $$ = [](sg::Normal& n) { n.bump_map_use_color = true; }; }
+  | "use_index"        { $$ = [](sg::Normal& n) { n.bump_map_use_color = false; }; }
+  ;
+
+normal_map
+  : "normal_map" "{" NORMAL_MAP_ID "}" { $$ = std::make_shared<std::vector<sg::NormalMapEntry>>(*$3.value.normal_map); }
+  | "normal_map" "{" normal_map_entries "}" { $$ = $3; }
+  ;
+
+normal_map_entries
+  : %empty             { $$ = std::make_shared<std::vector<sg::NormalMapEntry>>(); }
+  | normal_map_entries "[" arith opt_comma normal_body "]"
+      { $$ = $1; $$->push_back(sg::NormalMapEntry{ev.to_float($3, @3, "a map value"), $5}); }
+  ;
+
+slope_map_entries
+  : %empty             {}
+  | slope_map_entries "[" arith opt_comma arith "]" { $$ = std::move($1); $$.push_back(ev.slope_entry($3, @3, $5, @5)); }
   ;
 
 image_map
@@ -862,10 +1126,18 @@ macro_arg
   | CAMERA_ID          { $$ = std::move($1.value); }
   | LIGHT_ID           { $$ = std::move($1.value); }
   | TRANSFORM_ID       { $$ = std::move($1.value); }
+  | NORMAL_ID          { $$ = std::move($1.value); }
+  | COLOR_MAP_ID       { $$ = std::move($1.value); }
+  | PIGMENT_MAP_ID     { $$ = std::move($1.value); }
+  | NORMAL_MAP_ID      { $$ = std::move($1.value); }
   | object             { $$ = ev.object_value($1); }
   | texture            { $$.kind = Value::Kind::Texture; $$.texture = $1; }
   | pigment            { $$.kind = Value::Kind::Pigment; $$.pigment = $1; }
   | finish             { $$.kind = Value::Kind::Finish; $$.finish = $1; }
+  | normal             { $$.kind = Value::Kind::Normal; $$.normal = $1; }
+  | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
+  | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
+  | normal_map         { $$.kind = Value::Kind::NormalMap; $$.normal_map = $1; }
   ;
 
 /* ------------------------------------------------------------------ lights */
@@ -958,8 +1230,8 @@ global_item
   | "ambient_light" colour { ev.scene().global.ambient_light = ev.to_color($2, @2).rgb; }
   | "adc_bailout" expr { ev.scene().global.adc_bailout = ev.to_float($2, @2); }
   | "charset" UNDECLARED_ID { ev.ignored(LOC(@1), "charset"); }
-  | "number_of_waves" expr { ev.ignored(LOC(@1), "number_of_waves"); }
-  | "noise_generator" expr { ev.ignored(LOC(@1), "noise_generator"); }
+  | "number_of_waves" expr { ev.scene().global.number_of_waves = ev.to_int($2, @2); }
+  | "noise_generator" expr { ev.scene().global.noise_generator = std::max(1, ev.noise_generator($2, @2)); }
   | "max_intersections" expr { ev.ignored(LOC(@1), "max_intersections"); }
   | "hf_gray_16" opt_bool { ev.ignored(LOC(@1), "hf_gray_16 (how POV-Ray writes height-field images)"); }
   ;

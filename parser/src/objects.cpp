@@ -22,9 +22,9 @@ using MaterialPtr = std::shared_ptr<const sg::Material>;
 
 // Re-expresses a material given in the parent's space in a child's space.
 MaterialPtr in_child_space(const MaterialPtr& material, const sg::Mat4& parent_from_child) {
-    if (material->pigment.kind == sg::Pigment::Kind::Solid) return material;  // no pattern to move
+    if (material->pigment.kind == sg::Pigment::Kind::Solid && !material->normal) return material;  // nothing to move
     auto moved = std::make_shared<sg::Material>(*material);
-    moved->pigment.pattern_from_object = moved->pigment.pattern_from_object * parent_from_child;
+    move_patterns(*moved, parent_from_child);
     return moved;
 }
 
@@ -54,7 +54,7 @@ void drop_face_materials(sg::Object& object) {
 // Attaches a material written in the space parent_from_object maps into.
 void attach_in_parent_space(ShapeValue& shape, const sg::Material& material) {
     auto in_object = std::make_shared<sg::Material>(material);
-    in_object->pigment.pattern_from_object = in_object->pigment.pattern_from_object * shape.object.parent_from_object;
+    move_patterns(*in_object, shape.object.parent_from_object);
     drop_face_materials(shape.object);
     give_material(shape.object, in_object);
 }
@@ -64,8 +64,7 @@ void attach_in_parent_space(ShapeValue& shape, const sg::Material& material) {
 sg::Material current_in_parent_space(const ShapeValue& shape) {
     if (!shape.object.material) return sg::Material{};
     sg::Material material = *shape.object.material;
-    material.pigment.pattern_from_object =
-        material.pigment.pattern_from_object * glm::inverse(shape.object.parent_from_object);
+    move_patterns(material, glm::inverse(shape.object.parent_from_object));
     return material;
 }
 
@@ -81,10 +80,6 @@ void apply_default_material(sg::Object& object, const MaterialPtr& fallback) {
 }
 
 }  // namespace
-
-void transform_pattern(sg::Pigment& pigment, const sg::Mat4& world_from_local) {
-    pigment.pattern_from_object = pigment.pattern_from_object * glm::inverse(world_from_local);
-}
 
 void transform_light(sg::Light& light, const sg::Mat4& m) {
     if (light.looks_like) {
@@ -197,6 +192,14 @@ std::function<void(ShapeValue&)> Evaluator::finish_edit(std::shared_ptr<sg::Fini
     };
 }
 
+std::function<void(ShapeValue&)> Evaluator::normal_edit(sg::NormalRef normal) {
+    return [normal](ShapeValue& s) {
+        sg::Material material = current_in_parent_space(s);
+        material.normal = normal;
+        attach_in_parent_space(s, material);
+    };
+}
+
 std::function<void(ShapeValue&)> Evaluator::interior_edit(std::shared_ptr<sg::Interior> interior) {
     return [interior](ShapeValue& s) {
         sg::Material material = current_in_parent_space(s);
@@ -276,23 +279,6 @@ std::shared_ptr<sg::Material> Evaluator::build_texture(const Edits<sg::Material>
     for (const auto& edit : edits) edit(*material);
     material->location = at;
     return material;
-}
-
-std::shared_ptr<sg::Pigment> Evaluator::build_pigment(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at) {
-    auto pigment = std::make_shared<sg::Pigment>();
-    for (const auto& edit : edits) edit(*pigment);
-    pigment->location = at;
-    // POV-Ray accepts a negative colour; on a surface it takes light away
-    // from what it reflects, which surprises more often than it is meant.
-    auto negative = [](const sg::Color& c) { return c.rgb.x < 0.0 || c.rgb.y < 0.0 || c.rgb.z < 0.0; };
-    const bool any_negative = pigment->kind == sg::Pigment::Kind::Checker
-                                  ? negative(pigment->checker[0]) || negative(pigment->checker[1])
-                                  : pigment->kind == sg::Pigment::Kind::Solid && negative(pigment->color);
-    if (any_negative)
-        warning(at,
-                "the pigment has a negative colour component: the surface will take light away (POV-Ray "
-                "accepts it too)");
-    return pigment;
 }
 
 std::shared_ptr<sg::Finish> Evaluator::build_finish(const Edits<sg::Finish>& edits, const sg::SourceLocation& at) {

@@ -340,11 +340,13 @@ TEST(ParserMaterials, CheckerAndPatternTransformFollowsObject) {
     auto scene = parse_ok("plane { y, 0 pigment { checker rgb 1, rgb 0 scale 2 } translate x }");
     auto m = scene.objects[0].material;
     ASSERT_TRUE(m);
-    EXPECT_EQ(m->pigment.kind, sg::Pigment::Kind::Checker);
-    expect_vec(m->pigment.checker[0].rgb, {1, 1, 1});
-    expect_vec(m->pigment.checker[1].rgb, {0, 0, 0});
+    EXPECT_EQ(m->pigment.kind, sg::Pigment::Kind::Patterned);
+    EXPECT_EQ(m->pigment.pattern.kind, sg::Pattern::Kind::Checker);
+    ASSERT_EQ(m->pigment.block_pigments.size(), 2u);
+    expect_vec(m->pigment.block_pigments[0]->color.rgb, {1, 1, 1});
+    expect_vec(m->pigment.block_pigments[1]->color.rgb, {0, 0, 0});
     // Object space point (2,0,0) is pattern point (1,0,0): the later translate moves the pattern too.
-    expect_vec(apply(m->pigment.pattern_from_object, {2, 0, 0}), {1, 0, 0});
+    expect_vec(apply(m->pigment.pattern.pattern_from_object, {2, 0, 0}), {1, 0, 0});
 }
 
 TEST(ParserMaterials, DeclaredTexturesPigmentsFinishesReusable) {
@@ -585,7 +587,10 @@ TEST(ParserObjects, NoShadowHollowAndIgnoredKeywordsWarn) {
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     EXPECT_TRUE(result.scene->objects[0].no_shadow);
     EXPECT_TRUE(result.scene->objects[0].hollow);
-    EXPECT_EQ(test::count_warnings(result), 3);  // hollow, double_illuminate, normal
+    EXPECT_EQ(test::count_warnings(result), 2);  // hollow, double_illuminate
+    ASSERT_TRUE(result.scene->objects[0].material && result.scene->objects[0].material->normal);
+    EXPECT_EQ(result.scene->objects[0].material->normal->pattern.kind, sg::Pattern::Kind::Bumps);
+    EXPECT_DOUBLE_EQ(result.scene->objects[0].material->normal->bump_size, 0.5);
     for (const auto& d : result.diagnostics) EXPECT_EQ(d.location.line, 1);
 }
 

@@ -54,64 +54,19 @@ const std::unordered_set<std::string>& builtin_names() {
 
 // Ignored POV blocks: swallowed with a warning so nothing is dropped silently.
 const std::unordered_set<std::string>& ignored_blocks() {
-    static const std::unordered_set<std::string> names = {
-        "normal",  "photons", "radiosity",        "media",      "fog",        "sky_sphere",
-        "rainbow", "irid",    "interior_texture", "subsurface", "mm_per_unit"};
+    static const std::unordered_set<std::string> names = {"photons",    "radiosity",  "media", "fog",
+                                                          "sky_sphere", "rainbow",    "irid",  "interior_texture",
+                                                          "subsurface", "mm_per_unit"};
     return names;
 }
 
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
-    static const std::unordered_set<std::string> names = {"isosurface",
-                                                          "parametric",
-                                                          "lemon",
-                                                          "array",
-                                                          "spline",
-                                                          "function",
-                                                          "color_map",
-                                                          "colour_map",
-                                                          "pigment_map",
-                                                          "texture_map",
-                                                          "normal_map",
-                                                          "slope_map",
-                                                          "gradient",
-                                                          "bozo",
-                                                          "agate",
-                                                          "marble",
-                                                          "granite",
-                                                          "wood",
-                                                          "leopard",
-                                                          "onion",
-                                                          "radial",
-                                                          "spotted",
-                                                          "wrinkles",
-                                                          "ripples",
-                                                          "waves",
-                                                          "hexagon",
-                                                          "brick",
-                                                          "bumps",
-                                                          "dents",
-                                                          "crackle",
-                                                          "spiral1",
-                                                          "spiral2",
-                                                          "fisheye",
-                                                          "panoramic",
-                                                          "cylindrical",
-                                                          "spherical",
-                                                          "ultra_wide_angle",
-                                                          "omnimax",
-                                                          "layered",
-                                                          "material_map",
-                                                          "uv_mapping",
-                                                          "pattern",
-                                                          "tiles",
-                                                          "cells",
-                                                          "boxed",
-                                                          "planar",
-                                                          "average",
-                                                          "interior_texture",
-                                                          "isosurface",
-                                                          "dictionary"};
+    static const std::unordered_set<std::string> names = {
+        "isosurface", "parametric",       "lemon",        "array",      "spline",
+        "function",   "texture_map",      "fisheye",      "panoramic",  "ultra_wide_angle",
+        "omnimax",    "layered",          "material_map", "uv_mapping", "pattern",
+        "tiles",      "interior_texture", "isosurface",   "dictionary"};
     return names;
 }
 
@@ -393,6 +348,10 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
         case VK::Camera: kind = Parser::token::TOK_CAMERA_ID; break;
         case VK::Light: kind = Parser::token::TOK_LIGHT_ID; break;
         case VK::Transform: kind = Parser::token::TOK_TRANSFORM_ID; break;
+        case VK::Normal: kind = Parser::token::TOK_NORMAL_ID; break;
+        case VK::ColorMap: kind = Parser::token::TOK_COLOR_MAP_ID; break;
+        case VK::PigmentMap: kind = Parser::token::TOK_PIGMENT_MAP_ID; break;
+        case VK::NormalMap: kind = Parser::token::TOK_NORMAL_MAP_ID; break;
         default: break;
         }
         Value copy = *value;

@@ -41,6 +41,10 @@ std::string describe(Value::Kind kind) {
     case Value::Kind::Camera: return "a camera";
     case Value::Kind::Light: return "a light_source";
     case Value::Kind::Transform: return "a transform";
+    case Value::Kind::Normal: return "a normal";
+    case Value::Kind::ColorMap: return "a color_map";
+    case Value::Kind::PigmentMap: return "a pigment_map";
+    case Value::Kind::NormalMap: return "a normal_map";
     }
     return "a value";
 }

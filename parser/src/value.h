@@ -49,7 +49,11 @@ struct Value {
         Interior,
         Camera,
         Light,
-        Transform
+        Transform,
+        Normal,
+        ColorMap,
+        PigmentMap,
+        NormalMap
     };
     Kind kind = Kind::Float;
     // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
@@ -64,6 +68,10 @@ struct Value {
     std::shared_ptr<const sg::Interior> interior;
     std::shared_ptr<const CameraSpec> camera;
     std::shared_ptr<const sg::Light> light;
+    sg::NormalRef normal;
+    sg::ColorMapRef color_map;
+    std::shared_ptr<const std::vector<sg::PigmentMapEntry>> pigment_map;
+    std::shared_ptr<const std::vector<sg::NormalMapEntry>> normal_map;
     sg::Mat4 transform{1.0};
     sg::SourceLocation location;  // where it was written, when a check needs it later
 

@@ -62,7 +62,7 @@ sg::SceneGraph sphere_scene() {
     sg::Object checkered = sphere;
     checkered.shape = sg::Sphere{sg::Vec3(-1.2, -0.8, 0.5), 0.5};
     auto checker_material = std::make_shared<sg::Material>(*material);
-    checker_material->pigment.kind = sg::Pigment::Kind::Checker;
+    checker_material->pigment = sg::checker_pigment({1, 1, 1}, {0, 1, 0});
     checkered.material = checker_material;
     graph.objects.push_back(checkered);
     return graph;

@@ -16,7 +16,7 @@ sg::SceneGraph room(std::optional<sg::Object> extra) {
     sg::SceneGraph graph;
     graph.camera = camera({0.0, 1.5, -5.0}, {0.0, -0.2, 1.0});
     graph.objects.push_back(plane({0.0, 1.0, 0.0}, 0.0, material([](sg::Material& m) {
-                                      m.pigment.kind = sg::Pigment::Kind::Checker;
+                                      m.pigment = sg::checker_pigment({1, 1, 1}, {0, 1, 0});
                                       m.finish.specular = 0.3;
                                   })));
     graph.objects.push_back(plane({0.0, 0.0, -1.0}, -4.0, material([](sg::Material& m) {

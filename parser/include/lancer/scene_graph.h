@@ -59,15 +59,239 @@ struct ImageMap {
     SourceLocation location;
 };
 
-struct Pigment {
-    enum class Kind { Solid, Checker, Image };
-    Kind kind = Kind::Solid;
-    Color color;                                              // Solid; POV default pigment is black
-    Color checker[2] = {{Vec3(1.0)}, {Vec3(0.0, 1.0, 0.0)}};  // POV defaults: white, green
-    ImageMap image;                                           // Image
-    // Pigment-space transform (scale/rotate/translate written inside the
-    // pigment or texture); maps object space to pattern space.
+// ---------------------------------------------------------------- patterns
+
+// One step of POV-Ray's warp { ... } list, or a transform written between
+// warps. A pattern's point passes through its steps from the last written
+// to the first (a step written later acts on everything written before
+// it), then reaches the pattern function.
+struct Warp {
+    enum class Kind { Transform, Turbulence, Repeat, BlackHole, Cylindrical, Spherical, Toroidal, Planar };
+    Kind kind = Kind::Transform;
+    Mat4 inner_from_outer{1.0};  // Transform: maps the point into the space the earlier steps see
+    // Turbulence (and black_hole's jitter): POV's turbulence vector, octaves, omega, lambda.
+    Vec3 turbulence{0.0};
+    int octaves = 6;
+    double omega = 0.5;
+    double lambda = 2.0;
+    // Repeat: the cell vector (one axis), offset and flip per cell; BlackHole's repeat too.
+    Vec3 repeat{0.0};
+    Vec3 offset{0.0};
+    Vec3 flip{0.0};
+    // BlackHole
+    Vec3 center{0.0};
+    double radius = 1.0;
+    double falloff = 2.0;
+    double strength = 1.0;
+    bool inverse = false;
+    // Cylindrical, Spherical, Toroidal: the axis; dist_exp; toroidal's major radius.
+    Vec3 orientation{0.0, 0.0, 1.0};
+    double dist_exp = 0.0;
+    double major_radius = 1.0;
+    // Planar: the plane's normal and distance.
+    Vec3 normal{0.0, 0.0, 1.0};
+    double distance = 0.0;
+    SourceLocation location;
+};
+
+// POV-Ray's wave types: how a pattern's value (after frequency and phase)
+// becomes the index into its map.
+enum class WaveType { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
+
+struct Pigment;
+struct Object;
+
+// A POV-Ray pattern: a function from a point (and, for a few, the surface
+// or the ray) to a value, usually in [0, 1], that maps index. The same
+// struct serves pigments, normals, textures and (later) densities.
+struct Pattern {
+    enum class Kind {
+        Agate,
+        Aoi,
+        Boxed,
+        Brick,
+        Bozo,
+        Bumps,
+        Cells,
+        Checker,
+        Crackle,
+        Cubic,
+        Cylindrical,
+        DensityFile,
+        Dents,
+        Facets,
+        Mandel,
+        Julia,
+        Magnet,
+        Function,
+        Gradient,
+        Granite,
+        Hexagon,
+        ImagePattern,
+        Leopard,
+        Marble,
+        Object,
+        Onion,
+        Pavement,
+        PigmentPattern,
+        Planar,
+        Quilted,
+        Radial,
+        Ripples,
+        Slope,
+        Spherical,
+        Spiral1,
+        Spiral2,
+        Spotted,
+        Square,
+        Tiling,
+        Triangular,
+        Waves,
+        Wood,
+        Wrinkles
+    };
+    Kind kind = Kind::Gradient;
+
+    // Classic turbulence (`turbulence` outside warp { }): applied to the
+    // point just before the pattern function (marble, wood, agate and the
+    // other patterns POV gives their own turbulence use it inside).
+    Vec3 turbulence{0.0};
+    int octaves = 6;
+    double omega = 0.5;
+    double lambda = 2.0;
+    double frequency = 1.0;
+    double phase = 0.0;
+    WaveType wave = WaveType::Ramp;
+    double wave_exponent = 1.0;  // poly_wave's exponent
+    int noise_generator = 0;     // 1, 2, 3; 0: global_settings' (POV's default 2)
+    std::vector<Warp> warps;     // in the order written
+    // Transforms written after the last warp (all of them when there is
+    // none), and the moves of the object the pattern is attached to.
     Mat4 pattern_from_object{1.0};
+
+    // Parameters of particular patterns (POV-Ray's defaults).
+    Vec3 vector{1.0, 0.0, 0.0};  // gradient's direction; slope's direction <0,1,0>
+    double agate_turbulence = 1.0;
+    Vec3 brick_size{8.0, 3.0, 4.5};
+    double mortar = 0.5;
+    Vec3 crackle_form{-1.0, 1.0, 0.0};
+    double crackle_metric = 2.0;
+    double crackle_offset = 0.0;
+    bool crackle_solid = false;
+    double facets_size = 0.1;  // facets size (with coords 0)
+    double facets_coords = 0.0;
+    int fractal_iterations = 0;  // mandel/julia/magnet: required
+    Vec2 julia_parameter{0.0};
+    int fractal_exponent = 2;
+    int magnet_type = 1;
+    int exterior_type = 1;
+    double exterior_factor = 1.0;
+    int interior_type = 0;
+    double interior_factor = 1.0;
+    double quilted_control0 = 1.0;
+    double quilted_control1 = 1.0;
+    int spiral_arms = 1;
+    int tiling_type = 1;
+    int pavement_sides = 3, pavement_tiles = 1, pavement_number = 1, pavement_exterior = 0, pavement_interior = 0,
+        pavement_form = 0;
+    // slope { direction [, lo_slope, hi_slope] [altitude <a> [, lo, hi]] }
+    Vec3 slope_altitude{0.0};
+    Vec2 slope_range{0.0, 1.0};
+    Vec2 altitude_range{0.0, 1.0};
+    bool slope_has_altitude = false;
+    std::shared_ptr<const Object> object;    // object pattern
+    std::shared_ptr<const Pigment> pigment;  // pigment_pattern
+    std::string file;                        // density_file df3
+    int file_interpolate = 0;
+    SourceLocation location;
+    // Appended for the pattern evaluator (POV's defaults):
+    int number_of_waves = 10;     // global_settings number_of_waves (ripples, waves)
+    bool magnet_julia = false;    // magnet N julia <c>, I (true) or magnet N mandel I
+    bool slope_point_at = false;  // slope { point_at <p> ... }: vector is the point
+    double facets_metric = 2.0;   // facets metric
+};
+using PatternRef = std::shared_ptr<const Pattern>;
+
+// POV's color_map: colours at increasing values, blended linearly between
+// (filter and transmit too); below the first and above the last the end
+// colours hold.
+struct ColorMapEntry {
+    double value = 0.0;
+    Color color;
+};
+using ColorMap = std::vector<ColorMapEntry>;
+using ColorMapRef = std::shared_ptr<const ColorMap>;
+
+using PigmentRef = std::shared_ptr<const Pigment>;
+struct PigmentMapEntry {
+    double value = 0.0;
+    PigmentRef pigment;
+};
+
+struct Pigment {
+    // Solid: one colour. Image: image_map. Patterned: a pattern through a colour map, a pigment map, or (block
+    // patterns: checker, hexagon, brick, square, triangular, cubic) a list of
+    // colours or pigments. Average: the mean of pigment_map's pigments,
+    // weighted by their values.
+    enum class Kind { Solid, Image, Patterned, Average };
+    Kind kind = Kind::Solid;
+    Color color;     // Solid; POV default pigment is black
+    ImageMap image;  // Image
+    // Patterned: exactly one of color_map, pigment_map, block_pigments
+    // holds the pattern's values (the parser fills POV's default map when
+    // the scene gives none).
+    Pattern pattern;
+    ColorMapRef color_map;
+    std::vector<PigmentMapEntry> pigment_map;  // also Average's list
+    std::vector<PigmentRef> block_pigments;    // block patterns' list, in order
+    // Image: the pigment-space transform (scale/rotate/translate written
+    // inside the pigment or texture); maps object space to pattern space.
+    // Patterned pigments keep theirs in pattern.pattern_from_object.
+    Mat4 pattern_from_object{1.0};
+    SourceLocation location;
+};
+
+// POV's `checker A, B`, as the parser builds it.
+inline Pigment checker_pigment(const Vec3& first, const Vec3& second) {
+    Pigment pigment;
+    pigment.kind = Pigment::Kind::Patterned;
+    pigment.pattern.kind = Pattern::Kind::Checker;
+    for (const Vec3& rgb : {first, second}) {
+        auto block = std::make_shared<Pigment>();
+        block->color.rgb = rgb;
+        pigment.block_pigments.push_back(block);
+    }
+    return pigment;
+}
+
+// POV's normal { }: perturbs the shading normal. A pattern that POV gives
+// a normal of its own (bumps, dents, ripples, waves, wrinkles, quilted,
+// facets) perturbs by it; any other pattern by the slope of its value
+// (through slope_map when given) over `accuracy`. normal_map blends the
+// perturbed normals of several normals by the pattern's value;
+// block patterns pick one of block_normals.
+struct Normal;
+using NormalRef = std::shared_ptr<const Normal>;
+struct NormalMapEntry {
+    double value = 0.0;
+    NormalRef normal;
+};
+struct SlopeMapEntry {
+    double value = 0.0;
+    double height = 0.0;
+    double slope = 0.0;
+};
+struct Normal {
+    enum class Kind { Patterned, BumpMap, Average };
+    Kind kind = Kind::Patterned;
+    Pattern pattern;
+    double bump_size = 0.5;  // POV's amount
+    double accuracy = 0.02;
+    std::vector<SlopeMapEntry> slope_map;
+    std::vector<NormalMapEntry> normal_map;  // also Average's list
+    std::vector<NormalRef> block_normals;
+    ImageMap bump_map;  // BumpMap
+    bool bump_map_use_color = false;
     SourceLocation location;
 };
 
@@ -111,6 +335,7 @@ struct Interior {
 // POV keeps separately but every integrator needs at the same hit).
 struct Material {
     Pigment pigment;
+    NormalRef normal;  // null: the surface's own normal
     Finish finish;
     Interior interior;
     std::string name;  // the #declare'd name, if any, for summaries and errors
@@ -499,6 +724,8 @@ struct GlobalSettings {
     int max_trace_level = 5;
     Vec3 ambient_light{1.0};
     double adc_bailout = 1.0 / 255.0;
+    int noise_generator = 2;   // POV's default for patterns that do not choose
+    int number_of_waves = 10;  // ripples and waves: how many wave sources
 };
 
 // One integrator parameter as written in the scene, kept typed and located

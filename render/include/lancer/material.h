@@ -39,8 +39,20 @@ struct SurfaceSample {
     float transmit = 0.0f;  // pigment's transmit at the hit
 };
 
+// POV-Ray's normal { }: bends the shading normal at a hit by a pattern.
+// The scene applies it when a ray finds the surface, so every integrator
+// shades the same bumps; the geometric normal is left as it was.
+class NormalPerturbation {
+  public:
+    virtual ~NormalPerturbation() = default;
+    // The perturbed unit shading normal at the hit (world space, on the
+    // side of `shading_normal`).
+    virtual Vec3 perturb(const Hit& hit, const Vec3& shading_normal) const = 0;
+};
+
 struct MaterialParameters {
-    const Texture* pigment = nullptr;  // never null after compilation
+    const Texture* pigment = nullptr;            // never null after compilation
+    const NormalPerturbation* normal = nullptr;  // null: the surface's own normal
     Color ambient{0.1f};
     Color emission{0.0f};
     float diffuse = 0.6f;
@@ -129,6 +141,7 @@ class Material {
     // fresnel, Fresnel of ior scaled between min and max). Zero: no mirror.
     Color mirror_reflectance(const SurfaceSample& surface, float cos_i, bool entering) const;
     bool has_mirror() const;
+    const NormalPerturbation* normal_perturbation() const { return m_params.normal; }
     // sample_surface() is the same at every hit.
     bool pigment_is_constant() const { return m_pigment_is_constant; }
     bool has_glossy() const { return m_params.phong > 0.0f || m_params.specular > 0.0f; }

@@ -25,6 +25,13 @@ void fill_embree_ray(const Ray& ray, RTCRay& out) {
     out.flags = 0;
 }
 
+// POV's normal { }: every integrator sees the bent normal, kept on the
+// side the surface's own shading normal was on.
+inline void perturb_normal(Hit& hit) {
+    if (const NormalPerturbation* normal = hit.material ? hit.material->normal_perturbation() : nullptr)
+        hit.shading_normal = normal->perturb(hit, hit.shading_normal);
+}
+
 }  // namespace
 
 bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
@@ -39,7 +46,9 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
     rtcIntersect1(m_scene, &context, &rayhit);
     const EmbreeHit found{rayhit.ray.tnear,     rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
                           rayhit.hit.instID[0], rayhit.hit.u,    rayhit.hit.v};
-    return complete_hit(ray, found, hit);
+    if (!complete_hit(ray, found, hit)) return false;
+    if (m_data->has_normal_perturbation) perturb_normal(hit);
+    return true;
 }
 
 void EmbreeScene::trace_packet(const Ray* rays, int lanes, PacketAnswers& answers) const {
@@ -136,6 +145,9 @@ void EmbreeScene::intersect_batch(const Ray* rays, int count, Hit* hits, bool* f
             complete_packet(rays + ready * kPacketLanes, answers[ready % kDepth], lanes_of(ready),
                             hits + ready * kPacketLanes, found + ready * kPacketLanes);
     }
+    if (m_data->has_normal_perturbation)
+        for (int i = 0; i < count; ++i)
+            if (found[i]) perturb_normal(hits[i]);
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {

@@ -74,6 +74,8 @@ struct SceneData {
     TextureSpaces texture_spaces;  // by object id
     std::unique_ptr<TextureFactory> texture_factory;
     std::vector<std::unique_ptr<Texture>> textures;
+    std::vector<std::unique_ptr<NormalPerturbation>> normals;  // a scene without normal { } pays nothing
+    bool has_normal_perturbation = false;
     std::vector<std::unique_ptr<Material>> materials;
     std::vector<std::unique_ptr<Light>> owned_lights;
     std::vector<const Light*> lights;

@@ -18,9 +18,10 @@
 namespace lancer {
 namespace {
 
-MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment) {
+MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment, const NormalPerturbation* normal) {
     MaterialParameters p;
     p.pigment = pigment;
+    p.normal = normal;
     p.ambient = Color(m.finish.ambient);
     p.emission = Color(m.finish.emission);
     p.diffuse = float(m.finish.diffuse);
@@ -67,6 +68,7 @@ class Builder {
   public:
     explicit Builder(sg::SceneGraph& graph) : m_graph(graph), m_data(std::make_unique<SceneData>()) {
         m_data->texture_factory = std::make_unique<TextureFactory>(m_data->texture_spaces);
+        m_data->texture_factory->set_noise_generator(m_graph.global.noise_generator);
     }
 
     std::unique_ptr<SceneData> run() {
@@ -121,7 +123,14 @@ class Builder {
 
     const Material* make_material(const sg::Material& source) {
         m_data->textures.push_back(m_data->texture_factory->make(source.pigment));
-        m_data->materials.push_back(std::make_unique<Material>(to_parameters(source, m_data->textures.back().get())));
+        const NormalPerturbation* normal = nullptr;
+        if (source.normal) {
+            m_data->normals.push_back(m_data->texture_factory->make_normal(*source.normal));
+            normal = m_data->normals.back().get();
+            m_data->has_normal_perturbation = true;
+        }
+        m_data->materials.push_back(
+            std::make_unique<Material>(to_parameters(source, m_data->textures.back().get(), normal)));
         return m_data->materials.back().get();
     }
 

@@ -1,4 +1,6 @@
-// POV-Ray's checker pattern.
+// POV-Ray's checker pattern between two colours, with no warp or
+// turbulence: the commonest pattern, one floor per axis (the general
+// checker is the pattern family's).
 #include <cmath>
 
 #include "materials/pattern_space.h"
@@ -11,11 +13,9 @@ namespace {
 // one side.
 class CheckerTexture final : public Texture {
   public:
-    CheckerTexture(const sg::Pigment& pigment, const TextureSpaces& spaces)
-        : m_first(to_sample(pigment.checker[0])),
-          m_second(to_sample(pigment.checker[1])),
-          m_pattern_from_object(pigment.pattern_from_object),
-          m_spaces(spaces) {}
+    CheckerTexture(const TextureSample& first, const TextureSample& second, const glm::dmat4& pattern_from_object,
+                   const TextureSpaces& spaces)
+        : m_first(first), m_second(second), m_pattern_from_object(pattern_from_object), m_spaces(spaces) {}
 
     TextureSample evaluate(const Hit& hit) const override {
         constexpr double kTolerance = 1e-6;  // POV: Small_Tolerance, relative to a unit cell
@@ -37,8 +37,9 @@ class CheckerTexture final : public Texture {
 
 }  // namespace
 
-std::unique_ptr<Texture> make_checker_texture(const sg::Pigment& pigment, const TextureSpaces& spaces) {
-    return std::make_unique<CheckerTexture>(pigment, spaces);
+std::unique_ptr<Texture> make_checker_texture(const TextureSample& first, const TextureSample& second,
+                                              const glm::dmat4& pattern_from_object, const TextureSpaces& spaces) {
+    return std::make_unique<CheckerTexture>(first, second, pattern_from_object, spaces);
 }
 
 }  // namespace lancer

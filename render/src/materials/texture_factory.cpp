@@ -1,4 +1,7 @@
 // Pigments from the scene graph, one pattern family per file.
+#include <stdexcept>
+
+#include "lancer/scene_error.h"
 #include "materials/pattern_space.h"
 
 namespace lancer {
@@ -6,13 +9,43 @@ namespace lancer {
 TextureFactory::TextureFactory(const TextureSpaces& spaces) : m_spaces(spaces) {}
 TextureFactory::~TextureFactory() = default;
 
+namespace {
+
+// A checker of two colours needs no pattern machinery.
+bool is_plain_checker(const sg::Pigment& pigment) {
+    const sg::Pattern& p = pigment.pattern;
+    if (pigment.kind != sg::Pigment::Kind::Patterned || p.kind != sg::Pattern::Kind::Checker) return false;
+    if (!p.warps.empty() || p.turbulence != sg::Vec3(0.0) || pigment.block_pigments.size() != 2) return false;
+    for (const auto& block : pigment.block_pigments)
+        if (block->kind != sg::Pigment::Kind::Solid) return false;
+    return true;
+}
+
+}  // namespace
+
 std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
     switch (pigment.kind) {
-    case sg::Pigment::Kind::Checker: return make_checker_texture(pigment, m_spaces);
     case sg::Pigment::Kind::Image: return make_image_texture(pigment, m_spaces, m_images);
+    case sg::Pigment::Kind::Patterned:
+    case sg::Pigment::Kind::Average:
+        if (is_plain_checker(pigment))
+            return make_checker_texture(to_sample(pigment.block_pigments[0]->color),
+                                        to_sample(pigment.block_pigments[1]->color),
+                                        pigment.pattern.pattern_from_object, m_spaces);
+        try {
+            return make_pattern_texture(pigment, m_spaces, m_noise_generator);
+        } catch (const SceneError&) {
+            throw;
+        } catch (const std::runtime_error& unsupported) {
+            throw SceneError(pigment.location, std::string("pigment: ") + unsupported.what());
+        }
     case sg::Pigment::Kind::Solid:
     default: return make_solid_texture(to_sample(pigment.color));
     }
+}
+
+std::unique_ptr<NormalPerturbation> TextureFactory::make_normal(const sg::Normal& normal) {
+    return make_surface_normal(normal, m_spaces, m_noise_generator);
 }
 
 std::unique_ptr<Texture> TextureFactory::make_solid(const Color& rgb, float filter, float transmit) {

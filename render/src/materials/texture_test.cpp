@@ -24,9 +24,7 @@ Color pigment_at(const RenderScene& scene, const Ray& ray) {
 
 TEST(Textures, CheckerAlternatesUnitCellsInPatternSpace) {
     auto m = std::make_shared<sg::Material>();
-    m->pigment.kind = sg::Pigment::Kind::Checker;
-    m->pigment.checker[0].rgb = {1, 1, 1};
-    m->pigment.checker[1].rgb = {0, 1, 0};
+    m->pigment = sg::checker_pigment({1, 1, 1}, {0, 1, 0});
     sg::SceneGraph graph;
     graph.objects.push_back(plane_object({0, 1, 0}, 0.0, m));
     auto scene = compile_scene(graph);
@@ -38,7 +36,7 @@ TEST(Textures, CheckerAlternatesUnitCellsInPatternSpace) {
 
     // Scaled by 2 in the pigment, and moved with the object by +1 x.
     auto scaled = std::make_shared<sg::Material>(*m);
-    scaled->pigment.pattern_from_object = glm::scale(glm::dmat4(1.0), glm::dvec3(0.5));
+    scaled->pigment.pattern.pattern_from_object = glm::scale(glm::dmat4(1.0), glm::dvec3(0.5));
     sg::Object plane = plane_object({0, 1, 0}, 0.0, scaled);
     plane.parent_from_object = glm::translate(glm::dmat4(1.0), glm::dvec3(1, 0, 0));
     sg::SceneGraph moved;

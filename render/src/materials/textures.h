@@ -6,8 +6,10 @@
 
 #include <glm/glm.hpp>
 
+#include "lancer/material.h"
 #include "lancer/scene_graph.h"
 #include "lancer/texture.h"
+#include "materials/noise.h"
 
 namespace lancer {
 
@@ -27,9 +29,13 @@ class TextureFactory {
     TextureFactory(const TextureFactory&) = delete;
     TextureFactory& operator=(const TextureFactory&) = delete;
 
+    // global_settings' noise_generator, for patterns that do not choose.
+    void set_noise_generator(int generator) { m_noise_generator = NoiseGenerator(generator); }
+
     // Throws lancer::SceneError at the image_map's location when the image
-    // cannot be read.
+    // cannot be read, and at a pattern's when lancer cannot evaluate it.
     std::unique_ptr<Texture> make(const sg::Pigment& pigment);
+    std::unique_ptr<NormalPerturbation> make_normal(const sg::Normal& normal);
     // A constant colour (default black pigment, light materials).
     static std::unique_ptr<Texture> make_solid(const Color& rgb, float filter = 0.0f, float transmit = 0.0f);
 
@@ -38,13 +44,19 @@ class TextureFactory {
   private:
     const TextureSpaces& m_spaces;
     std::shared_ptr<ImageTextureSystem> m_images;
+    NoiseGenerator m_noise_generator = NoiseGenerator::RangeCorrected;
 };
 
 // One constructor per pattern family, each in a file of its own; the
 // factory picks one by the pigment's kind. A new pattern adds a file and a
 // line here and in TextureFactory::make.
 std::unique_ptr<Texture> make_solid_texture(const TextureSample& value);
-std::unique_ptr<Texture> make_checker_texture(const sg::Pigment& pigment, const TextureSpaces& spaces);
+std::unique_ptr<Texture> make_checker_texture(const TextureSample& first, const TextureSample& second,
+                                              const glm::dmat4& pattern_from_object, const TextureSpaces& spaces);
+std::unique_ptr<Texture> make_pattern_texture(const sg::Pigment& pigment, const TextureSpaces& spaces,
+                                              NoiseGenerator generator);
+std::unique_ptr<NormalPerturbation> make_surface_normal(const sg::Normal& normal, const TextureSpaces& spaces,
+                                                        NoiseGenerator generator);
 // Creates the shared TextureSystem on first use.
 std::unique_ptr<Texture> make_image_texture(const sg::Pigment& pigment, const TextureSpaces& spaces,
                                             std::shared_ptr<ImageTextureSystem>& images);

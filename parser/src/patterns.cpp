@@ -1,0 +1,635 @@
+// Patterns, warps, colour and pigment maps, block patterns, normals: the
+// scene graph's sg::Pattern, sg::Pigment and sg::Normal as POV-Ray 3.7
+// reads them (its defaults, including each pattern's default colour map,
+// measured from Debian's povray: docs/patterns.md).
+#include <algorithm>
+#include <cmath>
+
+#include "evaluator.h"
+
+namespace lancer::parse {
+
+namespace {
+
+using PatternKind = sg::Pattern::Kind;
+
+sg::Color rgb(double r, double g, double b) {
+    return sg::Color{sg::Vec3(r, g, b)};
+}
+
+std::shared_ptr<const sg::ColorMap> make_map(std::initializer_list<std::pair<double, sg::Color>> entries) {
+    auto map = std::make_shared<sg::ColorMap>();
+    for (const auto& [value, colour] : entries) map->push_back({value, colour});
+    return map;
+}
+
+// The colour map POV gives a pattern written without one (measured from
+// povray 3.7: `function { pigment { P } }` against `function { pattern { P } }`).
+sg::ColorMapRef default_color_map(PatternKind kind) {
+    static const auto grey = make_map({{0.0, rgb(0, 0, 0)}, {1.0, rgb(1, 1, 1)}});
+    static const auto bozo = make_map({{0.4, rgb(1, 1, 1)},
+                                       {0.4, rgb(0, 1, 0)},
+                                       {0.6, rgb(0, 1, 0)},
+                                       {0.6, rgb(0, 0, 1)},
+                                       {0.8, rgb(0, 0, 1)},
+                                       {0.8, rgb(1, 0, 0)}});
+    static const auto wood = make_map({{0.6, rgb(0.666, 0.312, 0.2)}, {0.6, rgb(0.4, 0.1333, 0.066)}});
+    static const auto marble = make_map({{0.0, rgb(0.9, 0.8, 0.8)}, {0.9, rgb(0.9, 0.08, 0.08)}, {0.9, rgb(0, 0, 0)}});
+    static const auto radial =
+        make_map({{0.0, rgb(0, 1, 1)}, {0.333, rgb(1, 1, 0)}, {0.666, rgb(1, 0, 1)}, {1.0, rgb(0, 1, 1)}});
+    static const auto agate = make_map({{0.0, rgb(1, 1, 1)},
+                                        {0.5, rgb(0.95, 0.75, 0.5)},
+                                        {0.5, rgb(0.9, 0.7, 0.5)},
+                                        {0.6, rgb(0.9, 0.7, 0.4)},
+                                        {0.6, rgb(1.0, 0.7, 0.4)},
+                                        {1.0, rgb(0.6, 0.3, 0.0)}});
+    switch (kind) {
+    case PatternKind::Bozo: return bozo;
+    case PatternKind::Wood: return wood;
+    case PatternKind::Marble: return marble;
+    case PatternKind::Radial: return radial;
+    case PatternKind::Agate: return agate;
+    default: return grey;
+    }
+}
+
+// Block patterns' default colours and how many entries each takes.
+std::vector<sg::Color> default_block_colours(PatternKind kind) {
+    switch (kind) {
+    case PatternKind::Checker: return {rgb(0, 0, 1), rgb(0, 1, 0)};
+    case PatternKind::Hexagon: return {rgb(0, 0, 1), rgb(0, 1, 0), rgb(1, 0, 0)};
+    case PatternKind::Brick: return {rgb(0.5, 0.5, 0.5), rgb(0.6, 0.15, 0.15)};
+    case PatternKind::Square: return {rgb(1, 0, 0), rgb(0, 1, 0), rgb(0, 0, 1), rgb(1, 1, 0)};
+    case PatternKind::Triangular:
+    case PatternKind::Cubic:
+        return {rgb(1, 0, 0), rgb(0, 1, 0), rgb(0, 0, 1), rgb(1, 1, 0), rgb(0, 1, 1), rgb(1, 0, 1)};
+    default: return {};
+    }
+}
+
+bool is_block_pattern(PatternKind kind) {
+    return !default_block_colours(kind).empty();
+}
+
+const char* block_pattern_name(PatternKind kind) {
+    switch (kind) {
+    case PatternKind::Checker: return "checker";
+    case PatternKind::Hexagon: return "hexagon";
+    case PatternKind::Brick: return "brick";
+    case PatternKind::Square: return "square";
+    case PatternKind::Triangular: return "triangular";
+    default: return "cubic";
+    }
+}
+
+std::shared_ptr<sg::Pigment> solid_pigment(const sg::Color& colour) {
+    auto pigment = std::make_shared<sg::Pigment>();
+    pigment->color = colour;
+    return pigment;
+}
+
+// A transform or a move applied to everything a pattern already holds:
+// the point meets it first.
+void move_pattern(sg::Pattern& pattern, const sg::Mat4& inner_from_outer) {
+    pattern.pattern_from_object = pattern.pattern_from_object * inner_from_outer;
+}
+
+// POV evaluates a map's pigments and normals at their parent's pattern
+// point (after the parent's transforms and warps): a transform written on
+// the parent moves only the parent's own pattern.
+void move_pigment(sg::Pigment& pigment, const sg::Mat4& inner_from_outer) {
+    pigment.pattern_from_object = pigment.pattern_from_object * inner_from_outer;
+    move_pattern(pigment.pattern, inner_from_outer);
+}
+
+void move_normal(sg::Normal& normal, const sg::Mat4& inner_from_outer) {
+    move_pattern(normal.pattern, inner_from_outer);
+}
+
+sg::NormalRef moved_normal(const sg::NormalRef& normal, const sg::Mat4& inner_from_outer) {
+    if (!normal) return normal;
+    auto moved = std::make_shared<sg::Normal>(*normal);
+    move_normal(*moved, inner_from_outer);
+    return moved;
+}
+
+// A warp goes after the transforms written before it: those become a step
+// of their own, so a later transform acts on the warped pattern.
+void add_warp(sg::Pattern& pattern, const sg::Warp& warp) {
+    if (pattern.pattern_from_object != sg::Mat4(1.0)) {
+        sg::Warp step;
+        step.kind = sg::Warp::Kind::Transform;
+        step.inner_from_outer = pattern.pattern_from_object;
+        pattern.warps.push_back(step);
+        pattern.pattern_from_object = sg::Mat4(1.0);
+    }
+    pattern.warps.push_back(warp);
+}
+
+}  // namespace
+
+void transform_pattern(sg::Pigment& pigment, const sg::Mat4& world_from_local) {
+    move_pigment(pigment, glm::inverse(world_from_local));
+}
+
+void transform_normal(sg::Normal& normal, const sg::Mat4& world_from_local) {
+    move_normal(normal, glm::inverse(world_from_local));
+}
+
+void transform_material(sg::Material& material, const sg::Mat4& world_from_local) {
+    move_patterns(material, glm::inverse(world_from_local));
+}
+
+void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer) {
+    move_pigment(material.pigment, inner_from_outer);
+    material.normal = moved_normal(material.normal, inner_from_outer);
+}
+
+// ------------------------------------------------------------- patterns
+
+namespace {
+// POV gives marble, wood and the spirals a triangle wave unless another is
+// written.
+sg::WaveType default_wave(PatternKind kind) {
+    switch (kind) {
+    case PatternKind::Marble:
+    case PatternKind::Wood:
+    case PatternKind::Spiral1:
+    case PatternKind::Spiral2: return sg::WaveType::Triangle;
+    default: return sg::WaveType::Ramp;
+    }
+}
+}  // namespace
+
+Evaluator::PatternEdit Evaluator::pattern_kind(sg::Pattern::Kind kind) {
+    return [kind](sg::Pattern& p) {
+        p.kind = kind;
+        p.wave = default_wave(kind);
+    };
+}
+
+Evaluator::PatternEdit Evaluator::gradient_pattern(const Value& v, const SourceRange& where) {
+    const sg::Vec3 direction = to_vec3(v, where);
+    if (direction == sg::Vec3(0.0)) warning(where.begin, "gradient along a zero vector: the pattern is 0 everywhere");
+    return [direction](sg::Pattern& p) {
+        p.kind = PatternKind::Gradient;
+        p.vector = direction;
+    };
+}
+
+Evaluator::PatternEdit Evaluator::spiral_pattern(sg::Pattern::Kind kind, const Value& arms, const SourceRange& where) {
+    const int count = to_int(arms, where);
+    return [kind, count](sg::Pattern& p) {
+        p.kind = kind;
+        p.wave = default_wave(kind);
+        p.spiral_arms = count;
+    };
+}
+
+Evaluator::PatternEdit Evaluator::tiling_pattern(const Value& v, const SourceRange& where) {
+    int type = to_int(v, where);
+    if (type < 1 || type > 27) {
+        error(where.begin, "tiling type must be 1 to 27, got " + std::to_string(type));
+        type = 1;
+    }
+    return [type](sg::Pattern& p) {
+        p.kind = PatternKind::Tiling;
+        p.tiling_type = type;
+    };
+}
+
+Evaluator::PatternEdit Evaluator::slope_pattern(const Value& v, const SourceRange& where) {
+    sg::Vec3 direction = to_vec3(v, where);
+    if (glm::length(direction) == 0.0) {
+        error(where.begin, "slope needs a non-zero direction");
+        direction = sg::Vec3(0, 1, 0);
+    }
+    return [direction](sg::Pattern& p) {
+        p.kind = PatternKind::Slope;
+        p.vector = direction;
+    };
+}
+
+Evaluator::PatternEdit Evaluator::fractal_pattern(sg::Pattern::Kind kind, const Value& iterations,
+                                                  const SourceRange& where, const Value* julia_parameter,
+                                                  const SourceRange& wj) {
+    int count = to_int(iterations, where);
+    if (count < 1) {
+        error(where.begin, "a fractal pattern needs at least 1 iteration, got " + std::to_string(count));
+        count = 1;
+    }
+    sg::Vec2 parameter(0.0);
+    if (julia_parameter) {
+        const sg::Vec3 c = to_vec3(*julia_parameter, wj);
+        parameter = sg::Vec2(c.x, c.y);
+    }
+    return [kind, count, parameter](sg::Pattern& p) {
+        p.kind = kind;
+        p.fractal_iterations = count;
+        p.julia_parameter = parameter;
+    };
+}
+
+Evaluator::PatternEdit Evaluator::magnet_pattern(const Value& type, const SourceRange& where, PatternEdit fractal) {
+    int magnet = to_int(type, where);
+    if (magnet != 1 && magnet != 2) {
+        error(where.begin, "magnet type must be 1 or 2, got " + std::to_string(magnet));
+        magnet = 1;
+    }
+    return [magnet, fractal](sg::Pattern& p) {
+        fractal(p);
+        p.magnet_julia = p.kind == PatternKind::Julia;
+        p.kind = PatternKind::Magnet;
+        p.magnet_type = magnet;
+    };
+}
+
+Evaluator::PatternEdit Evaluator::pattern_scalar(const std::string& name, const Value& v, const SourceRange& where) {
+    const double value = to_float(v, where, "a float " + name);
+    if (!std::isfinite(value)) {
+        error(where.begin, name + " must be finite");
+        return [](sg::Pattern&) {};
+    }
+    if (name == "octaves") {
+        int octaves = static_cast<int>(value);
+        if (octaves < 1 || octaves > 10) {
+            warning(where.begin,
+                    "octaves is limited to 1..10 (as in POV-Ray); using " + std::to_string(std::clamp(octaves, 1, 10)));
+            octaves = std::clamp(octaves, 1, 10);
+        }
+        return [octaves](sg::Pattern& p) { p.octaves = octaves; };
+    }
+    if (name == "omega") return [value](sg::Pattern& p) { p.omega = value; };
+    if (name == "lambda") return [value](sg::Pattern& p) { p.lambda = value; };
+    if (name == "frequency") return [value](sg::Pattern& p) { p.frequency = value; };
+    if (name == "phase") return [value](sg::Pattern& p) { p.phase = value; };
+    if (name == "poly_wave")
+        return [value](sg::Pattern& p) {
+            p.wave = sg::WaveType::Poly;
+            p.wave_exponent = value;
+        };
+    if (name == "noise_generator") {
+        const int generator = noise_generator(v, where);
+        return [generator](sg::Pattern& p) { p.noise_generator = generator; };
+    }
+    if (name == "agate_turb") return [value](sg::Pattern& p) { p.agate_turbulence = value; };
+    if (name == "mortar") return [value](sg::Pattern& p) { p.mortar = value; };
+    if (name == "metric") {
+        if (value <= 0.0) error(where.begin, "crackle metric must be positive");
+        return [value](sg::Pattern& p) { p.crackle_metric = value; };
+    }
+    if (name == "offset") return [value](sg::Pattern& p) { p.crackle_offset = value; };
+    if (name == "coords") return [value](sg::Pattern& p) { p.facets_coords = value; };
+    if (name == "size") return [value](sg::Pattern& p) { p.facets_size = value; };
+    if (name == "exponent") {
+        const int exponent = static_cast<int>(value);
+        if (exponent < 2 || exponent > 33) error(where.begin, "fractal exponent must be 2 to 33");
+        return [exponent](sg::Pattern& p) { p.fractal_exponent = std::clamp(exponent, 2, 33); };
+    }
+    if (name == "control0") return [value](sg::Pattern& p) { p.quilted_control0 = value; };
+    if (name == "control1") return [value](sg::Pattern& p) { p.quilted_control1 = value; };
+    if (name == "number_of_sides") return [value](sg::Pattern& p) { p.pavement_sides = static_cast<int>(value); };
+    if (name == "number_of_tiles") return [value](sg::Pattern& p) { p.pavement_tiles = static_cast<int>(value); };
+    error(where.begin, "unknown pattern setting " + name);
+    return [](sg::Pattern&) {};
+}
+
+Evaluator::PatternEdit Evaluator::pattern_vector(const std::string& name, const Value& v, const SourceRange& where) {
+    const sg::Vec3 value = to_vec3(v, where);
+    if (name == "turbulence") return [value](sg::Pattern& p) { p.turbulence = value; };
+    if (name == "brick_size") return [value](sg::Pattern& p) { p.brick_size = value; };
+    if (name == "form") return [value](sg::Pattern& p) { p.crackle_form = value; };
+    if (name == "altitude")
+        return [value](sg::Pattern& p) {
+            p.slope_altitude = value;
+            p.slope_has_altitude = true;
+        };
+    error(where.begin, "unknown pattern setting " + name);
+    return [](sg::Pattern&) {};
+}
+
+Evaluator::PatternEdit Evaluator::pattern_pair(const std::string& name, const Value& a, const SourceRange& wa,
+                                               const Value& b, const SourceRange& wb) {
+    const int type = to_int(a, wa);
+    const double factor = to_float(b, wb, "a float factor");
+    if (type < 0 || type > 8) error(wa.begin, name + " type must be 0 to 8, got " + std::to_string(type));
+    if (name == "exterior")
+        return [type, factor](sg::Pattern& p) {
+            p.exterior_type = type;
+            p.exterior_factor = factor;
+        };
+    return [type, factor](sg::Pattern& p) {
+        p.interior_type = type;
+        p.interior_factor = factor;
+    };
+}
+
+int Evaluator::noise_generator(const Value& v, const SourceRange& where) {
+    const int generator = to_int(v, where);
+    // 0 is POV's "the global setting" in a pattern (and generator 1 in
+    // global_settings, which the caller decides).
+    if (generator < 0 || generator > 3) {
+        error(where.begin, "noise_generator must be 0, 1, 2 or 3, got " + std::to_string(generator));
+        return 2;
+    }
+    return generator;
+}
+
+// -------------------------------------------------------------------- warps
+
+Evaluator::PatternEdit Evaluator::warp_edit(const Edits<sg::Warp>& items, const sg::SourceLocation& at) {
+    sg::Warp warp;
+    for (const auto& item : items) item(warp);
+    warp.location = at;
+    if (warp.kind == sg::Warp::Kind::Transform) {
+        error(at, "warp { } needs a kind: turbulence, repeat, black_hole, cylindrical, spherical, toroidal or planar");
+        return [](sg::Pattern&) {};
+    }
+    if (warp.kind == sg::Warp::Kind::Repeat) {
+        int axes = 0;
+        for (int i = 0; i < 3; ++i) axes += warp.repeat[i] != 0.0;
+        if (axes != 1) {
+            error(at, "warp { repeat } takes a vector along one axis (as POV-Ray)");
+            return [](sg::Pattern&) {};
+        }
+    }
+    return [warp](sg::Pattern& p) { add_warp(p, warp); };
+}
+
+namespace {
+// The first kind-giving word of a warp block decides its kind; later words
+// (black_hole's turbulence, its repeat) are its settings.
+void give_kind(sg::Warp& w, sg::Warp::Kind kind) {
+    if (w.kind == sg::Warp::Kind::Transform) w.kind = kind;
+}
+}  // namespace
+
+std::function<void(sg::Warp&)> Evaluator::warp_scalar(const std::string& name, const Value& v,
+                                                      const SourceRange& where) {
+    const double value = to_float(v, where, "a float " + name);
+    if (name == "octaves") {
+        const int octaves = std::clamp(static_cast<int>(value), 1, 10);
+        return [octaves](sg::Warp& w) { w.octaves = octaves; };
+    }
+    if (name == "omega") return [value](sg::Warp& w) { w.omega = value; };
+    if (name == "lambda") return [value](sg::Warp& w) { w.lambda = value; };
+    if (name == "falloff") return [value](sg::Warp& w) { w.falloff = value; };
+    if (name == "strength") return [value](sg::Warp& w) { w.strength = value; };
+    if (name == "dist_exp") return [value](sg::Warp& w) { w.dist_exp = value; };
+    return [value](sg::Warp& w) { w.major_radius = value; };
+}
+
+std::function<void(sg::Warp&)> Evaluator::warp_vector(const std::string& name, const Value& v,
+                                                      const SourceRange& where) {
+    const sg::Vec3 value = to_vec3(v, where);
+    if (name == "turbulence")
+        return [value](sg::Warp& w) {
+            give_kind(w, sg::Warp::Kind::Turbulence);
+            w.turbulence = value;
+        };
+    if (name == "repeat")
+        return [value](sg::Warp& w) {
+            give_kind(w, sg::Warp::Kind::Repeat);
+            w.repeat = value;
+        };
+    if (name == "offset") return [value](sg::Warp& w) { w.offset = value; };
+    if (name == "flip") return [value](sg::Warp& w) { w.flip = value; };
+    return [value](sg::Warp& w) { w.orientation = value; };
+}
+
+std::function<void(sg::Warp&)> Evaluator::warp_kind(sg::Warp::Kind kind) {
+    return [kind](sg::Warp& w) { give_kind(w, kind); };
+}
+
+std::function<void(sg::Warp&)> Evaluator::black_hole(const Value& center, const SourceRange& wc, const Value& radius,
+                                                     const SourceRange& wr) {
+    const sg::Vec3 c = to_vec3(center, wc);
+    const double r = to_float(radius, wr, "a float radius");
+    if (!(r > 0.0)) error(wr.begin, "black_hole radius must be positive");
+    return [c, r](sg::Warp& w) {
+        give_kind(w, sg::Warp::Kind::BlackHole);
+        w.center = c;
+        w.radius = r;
+    };
+}
+
+std::function<void(sg::Warp&)> Evaluator::planar_warp(const Value& normal, const SourceRange& wn, const Value& distance,
+                                                      const SourceRange& wd) {
+    const sg::Vec3 n = to_vec3(normal, wn);
+    const double d = to_float(distance, wd, "a float distance");
+    return [n, d](sg::Warp& w) {
+        give_kind(w, sg::Warp::Kind::Planar);
+        w.normal = n;
+        w.distance = d;
+    };
+}
+
+// ----------------------------------------------------------------- pigments
+
+Evaluator::PigmentEdit Evaluator::patterned_pigment(const PatternEdit& pattern, const sg::SourceLocation& at) {
+    return [pattern, at](sg::Pigment& p) {
+        p.kind = sg::Pigment::Kind::Patterned;
+        p.pattern = sg::Pattern{};
+        pattern(p.pattern);
+        p.pattern.location = at;
+        p.color_map.reset();
+        p.pigment_map.clear();
+        p.block_pigments.clear();
+    };
+}
+
+Evaluator::PigmentEdit Evaluator::block_pigment(const PatternEdit& pattern, const std::vector<Value>& colours,
+                                                const SourceRange& where, const sg::SourceLocation& at) {
+    std::vector<sg::PigmentRef> pigments;
+    for (const Value& colour : colours) pigments.push_back(solid_pigment(to_color(colour, where)));
+    PigmentEdit start = patterned_pigment(pattern, at);
+    return [start, pigments](sg::Pigment& p) {
+        start(p);
+        p.block_pigments = pigments;
+    };
+}
+
+Evaluator::PigmentEdit Evaluator::block_pigment(const PatternEdit& pattern,
+                                                const std::vector<std::shared_ptr<sg::Pigment>>& list,
+                                                const sg::SourceLocation& at) {
+    std::vector<sg::PigmentRef> pigments(list.begin(), list.end());
+    PigmentEdit start = patterned_pigment(pattern, at);
+    return [start, pigments](sg::Pigment& p) {
+        start(p);
+        p.block_pigments = pigments;
+    };
+}
+
+Evaluator::PigmentEdit Evaluator::average_pigment(const sg::SourceLocation& at) {
+    return [at](sg::Pigment& p) {
+        p.kind = sg::Pigment::Kind::Average;
+        p.location = at;
+    };
+}
+
+Evaluator::PigmentEdit Evaluator::pigment_pattern_edit(const PatternEdit& edit, const sg::SourceLocation&) {
+    // POV accepts pattern modifiers on any pigment; on one without a
+    // pattern (a plain colour, an image) they change nothing.
+    return [edit](sg::Pigment& p) {
+        if (p.kind == sg::Pigment::Kind::Patterned || p.kind == sg::Pigment::Kind::Average) edit(p.pattern);
+    };
+}
+
+Evaluator::PigmentEdit Evaluator::color_map_edit(const sg::ColorMapRef& map, const sg::SourceLocation& at) {
+    return [this, map, at](sg::Pigment& p) {
+        if (p.kind != sg::Pigment::Kind::Patterned) {
+            warning(at, "color_map on a pigment without a pattern is ignored (write the pattern first)");
+            return;
+        }
+        if (is_block_pattern(p.pattern.kind)) {
+            error(at, std::string("a ") + block_pattern_name(p.pattern.kind) +
+                          " pattern takes a list of colours, not a color_map");
+            return;
+        }
+        p.color_map = map;
+        p.pigment_map.clear();
+    };
+}
+
+Evaluator::PigmentEdit Evaluator::pigment_map_edit(const std::shared_ptr<std::vector<sg::PigmentMapEntry>>& map,
+                                                   const sg::SourceLocation& at) {
+    return [this, map, at](sg::Pigment& p) {
+        if (p.kind != sg::Pigment::Kind::Patterned && p.kind != sg::Pigment::Kind::Average) {
+            warning(at, "pigment_map on a pigment without a pattern is ignored (write the pattern first)");
+            return;
+        }
+        if (p.kind == sg::Pigment::Kind::Patterned && is_block_pattern(p.pattern.kind)) {
+            error(at, std::string("a ") + block_pattern_name(p.pattern.kind) +
+                          " pattern takes a list of pigments, not a pigment_map");
+            return;
+        }
+        if (map->empty()) error(at, "pigment_map needs at least one entry");
+        p.pigment_map = *map;
+        p.color_map.reset();
+    };
+}
+
+sg::ColorMapRef Evaluator::build_color_map(const std::vector<std::pair<Value, std::vector<Value>>>& entries,
+                                           const sg::SourceLocation& at) {
+    auto map = std::make_shared<sg::ColorMap>();
+    SourceRange where{at, at};
+    for (const auto& [value, colours] : entries) {
+        const double first = to_float(value, where, "a map value");
+        if (colours.size() == 1) {
+            map->push_back({first, to_color(colours[0], where)});
+        } else if (colours.size() == 3) {
+            // POV's old form [v1 v2 colour1 colour2]: a ramp between two values.
+            map->push_back({first, to_color(colours[1], where)});
+            map->push_back({to_float(colours[0], where, "a map value"), to_color(colours[2], where)});
+        } else {
+            error(at, "a color_map entry is [value colour] (or POV's old [value1 value2 colour1 colour2])");
+        }
+    }
+    if (map->empty()) error(at, "color_map needs at least one entry");
+    if (map->size() > 256) error(at, "color_map has more than 256 entries (POV-Ray's limit)");
+    for (size_t i = 1; i < map->size(); ++i) {
+        if ((*map)[i].value < (*map)[i - 1].value) {
+            warning(at, "color_map values must not decrease; POV-Ray reads them in the order written");
+            break;
+        }
+    }
+    return map;
+}
+
+std::shared_ptr<sg::Pigment> Evaluator::build_pigment(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at) {
+    auto pigment = std::make_shared<sg::Pigment>();
+    for (const auto& edit : edits) edit(*pigment);
+    pigment->location = at;
+    if (pigment->kind == sg::Pigment::Kind::Patterned) {
+        const PatternKind kind = pigment->pattern.kind;
+        if (is_block_pattern(kind)) {
+            const std::vector<sg::Color> defaults = default_block_colours(kind);
+            if (pigment->block_pigments.size() > defaults.size()) {
+                error(at, std::string(block_pattern_name(kind)) + " takes at most " + std::to_string(defaults.size()) +
+                              " colours or pigments, got " + std::to_string(pigment->block_pigments.size()));
+                pigment->block_pigments.resize(defaults.size());
+            }
+            for (size_t i = pigment->block_pigments.size(); i < defaults.size(); ++i)
+                pigment->block_pigments.push_back(solid_pigment(defaults[i]));
+        } else if (!pigment->color_map && pigment->pigment_map.empty()) {
+            pigment->color_map = default_color_map(kind);
+        }
+    }
+    if (pigment->kind == sg::Pigment::Kind::Average && pigment->pigment_map.empty())
+        error(at, "average needs a pigment_map of the pigments to average");
+    // POV-Ray accepts a negative colour; on a surface it takes light away
+    // from what it reflects, which surprises more often than it is meant.
+    auto negative = [](const sg::Color& c) { return c.rgb.x < 0.0 || c.rgb.y < 0.0 || c.rgb.z < 0.0; };
+    bool any_negative = pigment->kind == sg::Pigment::Kind::Solid && negative(pigment->color);
+    if (pigment->color_map)
+        for (const auto& entry : *pigment->color_map) any_negative = any_negative || negative(entry.color);
+    if (any_negative)
+        warning(at,
+                "the pigment has a negative colour component: the surface will take light away (POV-Ray "
+                "accepts it too)");
+    return pigment;
+}
+
+// ------------------------------------------------------------------ normals
+
+sg::NormalRef Evaluator::build_normal(const Edits<sg::Normal>& edits, const sg::SourceLocation& at) {
+    auto normal = std::make_shared<sg::Normal>();
+    for (const auto& edit : edits) edit(*normal);
+    normal->location = at;
+    if (normal->kind == sg::Normal::Kind::Average && normal->normal_map.empty())
+        error(at, "average needs a normal_map of the normals to average");
+    return normal;
+}
+
+Evaluator::NormalEdit Evaluator::patterned_normal(const PatternEdit& pattern,
+                                                  const std::optional<std::pair<Value, SourceRange>>& amount,
+                                                  const sg::SourceLocation& at) {
+    std::optional<double> size;
+    if (amount) size = to_float(amount->first, amount->second, "a bump size");
+    return [pattern, size, at](sg::Normal& n) {
+        n.kind = sg::Normal::Kind::Patterned;
+        n.pattern = sg::Pattern{};
+        pattern(n.pattern);
+        n.pattern.location = at;
+        if (size) n.bump_size = *size;
+    };
+}
+
+Evaluator::NormalEdit Evaluator::bump_map_normal(const sg::ImageMap& image,
+                                                 const std::optional<std::pair<Value, SourceRange>>& amount,
+                                                 const sg::SourceLocation& at) {
+    sg::ImageMap map = image;
+    finish_image_map(map, at);
+    std::optional<double> size;
+    if (amount) size = to_float(amount->first, amount->second, "a bump size");
+    return [map, size](sg::Normal& n) {
+        n.kind = sg::Normal::Kind::BumpMap;
+        n.bump_map = map;
+        if (size) n.bump_size = *size;
+    };
+}
+
+Evaluator::NormalEdit Evaluator::normal_pattern_edit(const PatternEdit& edit, const sg::SourceLocation&) {
+    return [edit](sg::Normal& n) { edit(n.pattern); };
+}
+
+Evaluator::NormalEdit Evaluator::normal_accuracy(const Value& v, const SourceRange& where) {
+    const double accuracy = to_float(v, where, "a float accuracy");
+    if (!(accuracy > 0.0)) {
+        error(where.begin, "accuracy must be positive");
+        return [](sg::Normal&) {};
+    }
+    return [accuracy](sg::Normal& n) { n.accuracy = accuracy; };
+}
+
+sg::SlopeMapEntry Evaluator::slope_entry(const Value& value, const SourceRange& wv, const Value& slope,
+                                         const SourceRange& ws) {
+    sg::SlopeMapEntry entry;
+    entry.value = to_float(value, wv, "a map value");
+    const sg::Vec3 pair = to_vec3(slope, ws);
+    entry.height = pair.x;
+    entry.slope = pair.y;
+    return entry;
+}
+
+}  // namespace lancer::parse

@@ -1,0 +1,205 @@
+// The pieces CompiledPattern is built from: the settings a pattern keeps
+// after construction, POV-Ray's pattern functions grouped by family (one
+// .cpp each), the warps, and the small helpers they share (internal to the
+// pattern files; everything else uses materials/pattern.h).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lancer/scene_graph.h"
+#include "materials/noise.h"
+
+namespace lancer::pattern_detail {
+
+// POV's EPSILON (1e-10): the nudges its block and cell patterns add so
+// that points exactly on a cell boundary fall on a definite side.
+inline constexpr double kPovEpsilon = 1.0e-10;
+inline constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+// POV's cycloidal(): sin(2 pi v) of v's fraction, the fraction rounded
+// through 50000ths as POV does, so values agree to the last bit.
+inline double cycloidal(double v) {
+    if (v >= 0.0) return std::sin(((v - std::floor(v)) * 50000.0) / 50000.0 * kTwoPi);
+    return -std::sin(((-(v + std::floor(-v))) * 50000.0) / 50000.0 * kTwoPi);
+}
+
+// POV's Triangle_Wave(): 0 -> 1 -> 0 over each unit interval.
+inline double triangle_wave(double v) {
+    const double offset = v >= 0.0 ? v - std::floor(v) : v + 1.0 + std::floor(std::fabs(v));
+    return offset >= 0.5 ? 2.0 * (1.0 - offset) : 2.0 * offset;
+}
+
+// POV's density-style falloff (spherical, cylindrical, boxed, planar):
+// 1 at distance 0 falling to 0 at distance 1, and 0 beyond.
+inline double density_falloff(double distance) {
+    if (distance < 0.0) return 1.0;
+    if (distance > 1.0) return 0.0;
+    return 1.0 - distance;
+}
+
+// POV keeps several pattern parameters in single precision (frequency,
+// phase, omega, lambda, ...); the fields below that are float hold them the
+// same way, so that values agree with POV's to the last bits. (Held as
+// float rather than rounded through double(float(x)): GCC 12.2 at -O2
+// drops such round trips when it vectorises neighbouring ones.)
+
+// Classic turbulence's parameters (`turbulence`, `octaves`, `omega`,
+// `lambda` written in the pattern, or inside warp { turbulence }).
+struct TurbulenceSettings {
+    glm::dvec3 amount{0.0};
+    int octaves = 6;
+    float omega = 0.5f;
+    float lambda = 2.0f;
+    bool present() const { return amount != glm::dvec3(0.0); }
+};
+
+// One warp step, its parameters put the way POV evaluates them.
+struct WarpStep {
+    sg::Warp::Kind kind = sg::Warp::Kind::Transform;
+    glm::dmat4 inner_from_outer{1.0};  // Transform
+    TurbulenceSettings turbulence;     // Turbulence
+    int repeat_axis = -1;              // Repeat: the axis, its cell width, the offset per cell and
+    float repeat_width = 0.0f;         // the sign flips (-1 on the flipped axes, as POV stores them)
+    glm::dvec3 repeat_offset{0.0};
+    glm::dvec3 repeat_flip{1.0};
+    glm::dvec3 center{0.0};  // BlackHole
+    double radius = 1.0;
+    double falloff = 2.0;
+    double strength = 1.0;
+    bool inverse = false;
+    glm::dvec3 hole_repeat{0.0};
+    glm::dvec3 hole_jitter{0.0};
+    bool hole_repeats = false;
+    bool hole_jitters = false;
+    glm::dvec3 orientation{0.0, 0.0, 1.0};  // Cylindrical, Spherical, Toroidal, Planar (unit)
+    double dist_exp = 0.0;
+    double major_radius = 1.0;
+    double plane_offset = 0.0;  // Planar
+};
+
+WarpStep make_warp_step(const sg::Warp& warp);
+// Moves p through one warp step (POV's Warp_EPoint for that step).
+void apply_warp(const WarpStep& step, glm::dvec3& p, NoiseGenerator generator);
+// Classic turbulence applied to the point (the displacement of DTurbulence
+// scaled by the turbulence vector).
+glm::dvec3 turbulence_displacement(const glm::dvec3& p, const TurbulenceSettings& turbulence, NoiseGenerator generator);
+
+// Everything the pattern functions read, fixed at construction.
+struct PatternSetup {
+    sg::Pattern::Kind kind = sg::Pattern::Kind::Gradient;
+    NoiseGenerator generator = NoiseGenerator::RangeCorrected;
+    TurbulenceSettings turbulence;       // classic turbulence (present() when written)
+    glm::dvec3 gradient{1.0, 0.0, 0.0};  // unit
+    float agate_turbulence = 1.0f;
+    glm::dvec3 brick_size{8.0, 3.0, 4.5};
+    float brick_mortar = 0.5f;  // as POV stores it: written minus 2 EPSILON, in single precision
+    glm::dvec3 crackle_form{-1.0, 1.0, 0.0};
+    double crackle_metric = 2.0;
+    double crackle_offset = 0.0;
+    bool crackle_solid = false;
+    double facets_size = 0.1;
+    double facets_coords = 0.0;
+    double facets_metric = 2.0;
+    int fractal_iterations = 0;
+    glm::dvec2 julia_parameter{0.0};
+    int fractal_exponent = 2;
+    int magnet_type = 1;
+    bool magnet_julia = false;
+    std::vector<int> binomial;  // row fractal_exponent of Pascal's triangle (general exponents)
+    int exterior_type = 1;
+    double exterior_factor = 1.0;
+    int interior_type = 0;
+    double interior_factor = 1.0;
+    float quilted_control0 = 1.0f;
+    float quilted_control1 = 1.0f;
+    int spiral_arms = 1;
+    // slope: unit direction (or the point of point_at), the share of slope
+    // and altitude, their ranges as (low, high - low), and the altitude
+    // direction (unit).
+    glm::dvec3 slope_direction{0.0, 1.0, 0.0};
+    bool slope_point_at = false;
+    double slope_share = 1.0;
+    double altitude_share = 0.0;
+    glm::dvec2 slope_range{0.0, 0.0};
+    glm::dvec2 altitude_range{0.0, 0.0};
+    glm::dvec3 altitude_direction{0.0};
+    // ripples and waves: the pattern's own frequency and phase (used inside
+    // the functions as well as after them) and POV's wave sources.
+    float frequency = 1.0f;
+    float phase = 0.0f;
+    std::vector<glm::dvec3> wave_sources;
+    std::vector<double> wave_frequencies;
+};
+
+// ---- POV's random tables (pattern_random.cpp)
+// POV's Hash3d(): a hash of a cell in 0..4095 (each coordinate taken mod 4096).
+int pov_hash3d(int ix, int iy, int iz);
+// POV's pattern random table (PatternRands, and the identical WarpRands):
+// a value in [0, 1) per index.
+double pov_pattern_random(std::size_t index);
+// POV's Initialize_Waves(): wave sources and frequencies.
+void make_wave_sources(int count, NoiseGenerator generator, std::vector<glm::dvec3>& sources,
+                       std::vector<double>& frequencies);
+
+// ---- gradient_patterns.cpp
+double gradient_pattern(const PatternSetup& s, const glm::dvec3& p);
+double onion_pattern(const glm::dvec3& p);
+double spherical_pattern(const glm::dvec3& p);
+double cylindrical_pattern(const glm::dvec3& p);
+double boxed_pattern(const glm::dvec3& p);
+double planar_pattern(const glm::dvec3& p);
+double radial_pattern(const glm::dvec3& p);
+double spiral1_pattern(const PatternSetup& s, const glm::dvec3& p);
+double spiral2_pattern(const PatternSetup& s, const glm::dvec3& p);
+
+// ---- block_patterns.cpp: the entry index of each block pattern
+int checker_block(const glm::dvec3& p);
+int hexagon_block(const glm::dvec3& p);
+int brick_block(const PatternSetup& s, const glm::dvec3& p);
+int cubic_block(const glm::dvec3& p);
+int square_block(const glm::dvec3& p);
+int triangular_block(const glm::dvec3& p);
+
+// ---- noise_patterns.cpp
+double dents_pattern(const PatternSetup& s, const glm::dvec3& p);
+double granite_pattern(const PatternSetup& s, const glm::dvec3& p);
+double agate_pattern(const PatternSetup& s, const glm::dvec3& p);
+double marble_pattern(const PatternSetup& s, const glm::dvec3& p);
+double wood_pattern(const PatternSetup& s, const glm::dvec3& p);
+double wrinkles_pattern(const PatternSetup& s, const glm::dvec3& p);
+double leopard_pattern(const glm::dvec3& p);
+// Own normals: add the perturbation to the (pattern-space) normal.
+void bumps_normal(const PatternSetup& s, const glm::dvec3& p, double amount, glm::dvec3& normal);
+void dents_normal(const PatternSetup& s, const glm::dvec3& p, double amount, glm::dvec3& normal);
+void wrinkles_normal(const PatternSetup& s, const glm::dvec3& p, double amount, glm::dvec3& normal);
+
+// ---- wave_patterns.cpp
+double ripples_pattern(const PatternSetup& s, const glm::dvec3& p);
+double waves_pattern(const PatternSetup& s, const glm::dvec3& p);
+void ripples_normal(const PatternSetup& s, const glm::dvec3& p, double amount, glm::dvec3& normal);
+void waves_normal(const PatternSetup& s, const glm::dvec3& p, double amount, glm::dvec3& normal);
+
+// ---- cell_patterns.cpp
+double cells_pattern(const glm::dvec3& p);
+double crackle_pattern(const PatternSetup& s, const glm::dvec3& p);
+// Replaces the normal (facets sets it rather than adding to it).
+void facets_normal(const PatternSetup& s, const glm::dvec3& p, glm::dvec3& normal);
+
+// ---- fractal_patterns.cpp (mandel, julia, magnet)
+double fractal_pattern(const PatternSetup& s, const glm::dvec3& p);
+
+// ---- tiling_patterns.cpp
+double quilted_pattern(const PatternSetup& s, const glm::dvec3& p);
+void quilted_normal(const PatternSetup& s, const glm::dvec3& p, double amount, glm::dvec3& normal);
+
+// ---- surface_patterns.cpp
+// normal and hit_point in the space POV takes them from (world space);
+// p, the pattern point, only for the altitude.
+double slope_pattern(const PatternSetup& s, const glm::dvec3& p, const glm::dvec3& normal, const glm::dvec3& hit_point);
+double aoi_pattern(const glm::dvec3& normal, const glm::dvec3& ray_direction);
+
+}  // namespace lancer::pattern_detail
