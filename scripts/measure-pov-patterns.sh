@@ -13,9 +13,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$out"
 
-# name | points (box: in [-3,3]^3; plane: x,y in [-2,2], z 0) | pattern body.
-# This povray does not take square and triangular in pattern functions: a
-# body starting PIGMENT is a pigment whose red channel is the block index.
+# name | points (box: in [-3,3]^3; plane: x,y in [-2,2], z 0; unit: in
+# [-0.1,1.1]^3) | pattern body. density_file reads the small df3 files
+# committed beside the values (made once by a script with random voxels:
+# 5x4x3 of 8 bits, 3x3x2 of 16 bits, 2x3x4 of 32 bits).
+# This povray does not take square, triangular and tiling in pattern
+# functions: a body starting PIGMENT is a pigment whose red channel is the
+# block index (or, through a 0..1 grey map, the value in single precision).
 patterns() {
 cat <<'LIST'
 gradient|box|gradient x
@@ -97,6 +101,41 @@ turbulence_gradient|box|gradient x turbulence 0.6
 turbulence_onion|box|onion turbulence <0.3,0.5,0.1> octaves 3 omega 0.7 lambda 3
 turbulence_spiral|box|spiral1 2 turbulence 0.4
 warp_turbulence|box|gradient x warp { turbulence 0.5 octaves 4 } scale 0.5
+tiling1|box|PIGMENT tiling 1 color_map { [0 rgb 0] [1 rgb 1] }
+tiling2|box|PIGMENT tiling 2 color_map { [0 rgb 0] [1 rgb 1] }
+tiling3|box|PIGMENT tiling 3 color_map { [0 rgb 0] [1 rgb 1] }
+tiling4|box|PIGMENT tiling 4 color_map { [0 rgb 0] [1 rgb 1] }
+tiling5|box|PIGMENT tiling 5 color_map { [0 rgb 0] [1 rgb 1] }
+tiling6|box|PIGMENT tiling 6 color_map { [0 rgb 0] [1 rgb 1] }
+tiling7|box|PIGMENT tiling 7 color_map { [0 rgb 0] [1 rgb 1] }
+tiling8|box|PIGMENT tiling 8 color_map { [0 rgb 0] [1 rgb 1] }
+tiling9|box|PIGMENT tiling 9 color_map { [0 rgb 0] [1 rgb 1] }
+tiling10|box|PIGMENT tiling 10 color_map { [0 rgb 0] [1 rgb 1] }
+tiling11|box|PIGMENT tiling 11 color_map { [0 rgb 0] [1 rgb 1] }
+tiling12|box|PIGMENT tiling 12 color_map { [0 rgb 0] [1 rgb 1] }
+tiling13|box|PIGMENT tiling 13 color_map { [0 rgb 0] [1 rgb 1] }
+tiling14|box|PIGMENT tiling 14 color_map { [0 rgb 0] [1 rgb 1] }
+tiling15|box|PIGMENT tiling 15 color_map { [0 rgb 0] [1 rgb 1] }
+tiling16|box|PIGMENT tiling 16 color_map { [0 rgb 0] [1 rgb 1] }
+tiling17|box|PIGMENT tiling 17 color_map { [0 rgb 0] [1 rgb 1] }
+tiling18|box|PIGMENT tiling 18 color_map { [0 rgb 0] [1 rgb 1] }
+tiling19|box|PIGMENT tiling 19 color_map { [0 rgb 0] [1 rgb 1] }
+tiling20|box|PIGMENT tiling 20 color_map { [0 rgb 0] [1 rgb 1] }
+tiling21|box|PIGMENT tiling 21 color_map { [0 rgb 0] [1 rgb 1] }
+tiling22|box|PIGMENT tiling 22 color_map { [0 rgb 0] [1 rgb 1] }
+tiling23|box|PIGMENT tiling 23 color_map { [0 rgb 0] [1 rgb 1] }
+tiling24|box|PIGMENT tiling 24 color_map { [0 rgb 0] [1 rgb 1] }
+tiling25|box|PIGMENT tiling 25 color_map { [0 rgb 0] [1 rgb 1] }
+tiling26|box|PIGMENT tiling 26 color_map { [0 rgb 0] [1 rgb 1] }
+tiling27|box|PIGMENT tiling 27 color_map { [0 rgb 0] [1 rgb 1] }
+tiling_scaled|box|PIGMENT tiling 5 scale 0.4 rotate 20*y color_map { [0 rgb 0] [1 rgb 1] }
+density8|unit|density_file df3 "density8.df3" interpolate 0
+density8_trilinear|unit|density_file df3 "density8.df3" interpolate 1
+density8_tricubic|unit|density_file df3 "density8.df3" interpolate 2
+density16_trilinear|unit|density_file df3 "density16.df3" interpolate 1
+density16_tricubic|unit|density_file df3 "density16.df3" interpolate 2
+density32|unit|density_file df3 "density32.df3"
+density32_tricubic|unit|density_file df3 "density32.df3" interpolate 2
 LIST
 }
 
@@ -113,6 +152,7 @@ write_scene() {
     esac
     case $points in
     plane) range="<4,4,0>" low="<-2,-2,0>" ;;
+    unit) range="<1.2,1.2,1.2>" low="<-0.1,-0.1,-0.1>" ;;
     *) range="<6,6,6>" low="<-3,-3,-3>" ;;
     esac
     cat >"$work/$name.pov" <<POV
@@ -121,7 +161,7 @@ global_settings { assumed_gamma 1 }
 $declare
 #declare S = seed(1234);
 #fopen O "$out/$name.txt" write
-#write (O, "# povray 3.7 pattern { $body }: x y z value\n")
+#write (O, "# povray 3.7 pattern { $(printf '%s' "$body" | sed 's/"/\\"/g') }: x y z value\n")
 #declare I = 0;
 #while (I < 150)
   #declare P = $low + $range * <rand(S), rand(S), rand(S)>;
@@ -138,7 +178,7 @@ patterns | while IFS='|' read -r name points body; do
         case " $* " in *" $name "*) ;; *) continue ;; esac
     fi
     write_scene "$name" "$points" "$body"
-    (cd "$work" && povray -D -GA +W1 +H1 "$name.pov" >/dev/null 2>&1) || {
+    (cd "$work" && povray -D -GA +W1 +H1 +L"$out" "$name.pov" >/dev/null 2>&1) || {
         echo "povray failed on $name" >&2
         exit 1
     }

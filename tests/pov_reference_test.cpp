@@ -18,7 +18,8 @@
 // refracting at every face a difference keeps), and the patterns (each on a
 // flat tile showing the pigment itself: the geometric, block and noise
 // patterns, wave types, warps, colour and pigment maps, average) and
-// normals (own normals, slopes of values, slope_map, normal_map).
+// normals (own normals, slopes of values, slope_map, normal_map), layered
+// and patterned textures, #default and interior fade.
 #include <filesystem>
 #include <string>
 

@@ -76,6 +76,23 @@ void Evaluator::run_directive(const RawToken& d) {
 void Evaluator::directive_declare(const RawToken& d, bool local) {
     sg::SourceLocation where = d.location;
     std::string name = expect_raw_identifier("after #" + d.text, &where);
+    // POV 3.7's `#declare deprecated [once] "message" Name = ...`: using
+    // Name later warns with the message (glass_old.inc marks its textures so).
+    std::optional<Deprecation> deprecation;
+    if (name == "deprecated" && !lookup(name)) {
+        deprecation = Deprecation{};
+        const RawToken* next = peek_raw();
+        if (next && next->kind == RawKind::Identifier && next->text == "once") {
+            deprecation->once = true;
+            expect_raw_identifier("after 'deprecated'");
+            next = peek_raw();
+        }
+        if (next && next->kind == RawKind::String) {
+            deprecation->message = next->text;
+            ++m_frames.back()->position;
+        }
+        name = expect_raw_identifier("after #" + d.text + " deprecated", &where);
+    }
     if (name.empty()) {
         const RawToken* next = peek_raw();
         error(next ? next->location : d.location, "expected an identifier after #" + d.text);
@@ -104,6 +121,7 @@ void Evaluator::directive_declare(const RawToken& d, bool local) {
         value.texture = named;
     }
     store(name, std::move(value), local, where);
+    if (deprecation) m_deprecated[name] = *deprecation;
 }
 
 void Evaluator::directive_undef(const RawToken& d) {
@@ -554,7 +572,7 @@ void Evaluator::settle_version_defaults() {
     }
 }
 
-// #default { texture {...} | pigment {...} | finish {...} }
+// #default { texture {...} | pigment {...} | normal {...} | finish {...} }
 void Evaluator::directive_default(const RawToken& d) {
     if (!expect_raw_punct("{", "after #default")) return;
     Value value = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
@@ -566,7 +584,10 @@ void Evaluator::directive_default(const RawToken& d) {
     case Value::Kind::Texture: *texture = *value.texture; break;
     case Value::Kind::Pigment: texture->pigment = *value.pigment; break;
     case Value::Kind::Finish: texture->finish = *value.finish; break;
-    default: error(d.location, "#default expects a texture, pigment or finish, found " + describe(value)); return;
+    case Value::Kind::Normal: texture->normal = value.normal; break;
+    default:
+        error(d.location, "#default expects a texture, pigment, normal or finish, found " + describe(value));
+        return;
     }
     texture->name = "#default";
     m_default_texture = texture;

@@ -27,9 +27,11 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "grammar.tab.hpp"
@@ -249,6 +251,7 @@ class Evaluator {
     PatternEdit gradient_pattern(const Value& v, const SourceRange& where);
     PatternEdit spiral_pattern(sg::Pattern::Kind kind, const Value& arms, const SourceRange& where);
     PatternEdit tiling_pattern(const Value& v, const SourceRange& where);
+    PatternEdit density_file_pattern(const std::string& name, const sg::SourceLocation& where);
     PatternEdit slope_pattern(const Value& v, const SourceRange& where);
     PatternEdit fractal_pattern(sg::Pattern::Kind kind, const Value& iterations, const SourceRange& where,
                                 const Value* julia_parameter, const SourceRange& wj);
@@ -290,6 +293,17 @@ class Evaluator {
     NormalEdit normal_accuracy(const Value& v, const SourceRange& where);
     sg::SlopeMapEntry slope_entry(const Value& value, const SourceRange& wv, const Value& slope, const SourceRange& ws);
     std::function<void(ShapeValue&)> normal_edit(sg::NormalRef normal);
+    // Patterned and layered textures (patterns.cpp).
+    std::shared_ptr<sg::Material> layer_texture(std::shared_ptr<sg::Material> below,
+                                                const std::shared_ptr<sg::Material>& above);
+    std::function<void(sg::Material&)> texture_pattern(const PatternEdit& pattern,
+                                                       const std::vector<std::shared_ptr<sg::Material>>& blocks,
+                                                       const sg::SourceLocation& at);
+    std::function<void(sg::Material&)> texture_map_edit(const std::vector<sg::TextureMapEntry>& entries,
+                                                        const sg::SourceLocation& at);
+    // The texture a new texture, or an object's first pigment or finish,
+    // starts from: POV's #default texture (without its layers or pattern).
+    sg::Material default_texture() const;
 
     // ---- lights, camera, settings (lights_camera.cpp)
     sg::Light make_light(const Value& position, const SourceRange& wp, const Value& colour, const SourceRange& wc,
@@ -430,6 +444,12 @@ class Evaluator {
     std::string m_last_undeclared;
     sg::SourceLocation m_last_location;  // end of the last token read, for end-of-file errors
     std::shared_ptr<sg::Material> m_default_texture;
+    struct Deprecation {
+        std::string message;
+        bool once = false;
+        bool warned = false;
+    };
+    std::unordered_map<std::string, Deprecation> m_deprecated;
     bool m_saw_version = false;
     bool m_saw_assumed_gamma = false;
     std::size_t m_string_bytes = 0;   // produced by concat() so far (ParseOptions::max_string_bytes)

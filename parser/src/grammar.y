@@ -104,7 +104,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        HEIGHT_FIELD "height_field" WATER_LEVEL "water_level" SMOOTH "smooth" PREMULTIPLIED "premultiplied"
        GIF "gif" PGM "pgm" PPM "ppm" BMP "bmp" SYS "sys" IFF "iff" POT "pot"
        POLYNOMIAL "polynomial" XYZ "xyz" HF_GRAY_16 "hf_gray_16"
-       NORMAL "normal" COLOR_MAP "color_map" COLOUR_MAP "colour_map" PIGMENT_MAP "pigment_map"
+       FADE_COLOR "fade_color" FADE_COLOUR "fade_colour" TEXTURE_MAP "texture_map" NORMAL "normal" COLOR_MAP "color_map" COLOUR_MAP "colour_map" PIGMENT_MAP "pigment_map"
        NORMAL_MAP "normal_map" SLOPE_MAP "slope_map" BUMP_SIZE "bump_size" BUMP_MAP "bump_map"
        USE_COLOR "use_color" USE_COLOUR "use_colour" USE_INDEX "use_index" AVERAGE "average"
        AGATE "agate" AOI "aoi" BOXED "boxed" BOZO "bozo" SPOTTED "spotted" BUMPS "bumps" CELLS "cells"
@@ -121,6 +121,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        AGATE_TURB "agate_turb" BRICK_SIZE "brick_size" MORTAR "mortar" FORM "form" METRIC "metric"
        SOLID "solid" COORDS "coords" SIZE "size" EXTERIOR "exterior" CONTROL0 "control0" CONTROL1 "control1"
        NUMBER_OF_SIDES "number_of_sides" NUMBER_OF_TILES "number_of_tiles" ALTITUDE "altitude"
+       DENSITY_FILE "density_file" DF3 "df3" PATTERN "pattern"
 
 %nterm <Value> expr arith postfix primary colour colour_base declared_value string_value
 %nterm <std::vector<Value>> arith_seq expr_list opt_args vector_items expr_seq macro_args macro_arg_list
@@ -183,8 +184,12 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::shared_ptr<std::vector<sg::NormalMapEntry>>> normal_map normal_map_entries
 %nterm <std::vector<sg::SlopeMapEntry>> slope_map_entries
 %nterm <std::optional<std::pair<Value, SourceRange>>> opt_amount
+%nterm <std::shared_ptr<sg::Material>> texture_layers texture_body
+%nterm <std::vector<sg::TextureMapEntry>> texture_map_entries
 
 %precedence OPT_EMPTY
+/* After an optional argument (poly_wave [exponent]), an identifier is the argument. */
+%precedence UNDECLARED_ID
 %right "?" ":"
 %left "|"
 %left "&"
@@ -235,7 +240,7 @@ scene_item
 declared_value
   : begin_value colour end_value { $$ = std::move($2); }
   | object             { $$ = ev.object_value($1); }
-  | texture            { $$.kind = Value::Kind::Texture; $$.texture = $1; }
+  | texture_layers end_value { $$.kind = Value::Kind::Texture; $$.texture = $1; }
   | pigment            { $$.kind = Value::Kind::Pigment; $$.pigment = $1; }
   | finish             { $$.kind = Value::Kind::Finish; $$.finish = $1; }
   | interior           { $$.kind = Value::Kind::Interior; $$.interior = $1; }
@@ -620,7 +625,27 @@ transform_items
 /* --------------------------------------------------------------- textures */
 
 texture
-  : "texture" "{" texture_items "}" { $$ = ev.build_texture($3, LOC(@1)); }
+  : "texture" "{" texture_body "}" { $$ = $3; $$->location = LOC(@1); }
+  ;
+
+texture_body
+  : texture_items      { $$ = ev.build_texture($1, LOC(@1)); }
+  ;
+
+/* POV's layered texture: each texture after the first lies on top. A
+ * directive after a texture waits until the declaration is stored (the
+ * barrier), but runs as usual inside the next layer. */
+texture_layers
+  : texture            { $$ = $1; ev.begin_value_barrier(); }
+  | texture_layers layer_gap texture { $$ = ev.layer_texture($1, $3); ev.begin_value_barrier(); }
+  ;
+
+layer_gap: %empty { ev.end_value_barrier(); } ;
+
+texture_map_entries
+  : %empty             {}
+  | texture_map_entries "[" arith opt_comma texture_body "]"
+      { $$ = std::move($1); $$.push_back(sg::TextureMapEntry{ev.to_float($3, @3, "a map value"), $5}); }
   ;
 
 texture_items
@@ -631,6 +656,11 @@ texture_items
   | texture_items pigment { $$ = std::move($1); auto p = $2; $$.push_back([p](sg::Material& m) { m.pigment = *p; }); }
   | texture_items finish  { $$ = std::move($1); auto f = $2; $$.push_back([f](sg::Material& m) { m.finish = *f; }); }
   | texture_items normal  { $$ = std::move($1); auto n = $2; $$.push_back([n](sg::Material& m) { m.normal = n; }); }
+  | texture_items pattern_name { $$ = std::move($1); $$.push_back(ev.texture_pattern($2, {}, LOC(@2))); }
+  | texture_items block_pattern_name texture_seq { $$ = std::move($1); $$.push_back(ev.texture_pattern($2, $3, LOC(@2))); }
+  | texture_items pattern_modifier { $$ = std::move($1); auto e = $2;
+                               $$.push_back([e](sg::Material& m) { if (m.pattern) e(*m.pattern); }); }
+  | texture_items "texture_map" "{" texture_map_entries "}" { $$ = std::move($1); $$.push_back(ev.texture_map_edit($4, LOC(@2))); }
   | texture_items transform_item { $$ = std::move($1); sg::Mat4 t = $2;
                                $$.push_back([t](sg::Material& m) { transform_material(m, t); }); }
   ;
@@ -726,6 +756,7 @@ pattern_name
   | "wrinkles"         { $$ = ev.pattern_kind(sg::Pattern::Kind::Wrinkles); }
   | "pavement"         { $$ = ev.pattern_kind(sg::Pattern::Kind::Pavement); }
   | "tiling" arith %prec OPT_EMPTY    { $$ = ev.tiling_pattern($2, @2); }
+  | "density_file" "df3" STRING { $$ = ev.density_file_pattern($3.text, LOC(@3)); }
   | "slope" arith %prec OPT_EMPTY     { $$ = ev.slope_pattern($2, @2); }
   | "mandel" arith %prec OPT_EMPTY    { $$ = ev.fractal_pattern(sg::Pattern::Kind::Mandel, $2, @2, nullptr, {}); }
   | "julia" arith opt_comma arith %prec OPT_EMPTY { $$ = ev.fractal_pattern(sg::Pattern::Kind::Julia, $4, @4, &$2, @2); }
@@ -757,7 +788,7 @@ pattern_modifier
   | "sine_wave"        { $$ = [](sg::Pattern& p) { p.wave = sg::WaveType::Sine; }; }
   | "scallop_wave"     { $$ = [](sg::Pattern& p) { p.wave = sg::WaveType::Scallop; }; }
   | "cubic_wave"       { $$ = [](sg::Pattern& p) { p.wave = sg::WaveType::Cubic; }; }
-  | "poly_wave"        { $$ = [](sg::Pattern& p) { p.wave = sg::WaveType::Poly; p.wave_exponent = 1.0; }; }
+  | "poly_wave" %prec OPT_EMPTY { $$ = [](sg::Pattern& p) { p.wave = sg::WaveType::Poly; p.wave_exponent = 1.0; }; }
   | "poly_wave" arith  { $$ = ev.pattern_scalar("poly_wave", $2, @2); }
   | "noise_generator" arith { $$ = ev.pattern_scalar("noise_generator", $2, @2); }
   | "warp" "{" warp_items "}" { $$ = ev.warp_edit($3, LOC(@1)); }
@@ -772,11 +803,23 @@ pattern_modifier
   | "size" arith       { $$ = ev.pattern_scalar("size", $2, @2); }
   | "exponent" arith   { $$ = ev.pattern_scalar("exponent", $2, @2); }
   | "exterior" arith opt_comma arith { $$ = ev.pattern_pair("exterior", $2, @2, $4, @4); }
+  /* pavement's exterior N (a fractal's takes a factor too); an unknown name
+   * after the number is read as the factor, as before. */
+  | "exterior" arith %prec OPT_EMPTY { $$ = ev.pattern_scalar("exterior", $2, @2); }
+  | "exterior" arith UNDECLARED_ID { ev.unknown_identifier($3.text, LOC(@3), "a value");
+                                   $$ = ev.pattern_pair("exterior", $2, @2, Value::number(0.0), @3); }
   | "interior" arith opt_comma arith { $$ = ev.pattern_pair("interior", $2, @2, $4, @4); }
+  /* pavement's interior N (a fractal's takes a factor too); an unknown name
+   * after the number is read as the factor, as before. */
+  | "interior" arith %prec OPT_EMPTY { $$ = ev.pattern_scalar("interior", $2, @2); }
+  | "interior" arith UNDECLARED_ID { ev.unknown_identifier($3.text, LOC(@3), "a value");
+                                   $$ = ev.pattern_pair("interior", $2, @2, Value::number(0.0), @3); }
   | "control0" arith   { $$ = ev.pattern_scalar("control0", $2, @2); }
   | "control1" arith   { $$ = ev.pattern_scalar("control1", $2, @2); }
   | "number_of_sides" arith { $$ = ev.pattern_scalar("number_of_sides", $2, @2); }
   | "number_of_tiles" arith { $$ = ev.pattern_scalar("number_of_tiles", $2, @2); }
+  | "pattern" arith    { $$ = ev.pattern_scalar("pattern", $2, @2); }
+  | "interpolate" arith { $$ = ev.pattern_scalar("interpolate", $2, @2); }
   | "altitude" arith   { $$ = ev.pattern_vector("altitude", $2, @2); }
   ;
 
@@ -988,8 +1031,14 @@ interior_items
                                 $$.push_back([v](sg::Interior& i) { i.ior = v; }); }
   | interior_items "caustics" expr   { $$ = std::move($1); ev.ignored(LOC(@2), "caustics"); }
   | interior_items "dispersion" expr { $$ = std::move($1); ev.ignored(LOC(@2), "dispersion"); }
-  | interior_items "fade_distance" expr { $$ = std::move($1); ev.ignored(LOC(@2), "interior fade_distance"); }
-  | interior_items "fade_power" expr { $$ = std::move($1); ev.ignored(LOC(@2), "interior fade_power"); }
+  | interior_items "fade_distance" expr { $$ = std::move($1); double v = ev.to_float($3, @3, "a fade_distance");
+                                          $$.push_back([v](sg::Interior& i) { i.fade_distance = v; }); }
+  | interior_items "fade_power" expr { $$ = std::move($1); double v = ev.to_float($3, @3, "a fade_power");
+                                       $$.push_back([v](sg::Interior& i) { i.fade_power = v; }); }
+  | interior_items "fade_color" colour { $$ = std::move($1); sg::Vec3 c = ev.to_color($3, @3).rgb;
+                                         $$.push_back([c](sg::Interior& i) { i.fade_color = c; }); }
+  | interior_items "fade_colour" colour { $$ = std::move($1); sg::Vec3 c = ev.to_color($3, @3).rgb;
+                                          $$.push_back([c](sg::Interior& i) { i.fade_color = c; }); }
   ;
 
 /* ----------------------------------------------------------------- colours */

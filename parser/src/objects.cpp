@@ -61,8 +61,8 @@ void attach_in_parent_space(ShapeValue& shape, const sg::Material& material) {
 
 // The material an object-level pigment/finish/interior modifies, expressed
 // in the parent's space (POV starts from the default texture).
-sg::Material current_in_parent_space(const ShapeValue& shape) {
-    if (!shape.object.material) return sg::Material{};
+sg::Material current_in_parent_space(const ShapeValue& shape, const sg::Material& fallback) {
+    if (!shape.object.material) return fallback;
     sg::Material material = *shape.object.material;
     move_patterns(material, glm::inverse(shape.object.parent_from_object));
     return material;
@@ -165,7 +165,14 @@ std::function<void(ShapeValue&)> Evaluator::transform_edit(const sg::Mat4& trans
 }
 
 std::function<void(ShapeValue&)> Evaluator::texture_edit(std::shared_ptr<sg::Material> texture) {
-    return [texture](ShapeValue& s) {
+    return [this, texture](ShapeValue& s) {
+        // A second texture on the same object lies on top of the first
+        // (POV's layered texture).
+        if (s.object.material && !s.object.inherits_material && s.object.material->location.line > 0) {
+            auto below = std::make_shared<sg::Material>(current_in_parent_space(s, sg::Material{}));
+            attach_in_parent_space(s, *layer_texture(below, std::make_shared<sg::Material>(*texture)));
+            return;
+        }
         sg::Material material = *texture;
         if (s.object.material) material.interior = s.object.material->interior;  // a texture has no interior
         attach_in_parent_space(s, material);
@@ -177,32 +184,32 @@ std::function<void(ShapeValue&)> Evaluator::material_edit(std::shared_ptr<sg::Ma
 }
 
 std::function<void(ShapeValue&)> Evaluator::pigment_edit(std::shared_ptr<sg::Pigment> pigment) {
-    return [pigment](ShapeValue& s) {
-        sg::Material material = current_in_parent_space(s);
+    return [pigment, fallback = default_texture()](ShapeValue& s) {
+        sg::Material material = current_in_parent_space(s, fallback);
         material.pigment = *pigment;
         attach_in_parent_space(s, material);
     };
 }
 
 std::function<void(ShapeValue&)> Evaluator::finish_edit(std::shared_ptr<sg::Finish> finish) {
-    return [finish](ShapeValue& s) {
-        sg::Material material = current_in_parent_space(s);
+    return [finish, fallback = default_texture()](ShapeValue& s) {
+        sg::Material material = current_in_parent_space(s, fallback);
         material.finish = *finish;
         attach_in_parent_space(s, material);
     };
 }
 
 std::function<void(ShapeValue&)> Evaluator::normal_edit(sg::NormalRef normal) {
-    return [normal](ShapeValue& s) {
-        sg::Material material = current_in_parent_space(s);
+    return [normal, fallback = default_texture()](ShapeValue& s) {
+        sg::Material material = current_in_parent_space(s, fallback);
         material.normal = normal;
         attach_in_parent_space(s, material);
     };
 }
 
 std::function<void(ShapeValue&)> Evaluator::interior_edit(std::shared_ptr<sg::Interior> interior) {
-    return [interior](ShapeValue& s) {
-        sg::Material material = current_in_parent_space(s);
+    return [interior, fallback = default_texture()](ShapeValue& s) {
+        sg::Material material = current_in_parent_space(s, fallback);
         material.interior = *interior;
         attach_in_parent_space(s, material);
     };
@@ -275,14 +282,15 @@ sg::Mat4 Evaluator::inverse(const sg::Mat4& m, const SourceRange& where) {
 // ------------------------------------------------------------- materials
 
 std::shared_ptr<sg::Material> Evaluator::build_texture(const Edits<sg::Material>& edits, const sg::SourceLocation& at) {
-    auto material = std::make_shared<sg::Material>();
+    auto material = std::make_shared<sg::Material>(default_texture());
     for (const auto& edit : edits) edit(*material);
     material->location = at;
     return material;
 }
 
 std::shared_ptr<sg::Finish> Evaluator::build_finish(const Edits<sg::Finish>& edits, const sg::SourceLocation& at) {
-    auto finish = std::make_shared<sg::Finish>();
+    // POV modifies the finish a texture starts with: #default's.
+    auto finish = std::make_shared<sg::Finish>(m_default_texture ? m_default_texture->finish : sg::Finish{});
     for (const auto& edit : edits) edit(*finish);
     // POV-Ray's Parse_Finish: a value given as an albedo becomes the peak
     // that reflects that share, with the finish's final exponents.

@@ -4,6 +4,7 @@
 // measured from Debian's povray: docs/patterns.md).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "evaluator.h"
 
@@ -143,6 +144,14 @@ void transform_material(sg::Material& material, const sg::Mat4& world_from_local
 void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer) {
     move_pigment(material.pigment, inner_from_outer);
     material.normal = moved_normal(material.normal, inner_from_outer);
+    // A patterned texture's entries live in its pattern space: only the
+    // pattern moves. Layers are whole textures of their own: each moves.
+    if (material.pattern) move_pattern(*material.pattern, inner_from_outer);
+    for (auto& layer : material.layers_above) {
+        auto moved = std::make_shared<sg::Material>(*layer);
+        move_patterns(*moved, inner_from_outer);
+        layer = moved;
+    }
 }
 
 // ------------------------------------------------------------- patterns
@@ -195,6 +204,61 @@ Evaluator::PatternEdit Evaluator::tiling_pattern(const Value& v, const SourceRan
     return [type](sg::Pattern& p) {
         p.kind = PatternKind::Tiling;
         p.tiling_type = type;
+    };
+}
+
+// density_file df3 "name": POV's DF3 file, three big-endian 16-bit sizes
+// (x, y, z) and then the voxels, x fastest, of 1, 2 or 4 big-endian bytes
+// each (the size of the rest of the file decides which). Read here, so a
+// missing or malformed file is an error at the name.
+Evaluator::PatternEdit Evaluator::density_file_pattern(const std::string& name, const sg::SourceLocation& where) {
+    auto voxels = std::make_shared<std::vector<double>>();
+    glm::ivec3 size(0);
+    std::vector<std::string> folders = search_folders(where);
+    folders.push_back("");
+    std::string found, bytes;
+    const FileSearch search = find_file(name, folders, where, "density file", found);
+    if (search == FileSearch::Missing) error(where, "cannot find density file \"" + name + "\"");
+    if (search == FileSearch::Found && read_file(found, where, "density file", bytes)) {
+        auto byte = [&bytes](std::size_t i) {
+            return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i]));
+        };
+        if (bytes.size() < 6) {
+            error(where, "density file \"" + name + "\" is too short for a df3 header (6 bytes)");
+        } else {
+            size = glm::ivec3(int(byte(0) << 8 | byte(1)), int(byte(2) << 8 | byte(3)), int(byte(4) << 8 | byte(5)));
+            const std::size_t count = std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z);
+            const std::size_t data = bytes.size() - 6;
+            // POV tries 4, then 2, then 1 bytes per voxel.
+            std::size_t width = 0;
+            if (count * 4 == data)
+                width = 4;
+            else if (count * 2 == data)
+                width = 2;
+            else if (count == data)
+                width = 1;
+            if (width == 0) {
+                error(where, "density file \"" + name + "\": " + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                                 "x" + std::to_string(size.z) + " voxels do not fit its " + std::to_string(data) +
+                                 " data bytes (1, 2 or 4 bytes a voxel)");
+                size = glm::ivec3(0);
+            } else {
+                const double top = width == 4 ? 4294967295.0 : width == 2 ? 65535.0 : 255.0;
+                voxels->resize(count);
+                for (std::size_t i = 0; i < count; ++i) {
+                    std::uint32_t v = 0;
+                    for (std::size_t b = 0; b < width; ++b) v = v << 8 | byte(6 + i * width + b);
+                    (*voxels)[i] = double(v) / top;
+                }
+            }
+        }
+    }
+    const std::string file = found.empty() ? name : found;
+    return [voxels, size, file](sg::Pattern& p) {
+        p.kind = PatternKind::DensityFile;
+        p.file = file;
+        p.density_voxels = voxels;
+        p.density_size = size;
     };
 }
 
@@ -290,6 +354,12 @@ Evaluator::PatternEdit Evaluator::pattern_scalar(const std::string& name, const 
     if (name == "control1") return [value](sg::Pattern& p) { p.quilted_control1 = value; };
     if (name == "number_of_sides") return [value](sg::Pattern& p) { p.pavement_sides = static_cast<int>(value); };
     if (name == "number_of_tiles") return [value](sg::Pattern& p) { p.pavement_tiles = static_cast<int>(value); };
+    // pavement's pattern N, and its one-number exterior N / interior N
+    // (a fractal's take a factor too: pattern_pair).
+    if (name == "pattern") return [value](sg::Pattern& p) { p.pavement_number = static_cast<int>(value); };
+    if (name == "exterior") return [value](sg::Pattern& p) { p.pavement_exterior = static_cast<int>(value); };
+    if (name == "interior") return [value](sg::Pattern& p) { p.pavement_interior = static_cast<int>(value); };
+    if (name == "interpolate") return [value](sg::Pattern& p) { p.file_interpolate = static_cast<int>(value); };
     error(where.begin, "unknown pattern setting " + name);
     return [](sg::Pattern&) {};
 }
@@ -298,7 +368,14 @@ Evaluator::PatternEdit Evaluator::pattern_vector(const std::string& name, const 
     const sg::Vec3 value = to_vec3(v, where);
     if (name == "turbulence") return [value](sg::Pattern& p) { p.turbulence = value; };
     if (name == "brick_size") return [value](sg::Pattern& p) { p.brick_size = value; };
-    if (name == "form") return [value](sg::Pattern& p) { p.crackle_form = value; };
+    if (name == "form")
+        return [value](sg::Pattern& p) {
+            // pavement's form is a number (POV reads a float there).
+            if (p.kind == PatternKind::Pavement)
+                p.pavement_form = static_cast<int>(value.x);
+            else
+                p.crackle_form = value;
+        };
     if (name == "altitude")
         return [value](sg::Pattern& p) {
             p.slope_altitude = value;
@@ -630,6 +707,71 @@ sg::SlopeMapEntry Evaluator::slope_entry(const Value& value, const SourceRange& 
     entry.height = pair.x;
     entry.slope = pair.y;
     return entry;
+}
+
+// ------------------------------------------------------ patterned textures
+
+sg::Material Evaluator::default_texture() const {
+    sg::Material texture;
+    if (m_default_texture) {
+        texture.pigment = m_default_texture->pigment;
+        texture.normal = m_default_texture->normal;
+        texture.finish = m_default_texture->finish;
+    }
+    return texture;
+}
+
+std::shared_ptr<sg::Material> Evaluator::layer_texture(std::shared_ptr<sg::Material> below,
+                                                       const std::shared_ptr<sg::Material>& above) {
+    if (below->pattern || above->pattern)
+        warning(above->location,
+                "a layer over or of a patterned texture: lancer blends only the layers' pigments "
+                "(docs/scene-language.md)");
+    auto top = std::make_shared<sg::Material>(*above);
+    top->layers_above.clear();
+    below->layers_above.push_back(top);
+    for (const auto& layer : above->layers_above) below->layers_above.push_back(layer);
+    return below;
+}
+
+std::function<void(sg::Material&)> Evaluator::texture_pattern(const PatternEdit& pattern,
+                                                              const std::vector<std::shared_ptr<sg::Material>>& blocks,
+                                                              const sg::SourceLocation& at) {
+    std::vector<sg::MaterialRef> textures(blocks.begin(), blocks.end());
+    return [this, pattern, textures, at](sg::Material& m) {
+        m.pattern = sg::Pattern{};
+        pattern(*m.pattern);
+        m.pattern->location = at;
+        m.texture_map.clear();
+        m.block_textures = textures;
+        if (is_block_pattern(m.pattern->kind)) {
+            const std::size_t count = default_block_colours(m.pattern->kind).size();
+            if (m.block_textures.size() > count) {
+                error(at, std::string(block_pattern_name(m.pattern->kind)) + " takes at most " + std::to_string(count) +
+                              " textures");
+                m.block_textures.resize(count);
+            }
+            // POV fills the missing blocks with its default texture.
+            while (m.block_textures.size() < count) m.block_textures.push_back(std::make_shared<sg::Material>());
+        } else if (!textures.empty()) {
+            error(at,
+                  "only block patterns (checker, hexagon, brick, square, triangular, cubic) take a list of "
+                  "textures; write a texture_map");
+        }
+    };
+}
+
+std::function<void(sg::Material&)> Evaluator::texture_map_edit(const std::vector<sg::TextureMapEntry>& entries,
+                                                               const sg::SourceLocation& at) {
+    return [this, entries, at](sg::Material& m) {
+        if (!m.pattern) {
+            error(at, "texture_map needs a pattern before it (texture { gradient x texture_map { ... } })");
+            return;
+        }
+        if (entries.empty()) error(at, "texture_map needs at least one entry");
+        m.texture_map = entries;
+        m.block_textures.clear();
+    };
 }
 
 }  // namespace lancer::parse

@@ -63,10 +63,9 @@ const std::unordered_set<std::string>& ignored_blocks() {
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
     static const std::unordered_set<std::string> names = {
-        "isosurface", "parametric",       "lemon",        "array",      "spline",
-        "function",   "texture_map",      "fisheye",      "panoramic",  "ultra_wide_angle",
-        "omnimax",    "layered",          "material_map", "uv_mapping", "pattern",
-        "tiles",      "interior_texture", "isosurface",   "dictionary"};
+        "isosurface", "parametric",       "lemon",      "array",     "spline",       "function",   "fisheye",
+        "panoramic",  "ultra_wide_angle", "omnimax",    "layered",   "material_map", "uv_mapping", "pattern",
+        "tiles",      "interior_texture", "isosurface", "dictionary"};
     return names;
 }
 
@@ -337,6 +336,12 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
         return boolean(lookup(target) != nullptr || m_macros.count(target) > 0);
     }
     if (const Value* value = lookup(name)) {
+        if (auto deprecated = m_deprecated.find(name); deprecated != m_deprecated.end()) {
+            Deprecation& d = deprecated->second;
+            if (!d.once || !d.warned)
+                warning(raw.location, "'" + name + "' is deprecated" + (d.message.empty() ? "" : ": " + d.message));
+            d.warned = true;
+        }
         using VK = Value::Kind;
         Kind kind = Parser::token::TOK_VALUE_ID;
         switch (value->kind) {

@@ -132,6 +132,10 @@ class PathIntegrator final : public Integrator {
             }
             const Vec3 wo = -ray.direction;
             const Material& material = *hit.material;
+            // POV's interior fade on the stretch just travelled inside an
+            // object (a back face ends it): for fade_power >= 1000 this is
+            // Beer-Lambert absorption.
+            if (!hit.is_front_face(wo)) throughput *= material.interior_attenuation(hit.t);
             const SurfaceSample surface = material.sample_surface(hit);
 
             // Emission seen along the path, MIS-weighted against NEE when

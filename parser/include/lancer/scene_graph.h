@@ -209,6 +209,11 @@ struct Pattern {
     bool magnet_julia = false;    // magnet N julia <c>, I (true) or magnet N mandel I
     bool slope_point_at = false;  // slope { point_at <p> ... }: vector is the point
     double facets_metric = 2.0;   // facets metric
+    // density_file df3: the voxels (x fastest, then y, then z), each
+    // divided by its type's maximum as POV does, and the grid's size; read
+    // by the parser from `file` (0 voxels: the pattern is 0 everywhere).
+    std::shared_ptr<const std::vector<double>> density_voxels;
+    glm::ivec3 density_size{0};
 };
 using PatternRef = std::shared_ptr<const Pattern>;
 
@@ -328,20 +333,42 @@ struct Finish {
 
 struct Interior {
     double ior = 1.0;
+    // POV's fade: light travelling a distance d inside is multiplied by
+    // fade_color + (1 - fade_color) / (1 + (d / fade_distance)^fade_power),
+    // or exp(-(1 - fade_color) d / fade_distance) when fade_power >= 1000.
+    // fade_distance 0: no fade.
+    double fade_distance = 0.0;
+    double fade_power = 0.0;
+    Vec3 fade_color{0.0};
     SourceLocation location;
 };
 
-// A texture in POV terms: pigment + finish (+ the object's interior, which
-// POV keeps separately but every integrator needs at the same hit).
+// A texture in POV terms: pigment + normal + finish (+ the object's
+// interior, which POV keeps separately but every integrator needs at the
+// same hit). A texture may instead be patterned (POV's texture_map, or a
+// block pattern's list of textures), and may carry layers: textures
+// written after it on the same object or declaration, each on top of the
+// one before.
+struct Material;
+using MaterialRef = std::shared_ptr<const Material>;
+struct TextureMapEntry {
+    double value = 0.0;
+    MaterialRef texture;
+};
 struct Material {
     Pigment pigment;
     NormalRef normal;  // null: the surface's own normal
     Finish finish;
     Interior interior;
-    std::string name;  // the #declare'd name, if any, for summaries and errors
+    // Patterned: the pattern whose value picks among texture_map's entries
+    // (blended between two) or block_textures (one per block).
+    std::optional<Pattern> pattern;
+    std::vector<TextureMapEntry> texture_map;
+    std::vector<MaterialRef> block_textures;
+    std::vector<MaterialRef> layers_above;  // bottom to top
+    std::string name;                       // the #declare'd name, if any, for summaries and errors
     SourceLocation location;
 };
-using MaterialRef = std::shared_ptr<const Material>;
 
 // ------------------------------------------------------------------ shapes
 

@@ -73,6 +73,10 @@ struct MaterialParameters {
     float reflection_exponent = 1.0f;
     bool conserve_energy = false;  // transmitted light is scaled by 1 - mirror reflectance
     float ior = 1.0f;
+    // POV's interior fade (docs/scene-language.md): fade_distance 0 is none.
+    float fade_distance = 0.0f;
+    float fade_power = 0.0f;
+    Color fade_color{0.0f};
 };
 
 // The share of light a highlight of peak 1 reflects at normal incidence
@@ -142,6 +146,16 @@ class Material {
     Color mirror_reflectance(const SurfaceSample& surface, float cos_i, bool entering) const;
     bool has_mirror() const;
     const NormalPerturbation* normal_perturbation() const { return m_params.normal; }
+    // POV's interior fade over a distance travelled inside the object: what
+    // light leaving through (or totally reflected at) a back face is
+    // multiplied by. 1 when the interior has no fade.
+    Color interior_attenuation(float depth) const {
+        const MaterialParameters& p = m_params;
+        if (p.fade_distance == 0.0f) return Color(1.0f);
+        const float relative = depth / p.fade_distance;
+        if (p.fade_power >= 1000.0f) return glm::exp(-(Color(1.0f) - p.fade_color) * relative);
+        return p.fade_color + (Color(1.0f) - p.fade_color) / (1.0f + std::pow(std::fabs(relative), p.fade_power));
+    }
     // sample_surface() is the same at every hit.
     bool pigment_is_constant() const { return m_pigment_is_constant; }
     bool has_glossy() const { return m_params.phong > 0.0f || m_params.specular > 0.0f; }

@@ -39,6 +39,9 @@ MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment, 
     p.reflection_exponent = float(m.finish.reflection.exponent);
     p.conserve_energy = m.finish.conserve_energy;
     p.ior = float(m.interior.ior);
+    p.fade_distance = float(m.interior.fade_distance);
+    p.fade_power = float(m.interior.fade_power);
+    p.fade_color = Color(m.interior.fade_color);
     return p;
 }
 
@@ -121,11 +124,30 @@ class Builder {
         return material;
     }
 
-    const Material* make_material(const sg::Material& source) {
-        m_data->textures.push_back(m_data->texture_factory->make(source.pigment));
+    const Material* make_material(const sg::Material& written) {
+        sg::Material source = flatten_patterned_texture(written);
+        sg::NormalRef surface_normal = source.normal;
+        if (written.layers_above.empty()) {
+            m_data->textures.push_back(m_data->texture_factory->make(source.pigment));
+        } else {
+            std::vector<std::unique_ptr<Texture>> layers;
+            std::vector<TextureSample> averages;
+            std::vector<sg::Finish> finishes{source.finish};
+            layers.push_back(m_data->texture_factory->make(source.pigment));
+            averages.push_back(layers.back()->average());
+            for (const auto& layer : written.layers_above) {
+                const sg::Material flat = flatten_patterned_texture(*layer);
+                layers.push_back(m_data->texture_factory->make(flat.pigment));
+                averages.push_back(layers.back()->average());
+                finishes.push_back(flat.finish);
+                if (flat.normal) surface_normal = flat.normal;  // the topmost bumps show
+            }
+            source.finish = blend_finishes(finishes, layer_visibility(averages));
+            m_data->textures.push_back(make_layered_texture(std::move(layers)));
+        }
         const NormalPerturbation* normal = nullptr;
-        if (source.normal) {
-            m_data->normals.push_back(m_data->texture_factory->make_normal(*source.normal));
+        if (surface_normal) {
+            m_data->normals.push_back(m_data->texture_factory->make_normal(*surface_normal));
             normal = m_data->normals.back().get();
             m_data->has_normal_perturbation = true;
         }

@@ -8,8 +8,10 @@
 namespace lancer::pattern_detail {
 
 int checker_block(const glm::dvec3& p) {
-    const int sum = int(std::floor(p.x + kPovEpsilon) + std::floor(p.y + kPovEpsilon) + std::floor(p.z + kPovEpsilon));
-    return sum & 1;
+    // The parity of the sum of the cell numbers (unsigned: the sum wraps).
+    const unsigned sum = unsigned(floor_to_int(p.x + kPovEpsilon)) + unsigned(floor_to_int(p.y + kPovEpsilon)) +
+                         unsigned(floor_to_int(p.z + kPovEpsilon));
+    return int(sum & 1u);
 }
 
 namespace {
@@ -34,10 +36,8 @@ int hexagon_block(const glm::dvec3& p) {
     const double x = std::fabs(p.x);
     // Negative z is moved up a whole grid rather than mirrored.
     const double z = p.z < 0.0 ? kHexGridHeight - std::fabs(p.z) : p.z;
-    double xs = x / kHexBlockWidth;
-    double zs = z / kHexBlockHeight;
-    xs -= std::floor(xs / 6.0) * 6.0;
-    zs -= std::floor(zs / 6.0) * 6.0;
+    const double xs = wrap_into(x / kHexBlockWidth, 6.0);
+    const double zs = wrap_into(z / kHexBlockHeight, 6.0);
     const int column = int(std::floor(xs)) % 6;
     const int row = int(std::floor(zs)) % 6;
     switch (column) {
@@ -57,8 +57,9 @@ int hexagon_block(const glm::dvec3& p) {
 
 namespace {
 
+// POV's v - (int)v, wrapped into [0, 1); trunc keeps it defined beyond int.
 double fraction(double v) {
-    v -= double(int(v));
+    v -= std::trunc(v);
     return v < 0.0 ? v + 1.0 : v;
 }
 
@@ -93,8 +94,8 @@ int cubic_block(const glm::dvec3& p) {
 }
 
 int square_block(const glm::dvec3& p) {
-    const bool odd_x = int(std::floor(p.x)) & 1;
-    const bool odd_z = int(std::floor(p.z)) & 1;
+    const bool odd_x = floor_to_int(p.x) & 1;
+    const bool odd_z = floor_to_int(p.z) & 1;
     if (odd_x) return odd_z ? 2 : 3;
     return odd_z ? 1 : 0;
 }
@@ -104,8 +105,8 @@ int triangular_block(const glm::dvec3& p) {
     constexpr double kHalfSqrt3 = 0.86602540378443864676372317075294;
     // Fold into the 3 x sqrt(3) rectangle that repeats, then mirror its
     // upper half onto the lower.
-    double xs = p.x - 3.0 * std::floor(p.x / 3.0);
-    double zs = p.z - kSqrt3 * std::floor(p.z / kSqrt3);
+    double xs = wrap_into(p.x, 3.0);
+    double zs = wrap_into(p.z, kSqrt3);
     const int column = int(std::floor(xs));
     xs -= column;
     const bool upper = zs >= kHalfSqrt3;

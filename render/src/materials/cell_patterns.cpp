@@ -45,13 +45,20 @@ struct CrackleNeighbourhood {
     std::array<glm::dvec3, 81> points{};
 };
 
+// a + b with int's wrap-around (a cube number from floor_to_int may lie at
+// the end of int's range).
+int wrapping_add(int a, int b) {
+    return int(unsigned(a) + unsigned(b));
+}
+
 const CrackleNeighbourhood& neighbourhood(const glm::ivec3& cube) {
     thread_local CrackleNeighbourhood cache;
     if (!cache.valid || cache.cube != cube) {
         const auto& offsets = knight_offsets().offsets;
         for (std::size_t i = 0; i < offsets.size(); ++i) {
-            const glm::ivec3 c = cube + offsets[i];
-            cache.points[i] = cube_point(c.x, c.y, c.z);
+            const glm::ivec3& o = offsets[i];
+            cache.points[i] =
+                cube_point(wrapping_add(cube.x, o.x), wrapping_add(cube.y, o.y), wrapping_add(cube.z, o.z));
         }
         cache.cube = cube;
         cache.valid = true;
@@ -76,14 +83,14 @@ double metric_root(double sum, double metric) {
 }  // namespace
 
 double cells_pattern(const glm::dvec3& p) {
-    const int seed = pov_hash3d(int(std::floor(p.x + kPovEpsilon)), int(std::floor(p.y + kPovEpsilon)),
-                                int(std::floor(p.z + kPovEpsilon)));
+    const int seed =
+        pov_hash3d(floor_to_int(p.x + kPovEpsilon), floor_to_int(p.y + kPovEpsilon), floor_to_int(p.z + kPovEpsilon));
     return std::min(pov_pattern_random(std::size_t(seed)), 1.0);
 }
 
 double crackle_pattern(const PatternSetup& s, const glm::dvec3& p) {
-    const glm::ivec3 cube(int(std::floor(p.x - kPovEpsilon)), int(std::floor(p.y - kPovEpsilon)),
-                          int(std::floor(p.z - kPovEpsilon)));
+    const glm::ivec3 cube(floor_to_int(p.x - kPovEpsilon), floor_to_int(p.y - kPovEpsilon),
+                          floor_to_int(p.z - kPovEpsilon));
     const CrackleNeighbourhood& around = neighbourhood(cube);
     const double metric = s.crackle_metric;
 
@@ -152,8 +159,8 @@ void facets_normal(const PatternSetup& s, const glm::dvec3& p, glm::dvec3& norma
     for (const glm::ivec3& offset : knight_offsets().offsets) {
         const glm::dvec3 shifted = cell_point + glm::dvec3(offset);
         const glm::dvec3 point =
-            cube_point(int(std::floor(shifted.x - kPovEpsilon)), int(std::floor(shifted.y - kPovEpsilon)),
-                       int(std::floor(shifted.z - kPovEpsilon)));
+            cube_point(floor_to_int(shifted.x - kPovEpsilon), floor_to_int(shifted.y - kPovEpsilon),
+                       floor_to_int(shifted.z - kPovEpsilon));
         const double d = distance(point - cell_point);
         if (first || d < nearest_distance) {
             nearest = point;

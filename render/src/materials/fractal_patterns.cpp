@@ -94,6 +94,10 @@ double magnet(const PatternSetup& s, double a, double b, double cr, double ci, d
             den_i = 6 * a * b + 3 * (a * ci + b * c2r) + c1c2i;
         }
         const double den = den_r * den_r + den_i * den_i;
+        // A pole of the map: z would be infinite (POV divides by zero and
+        // carries infinities or NaNs on). It escapes here, coloured by the
+        // z that reached the pole.
+        if (den == 0.0) return exterior_value(s, i, a, b);
         a = (num_r * den_r + num_i * den_i) / den;
         b = (num_i * den_r - num_r * den_i) / den;
         // Square the quotient.

@@ -34,7 +34,27 @@ struct LatticeAxis {
     double offset;  // coordinate - floor, in [0, 1) (or just under 0, see above)
 };
 
+// Beyond 2^62 (a turbulence octave's lambda^i times a far point) a double
+// is an integer: its cell is the coordinate itself, taken modulo 4096
+// exactly, at offset 0. An infinite coordinate counts as cell 0 at offset
+// 0; NaN stays NaN (in the offset), so the value shows it.
+inline bool lattice_far(double coordinate) {
+    return !(std::fabs(coordinate) < 0x1p62);
+}
+
+inline double far_cell(double coordinate, double cells) {
+    return std::isfinite(coordinate) ? std::fmod(coordinate, cells) : 0.0;
+}
+
+inline double far_offset(double coordinate) {
+    return std::isnan(coordinate) ? coordinate : 0.0;
+}
+
 inline LatticeAxis lattice_axis(double coordinate) {
+    if (lattice_far(coordinate)) {
+        const auto cell = static_cast<std::int64_t>(far_cell(coordinate, 4096.0));
+        return {static_cast<int>((cell + kLatticeHashOrigin) & 0xFFF), far_offset(coordinate)};
+    }
     constexpr double kNegativeRoundingTolerance = 1.0e-10;
     // int64 instead of POV's int: the same cells wherever POV's int does not
     // overflow (|coordinate| < 2^31), and defined behaviour beyond.
@@ -119,6 +139,10 @@ inline SolidAxis solid_axis(double coordinate) {
     // The large offset also sets how the coordinate is rounded (to 2^-29 near
     // 1e7), which the measured offset reproduces.
     const double shifted = coordinate + kSolidLatticeOffset;
+    if (lattice_far(shifted)) {
+        const auto cell = static_cast<std::int64_t>(far_cell(shifted, 2048.0));
+        return {static_cast<int>(cell & 2047), far_offset(shifted)};
+    }
     const double floor_value = std::floor(shifted);
     return {static_cast<int>(static_cast<std::int64_t>(floor_value) & 2047), shifted - floor_value};
 }

@@ -19,9 +19,6 @@ using Kind = sg::Pattern::Kind;
 
 namespace {
 
-// POV clamps warped points to this, so that far-off points stay finite.
-constexpr double kCoordinateLimit = 1.0e17;
-
 bool is_block_kind(Kind kind) {
     switch (kind) {
     case Kind::Checker:
@@ -39,9 +36,7 @@ const char* unsupported_name(Kind kind) {
     case Kind::Object: return "object";
     case Kind::ImagePattern: return "image_pattern";
     case Kind::PigmentPattern: return "pigment_pattern";
-    case Kind::DensityFile: return "density_file";
     case Kind::Function: return "function";
-    case Kind::Tiling: return "tiling";
     case Kind::Pavement: return "pavement";
     default: return nullptr;
     }
@@ -57,11 +52,54 @@ std::vector<int> binomial_row(int n) {
     return signed_row;
 }
 
+// POV's limits on pavement: number_of_sides 3, 4 or 6; number_of_tiles
+// 1..6 (1..5 for hexagons); pattern 1 to the count of distinct pavings.
+void check_pavement(const PatternSetup& s) {
+    static const int kinds3[] = {1, 1, 1, 3, 4, 12};
+    static const int kinds4[] = {1, 1, 2, 5, 12, 35};
+    static const int kinds6[] = {1, 1, 3, 7, 22};
+    const int* kinds = s.pavement_sides == 3 ? kinds3 : s.pavement_sides == 4 ? kinds4 : kinds6;
+    const int max_tiles = s.pavement_sides == 6 ? 5 : 6;
+    if (s.pavement_sides != 3 && s.pavement_sides != 4 && s.pavement_sides != 6)
+        throw std::runtime_error("pavement number_of_sides must be 3, 4 or 6, not " + std::to_string(s.pavement_sides));
+    if (s.pavement_tiles < 1 || s.pavement_tiles > max_tiles)
+        throw std::runtime_error("pavement number_of_tiles must be 1 to " + std::to_string(max_tiles) + ", not " +
+                                 std::to_string(s.pavement_tiles));
+    const int count = kinds[s.pavement_tiles - 1];
+    if (s.pavement_number < 1 || s.pavement_number > count)
+        throw std::runtime_error("pavement pattern must be 1 to " + std::to_string(count) + " with " +
+                                 std::to_string(s.pavement_tiles) + " tiles of " + std::to_string(s.pavement_sides) +
+                                 " sides, not " + std::to_string(s.pavement_number));
+}
+
+// mandel, julia and magnet: every sample inside the set runs all the
+// iterations, so lancer caps them (POV-Ray caps nothing); and exterior
+// types 7 and 8 take the iteration count modulo the factor (7) or the
+// factor + 1 (8), as an unsigned int, then divide by the factor: POV
+// divides by zero below those factors.
+constexpr int kMaxFractalIterations = 100000;
+// ripples and waves: global_settings' number_of_waves.
+constexpr int kMaxWaves = 100000;
+
+void check_fractal(const PatternSetup& s) {
+    if (s.fractal_iterations > kMaxFractalIterations)
+        throw std::runtime_error("a fractal pattern's iterations are limited to " +
+                                 std::to_string(kMaxFractalIterations) + " (lancer's limit), got " +
+                                 std::to_string(s.fractal_iterations));
+    const double f = s.exterior_factor;
+    if (s.exterior_type == 7 && !(f >= 1.0 && f < 4294967296.0))
+        throw std::runtime_error("exterior 7 needs a factor from 1 to 2^32 (the number of bands), got " +
+                                 std::to_string(f));
+    if (s.exterior_type == 8 && !(f > 0.0 && f + 1.0 < 4294967296.0))
+        throw std::runtime_error("exterior 8 needs a factor above 0 and under 2^32 - 1, got " + std::to_string(f));
+}
+
 PatternSetup make_setup(const sg::Pattern& pattern, NoiseGenerator generator) {
     PatternSetup s;
     s.kind = pattern.kind;
     s.generator = generator;
     s.turbulence = {pattern.turbulence, pattern.octaves, float(pattern.omega), float(pattern.lambda)};
+    check_turbulence(s.turbulence);
     // POV normalises gradient's vector when it reads it.
     const double gradient_length = glm::length(pattern.vector);
     s.gradient = gradient_length > 0.0 ? pattern.vector / gradient_length : pattern.vector;
@@ -89,14 +127,31 @@ PatternSetup make_setup(const sg::Pattern& pattern, NoiseGenerator generator) {
     s.spiral_arms = pattern.spiral_arms;
     s.frequency = float(pattern.frequency);
     s.phase = float(pattern.phase);
+    s.tiling_type = pattern.tiling_type;
+    s.pavement_sides = pattern.pavement_sides;
+    s.pavement_tiles = pattern.pavement_tiles;
+    s.pavement_number = pattern.pavement_number;
+    // POV keeps these modulo 3 (form modulo 4 with four sides, else 3).
+    s.pavement_exterior = pattern.pavement_exterior % 3;
+    s.pavement_interior = pattern.pavement_interior % 3;
+    s.pavement_form = pattern.pavement_form % (pattern.pavement_sides == 4 ? 4 : 3);
+    s.density_voxels = pattern.density_voxels;
+    s.density_size = pattern.density_size;
+    s.density_interpolation = pattern.file_interpolate;
 
     if (s.kind == Kind::Mandel || s.kind == Kind::Julia) {
         if (s.fractal_exponent < 2 || s.fractal_exponent > 33)
             throw std::runtime_error("mandel/julia exponent must be 2..33, not " + std::to_string(s.fractal_exponent));
         s.binomial = binomial_row(s.fractal_exponent);
     }
+    if (s.kind == Kind::Tiling && (s.tiling_type < 1 || s.tiling_type > 27))
+        throw std::runtime_error("tiling number must be 1 to 27, not " + std::to_string(s.tiling_type));
+    if (s.kind == Kind::Pavement) check_pavement(s);
+    if (s.kind == Kind::Tiling && !tiling_supported(s.tiling_type))
+        throw std::runtime_error("tiling " + std::to_string(s.tiling_type) + " is not supported yet");
     if (s.kind == Kind::Magnet && s.magnet_type != 1 && s.magnet_type != 2)
         throw std::runtime_error("magnet type must be 1 or 2, not " + std::to_string(s.magnet_type));
+    if (s.kind == Kind::Mandel || s.kind == Kind::Julia || s.kind == Kind::Magnet) check_fractal(s);
 
     if (s.kind == Kind::Slope) {
         // POV's reading of slope { direction, lo, hi altitude <a>, lo, hi }:
@@ -122,6 +177,11 @@ PatternSetup make_setup(const sg::Pattern& pattern, NoiseGenerator generator) {
     }
 
     if (s.kind == Kind::Ripples || s.kind == Kind::Waves) {
+        // Every sample sums every wave, and each is stored: lancer caps the
+        // count (POV-Ray caps nothing).
+        if (pattern.number_of_waves > kMaxWaves)
+            throw std::runtime_error("number_of_waves is limited to " + std::to_string(kMaxWaves) +
+                                     " (lancer's limit), got " + std::to_string(pattern.number_of_waves));
         make_wave_sources(std::max(pattern.number_of_waves, 1), generator, s.wave_sources, s.wave_frequencies);
     }
     return s;
@@ -168,6 +228,11 @@ CompiledPattern::CompiledPattern(const sg::Pattern& pattern, NoiseGenerator glob
     if ((is_block_kind(pattern.kind) || pattern.kind == Kind::Quilted) && pattern.frequency == 1.0)
         st.apply_frequency = false;
     st.wave = pattern.wave;
+    // POV raises the value (in [0, 1]) to any exponent: a negative one
+    // makes 0 infinite, past every map, and the normals' slopes NaN.
+    if (pattern.wave == sg::WaveType::Poly && !(pattern.wave_exponent >= 0.0))
+        throw std::runtime_error("poly_wave's exponent must not be negative (0 raised to it is infinite), got " +
+                                 std::to_string(pattern.wave_exponent));
     st.wave_exponent = float(pattern.wave_exponent);
     st.normal_to_pattern = glm::transpose(glm::inverse(points_linear));
     st.normal_from_pattern = glm::transpose(points_linear);
@@ -180,9 +245,15 @@ CompiledPattern& CompiledPattern::operator=(CompiledPattern&&) noexcept = defaul
 glm::dvec3 CompiledPattern::pattern_point(const glm::dvec3& object_point) const {
     const State& st = *m_state;
     glm::dvec3 p(st.pattern_from_object * glm::dvec4(object_point, 1.0));
-    for (const WarpStep& step : st.warps) apply_warp(step, p, st.setup.generator);
+    // POV clamps the point to its coordinate limit after the last warp;
+    // lancer after each, so that no warp meets an infinite point (the
+    // same points wherever the warps stay within the limit).
+    for (const WarpStep& step : st.warps) {
+        apply_warp(step, p, st.setup.generator);
+        p = clamp_to_coordinate_limit(p);
+    }
     if (st.turbulence_on_point) p += turbulence_displacement(p, st.setup.turbulence, st.setup.generator);
-    return glm::clamp(p, glm::dvec3(-kCoordinateLimit), glm::dvec3(kCoordinateLimit));
+    return clamp_to_coordinate_limit(p);
 }
 
 namespace {
@@ -203,6 +274,8 @@ double raw_value(const PatternSetup& s, const glm::dvec3& p, const PatternContex
     case Kind::Crackle: return crackle_pattern(s, p);
     case Kind::Cubic: return cubic_block(p);
     case Kind::Cylindrical: return cylindrical_pattern(p);
+    case Kind::DensityFile: return density_file_pattern(s, p);
+    case Kind::Tiling: return tiling_pattern(s, p);
     case Kind::Dents: return dents_pattern(s, p);
     // facets is a normal only; as a value POV would refuse it. 0 keeps a
     // pigment usable.
@@ -241,7 +314,11 @@ double CompiledPattern::value(const glm::dvec3& object_point, const PatternConte
 
 double CompiledPattern::value_at_pattern_point(const glm::dvec3& point, const PatternContext& context) const {
     const State& st = *m_state;
-    double v = raw_value(st.setup, point, context);
+    // Values that grow with the point (gradient, marble, wood, spirals) or
+    // with a turbulence's amount are held to the coordinate limit, as the
+    // point is: beyond it an infinity would become NaN in the frequency
+    // step. (A NaN passes, so that a bug shows.)
+    double v = std::clamp(raw_value(st.setup, point, context), -kCoordinateLimit, kCoordinateLimit);
     if (st.apply_frequency) {
         // POV wraps at 1.00001, not 1, so that a value of exactly 1 (the end
         // of a ramp) keeps the top of the map.

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -31,6 +32,40 @@ inline double cycloidal(double v) {
 inline double triangle_wave(double v) {
     const double offset = v >= 0.0 ? v - std::floor(v) : v + 1.0 + std::floor(std::fabs(v));
     return offset >= 0.5 ? 2.0 * (1.0 - offset) : 2.0 * offset;
+}
+
+// POV's COORDINATE_LIMIT: warped points are clamped to it, so that far-off
+// points stay finite.
+inline constexpr double kCoordinateLimit = 1.0e17;
+inline glm::dvec3 clamp_to_coordinate_limit(const glm::dvec3& p) {
+    return glm::clamp(p, glm::dvec3(-kCoordinateLimit), glm::dvec3(kCoordinateLimit));
+}
+
+// floor(v) as an int, for the cell numbers of the block, cell and warp
+// patterns. POV casts with (int), which has no defined value once floor(v)
+// leaves int's range (|v| >= 2^31, reached by far points of a finely
+// scaled pattern: pattern points go up to 1e17). There the result is
+// floor(v) modulo 2^32 (exact: such a double is an integer), so a cell's
+// parity and its number modulo 4096 (all the hashes and block patterns
+// use) stay those of floor(v). An infinite or NaN v, which no pattern
+// point is, gives 0.
+inline int floor_to_int(double v) {
+    const double f = std::floor(v);
+    if (f >= -2147483648.0 && f < 2147483648.0) return int(f);
+    if (!std::isfinite(f)) return 0;
+    return int(std::uint32_t(std::int64_t(std::fmod(f, 4294967296.0))));
+}
+
+// v reduced into [0, period) as POV reduces it (v - floor(v / period) *
+// period), which rounds just outside that range when v lies an ulp under a
+// multiple of the period or is so large that the product is inexact; then
+// the exact remainder (fmod) instead.
+inline double wrap_into(double v, double period) {
+    double r = v - std::floor(v / period) * period;
+    if (r >= 0.0 && r < period) return r;
+    r = std::fmod(v, period);
+    if (r < 0.0) r += period;
+    return r < period ? r : 0.0;  // an ulp under 0 wraps to the period itself: 0
 }
 
 // POV's density-style falloff (spherical, cylindrical, boxed, planar):
@@ -81,6 +116,12 @@ struct WarpStep {
     double plane_offset = 0.0;  // Planar
 };
 
+// Throws std::runtime_error when a turbulence's octave amplitudes or
+// frequencies (omega^i, lambda^i for i below octaves, in single precision
+// as POV keeps them) overflow: POV sums infinities and NaNs then.
+void check_turbulence(const TurbulenceSettings& turbulence);
+// Throws std::runtime_error for a warp lancer cannot evaluate (a repeat
+// width outside single precision, a turbulence that overflows).
 WarpStep make_warp_step(const sg::Warp& warp);
 // Moves p through one warp step (POV's Warp_EPoint for that step).
 void apply_warp(const WarpStep& step, glm::dvec3& p, NoiseGenerator generator);
@@ -133,6 +174,16 @@ struct PatternSetup {
     float phase = 0.0f;
     std::vector<glm::dvec3> wave_sources;
     std::vector<double> wave_frequencies;
+    // tiling N (1..27); pavement's sides, tiles, pattern, exterior,
+    // interior and form (as POV keeps them after parsing).
+    int tiling_type = 1;
+    int pavement_sides = 3, pavement_tiles = 1, pavement_number = 1;
+    int pavement_exterior = 0, pavement_interior = 0, pavement_form = 0;
+    // density_file: the voxels (normalised, x fastest), the grid's size
+    // and interpolate's value.
+    std::shared_ptr<const std::vector<double>> density_voxels;
+    glm::ivec3 density_size{0};
+    int density_interpolation = 0;
 };
 
 // ---- POV's random tables (pattern_random.cpp)
@@ -193,8 +244,15 @@ void facets_normal(const PatternSetup& s, const glm::dvec3& p, glm::dvec3& norma
 double fractal_pattern(const PatternSetup& s, const glm::dvec3& p);
 
 // ---- tiling_patterns.cpp
+// POV's tiling N: the tile's kind and the distance from its edge, in [0, 1].
+double tiling_pattern(const PatternSetup& s, const glm::dvec3& p);
+// Whether lancer has tiling N yet (CompiledPattern refuses the others).
+bool tiling_supported(int type);
 double quilted_pattern(const PatternSetup& s, const glm::dvec3& p);
 void quilted_normal(const PatternSetup& s, const glm::dvec3& p, double amount, glm::dvec3& normal);
+
+// ---- density_pattern.cpp
+double density_file_pattern(const PatternSetup& s, const glm::dvec3& p);
 
 // ---- surface_patterns.cpp
 // normal and hit_point in the space POV takes them from (world space);

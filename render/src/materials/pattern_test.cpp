@@ -6,9 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -212,9 +215,16 @@ TEST(Patterns, BlackHolePullsTowardsItsCentre) {
 }
 
 TEST(Patterns, UnsupportedPatternsThrow) {
-    for (Kind kind : {Kind::Object, Kind::ImagePattern, Kind::PigmentPattern, Kind::DensityFile, Kind::Function}) {
+    for (Kind kind : {Kind::Object, Kind::ImagePattern, Kind::PigmentPattern, Kind::Function, Kind::Pavement}) {
         EXPECT_THROW(CompiledPattern(make(kind), NoiseGenerator::RangeCorrected), std::runtime_error);
     }
+    sg::Pattern tiling = make(Kind::Tiling);
+    tiling.tiling_type = 28;  // POV has 27
+    EXPECT_THROW(CompiledPattern(tiling, NoiseGenerator::RangeCorrected), std::runtime_error);
+}
+
+TEST(Patterns, DensityFileWithoutVoxelsIsZero) {
+    EXPECT_EQ(value_at(make(Kind::DensityFile), {0.5, 0.5, 0.5}), 0.0);
 }
 
 TEST(Patterns, OwnNormals) {
@@ -283,6 +293,35 @@ sg::Pattern with(Kind kind, const std::function<void(sg::Pattern&)>& edit) {
     return p;
 }
 
+// A df3 file committed beside the reference values, read into the
+// pattern as the parser reads it (big-endian sizes, then 1, 2 or 4 byte
+// voxels divided by their maximum).
+sg::Pattern density_file(const std::string& file, int interpolate) {
+    std::ifstream in(std::string(LANCER_SOURCE_DIR) + "/tests/reference/pov/patterns/" + file, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    auto byte = [&bytes](std::size_t i) { return std::uint32_t(static_cast<unsigned char>(bytes.at(i))); };
+    sg::Pattern p = make(Kind::DensityFile);
+    p.file_interpolate = interpolate;
+    p.density_size = {int(byte(0) << 8 | byte(1)), int(byte(2) << 8 | byte(3)), int(byte(4) << 8 | byte(5))};
+    const std::size_t count = std::size_t(p.density_size.x) * std::size_t(p.density_size.y) * p.density_size.z;
+    const std::size_t width = (bytes.size() - 6) / count;
+    const double top = width == 4 ? 4294967295.0 : width == 2 ? 65535.0 : 255.0;
+    auto voxels = std::make_shared<std::vector<double>>(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        std::uint32_t v = 0;
+        for (std::size_t b = 0; b < width; ++b) v = v << 8 | byte(6 + i * width + b);
+        (*voxels)[i] = double(v) / top;
+    }
+    p.density_voxels = voxels;
+    return p;
+}
+
+sg::Pattern tiling(int type) {
+    sg::Pattern p = make(Kind::Tiling);
+    p.tiling_type = type;
+    return p;
+}
+
 sg::Pattern fractal(Kind kind, int iterations, int exponent = 2) {
     sg::Pattern p = make(kind);
     p.fractal_iterations = iterations;
@@ -294,6 +333,7 @@ sg::Pattern fractal(Kind kind, int iterations, int exponent = 2) {
 std::vector<ReferenceCase> reference_cases() {
     constexpr double kExact = 1e-14;  // the same operations in the same order: equal but for printing
     constexpr double kNoise = 1e-13;  // through noise.cpp, which matches POV to the last bits
+    constexpr double kColour = 2e-7;  // through a pigment's colour: single precision
     using W = sg::Warp::Kind;
     std::vector<ReferenceCase> cases = {
         {"gradient", [] { return make(Kind::Gradient); }, kExact},
@@ -690,6 +730,34 @@ std::vector<ReferenceCase> reference_cases() {
              });
          },
          kNoise},
+        // tiling through a pigment's 0..1 grey map: POV's colours are single precision.
+        {"tiling1", [] { return tiling(1); }, kColour},
+        {"tiling2", [] { return tiling(2); }, kColour},
+        {"tiling3", [] { return tiling(3); }, kColour},
+        {"tiling4", [] { return tiling(4); }, kColour},
+        {"tiling5", [] { return tiling(5); }, kColour},
+        {"tiling6", [] { return tiling(6); }, kColour},
+        {"tiling7", [] { return tiling(7); }, kColour},
+        {"tiling8", [] { return tiling(8); }, kColour},
+        {"tiling9", [] { return tiling(9); }, kColour},
+        {"tiling10", [] { return tiling(10); }, kColour},
+        {"tiling11", [] { return tiling(11); }, kColour},
+        {"tiling12", [] { return tiling(12); }, kColour},
+        {"tiling_scaled",
+         [] {
+             sg::Pattern p = tiling(5);
+             p.pattern_from_object =
+                 pattern_scale(0.4) * glm::rotate(glm::dmat4(1.0), glm::radians(-20.0), glm::dvec3(0, 1, 0));
+             return p;
+         },
+         kColour},
+        {"density8", [] { return density_file("density8.df3", 0); }, kExact},
+        {"density8_trilinear", [] { return density_file("density8.df3", 1); }, kExact},
+        {"density8_tricubic", [] { return density_file("density8.df3", 2); }, kExact},
+        {"density16_trilinear", [] { return density_file("density16.df3", 1); }, kExact},
+        {"density16_tricubic", [] { return density_file("density16.df3", 2); }, kExact},
+        {"density32", [] { return density_file("density32.df3", 0); }, kExact},
+        {"density32_tricubic", [] { return density_file("density32.df3", 2); }, kExact},
         {"warp_turbulence",
          [] {
              return with(Kind::Gradient, [](sg::Pattern& p) {

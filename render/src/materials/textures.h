@@ -55,6 +55,18 @@ std::unique_ptr<Texture> make_checker_texture(const TextureSample& first, const 
                                               const glm::dmat4& pattern_from_object, const TextureSpaces& spaces);
 std::unique_ptr<Texture> make_pattern_texture(const sg::Pigment& pigment, const TextureSpaces& spaces,
                                               NoiseGenerator generator);
+// A patterned texture (texture_map, a block list of textures) as one
+// material: the map of its entries' pigments and normals, the first
+// entry's finish (texture_layers.cpp says why). Others are returned as
+// they are.
+sg::Material flatten_patterned_texture(const sg::Material& texture);
+// Layers' pigments composited as POV composites layered textures, bottom
+// first.
+std::unique_ptr<Texture> make_layered_texture(std::vector<std::unique_ptr<Texture>> layers);
+// How much of each layer (bottom first) shows, from the layers' mean
+// pigments; and finishes blended by such weights.
+std::vector<double> layer_visibility(const std::vector<TextureSample>& averages);
+sg::Finish blend_finishes(const std::vector<sg::Finish>& finishes, const std::vector<double>& weights);
 std::unique_ptr<NormalPerturbation> make_surface_normal(const sg::Normal& normal, const TextureSpaces& spaces,
                                                         NoiseGenerator generator);
 // Creates the shared TextureSystem on first use.

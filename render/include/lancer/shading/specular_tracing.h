@@ -47,7 +47,9 @@ struct SpecularSplit {
     Vec3 refracted{0.0f};
 };
 
-inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOptions& options) {
+// `depth`: how far the ray travelled to the hit (for POV's interior fade,
+// applied to what leaves through a back face).
+inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOptions& options, float depth = 0.0f) {
     SpecularSplit split;
     const Vec3 incident = -at.wo;
     const float cos_i = glm::dot(at.normal, at.wo);
@@ -74,6 +76,13 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
         // POV's conserve_energy: what the finish reflects is not transmitted.
         if (at.material.parameters().conserve_energy)
             split.transmission *= glm::clamp(Color(1.0f) - mirror, Color(0.0f), Color(1.0f));
+        // POV's interior fade: light that crossed the inside to leave here
+        // (or to be totally reflected back in) is dimmed by the distance.
+        if (!at.entering) {
+            const Color fade = at.material.interior_attenuation(depth);
+            split.transmission *= fade;
+            if (!refracts && !options.fresnel) split.reflection *= fade;
+        }
     }
     if (!is_black(split.reflection)) split.reflected = reflect(incident, at.normal);
     return split;
@@ -96,7 +105,7 @@ Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene,
     if (found == nullptr) return scene.background(ray);
     const Hit& hit = *found;
     const ShadingContext at = make_shading_context(hit, ray);
-    const SpecularSplit split = split_specular(at, options);
+    const SpecularSplit split = split_specular(at, options, hit.t * glm::length(ray.direction));
 
     const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
     Color radiance = surface_emission(at) + split.diffuse_scale * local.diffuse + local.glossy;

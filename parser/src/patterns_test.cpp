@@ -1,0 +1,203 @@
+// Patterns, maps, normals, patterned and layered textures and #default as
+// the parser reads them: the scene graph POV-Ray's rules give.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "parse_test_helpers.h"
+
+namespace lancer {
+namespace {
+
+using test::first_error;
+using test::parse_ok;
+
+sg::Vec3 apply(const sg::Mat4& m, const sg::Vec3& p) {
+    return sg::Vec3(m * glm::dvec4(p, 1.0));
+}
+
+const sg::Material& material_of(const sg::SceneGraph& scene, std::size_t i = 0) {
+    static const sg::Material none;
+    if (i >= scene.objects.size() || !scene.objects[i].material) {
+        ADD_FAILURE() << "object " << i << " has no material";
+        return none;
+    }
+    return *scene.objects[i].material;
+}
+
+TEST(ParserPatterns, ColorMapBothFormsAndDefaults) {
+    auto scene = parse_ok(
+        "plane { y, 0 pigment { gradient x color_map { [0 rgb 0] [0.5, 0.8 rgb 1 rgbt <1, 0, 0, 0.5>] } } }\n"
+        "plane { y, 0 pigment { wood } }\n"
+        "plane { y, 0 pigment { granite } }");
+    const sg::Pigment& p = material_of(scene, 0).pigment;
+    ASSERT_EQ(p.kind, sg::Pigment::Kind::Patterned);
+    EXPECT_EQ(p.pattern.kind, sg::Pattern::Kind::Gradient);
+    ASSERT_TRUE(p.color_map);
+    ASSERT_EQ(p.color_map->size(), 3u);  // the old [v1 v2 c1 c2] form is two entries
+    EXPECT_DOUBLE_EQ((*p.color_map)[1].value, 0.5);
+    EXPECT_DOUBLE_EQ((*p.color_map)[2].value, 0.8);
+    EXPECT_DOUBLE_EQ((*p.color_map)[2].color.transmit, 0.5);
+    // POV's own map for wood, and its triangle wave; a plain ramp for the rest.
+    const sg::Pigment& wood = material_of(scene, 1).pigment;
+    ASSERT_TRUE(wood.color_map);
+    EXPECT_EQ(wood.color_map->size(), 2u);
+    EXPECT_NEAR((*wood.color_map)[0].color.rgb.x, 0.666, 1e-12);
+    EXPECT_EQ(wood.pattern.wave, sg::WaveType::Triangle);
+    const sg::Pigment& granite = material_of(scene, 2).pigment;
+    ASSERT_TRUE(granite.color_map);
+    EXPECT_EQ(granite.pattern.wave, sg::WaveType::Ramp);
+    EXPECT_EQ(granite.color_map->back().color.rgb, sg::Vec3(1.0));
+}
+
+TEST(ParserPatterns, DeclaredMapsAndNormalsReusable) {
+    auto scene = parse_ok(
+        "#declare M = color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] }\n"
+        "#declare PM = pigment_map { [0 rgb 1] [1 checker rgb 0, rgb 1] }\n"
+        "#declare N = normal { bumps 0.3 scale 0.2 }\n"
+        "sphere { 0, 1 pigment { bozo color_map { M } } normal { N } }\n"
+        "sphere { 0, 1 pigment { onion pigment_map { PM } } }");
+    const sg::Material& a = material_of(scene, 0);
+    ASSERT_TRUE(a.pigment.color_map);
+    EXPECT_EQ(a.pigment.color_map->front().color.rgb, sg::Vec3(1, 0, 0));
+    ASSERT_TRUE(a.normal);
+    EXPECT_EQ(a.normal->pattern.kind, sg::Pattern::Kind::Bumps);
+    EXPECT_NEAR(a.normal->bump_size, 0.3, 1e-12);
+    const sg::Material& b = material_of(scene, 1);
+    ASSERT_EQ(b.pigment.pigment_map.size(), 2u);
+    EXPECT_EQ(b.pigment.pigment_map[1].pigment->pattern.kind, sg::Pattern::Kind::Checker);
+}
+
+TEST(ParserPatterns, TransformsAndWarpsKeepTheirOrder) {
+    auto scene = parse_ok(
+        "plane { y, 0 pigment { bozo scale 2 warp { turbulence 0.5 } translate x } }\n"
+        "plane { y, 0 pigment { bozo warp { repeat x * 0.5 flip y } } }");
+    const sg::Pattern& p = material_of(scene, 0).pigment.pattern;
+    ASSERT_EQ(p.warps.size(), 2u);  // the scale before the warp becomes a step of its own
+    EXPECT_EQ(p.warps[0].kind, sg::Warp::Kind::Transform);
+    EXPECT_EQ(p.warps[1].kind, sg::Warp::Kind::Turbulence);
+    EXPECT_EQ(p.warps[1].turbulence, sg::Vec3(0.5));
+    // The translate after the warp is what the point meets first.
+    EXPECT_EQ(apply(p.pattern_from_object, {1, 0, 0}), sg::Vec3(0, 0, 0));
+    EXPECT_EQ(apply(p.warps[0].inner_from_outer, {2, 0, 0}), sg::Vec3(1, 0, 0));
+    const sg::Warp& repeat = material_of(scene, 1).pigment.pattern.warps.at(0);
+    EXPECT_EQ(repeat.kind, sg::Warp::Kind::Repeat);
+    EXPECT_EQ(repeat.repeat, sg::Vec3(0.5, 0, 0));
+    EXPECT_EQ(repeat.flip, sg::Vec3(0, 1, 0));
+}
+
+TEST(ParserPatterns, MapEntriesLiveInTheirParentsPatternSpace) {
+    // A transform on the outer pigment moves its own pattern only: POV
+    // evaluates the map's pigments at the parent's pattern point.
+    auto scene =
+        parse_ok("plane { y, 0 pigment { gradient x pigment_map { [0 checker scale 0.5] [1 rgb 1] } scale 4 } }");
+    const sg::Pigment& p = material_of(scene).pigment;
+    EXPECT_EQ(apply(p.pattern.pattern_from_object, {4, 0, 0}), sg::Vec3(1, 0, 0));
+    EXPECT_EQ(apply(p.pigment_map[0].pigment->pattern.pattern_from_object, {1, 0, 0}), sg::Vec3(2, 0, 0));
+}
+
+TEST(ParserPatterns, BlockPatternsTakeListsAndFillDefaults) {
+    auto scene = parse_ok(
+        "plane { y, 0 pigment { hexagon rgb 1 } }\n"
+        "plane { y, 0 pigment { brick pigment { rgb 1 } pigment { bozo } } }");
+    const sg::Pigment& hexagon = material_of(scene, 0).pigment;
+    ASSERT_EQ(hexagon.block_pigments.size(), 3u);
+    EXPECT_EQ(hexagon.block_pigments[0]->color.rgb, sg::Vec3(1));
+    EXPECT_EQ(hexagon.block_pigments[1]->color.rgb, sg::Vec3(0, 1, 0));  // POV's default green, red
+    EXPECT_EQ(hexagon.block_pigments[2]->color.rgb, sg::Vec3(1, 0, 0));
+    const sg::Pigment& brick = material_of(scene, 1).pigment;
+    ASSERT_EQ(brick.block_pigments.size(), 2u);
+    EXPECT_EQ(brick.block_pigments[1]->pattern.kind, sg::Pattern::Kind::Bozo);
+    const Diagnostic too_many = first_error("plane { y, 0 pigment { checker rgb 1, rgb 0, rgb 0.5 } }");
+    EXPECT_NE(too_many.message.find("checker takes at most 2"), std::string::npos) << too_many.message;
+    const Diagnostic map = first_error("plane { y, 0 pigment { hexagon color_map { [0 rgb 0] } } }");
+    EXPECT_NE(map.message.find("list of colours, not a color_map"), std::string::npos) << map.message;
+}
+
+TEST(ParserPatterns, BadSettingsAreLocatedErrors) {
+    EXPECT_NE(first_error("plane { y, 0 pigment { bozo noise_generator 7 } }").message.find("noise_generator"),
+              std::string::npos);
+    EXPECT_NE(first_error("plane { y, 0 pigment { tiling 40 } }").message.find("tiling type"), std::string::npos);
+    EXPECT_NE(first_error("plane { y, 0 pigment { bozo warp { offset 1 } } }").message.find("needs a kind"),
+              std::string::npos);
+    const Diagnostic e = first_error("plane { y, 0\n  pigment { mandel 0 } }");
+    EXPECT_EQ(e.location.line, 2);
+    EXPECT_NE(e.message.find("at least 1 iteration"), std::string::npos);
+}
+
+TEST(ParserNormals, SlopeMapNormalMapAndAccuracy) {
+    auto scene = parse_ok(
+        "sphere { 0, 1 normal { gradient x 0.8 slope_map { [0 <0, 1>] [1 <1, 0>] } accuracy 0.01 } }\n"
+        "sphere { 0, 1 normal { onion normal_map { [0.2 bumps 0.5] [0.8 dents 0.2 scale 0.1] } } }");
+    const sg::Normal& a = *material_of(scene, 0).normal;
+    EXPECT_NEAR(a.bump_size, 0.8, 1e-12);
+    EXPECT_NEAR(a.accuracy, 0.01, 1e-12);
+    ASSERT_EQ(a.slope_map.size(), 2u);
+    EXPECT_DOUBLE_EQ(a.slope_map[1].height, 1.0);
+    EXPECT_DOUBLE_EQ(a.slope_map[0].slope, 1.0);
+    const sg::Normal& b = *material_of(scene, 1).normal;
+    ASSERT_EQ(b.normal_map.size(), 2u);
+    EXPECT_EQ(b.normal_map[1].normal->pattern.kind, sg::Pattern::Kind::Dents);
+    EXPECT_NEAR(b.normal_map[1].normal->bump_size, 0.2, 1e-12);
+}
+
+TEST(ParserTextures, LayeredTexturesStackOnObjectsAndInDeclarations) {
+    auto scene = parse_ok(
+        "#declare T = texture { pigment { rgb 1 } } texture { pigment { bozo } finish { phong 1 } }\n"
+        "#declare After = 1;\n"
+        "sphere { 0, 1 texture { T } }\n"
+        "sphere { 0, 1 texture { pigment { rgb <1, 0, 0> } } texture { pigment { rgbt <0, 0, 1, 0.5> } } }");
+    const sg::Material& declared = material_of(scene, 0);
+    ASSERT_EQ(declared.layers_above.size(), 1u);
+    EXPECT_EQ(declared.layers_above[0]->pigment.pattern.kind, sg::Pattern::Kind::Bozo);
+    EXPECT_DOUBLE_EQ(declared.layers_above[0]->finish.phong, 1.0);
+    const sg::Material& object = material_of(scene, 1);
+    EXPECT_EQ(object.pigment.color.rgb, sg::Vec3(1, 0, 0));
+    ASSERT_EQ(object.layers_above.size(), 1u);
+    EXPECT_DOUBLE_EQ(object.layers_above[0]->pigment.color.transmit, 0.5);
+}
+
+TEST(ParserTextures, TextureMapAndBlockTextures) {
+    auto scene = parse_ok(
+        "#declare A = texture { pigment { rgb 1 } finish { phong 1 } }\n"
+        "plane { y, 0 texture { gradient x texture_map { [0 A] [1 pigment { rgb 0 }] } scale 2 } }\n"
+        "plane { y, 0 texture { checker texture { A } texture { pigment { rgb 0.5 } } } }");
+    const sg::Material& map = material_of(scene, 0);
+    ASSERT_TRUE(map.pattern);
+    EXPECT_EQ(map.pattern->kind, sg::Pattern::Kind::Gradient);
+    ASSERT_EQ(map.texture_map.size(), 2u);
+    EXPECT_DOUBLE_EQ(map.texture_map[0].texture->finish.phong, 1.0);
+    EXPECT_EQ(apply(map.pattern->pattern_from_object, {2, 0, 0}), sg::Vec3(1, 0, 0));
+    const sg::Material& blocks = material_of(scene, 1);
+    ASSERT_EQ(blocks.block_textures.size(), 2u);
+    EXPECT_EQ(blocks.block_textures[1]->pigment.color.rgb, sg::Vec3(0.5));
+    EXPECT_NE(
+        first_error("plane { y, 0 texture { texture_map { [0 pigment { rgb 1 }] } } }").message.find("needs a pattern"),
+        std::string::npos);
+}
+
+TEST(ParserTextures, DefaultFinishReachesPigmentOnlyObjectsAndTextures) {
+    auto scene = parse_ok(
+        "#default { finish { ambient 0 diffuse 0.9 } }\n"
+        "sphere { 0, 1 pigment { rgb 1 } }\n"
+        "sphere { 0, 1 texture { pigment { rgb 1 } } }\n"
+        "sphere { 0, 1 finish { phong 1 } }\n"
+        "sphere { 0, 1 }");
+    for (std::size_t i = 0; i < 4; ++i) {
+        const sg::Material& m = material_of(scene, i);
+        EXPECT_DOUBLE_EQ(m.finish.diffuse, 0.9) << "object " << i;
+        EXPECT_EQ(m.finish.ambient, sg::Vec3(0.0)) << "object " << i;
+    }
+    EXPECT_DOUBLE_EQ(material_of(scene, 2).finish.phong, 1.0);
+}
+
+TEST(ParserDirectives, DeprecatedDeclarationWarnsOnUse) {
+    ParseResult result = parse_scene_string(
+        "#declare deprecated once \"use T2\" T1 = texture { pigment { rgb 1 } }\n"
+        "sphere { 0, 1 texture { T1 } }\nsphere { 0, 1 texture { T1 } }",
+        "d.pov");
+    ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
+    EXPECT_EQ(test::count_warnings(result), 1);  // once
+    EXPECT_NE(test::all_diagnostics(result).find("'T1' is deprecated: use T2"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace lancer
