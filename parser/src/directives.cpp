@@ -575,22 +575,31 @@ void Evaluator::settle_version_defaults() {
 // #default { texture {...} | pigment {...} | normal {...} | finish {...} }
 void Evaluator::directive_default(const RawToken& d) {
     if (!expect_raw_punct("{", "after #default")) return;
-    Value value = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
-    if (m_aborted) return;
-    take_punct(";");
-    if (!expect_raw_punct("}", "to close #default { ... }")) return;
+    // Several items may follow one another: #default { pigment {…} finish {…} }.
     auto texture = std::make_shared<sg::Material>(m_default_texture ? *m_default_texture : sg::Material{});
-    switch (value.kind) {
-    case Value::Kind::Texture: *texture = *value.texture; break;
-    case Value::Kind::Pigment: texture->pigment = *value.pigment; break;
-    case Value::Kind::Finish: texture->finish = *value.finish; break;
-    case Value::Kind::Normal: texture->normal = value.normal; break;
-    default:
-        error(d.location, "#default expects a texture, pigment, normal or finish, found " + describe(value));
-        return;
+    while (!take_punct("}")) {
+        if (peek_raw() == nullptr) {
+            error(d.location, "'{' after #default has no matching '}'");
+            return abort_parse();
+        }
+        Value value = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
+        if (m_aborted) return;
+        take_punct(";");
+        switch (value.kind) {
+        case Value::Kind::Texture: *texture = *value.texture; break;
+        case Value::Kind::Pigment: texture->pigment = *value.pigment; break;
+        case Value::Kind::Finish: texture->finish = *value.finish; break;
+        case Value::Kind::Normal: texture->normal = value.normal; break;
+        default:
+            error(d.location, "#default expects a texture, pigment, normal or finish, found " + describe(value));
+            return;
+        }
+        // The next item starts from what this one set (a finish { } reads
+        // the default finish).
+        texture->name = "#default";
+        m_default_texture = texture;
+        texture = std::make_shared<sg::Material>(*m_default_texture);
     }
-    texture->name = "#default";
-    m_default_texture = texture;
 }
 
 }  // namespace lancer::parse

@@ -253,6 +253,10 @@ class Evaluator {
     PatternEdit tiling_pattern(const Value& v, const SourceRange& where);
     PatternEdit density_file_pattern(const std::string& name, const sg::SourceLocation& where);
     PatternEdit slope_pattern(const Value& v, const SourceRange& where);
+    PatternEdit slope_block(const Value& direction, const SourceRange& where,
+                            const std::optional<std::pair<double, double>>& slope_range,
+                            const std::optional<std::pair<Value, SourceRange>>& altitude,
+                            const std::optional<std::pair<double, double>>& altitude_range, bool point_at);
     PatternEdit fractal_pattern(sg::Pattern::Kind kind, const Value& iterations, const SourceRange& where,
                                 const Value* julia_parameter, const SourceRange& wj);
     PatternEdit magnet_pattern(const Value& type, const SourceRange& where, PatternEdit fractal);

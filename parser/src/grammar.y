@@ -123,7 +123,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        NUMBER_OF_SIDES "number_of_sides" NUMBER_OF_TILES "number_of_tiles" ALTITUDE "altitude"
        DENSITY_FILE "density_file" DF3 "df3" PATTERN "pattern"
 
-%nterm <Value> expr arith postfix primary colour colour_base declared_value string_value
+%nterm <Value> expr arith postfix primary colour colour_base declared_value string_value bare_colour
 %nterm <std::vector<Value>> arith_seq expr_list opt_args vector_items expr_seq macro_args macro_arg_list
 %nterm <Value> macro_arg vector_item
 %nterm <std::string> component param_name
@@ -184,6 +184,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::shared_ptr<std::vector<sg::NormalMapEntry>>> normal_map normal_map_entries
 %nterm <std::vector<sg::SlopeMapEntry>> slope_map_entries
 %nterm <std::optional<std::pair<Value, SourceRange>>> opt_amount
+%nterm <std::function<void(sg::Pattern&)>> slope_block
+%nterm <std::optional<std::pair<double, double>>> opt_range
 %nterm <std::shared_ptr<sg::Material>> texture_layers texture_body
 %nterm <std::vector<sg::TextureMapEntry>> texture_map_entries
 
@@ -696,6 +698,9 @@ pigment_start
   | PIGMENT_ID         { auto p = $1.value.pigment; $$ = [p](sg::Pigment& target) { target = *p; }; }
   | colour             { sg::Color c = ev.to_color($1, @1);
                          $$ = [c](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Solid; p.color = c; }; }
+  /* POV also reads a colour given by its channels alone: pigment { red 1 green 0.5 } */
+  | bare_colour        { sg::Color c = ev.to_color($1, @1);
+                         $$ = [c](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Solid; p.color = c; }; }
   | image_map          { sg::ImageMap image = $1;
                          $$ = [image](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Image; p.image = image; }; }
   | pattern_name       { $$ = ev.patterned_pigment($1, LOC(@1)); }
@@ -758,6 +763,7 @@ pattern_name
   | "tiling" arith %prec OPT_EMPTY    { $$ = ev.tiling_pattern($2, @2); }
   | "density_file" "df3" STRING { $$ = ev.density_file_pattern($3.text, LOC(@3)); }
   | "slope" arith %prec OPT_EMPTY     { $$ = ev.slope_pattern($2, @2); }
+  | "slope" "{" slope_block "}"        { $$ = $3; }
   | "mandel" arith %prec OPT_EMPTY    { $$ = ev.fractal_pattern(sg::Pattern::Kind::Mandel, $2, @2, nullptr, {}); }
   | "julia" arith opt_comma arith %prec OPT_EMPTY { $$ = ev.fractal_pattern(sg::Pattern::Kind::Julia, $4, @4, &$2, @2); }
   | "magnet" arith "mandel" arith %prec OPT_EMPTY
@@ -904,6 +910,21 @@ normal_start
 opt_amount
   : %empty %prec OPT_EMPTY { }
   | arith %prec OPT_EMPTY { $$ = std::make_pair($1, @1); }
+  | "," arith %prec OPT_EMPTY { $$ = std::make_pair($2, @2); }
+  ;
+
+/* slope { <direction> [, lo, hi] [altitude <a> [, lo, hi]] } or
+ * slope { point_at <p> [, lo, hi] } */
+slope_block
+  : arith opt_range    { $$ = ev.slope_block($1, @1, $2, std::nullopt, std::nullopt, false); }
+  | arith opt_range "altitude" arith opt_range
+      { $$ = ev.slope_block($1, @1, $2, std::make_pair($4, @4), $5, false); }
+  | "point_at" arith opt_range { $$ = ev.slope_block($2, @2, $3, std::nullopt, std::nullopt, true); }
+  ;
+
+opt_range
+  : %empty %prec OPT_EMPTY { }
+  | "," arith "," arith %prec OPT_EMPTY { $$ = std::make_pair(ev.to_float($2, @2, "a low value"), ev.to_float($4, @4, "a high value")); }
   ;
 
 normal_mods
@@ -1056,6 +1077,11 @@ colour_base
   | colour_keyword expr %prec OPT_EMPTY { $$ = ev.colour_from($2, @2); }
   | colour_keyword colour_channel expr %prec OPT_EMPTY
       { $$ = ev.colour_component(Value::color(sg::Color{}), @1, $2, $3, @3); }
+  ;
+
+bare_colour
+  : colour_channel expr %prec OPT_EMPTY { $$ = ev.colour_component(Value::color(sg::Color{}), @1, $1, $2, @2); }
+  | bare_colour colour_channel expr %prec OPT_EMPTY { $$ = ev.colour_component($1, @1, $2, $3, @3); }
   ;
 
 colour_channel

@@ -274,6 +274,28 @@ Evaluator::PatternEdit Evaluator::slope_pattern(const Value& v, const SourceRang
     };
 }
 
+Evaluator::PatternEdit Evaluator::slope_block(const Value& direction, const SourceRange& where,
+                                              const std::optional<std::pair<double, double>>& slope_range,
+                                              const std::optional<std::pair<Value, SourceRange>>& altitude,
+                                              const std::optional<std::pair<double, double>>& altitude_range,
+                                              bool point_at) {
+    const sg::Vec3 vector = to_vec3(direction, where);
+    if (!point_at && glm::length(vector) == 0.0 && !altitude) error(where.begin, "slope needs a non-zero direction");
+    sg::Vec3 altitude_vector(0.0);
+    if (altitude) altitude_vector = to_vec3(altitude->first, altitude->second);
+    return [=](sg::Pattern& p) {
+        p.kind = PatternKind::Slope;
+        p.vector = vector;
+        p.slope_point_at = point_at;
+        if (slope_range) p.slope_range = sg::Vec2(slope_range->first, slope_range->second);
+        if (altitude) {
+            p.slope_altitude = altitude_vector;
+            p.slope_has_altitude = true;
+        }
+        if (altitude_range) p.altitude_range = sg::Vec2(altitude_range->first, altitude_range->second);
+    };
+}
+
 Evaluator::PatternEdit Evaluator::fractal_pattern(sg::Pattern::Kind kind, const Value& iterations,
                                                   const SourceRange& where, const Value* julia_parameter,
                                                   const SourceRange& wj) {
