@@ -40,7 +40,7 @@ fi
 
 if [ "${LANCER_SKIP_FUZZ:-0}" != 1 ]; then
   start=$SECONDS
-  for target in scene obj shapes; do
+  for target in scene obj shapes patterns; do
     # A finding makes libFuzzer exit non-zero and leaves the input in
     # build-fuzz/artifacts/<target>/ (docs/robustness.md says how to replay it).
     log="${TMPDIR:-/tmp}/lancer-fuzz-$target.log"

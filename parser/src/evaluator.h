@@ -48,7 +48,7 @@ void transform_material(sg::Material& material, const sg::Mat4& world_from_local
 // Re-expresses every pattern of a material (pigments, normals, nested
 // maps) for a point that is first mapped by `inner_from_outer`: what
 // attaching a texture to a transformed object does.
-void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer);
+void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer, bool object_move = true);
 void transform_light(sg::Light& light, const sg::Mat4& world_from_local);
 // `sky_along_view` (when not null) is set when look_at looks along the sky.
 sg::Camera resolve_camera(const CameraSpec& spec, bool* sky_along_view = nullptr);
@@ -280,6 +280,8 @@ class Evaluator {
     PigmentEdit block_pigment(const PatternEdit& pattern, const std::vector<std::shared_ptr<sg::Pigment>>& pigments,
                               const sg::SourceLocation& at);
     PigmentEdit average_pigment(const sg::SourceLocation& at);
+    PigmentEdit uv_mapping_pigment();
+    PatternEdit pigment_pattern(const std::shared_ptr<sg::Pigment>& pigment, const sg::SourceLocation& at);
     PigmentEdit pigment_pattern_edit(const PatternEdit& edit, const sg::SourceLocation& at);
     PigmentEdit color_map_edit(const sg::ColorMapRef& map, const sg::SourceLocation& at);
     PigmentEdit pigment_map_edit(const std::shared_ptr<std::vector<sg::PigmentMapEntry>>& map,

@@ -104,7 +104,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        HEIGHT_FIELD "height_field" WATER_LEVEL "water_level" SMOOTH "smooth" PREMULTIPLIED "premultiplied"
        GIF "gif" PGM "pgm" PPM "ppm" BMP "bmp" SYS "sys" IFF "iff" POT "pot"
        POLYNOMIAL "polynomial" XYZ "xyz" HF_GRAY_16 "hf_gray_16"
-       FADE_COLOR "fade_color" FADE_COLOUR "fade_colour" TEXTURE_MAP "texture_map" NORMAL "normal" COLOR_MAP "color_map" COLOUR_MAP "colour_map" PIGMENT_MAP "pigment_map"
+       UV_MAPPING "uv_mapping" PIGMENT_PATTERN "pigment_pattern" FADE_COLOR "fade_color" FADE_COLOUR "fade_colour" TEXTURE_MAP "texture_map" NORMAL "normal" COLOR_MAP "color_map" COLOUR_MAP "colour_map" PIGMENT_MAP "pigment_map"
        NORMAL_MAP "normal_map" SLOPE_MAP "slope_map" BUMP_SIZE "bump_size" BUMP_MAP "bump_map"
        USE_COLOR "use_color" USE_COLOUR "use_colour" USE_INDEX "use_index" AVERAGE "average"
        AGATE "agate" AOI "aoi" BOXED "boxed" BOZO "bozo" SPOTTED "spotted" BUMPS "bumps" CELLS "cells"
@@ -192,6 +192,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %precedence OPT_EMPTY
 /* After an optional argument (poly_wave [exponent]), an identifier is the argument. */
 %precedence UNDECLARED_ID
+/* A leading uv_mapping belongs to the pigment or normal it starts. */
+%precedence UV_MAPPING
 %right "?" ":"
 %left "|"
 %left "&"
@@ -662,6 +664,7 @@ texture_items
   | texture_items block_pattern_name texture_seq { $$ = std::move($1); $$.push_back(ev.texture_pattern($2, $3, LOC(@2))); }
   | texture_items pattern_modifier { $$ = std::move($1); auto e = $2;
                                $$.push_back([e](sg::Material& m) { if (m.pattern) e(*m.pattern); }); }
+  | texture_items "uv_mapping" { $$ = std::move($1); $$.push_back([](sg::Material& m) { m.uv_mapping = true; }); }
   | texture_items "texture_map" "{" texture_map_entries "}" { $$ = std::move($1); $$.push_back(ev.texture_map_edit($4, LOC(@2))); }
   | texture_items transform_item { $$ = std::move($1); sg::Mat4 t = $2;
                                $$.push_back([t](sg::Material& m) { transform_material(m, t); }); }
@@ -691,10 +694,13 @@ pigment
 /* A pigment's items, also a pigment_map entry's (without braces). */
 pigment_body
   : pigment_start pigment_mods { $2.insert($2.begin(), $1); $$ = ev.build_pigment($2, LOC(@1)); }
+  /* POV writes uv_mapping before the pattern too. */
+  | "uv_mapping" pigment_start pigment_mods
+      { $3.insert($3.begin(), $2); $3.push_back(ev.uv_mapping_pigment()); $$ = ev.build_pigment($3, LOC(@1)); }
   ;
 
 pigment_start
-  : %empty             { $$ = [](sg::Pigment&) {}; }
+  : %empty %prec OPT_EMPTY { $$ = [](sg::Pigment&) {}; }
   | PIGMENT_ID         { auto p = $1.value.pigment; $$ = [p](sg::Pigment& target) { target = *p; }; }
   | colour             { sg::Color c = ev.to_color($1, @1);
                          $$ = [c](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Solid; p.color = c; }; }
@@ -725,6 +731,7 @@ pigment_mods
   | pigment_mods transform_item { $$ = std::move($1); sg::Mat4 t = $2;
                                   $$.push_back([t](sg::Pigment& p) { transform_pattern(p, t); }); }
   | pigment_mods "quick_color" colour { $$ = std::move($1); ev.ignored(LOC(@2), "quick_color"); }
+  | pigment_mods "uv_mapping" { $$ = std::move($1); $$.push_back(ev.uv_mapping_pigment()); }
   | pigment_mods pattern_modifier { $$ = std::move($1); $$.push_back(ev.pigment_pattern_edit($2, LOC(@2))); }
   | pigment_mods color_map { $$ = std::move($1); $$.push_back(ev.color_map_edit($2, LOC(@2))); }
   | pigment_mods pigment_map { $$ = std::move($1); $$.push_back(ev.pigment_map_edit($2, LOC(@2))); }
@@ -759,6 +766,7 @@ pattern_name
   | "waves"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Waves); }
   | "wood"             { $$ = ev.pattern_kind(sg::Pattern::Kind::Wood); }
   | "wrinkles"         { $$ = ev.pattern_kind(sg::Pattern::Kind::Wrinkles); }
+  | "pigment_pattern" "{" pigment_body "}" { $$ = ev.pigment_pattern($3, LOC(@1)); }
   | "pavement"         { $$ = ev.pattern_kind(sg::Pattern::Kind::Pavement); }
   | "tiling" arith %prec OPT_EMPTY    { $$ = ev.tiling_pattern($2, @2); }
   | "density_file" "df3" STRING { $$ = ev.density_file_pattern($3.text, LOC(@3)); }
@@ -896,10 +904,13 @@ normal
 
 normal_body
   : normal_start normal_mods { $2.insert($2.begin(), $1); $$ = ev.build_normal($2, LOC(@1)); }
+  | "uv_mapping" normal_start normal_mods
+      { $3.insert($3.begin(), $2); $3.push_back([](sg::Normal& n) { n.pattern.uv_mapping = true; });
+        $$ = ev.build_normal($3, LOC(@1)); }
   ;
 
 normal_start
-  : %empty             { $$ = [](sg::Normal&) {}; }
+  : %empty %prec OPT_EMPTY { $$ = [](sg::Normal&) {}; }
   | NORMAL_ID          { auto n = $1.value.normal; $$ = [n](sg::Normal& target) { target = *n; }; }
   | pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
   | block_pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
@@ -942,6 +953,7 @@ normal_mod
   | "use_color"        { $$ = [](sg::Normal& n) { n.bump_map_use_color = true; }; }
   | "use_colour"       { $$ = [](sg::Normal& n) { n.bump_map_use_color = true; }; }
   | "use_index"        { $$ = [](sg::Normal& n) { n.bump_map_use_color = false; }; }
+  | "uv_mapping"       { $$ = [](sg::Normal& n) { n.pattern.uv_mapping = true; }; }
   ;
 
 normal_map

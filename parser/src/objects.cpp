@@ -284,6 +284,16 @@ sg::Mat4 Evaluator::inverse(const sg::Mat4& m, const SourceRange& where) {
 std::shared_ptr<sg::Material> Evaluator::build_texture(const Edits<sg::Material>& edits, const sg::SourceLocation& at) {
     auto material = std::make_shared<sg::Material>(default_texture());
     for (const auto& edit : edits) edit(*material);
+    if (material->uv_mapping) {
+        if (material->pattern) material->pattern->uv_mapping = true;
+        material->pigment.pattern.uv_mapping = true;
+        material->pigment.image.map_type = sg::MapType::UV;
+        if (material->normal) {
+            auto normal = std::make_shared<sg::Normal>(*material->normal);
+            normal->pattern.uv_mapping = true;
+            material->normal = normal;
+        }
+    }
     material->location = at;
     return material;
 }

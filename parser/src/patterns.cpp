@@ -97,20 +97,21 @@ void move_pattern(sg::Pattern& pattern, const sg::Mat4& inner_from_outer) {
 
 // POV evaluates a map's pigments and normals at their parent's pattern
 // point (after the parent's transforms and warps): a transform written on
-// the parent moves only the parent's own pattern.
-void move_pigment(sg::Pigment& pigment, const sg::Mat4& inner_from_outer) {
+// the parent moves only the parent's own pattern. A uv-mapped pattern lives
+// on the surface: moving the object does not move it.
+void move_pigment(sg::Pigment& pigment, const sg::Mat4& inner_from_outer, bool object_move = false) {
     pigment.pattern_from_object = pigment.pattern_from_object * inner_from_outer;
-    move_pattern(pigment.pattern, inner_from_outer);
+    if (!(object_move && pigment.pattern.uv_mapping)) move_pattern(pigment.pattern, inner_from_outer);
 }
 
-void move_normal(sg::Normal& normal, const sg::Mat4& inner_from_outer) {
-    move_pattern(normal.pattern, inner_from_outer);
+void move_normal(sg::Normal& normal, const sg::Mat4& inner_from_outer, bool object_move = false) {
+    if (!(object_move && normal.pattern.uv_mapping)) move_pattern(normal.pattern, inner_from_outer);
 }
 
-sg::NormalRef moved_normal(const sg::NormalRef& normal, const sg::Mat4& inner_from_outer) {
+sg::NormalRef moved_normal(const sg::NormalRef& normal, const sg::Mat4& inner_from_outer, bool object_move) {
     if (!normal) return normal;
     auto moved = std::make_shared<sg::Normal>(*normal);
-    move_normal(*moved, inner_from_outer);
+    move_normal(*moved, inner_from_outer, object_move);
     return moved;
 }
 
@@ -138,18 +139,19 @@ void transform_normal(sg::Normal& normal, const sg::Mat4& world_from_local) {
 }
 
 void transform_material(sg::Material& material, const sg::Mat4& world_from_local) {
-    move_patterns(material, glm::inverse(world_from_local));
+    move_patterns(material, glm::inverse(world_from_local), false);
 }
 
-void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer) {
-    move_pigment(material.pigment, inner_from_outer);
-    material.normal = moved_normal(material.normal, inner_from_outer);
+void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer, bool object_move) {
+    move_pigment(material.pigment, inner_from_outer, object_move);
+    material.normal = moved_normal(material.normal, inner_from_outer, object_move);
     // A patterned texture's entries live in its pattern space: only the
     // pattern moves. Layers are whole textures of their own: each moves.
-    if (material.pattern) move_pattern(*material.pattern, inner_from_outer);
+    if (material.pattern && !(object_move && material.pattern->uv_mapping))
+        move_pattern(*material.pattern, inner_from_outer);
     for (auto& layer : material.layers_above) {
         auto moved = std::make_shared<sg::Material>(*layer);
-        move_patterns(*moved, inner_from_outer);
+        move_patterns(*moved, inner_from_outer, object_move);
         layer = moved;
     }
 }
@@ -157,6 +159,13 @@ void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer) {
 // ------------------------------------------------------------- patterns
 
 namespace {
+// A setting's value as an int without overflow (values past int's range
+// are out of every pattern's range anyway; the caller's checks report them).
+int saturated_int(double value) {
+    if (!(value == value)) return 0;
+    return static_cast<int>(std::clamp(value, -2.0e9, 2.0e9));
+}
+
 // POV gives marble, wood and the spirals a triangle wave unless another is
 // written.
 sg::WaveType default_wave(PatternKind kind) {
@@ -337,7 +346,7 @@ Evaluator::PatternEdit Evaluator::pattern_scalar(const std::string& name, const 
         return [](sg::Pattern&) {};
     }
     if (name == "octaves") {
-        int octaves = static_cast<int>(value);
+        int octaves = saturated_int(value);
         if (octaves < 1 || octaves > 10) {
             warning(where.begin,
                     "octaves is limited to 1..10 (as in POV-Ray); using " + std::to_string(std::clamp(octaves, 1, 10)));
@@ -368,20 +377,20 @@ Evaluator::PatternEdit Evaluator::pattern_scalar(const std::string& name, const 
     if (name == "coords") return [value](sg::Pattern& p) { p.facets_coords = value; };
     if (name == "size") return [value](sg::Pattern& p) { p.facets_size = value; };
     if (name == "exponent") {
-        const int exponent = static_cast<int>(value);
+        const int exponent = saturated_int(value);
         if (exponent < 2 || exponent > 33) error(where.begin, "fractal exponent must be 2 to 33");
         return [exponent](sg::Pattern& p) { p.fractal_exponent = std::clamp(exponent, 2, 33); };
     }
     if (name == "control0") return [value](sg::Pattern& p) { p.quilted_control0 = value; };
     if (name == "control1") return [value](sg::Pattern& p) { p.quilted_control1 = value; };
-    if (name == "number_of_sides") return [value](sg::Pattern& p) { p.pavement_sides = static_cast<int>(value); };
-    if (name == "number_of_tiles") return [value](sg::Pattern& p) { p.pavement_tiles = static_cast<int>(value); };
+    if (name == "number_of_sides") return [value](sg::Pattern& p) { p.pavement_sides = saturated_int(value); };
+    if (name == "number_of_tiles") return [value](sg::Pattern& p) { p.pavement_tiles = saturated_int(value); };
     // pavement's pattern N, and its one-number exterior N / interior N
     // (a fractal's take a factor too: pattern_pair).
-    if (name == "pattern") return [value](sg::Pattern& p) { p.pavement_number = static_cast<int>(value); };
-    if (name == "exterior") return [value](sg::Pattern& p) { p.pavement_exterior = static_cast<int>(value); };
-    if (name == "interior") return [value](sg::Pattern& p) { p.pavement_interior = static_cast<int>(value); };
-    if (name == "interpolate") return [value](sg::Pattern& p) { p.file_interpolate = static_cast<int>(value); };
+    if (name == "pattern") return [value](sg::Pattern& p) { p.pavement_number = saturated_int(value); };
+    if (name == "exterior") return [value](sg::Pattern& p) { p.pavement_exterior = saturated_int(value); };
+    if (name == "interior") return [value](sg::Pattern& p) { p.pavement_interior = saturated_int(value); };
+    if (name == "interpolate") return [value](sg::Pattern& p) { p.file_interpolate = saturated_int(value); };
     error(where.begin, "unknown pattern setting " + name);
     return [](sg::Pattern&) {};
 }
@@ -394,7 +403,7 @@ Evaluator::PatternEdit Evaluator::pattern_vector(const std::string& name, const 
         return [value](sg::Pattern& p) {
             // pavement's form is a number (POV reads a float there).
             if (p.kind == PatternKind::Pavement)
-                p.pavement_form = static_cast<int>(value.x);
+                p.pavement_form = saturated_int(value.x);
             else
                 p.crackle_form = value;
         };
@@ -467,7 +476,7 @@ std::function<void(sg::Warp&)> Evaluator::warp_scalar(const std::string& name, c
                                                       const SourceRange& where) {
     const double value = to_float(v, where, "a float " + name);
     if (name == "octaves") {
-        const int octaves = std::clamp(static_cast<int>(value), 1, 10);
+        const int octaves = std::clamp(saturated_int(value), 1, 10);
         return [octaves](sg::Warp& w) { w.octaves = octaves; };
     }
     if (name == "omega") return [value](sg::Warp& w) { w.omega = value; };
@@ -526,9 +535,12 @@ std::function<void(sg::Warp&)> Evaluator::planar_warp(const Value& normal, const
 // ----------------------------------------------------------------- pigments
 
 Evaluator::PigmentEdit Evaluator::patterned_pigment(const PatternEdit& pattern, const sg::SourceLocation& at) {
-    return [pattern, at](sg::Pigment& p) {
+    // ripples and waves take global_settings' number_of_waves (written,
+    // as POV scenes do, before the objects).
+    return [pattern, at, waves = m_scene.global.number_of_waves](sg::Pigment& p) {
         p.kind = sg::Pigment::Kind::Patterned;
         p.pattern = sg::Pattern{};
+        p.pattern.number_of_waves = waves;
         pattern(p.pattern);
         p.pattern.location = at;
         p.color_map.reset();
@@ -562,6 +574,23 @@ Evaluator::PigmentEdit Evaluator::block_pigment(const PatternEdit& pattern,
 Evaluator::PigmentEdit Evaluator::average_pigment(const sg::SourceLocation& at) {
     return [at](sg::Pigment& p) {
         p.kind = sg::Pigment::Kind::Average;
+        p.location = at;
+    };
+}
+
+Evaluator::PigmentEdit Evaluator::uv_mapping_pigment() {
+    return [](sg::Pigment& p) {
+        p.pattern.uv_mapping = true;
+        p.image.map_type = sg::MapType::UV;
+    };
+}
+
+Evaluator::PatternEdit Evaluator::pigment_pattern(const std::shared_ptr<sg::Pigment>& pigment,
+                                                  const sg::SourceLocation& at) {
+    sg::PigmentRef inner = pigment;
+    return [inner, at](sg::Pattern& p) {
+        p.kind = PatternKind::PigmentPattern;
+        p.pigment = inner;
         p.location = at;
     };
 }
@@ -685,9 +714,10 @@ Evaluator::NormalEdit Evaluator::patterned_normal(const PatternEdit& pattern,
                                                   const sg::SourceLocation& at) {
     std::optional<double> size;
     if (amount) size = to_float(amount->first, amount->second, "a bump size");
-    return [pattern, size, at](sg::Normal& n) {
+    return [pattern, size, at, waves = m_scene.global.number_of_waves](sg::Normal& n) {
         n.kind = sg::Normal::Kind::Patterned;
         n.pattern = sg::Pattern{};
+        n.pattern.number_of_waves = waves;
         pattern(n.pattern);
         n.pattern.location = at;
         if (size) n.bump_size = *size;

@@ -63,9 +63,9 @@ const std::unordered_set<std::string>& ignored_blocks() {
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
     static const std::unordered_set<std::string> names = {
-        "isosurface", "parametric",       "lemon",      "array",     "spline",       "function",   "fisheye",
-        "panoramic",  "ultra_wide_angle", "omnimax",    "layered",   "material_map", "uv_mapping", "pattern",
-        "tiles",      "interior_texture", "isosurface", "dictionary"};
+        "isosurface",       "parametric",       "lemon",     "array",   "spline",       "function", "fisheye",
+        "panoramic",        "ultra_wide_angle", "omnimax",   "layered", "material_map", "pattern",  "tiles",
+        "interior_texture", "isosurface",       "dictionary"};
     return names;
 }
 

@@ -164,6 +164,7 @@ struct Pattern {
     WaveType wave = WaveType::Ramp;
     double wave_exponent = 1.0;  // poly_wave's exponent
     int noise_generator = 0;     // 1, 2, 3; 0: global_settings' (POV's default 2)
+    bool uv_mapping = false;     // the point is the surface's (u, v, 0), not the hit's position
     std::vector<Warp> warps;     // in the order written
     // Transforms written after the last warp (all of them when there is
     // none), and the moves of the object the pattern is attached to.
@@ -366,6 +367,7 @@ struct Material {
     std::vector<TextureMapEntry> texture_map;
     std::vector<MaterialRef> block_textures;
     std::vector<MaterialRef> layers_above;  // bottom to top
+    bool uv_mapping = false;                // POV's texture { uv_mapping … }: every pattern of it at (u, v, 0)
     std::string name;                       // the #declare'd name, if any, for summaries and errors
     SourceLocation location;
 };

@@ -50,6 +50,29 @@ bool intersect_box(const AnalyticBox& b, const DVec3& o, const DVec3& d, double 
     return false;
 }
 
+namespace {
+
+// POV's box (u,v): the six faces laid out as an unfolded cube, four side
+// faces across (-x, +z, +x, -z, a quarter of u each) and the bottom and
+// top below and above +z (a third of v each), none mirrored from outside.
+Vec2 box_uv(const AnalyticBox& b, int face, const DVec3& point) {
+    const DVec3 extent = b.upper - b.lower;
+    DVec3 q(0.0);
+    for (int a = 0; a < 3; ++a) q[a] = extent[a] > 0.0 ? (point[a] - b.lower[a]) / extent[a] : 0.0;
+    double u = 0.0, v = 0.0;
+    switch (face) {
+    case 0: u = q.z / 4.0, v = (1.0 + q.y) / 3.0; break;          // -x
+    case 1: u = 0.75 - q.z / 4.0, v = (1.0 + q.y) / 3.0; break;   // +x
+    case 2: u = 0.25 + q.x / 4.0, v = q.z / 3.0; break;           // -y
+    case 3: u = 0.25 + q.x / 4.0, v = 1.0 - q.z / 3.0; break;     // +y
+    case 4: u = 1.0 - q.x / 4.0, v = (1.0 + q.y) / 3.0; break;    // -z
+    default: u = 0.25 + q.x / 4.0, v = (1.0 + q.y) / 3.0; break;  // +z
+    }
+    return Vec2(float(u), float(v));
+}
+
+}  // namespace
+
 SurfaceGeometry box_surface(const AnalyticBox& b, const DVec3& p, int face) {
     SurfaceGeometry g;
     const int axis = face / 2;
@@ -58,13 +81,7 @@ SurfaceGeometry box_surface(const AnalyticBox& b, const DVec3& p, int face) {
     g.point[axis] = upper ? b.upper[axis] : b.lower[axis];
     g.normal = DVec3(0.0);
     g.normal[axis] = upper ? 1.0 : -1.0;
-    // Per face: x faces map (z, y), y faces (x, z), z faces (x, y); each
-    // spans [0,1]^2 over the face.
-    const int u_axis = axis == 0 ? 2 : 0;
-    const int v_axis = axis == 1 ? 2 : 1;
-    const DVec3 extent = b.upper - b.lower;
-    auto fraction = [&](int a) { return extent[a] > 0.0 ? (g.point[a] - b.lower[a]) / extent[a] : 0.0; };
-    g.uv = Vec2(float(fraction(u_axis)), float(fraction(v_axis)));
+    g.uv = box_uv(b, face, g.point);
     return g;
 }
 
@@ -84,9 +101,10 @@ std::unique_ptr<SurfaceSampler> make_box_sampler(const AnalyticBox& b, const Pla
         p.origin = placement.point_to_world(corner);
         p.edge1 = placement.point_to_world(corner + along_u) - p.origin;
         p.edge2 = placement.point_to_world(corner + along_v) - p.origin;
-        p.uv0 = Vec2(0.0f, 0.0f);
-        p.uv1 = Vec2(1.0f, 0.0f);
-        p.uv2 = Vec2(0.0f, 1.0f);
+        // (u,v) is affine over a face: its corners' values interpolate it.
+        p.uv0 = box_uv(b, face, corner);
+        p.uv1 = box_uv(b, face, corner + along_u);
+        p.uv2 = box_uv(b, face, corner + along_v);
         p.parallelogram = true;
         p.material = material;
         faces.push_back(p);

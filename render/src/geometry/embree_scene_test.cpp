@@ -58,13 +58,14 @@ TEST(EmbreeScene, BoxFacesNormalsAndUv) {
     ASSERT_TRUE(scene->intersect(make_ray(Vec3(-10, 1, 1.5f), Vec3(1, 0, 0)), hit));
     EXPECT_NEAR(hit.t, 9.0f, 1e-5f);
     EXPECT_EQ(hit.geometric_normal, Vec3(-1, 0, 0));
-    // x faces map (z, y) over the face.
-    EXPECT_NEAR(hit.uv.x, (1.5f + 3.0f) / 6.0f, 1e-6f);
-    EXPECT_NEAR(hit.uv.y, (1.0f + 2.0f) / 4.0f, 1e-6f);
+    // POV's unfolded cube: the -x face is u in [0, 1/4] by z, v in [1/3, 2/3] by y.
+    EXPECT_NEAR(hit.uv.x, (1.5f + 3.0f) / 6.0f / 4.0f, 1e-6f);
+    EXPECT_NEAR(hit.uv.y, (1.0f + (1.0f + 2.0f) / 4.0f) / 3.0f, 1e-6f);
+    // The top: u in [1/4, 1/2] by x, v in [2/3, 1] falling with z.
     ASSERT_TRUE(scene->intersect(make_ray(Vec3(0.5f, 10, -1.5f), Vec3(0, -1, 0)), hit));
     EXPECT_EQ(hit.geometric_normal, Vec3(0, 1, 0));
-    EXPECT_NEAR(hit.uv.x, 0.75f, 1e-6f);
-    EXPECT_NEAR(hit.uv.y, 0.25f, 1e-6f);
+    EXPECT_NEAR(hit.uv.x, 0.25f + 0.75f / 4.0f, 1e-6f);
+    EXPECT_NEAR(hit.uv.y, 1.0f - 0.25f / 3.0f, 1e-6f);
 }
 
 TEST(EmbreeScene, PlaneHitUsesObjectXz) {

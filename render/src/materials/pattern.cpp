@@ -189,8 +189,16 @@ PatternSetup make_setup(const sg::Pattern& pattern, NoiseGenerator generator) {
 
 }  // namespace
 
+// The pattern with another kind: a value source keeps the transforms,
+// warps and waves and replaces the function.
+static sg::Pattern with_kind(sg::Pattern pattern, Kind kind) {
+    pattern.kind = kind;
+    return pattern;
+}
+
 struct CompiledPattern::State {
     PatternSetup setup;
+    CompiledPattern::ValueSource source;  // replaces the pattern function when set
     glm::dmat4 pattern_from_object{1.0};
     std::vector<WarpStep> warps;  // in the order they act: the last written first
     // Classic turbulence moves the point before every pattern function but
@@ -206,6 +214,11 @@ struct CompiledPattern::State {
     glm::dmat3 normal_to_pattern{1.0};
     glm::dmat3 normal_from_pattern{1.0};
 };
+
+CompiledPattern::CompiledPattern(const sg::Pattern& pattern, NoiseGenerator global_generator, ValueSource source)
+    : CompiledPattern(with_kind(pattern, Kind::Gradient), global_generator) {
+    m_state->source = std::move(source);
+}
 
 CompiledPattern::CompiledPattern(const sg::Pattern& pattern, NoiseGenerator global_generator)
     : m_state(std::make_unique<State>()) {
@@ -318,7 +331,8 @@ double CompiledPattern::value_at_pattern_point(const glm::dvec3& point, const Pa
     // with a turbulence's amount are held to the coordinate limit, as the
     // point is: beyond it an infinity would become NaN in the frequency
     // step. (A NaN passes, so that a bug shows.)
-    double v = std::clamp(raw_value(st.setup, point, context), -kCoordinateLimit, kCoordinateLimit);
+    const double raw = st.source ? st.source(point, context) : raw_value(st.setup, point, context);
+    double v = std::clamp(raw, -kCoordinateLimit, kCoordinateLimit);
     if (st.apply_frequency) {
         // POV wraps at 1.00001, not 1, so that a value of exactly 1 (the end
         // of a ramp) keeps the top of the map.

@@ -4,6 +4,7 @@
 // (internal to liblancer; maps, pigments and normals build on it).
 #pragma once
 
+#include <functional>
 #include <memory>
 
 #include <glm/glm.hpp>
@@ -31,6 +32,12 @@ class CompiledPattern {
     // magnet type other than 1 or 2, slope without any direction, tiling
     // outside 1..27, pavement sides/tiles/pattern out of POV's ranges).
     CompiledPattern(const sg::Pattern& pattern, NoiseGenerator global_generator);
+    // Patterns whose value comes from elsewhere in the renderer
+    // (pigment_pattern: a pigment's grey): `source` gives the value at a
+    // pattern-space point; transforms, warps, frequency and waves apply
+    // as for any pattern.
+    using ValueSource = std::function<double(const glm::dvec3& pattern_point, const PatternContext& context)>;
+    CompiledPattern(const sg::Pattern& pattern, NoiseGenerator global_generator, ValueSource source);
     ~CompiledPattern();
     CompiledPattern(CompiledPattern&&) noexcept;
     CompiledPattern& operator=(CompiledPattern&&) noexcept;

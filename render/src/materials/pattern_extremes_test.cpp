@@ -185,6 +185,15 @@ TEST(PatternExtremes, MagnetPoleEscapes) {
     EXPECT_TRUE(std::isfinite(compiled.value(glm::dvec3(2.0, 0.0, 0.0))));
 }
 
+// Each ripples or waves pattern stores every wave and sums them all per sample.
+TEST(PatternExtremes, NumberOfWavesIsLimited) {
+    sg::Pattern p = make(Kind::Ripples);
+    p.number_of_waves = 2000000000;
+    EXPECT_NE(refusal(p).find("number_of_waves is limited to 100000"), std::string::npos);
+    p.number_of_waves = 0;  // POV's minimum of one wave
+    EXPECT_EQ(refusal(p), "");
+}
+
 TEST(PatternExtremes, NegativePolyWaveExponentIsRefused) {
     sg::Pattern p = make(Kind::Gradient);
     p.wave = sg::WaveType::Poly;

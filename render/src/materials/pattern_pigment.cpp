@@ -7,8 +7,8 @@
 
 #include "lancer/scene_error.h"
 #include "materials/blend_map.h"
-#include "materials/pattern.h"
 #include "materials/pattern_space.h"
+#include "materials/point_pigment.h"
 
 namespace lancer {
 namespace {
@@ -26,37 +26,27 @@ TextureSample sum(const TextureSample& a, const TextureSample& b) {
     return {a.rgb + b.rgb, a.filter + b.filter, a.transmit + b.transmit};
 }
 
-// A pigment evaluated at a point of the space it was written in: object
-// space at the top, its parent's pattern space inside a map.
-class PointPigment {
-  public:
-    virtual ~PointPigment() = default;
-    virtual TextureSample at(const glm::dvec3& point) const = 0;
-    virtual TextureSample average() const = 0;
-};
-
 class SolidPointPigment final : public PointPigment {
   public:
     explicit SolidPointPigment(const TextureSample& value) : m_value(value) {}
-    TextureSample at(const glm::dvec3&) const override { return m_value; }
+    TextureSample at(const glm::dvec3&, const PatternContext&) const override { return m_value; }
     TextureSample average() const override { return m_value; }
 
   private:
     TextureSample m_value;
 };
 
-std::unique_ptr<PointPigment> make_point_pigment(const sg::Pigment& pigment, NoiseGenerator generator);
-
 class ColorMapPigment final : public PointPigment {
   public:
-    ColorMapPigment(const sg::Pigment& pigment, NoiseGenerator generator) : m_pattern(pigment.pattern, generator) {
+    ColorMapPigment(const sg::Pigment& pigment, NoiseGenerator generator)
+        : m_pattern(compile_pattern(pigment.pattern, generator)) {
         for (const auto& entry : *pigment.color_map) {
             m_values.push_back(float(entry.value));
             m_colours.push_back(to_sample(entry.color));
         }
     }
-    TextureSample at(const glm::dvec3& point) const override {
-        const BlendPair pair = search_blend_map(m_values, m_pattern.value(point));
+    TextureSample at(const glm::dvec3& point, const PatternContext& context) const override {
+        const BlendPair pair = search_blend_map(m_values, m_pattern.value(point, context));
         if (pair.previous == pair.current) return m_colours[pair.current];
         return mix(m_colours[pair.previous], m_colours[pair.current], pair.fraction);
     }
@@ -84,18 +74,19 @@ class ColorMapPigment final : public PointPigment {
 
 class PigmentMapPigment final : public PointPigment {
   public:
-    PigmentMapPigment(const sg::Pigment& pigment, NoiseGenerator generator) : m_pattern(pigment.pattern, generator) {
+    PigmentMapPigment(const sg::Pigment& pigment, NoiseGenerator generator)
+        : m_pattern(compile_pattern(pigment.pattern, generator)) {
         for (const auto& entry : pigment.pigment_map) {
             m_values.push_back(float(entry.value));
             m_pigments.push_back(make_point_pigment(*entry.pigment, generator));
         }
     }
-    TextureSample at(const glm::dvec3& point) const override {
-        const BlendPair pair = search_blend_map(m_values, m_pattern.value(point));
+    TextureSample at(const glm::dvec3& point, const PatternContext& context) const override {
+        const BlendPair pair = search_blend_map(m_values, m_pattern.value(point, context));
         const glm::dvec3 inner = m_pattern.pattern_point(point);
-        const TextureSample current = m_pigments[pair.current]->at(inner);
+        const TextureSample current = m_pigments[pair.current]->at(inner, context);
         if (pair.previous == pair.current) return current;
-        return mix(m_pigments[pair.previous]->at(inner), current, pair.fraction);
+        return mix(m_pigments[pair.previous]->at(inner, context), current, pair.fraction);
     }
     TextureSample average() const override {
         TextureSample total;
@@ -111,12 +102,13 @@ class PigmentMapPigment final : public PointPigment {
 
 class BlockPigment final : public PointPigment {
   public:
-    BlockPigment(const sg::Pigment& pigment, NoiseGenerator generator) : m_pattern(pigment.pattern, generator) {
+    BlockPigment(const sg::Pigment& pigment, NoiseGenerator generator)
+        : m_pattern(compile_pattern(pigment.pattern, generator)) {
         for (const auto& block : pigment.block_pigments) m_blocks.push_back(make_point_pigment(*block, generator));
     }
-    TextureSample at(const glm::dvec3& point) const override {
+    TextureSample at(const glm::dvec3& point, const PatternContext& context) const override {
         const int index = std::clamp(m_pattern.block_index(point), 0, int(m_blocks.size()) - 1);
-        return m_blocks[index]->at(m_pattern.pattern_point(point));
+        return m_blocks[index]->at(m_pattern.pattern_point(point), context);
     }
     TextureSample average() const override {
         TextureSample total;
@@ -132,7 +124,8 @@ class BlockPigment final : public PointPigment {
 // POV's average: the pigments of the map weighted by their values.
 class AveragePigment final : public PointPigment {
   public:
-    AveragePigment(const sg::Pigment& pigment, NoiseGenerator generator) : m_warps(pigment.pattern, generator) {
+    AveragePigment(const sg::Pigment& pigment, NoiseGenerator generator)
+        : m_warps(compile_pattern(pigment.pattern, generator)) {
         double total = 0.0;
         for (const auto& entry : pigment.pigment_map) {
             m_weights.push_back(float(entry.value));
@@ -141,11 +134,11 @@ class AveragePigment final : public PointPigment {
         }
         m_total = float(total);
     }
-    TextureSample at(const glm::dvec3& point) const override {
+    TextureSample at(const glm::dvec3& point, const PatternContext& context) const override {
         const glm::dvec3 inner = m_warps.pattern_point(point);
         TextureSample result;
         for (std::size_t i = 0; i < m_pigments.size(); ++i)
-            result = sum(result, scaled(m_pigments[i]->at(inner), m_weights[i]));
+            result = sum(result, scaled(m_pigments[i]->at(inner, context), m_weights[i]));
         return m_total != 0.0f ? scaled(result, 1.0f / m_total) : result;
     }
     TextureSample average() const override {
@@ -161,6 +154,8 @@ class AveragePigment final : public PointPigment {
     float m_total = 0.0f;
     std::vector<std::unique_ptr<PointPigment>> m_pigments;
 };
+
+}  // namespace
 
 std::unique_ptr<PointPigment> make_point_pigment(const sg::Pigment& pigment, NoiseGenerator generator) {
     switch (pigment.kind) {
@@ -179,20 +174,49 @@ std::unique_ptr<PointPigment> make_point_pigment(const sg::Pigment& pigment, Noi
     }
 }
 
+CompiledPattern compile_pattern(const sg::Pattern& pattern, NoiseGenerator generator) {
+    if (pattern.kind != sg::Pattern::Kind::PigmentPattern) return CompiledPattern(pattern, generator);
+    if (!pattern.pigment) throw SceneError(pattern.location, "pigment_pattern needs a pigment");
+    std::shared_ptr<const PointPigment> inner = make_point_pigment(*pattern.pigment, generator);
+    // POV's value is the pigment's grey (its Colour::greyscale weights).
+    return CompiledPattern(pattern, generator, [inner](const glm::dvec3& point, const PatternContext& context) {
+        const Color c = inner->at(point, context).rgb;
+        return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
+    });
+}
+
+glm::dvec3 surface_point(const Hit& hit, const TextureSpaces& spaces, bool uv_mapping) {
+    if (uv_mapping) return glm::dvec3(hit.uv.x, hit.uv.y, 0.0);
+    return pattern_point(hit, spaces, glm::dmat4(1.0));
+}
+
+PatternContext surface_context(const Hit& hit) {
+    PatternContext context;
+    context.normal = glm::dvec3(hit.shading_normal);
+    context.hit_point = glm::dvec3(hit.position);
+    return context;
+}
+
+namespace {
+
 // The top-level pigment: the hit in the space of the object the texture
-// was attached to.
+// was attached to, or at (u, v, 0) with uv_mapping.
 class PatternTexture final : public Texture {
   public:
     PatternTexture(const sg::Pigment& pigment, const TextureSpaces& spaces, NoiseGenerator generator)
-        : m_pigment(make_point_pigment(pigment, generator)), m_spaces(spaces), m_average(m_pigment->average()) {}
+        : m_pigment(make_point_pigment(pigment, generator)),
+          m_spaces(spaces),
+          m_uv_mapping(pigment.pattern.uv_mapping),
+          m_average(m_pigment->average()) {}
     TextureSample evaluate(const Hit& hit) const override {
-        return m_pigment->at(pattern_point(hit, m_spaces, glm::dmat4(1.0)));
+        return m_pigment->at(surface_point(hit, m_spaces, m_uv_mapping), surface_context(hit));
     }
     TextureSample average() const override { return m_average; }
 
   private:
     std::unique_ptr<PointPigment> m_pigment;
     const TextureSpaces& m_spaces;
+    bool m_uv_mapping;
     TextureSample m_average;
 };
 

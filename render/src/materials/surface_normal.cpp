@@ -18,6 +18,7 @@
 #include "materials/blend_map.h"
 #include "materials/pattern.h"
 #include "materials/pattern_space.h"
+#include "materials/point_pigment.h"
 
 namespace lancer {
 namespace {
@@ -52,7 +53,7 @@ std::unique_ptr<NormalNode> make_node(const sg::Normal& normal, NoiseGenerator g
 class PatternNormalNode final : public NormalNode {
   public:
     PatternNormalNode(const sg::Normal& normal, NoiseGenerator generator)
-        : m_pattern(normal.pattern, generator),
+        : m_pattern(compile_pattern(normal.pattern, generator)),
           m_amount(normal.bump_size),
           m_accuracy(normal.accuracy),
           m_own_normal(m_pattern.has_own_normal()) {
@@ -127,7 +128,8 @@ class PatternNormalNode final : public NormalNode {
 
 class AverageNormalNode final : public NormalNode {
   public:
-    AverageNormalNode(const sg::Normal& normal, NoiseGenerator generator) : m_warps(normal.pattern, generator) {
+    AverageNormalNode(const sg::Normal& normal, NoiseGenerator generator)
+        : m_warps(compile_pattern(normal.pattern, generator)) {
         for (const auto& entry : normal.normal_map) {
             m_weights.push_back(entry.value);
             m_total += entry.value;
@@ -169,7 +171,7 @@ std::unique_ptr<NormalNode> make_node(const sg::Normal& normal, NoiseGenerator g
 class SurfaceNormal final : public NormalPerturbation {
   public:
     SurfaceNormal(const sg::Normal& normal, const TextureSpaces& spaces, NoiseGenerator generator)
-        : m_root(make_node(normal, generator)), m_spaces(spaces) {}
+        : m_root(make_node(normal, generator)), m_spaces(spaces), m_uv_mapping(normal.pattern.uv_mapping) {}
 
     Vec3 perturb(const Hit& hit, const Vec3& shading_normal) const override {
         glm::dmat3 object_from_world(1.0);
@@ -182,6 +184,7 @@ class SurfaceNormal final : public NormalPerturbation {
         // Normals move by the inverse transpose of what moves points.
         const glm::dmat3 normal_to_object = glm::transpose(glm::inverse(object_from_world));
         const glm::dvec3 object_normal = unit(normal_to_object * glm::dvec3(shading_normal));
+        if (m_uv_mapping) point = glm::dvec3(hit.uv.x, hit.uv.y, 0.0);
         const glm::dvec3 bent = m_root->perturb(object_normal, point);
         const glm::dvec3 world = unit(glm::transpose(object_from_world) * bent);
         if (!std::isfinite(world.x) || !std::isfinite(world.y) || !std::isfinite(world.z) || world == glm::dvec3(0.0))
@@ -192,6 +195,7 @@ class SurfaceNormal final : public NormalPerturbation {
   private:
     std::unique_ptr<NormalNode> m_root;
     const TextureSpaces& m_spaces;
+    bool m_uv_mapping;
 };
 
 }  // namespace

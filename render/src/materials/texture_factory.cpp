@@ -15,7 +15,8 @@ namespace {
 bool is_plain_checker(const sg::Pigment& pigment) {
     const sg::Pattern& p = pigment.pattern;
     if (pigment.kind != sg::Pigment::Kind::Patterned || p.kind != sg::Pattern::Kind::Checker) return false;
-    if (!p.warps.empty() || p.turbulence != sg::Vec3(0.0) || pigment.block_pigments.size() != 2) return false;
+    if (!p.warps.empty() || p.turbulence != sg::Vec3(0.0) || p.uv_mapping || pigment.block_pigments.size() != 2)
+        return false;
     for (const auto& block : pigment.block_pigments)
         if (block->kind != sg::Pigment::Kind::Solid) return false;
     return true;

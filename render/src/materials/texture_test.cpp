@@ -66,14 +66,14 @@ TEST(Textures, ImageMapThroughUvDecodesSrgb) {
     m->pigment.image.path = write_test_png(dir);
     m->pigment.image.interpolate = 0;  // nearest texel: exact values
     sg::SceneGraph graph;
-    // Box face -z at z = 0 maps (x, y) in [0,1]^2; v = 1 is the image's top.
-    graph.objects.push_back(box_object({0, 0, 0}, {1, 1, 1}, m));
+    // A plane's (u,v) is its (x, z); v = 1 is the image's top.
+    graph.objects.push_back(plane_object({0, 1, 0}, 0.0, m));
     auto scene = compile_scene(graph);
-    const Vec3 forward(0, 0, 1);
-    const Color top_left = pigment_at(*scene, make_ray(Vec3(0.25f, 0.75f, -1), forward));
-    const Color top_right = pigment_at(*scene, make_ray(Vec3(0.75f, 0.75f, -1), forward));
-    const Color bottom_left = pigment_at(*scene, make_ray(Vec3(0.25f, 0.25f, -1), forward));
-    const Color bottom_right = pigment_at(*scene, make_ray(Vec3(0.75f, 0.25f, -1), forward));
+    const Vec3 down(0, -1, 0);
+    const Color top_left = pigment_at(*scene, make_ray(Vec3(0.25f, 1, 0.75f), down));
+    const Color top_right = pigment_at(*scene, make_ray(Vec3(0.75f, 1, 0.75f), down));
+    const Color bottom_left = pigment_at(*scene, make_ray(Vec3(0.25f, 1, 0.25f), down));
+    const Color bottom_right = pigment_at(*scene, make_ray(Vec3(0.75f, 1, 0.25f), down));
     EXPECT_NEAR(top_left.r, 1.0f, 1e-3f);
     EXPECT_NEAR(top_left.g, 0.0f, 1e-3f);
     EXPECT_NEAR(top_right.g, 1.0f, 1e-3f);
