@@ -208,8 +208,8 @@ class Evaluator {
     std::function<void(ShapeValue&)> transform_edit(const sg::Mat4& transform);
     std::function<void(ShapeValue&)> texture_edit(std::shared_ptr<sg::Material> texture);
     std::function<void(ShapeValue&)> material_edit(std::shared_ptr<sg::Material> material);
-    std::function<void(ShapeValue&)> pigment_edit(std::shared_ptr<sg::Pigment> pigment);
-    std::function<void(ShapeValue&)> finish_edit(std::shared_ptr<sg::Finish> finish);
+    std::function<void(ShapeValue&)> pigment_edit(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);
+    std::function<void(ShapeValue&)> finish_edit(const Edits<sg::Finish>& edits, const sg::SourceLocation& at);
     std::function<void(ShapeValue&)> interior_edit(std::shared_ptr<sg::Interior> interior);
     std::function<void(ShapeValue&)> child_edit(ShapePtr child);
     std::function<void(ShapeValue&)> mesh_triangle_edit(const std::vector<Value>& points,
@@ -298,7 +298,20 @@ class Evaluator {
     NormalEdit normal_pattern_edit(const PatternEdit& edit, const sg::SourceLocation& at);
     NormalEdit normal_accuracy(const Value& v, const SourceRange& where);
     sg::SlopeMapEntry slope_entry(const Value& value, const SourceRange& wv, const Value& slope, const SourceRange& ws);
-    std::function<void(ShapeValue&)> normal_edit(sg::NormalRef normal);
+    std::function<void(ShapeValue&)> normal_edit(const Edits<sg::Normal>& edits, const sg::SourceLocation& at);
+    // A pigment, normal or finish block written in a texture or on an
+    // object: edits of what the texture has (its top layer's).
+    std::function<void(sg::Material&)> material_pigment_edit(const Edits<sg::Pigment>& edits,
+                                                             const sg::SourceLocation& at);
+    std::function<void(sg::Material&)> material_normal_edit(const Edits<sg::Normal>& edits,
+                                                            const sg::SourceLocation& at);
+    std::function<void(sg::Material&)> material_finish_edit(const Edits<sg::Finish>& edits,
+                                                            const sg::SourceLocation& at);
+    // What every built pigment, normal and finish gets once its items ran:
+    // POV's default maps and block colours, albedo rescaling, checks.
+    void settle_pigment(sg::Pigment& pigment, const sg::SourceLocation& at);
+    void settle_normal(sg::Normal& normal, const sg::SourceLocation& at);
+    void settle_finish(sg::Finish& finish, const sg::SourceLocation& at);
     // Patterned and layered textures (patterns.cpp).
     std::shared_ptr<sg::Material> layer_texture(std::shared_ptr<sg::Material> below,
                                                 const std::shared_ptr<sg::Material>& above);

@@ -134,11 +134,11 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::shared_ptr<sg::Material>> texture material
 %nterm <Edits<sg::Material>> texture_items material_items
 %nterm <std::shared_ptr<sg::Pigment>> pigment
-%nterm <Edits<sg::Pigment>> pigment_mods
+%nterm <Edits<sg::Pigment>> pigment_mods pigment_block pigment_edits
 %nterm <std::function<void(sg::Pigment&)>> pigment_start
 %nterm <sg::ImageMap> image_map image_items
 %nterm <std::shared_ptr<sg::Finish>> finish
-%nterm <Edits<sg::Finish>> finish_items reflection_items reflection_opts
+%nterm <Edits<sg::Finish>> finish_items reflection_items reflection_opts finish_block
 %nterm <std::function<void(sg::Finish&)>> finish_item reflection_item
 %nterm <std::shared_ptr<sg::Interior>> interior
 %nterm <Edits<sg::Interior>> interior_items
@@ -179,7 +179,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::shared_ptr<std::vector<sg::PigmentMapEntry>>> pigment_map pigment_map_entries
 %nterm <std::shared_ptr<sg::Pigment>> pigment_body
 %nterm <sg::NormalRef> normal normal_body
-%nterm <Edits<sg::Normal>> normal_mods
+%nterm <Edits<sg::Normal>> normal_mods normal_block normal_edits
 %nterm <std::function<void(sg::Normal&)>> normal_start normal_mod
 %nterm <std::shared_ptr<std::vector<sg::NormalMapEntry>>> normal_map normal_map_entries
 %nterm <std::vector<sg::SlopeMapEntry>> slope_map_entries
@@ -374,9 +374,9 @@ object_mods
 object_mod
   : transform_item     { $$ = ev.transform_edit($1); }
   | texture            { $$ = ev.texture_edit($1); }
-  | pigment            { $$ = ev.pigment_edit($1); }
-  | finish             { $$ = ev.finish_edit($1); }
-  | normal             { $$ = ev.normal_edit($1); }
+  | pigment_block      { $$ = ev.pigment_edit($1, LOC(@1)); }
+  | finish_block       { $$ = ev.finish_edit($1, LOC(@1)); }
+  | normal_block       { $$ = ev.normal_edit($1, LOC(@1)); }
   | interior           { $$ = ev.interior_edit($1); }
   | material           { $$ = ev.material_edit($1); }
   | "no_shadow"        { $$ = [](ShapeValue& s) { s.object.no_shadow = true; }; }
@@ -657,9 +657,9 @@ texture_items
   | texture_items TEXTURE_ID { $$ = std::move($1); auto t = $2.value.texture;
                                $$.push_back([t](sg::Material& m) { m = *t; }); }
   | texture_items UNDECLARED_ID { $$ = std::move($1); ev.unknown_identifier($2.text, LOC(@2), "a texture"); }
-  | texture_items pigment { $$ = std::move($1); auto p = $2; $$.push_back([p](sg::Material& m) { m.pigment = *p; }); }
-  | texture_items finish  { $$ = std::move($1); auto f = $2; $$.push_back([f](sg::Material& m) { m.finish = *f; }); }
-  | texture_items normal  { $$ = std::move($1); auto n = $2; $$.push_back([n](sg::Material& m) { m.normal = n; }); }
+  | texture_items pigment_block { $$ = std::move($1); $$.push_back(ev.material_pigment_edit($2, LOC(@2))); }
+  | texture_items finish_block  { $$ = std::move($1); $$.push_back(ev.material_finish_edit($2, LOC(@2))); }
+  | texture_items normal_block  { $$ = std::move($1); $$.push_back(ev.material_normal_edit($2, LOC(@2))); }
   | texture_items pattern_name { $$ = std::move($1); $$.push_back(ev.texture_pattern($2, {}, LOC(@2))); }
   | texture_items block_pattern_name texture_seq { $$ = std::move($1); $$.push_back(ev.texture_pattern($2, $3, LOC(@2))); }
   | texture_items pattern_modifier { $$ = std::move($1); auto e = $2;
@@ -691,12 +691,21 @@ pigment
   : "pigment" "{" pigment_body "}" { $$ = $3; $$->location = LOC(@1); }
   ;
 
+/* In a texture or on an object: edits of the pigment already there. */
+pigment_block
+  : "pigment" "{" pigment_edits "}" { $$ = std::move($3); }
+  ;
+
 /* A pigment's items, also a pigment_map entry's (without braces). */
 pigment_body
-  : pigment_start pigment_mods { $2.insert($2.begin(), $1); $$ = ev.build_pigment($2, LOC(@1)); }
+  : pigment_edits      { $$ = ev.build_pigment($1, LOC(@1)); }
+  ;
+
+pigment_edits
+  : pigment_start pigment_mods { $$ = std::move($2); $$.insert($$.begin(), $1); }
   /* POV writes uv_mapping before the pattern too. */
   | "uv_mapping" pigment_start pigment_mods
-      { $3.insert($3.begin(), $2); $3.push_back(ev.uv_mapping_pigment()); $$ = ev.build_pigment($3, LOC(@1)); }
+      { $$ = std::move($3); $$.insert($$.begin(), $2); $$.push_back(ev.uv_mapping_pigment()); }
   ;
 
 pigment_start
@@ -902,11 +911,18 @@ normal
   : "normal" "{" normal_body "}" { $$ = $3; }
   ;
 
+normal_block
+  : "normal" "{" normal_edits "}" { $$ = std::move($3); }
+  ;
+
 normal_body
-  : normal_start normal_mods { $2.insert($2.begin(), $1); $$ = ev.build_normal($2, LOC(@1)); }
+  : normal_edits       { $$ = ev.build_normal($1, LOC(@1)); }
+  ;
+
+normal_edits
+  : normal_start normal_mods { $$ = std::move($2); $$.insert($$.begin(), $1); }
   | "uv_mapping" normal_start normal_mods
-      { $3.insert($3.begin(), $2); $3.push_back([](sg::Normal& n) { n.pattern.uv_mapping = true; });
-        $$ = ev.build_normal($3, LOC(@1)); }
+      { $$ = std::move($3); $$.insert($$.begin(), $2); $$.push_back([](sg::Normal& n) { n.pattern.uv_mapping = true; }); }
   ;
 
 normal_start
@@ -996,6 +1012,10 @@ image_items
 
 finish
   : "finish" "{" finish_items "}" { $$ = ev.build_finish($3, LOC(@1)); }
+  ;
+
+finish_block
+  : "finish" "{" finish_items "}" { $$ = std::move($3); }
   ;
 
 finish_items

@@ -183,26 +183,27 @@ std::function<void(ShapeValue&)> Evaluator::material_edit(std::shared_ptr<sg::Ma
     return [material](ShapeValue& s) { attach_in_parent_space(s, *material); };
 }
 
-std::function<void(ShapeValue&)> Evaluator::pigment_edit(std::shared_ptr<sg::Pigment> pigment) {
-    return [pigment, fallback = default_texture()](ShapeValue& s) {
+std::function<void(ShapeValue&)> Evaluator::pigment_edit(const Edits<sg::Pigment>& edits,
+                                                         const sg::SourceLocation& at) {
+    return [change = material_pigment_edit(edits, at), fallback = default_texture()](ShapeValue& s) {
         sg::Material material = current_in_parent_space(s, fallback);
-        material.pigment = *pigment;
+        change(material);
         attach_in_parent_space(s, material);
     };
 }
 
-std::function<void(ShapeValue&)> Evaluator::finish_edit(std::shared_ptr<sg::Finish> finish) {
-    return [finish, fallback = default_texture()](ShapeValue& s) {
+std::function<void(ShapeValue&)> Evaluator::finish_edit(const Edits<sg::Finish>& edits, const sg::SourceLocation& at) {
+    return [change = material_finish_edit(edits, at), fallback = default_texture()](ShapeValue& s) {
         sg::Material material = current_in_parent_space(s, fallback);
-        material.finish = *finish;
+        change(material);
         attach_in_parent_space(s, material);
     };
 }
 
-std::function<void(ShapeValue&)> Evaluator::normal_edit(sg::NormalRef normal) {
-    return [normal, fallback = default_texture()](ShapeValue& s) {
+std::function<void(ShapeValue&)> Evaluator::normal_edit(const Edits<sg::Normal>& edits, const sg::SourceLocation& at) {
+    return [change = material_normal_edit(edits, at), fallback = default_texture()](ShapeValue& s) {
         sg::Material material = current_in_parent_space(s, fallback);
-        material.normal = normal;
+        change(material);
         attach_in_parent_space(s, material);
     };
 }
@@ -302,6 +303,12 @@ std::shared_ptr<sg::Finish> Evaluator::build_finish(const Edits<sg::Finish>& edi
     // POV modifies the finish a texture starts with: #default's.
     auto finish = std::make_shared<sg::Finish>(m_default_texture ? m_default_texture->finish : sg::Finish{});
     for (const auto& edit : edits) edit(*finish);
+    settle_finish(*finish, at);
+    return finish;
+}
+
+void Evaluator::settle_finish(sg::Finish& settled, const sg::SourceLocation& at) {
+    sg::Finish* finish = &settled;
     // POV-Ray's Parse_Finish: a value given as an albedo becomes the peak
     // that reflects that share, with the finish's final exponents.
     if (finish->diffuse_albedo) finish->diffuse *= (finish->brilliance + 1.0) / 2.0;
@@ -318,7 +325,6 @@ std::shared_ptr<sg::Finish> Evaluator::build_finish(const Edits<sg::Finish>& edi
         warning(at,
                 "the finish has a negative ambient, emission, diffuse, phong or specular: the surface will "
                 "take light away (POV-Ray accepts it too)");
-    return finish;
 }
 
 std::shared_ptr<sg::Interior> Evaluator::build_interior(const Edits<sg::Interior>& edits,

@@ -44,7 +44,13 @@ sg::ColorMapRef default_color_map(PatternKind kind) {
                                         {0.6, rgb(0.9, 0.7, 0.4)},
                                         {0.6, rgb(1.0, 0.7, 0.4)},
                                         {1.0, rgb(0.6, 0.3, 0.0)}});
+    static const auto mandel = make_map({{0.001, rgb(0, 0, 0)},
+                                         {0.001, rgb(0, 1, 1)},
+                                         {0.012, rgb(1, 1, 0)},
+                                         {0.015, rgb(1, 0, 1)},
+                                         {0.1, rgb(0, 1, 1)}});
     switch (kind) {
+    case PatternKind::Mandel: return mandel;
     case PatternKind::Bozo: return bozo;
     case PatternKind::Wood: return wood;
     case PatternKind::Marble: return marble;
@@ -539,7 +545,12 @@ Evaluator::PigmentEdit Evaluator::patterned_pigment(const PatternEdit& pattern, 
     // as POV scenes do, before the objects).
     return [pattern, at, waves = m_scene.global.number_of_waves](sg::Pigment& p) {
         p.kind = sg::Pigment::Kind::Patterned;
-        p.pattern = sg::Pattern{};
+        // A new pattern in a pigment being edited keeps its transforms and
+        // warps, as POV's Parse_Pattern does.
+        sg::Pattern fresh;
+        fresh.pattern_from_object = p.pattern.pattern_from_object;
+        fresh.warps = p.pattern.warps;
+        p.pattern = fresh;
         p.pattern.number_of_waves = waves;
         pattern(p.pattern);
         p.pattern.location = at;
@@ -667,6 +678,12 @@ sg::ColorMapRef Evaluator::build_color_map(const std::vector<std::pair<Value, st
 std::shared_ptr<sg::Pigment> Evaluator::build_pigment(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at) {
     auto pigment = std::make_shared<sg::Pigment>();
     for (const auto& edit : edits) edit(*pigment);
+    settle_pigment(*pigment, at);
+    return pigment;
+}
+
+void Evaluator::settle_pigment(sg::Pigment& settled, const sg::SourceLocation& at) {
+    sg::Pigment* pigment = &settled;
     pigment->location = at;
     if (pigment->kind == sg::Pigment::Kind::Patterned) {
         const PatternKind kind = pigment->pattern.kind;
@@ -695,18 +712,66 @@ std::shared_ptr<sg::Pigment> Evaluator::build_pigment(const Edits<sg::Pigment>& 
         warning(at,
                 "the pigment has a negative colour component: the surface will take light away (POV-Ray "
                 "accepts it too)");
-    return pigment;
 }
 
 // ------------------------------------------------------------------ normals
 
 sg::NormalRef Evaluator::build_normal(const Edits<sg::Normal>& edits, const sg::SourceLocation& at) {
-    auto normal = std::make_shared<sg::Normal>();
+    // A declared normal starts from #default's, as POV's Parse_Tnormal.
+    auto normal = std::make_shared<sg::Normal>(
+        m_default_texture && m_default_texture->normal ? *m_default_texture->normal : sg::Normal{});
     for (const auto& edit : edits) edit(*normal);
-    normal->location = at;
-    if (normal->kind == sg::Normal::Kind::Average && normal->normal_map.empty())
-        error(at, "average needs a normal_map of the normals to average");
+    settle_normal(*normal, at);
     return normal;
+}
+
+void Evaluator::settle_normal(sg::Normal& normal, const sg::SourceLocation& at) {
+    normal.location = at;
+    if (normal.kind == sg::Normal::Kind::Average && normal.normal_map.empty())
+        error(at, "average needs a normal_map of the normals to average");
+}
+
+namespace {
+// The layer a pigment, normal or finish written after a layered texture
+// changes: the top one (POV's texture list starts with the newest layer).
+sg::Material& top_layer(sg::Material& material) {
+    if (material.layers_above.empty()) return material;
+    auto top = std::make_shared<sg::Material>(*material.layers_above.back());
+    material.layers_above.back() = top;
+    return *top;
+}
+}  // namespace
+
+// POV edits the pigment, normal or finish a texture already has (a copy of
+// a declared one, or #default's): `texture { T finish { phong 1 } }` keeps
+// the rest of T's finish.
+std::function<void(sg::Material&)> Evaluator::material_pigment_edit(const Edits<sg::Pigment>& edits,
+                                                                    const sg::SourceLocation& at) {
+    return [this, edits, at](sg::Material& m) {
+        sg::Material& target = top_layer(m);
+        for (const auto& edit : edits) edit(target.pigment);
+        settle_pigment(target.pigment, at);
+    };
+}
+
+std::function<void(sg::Material&)> Evaluator::material_normal_edit(const Edits<sg::Normal>& edits,
+                                                                   const sg::SourceLocation& at) {
+    return [this, edits, at](sg::Material& m) {
+        sg::Material& target = top_layer(m);
+        auto normal = std::make_shared<sg::Normal>(target.normal ? *target.normal : sg::Normal{});
+        for (const auto& edit : edits) edit(*normal);
+        settle_normal(*normal, at);
+        target.normal = normal;
+    };
+}
+
+std::function<void(sg::Material&)> Evaluator::material_finish_edit(const Edits<sg::Finish>& edits,
+                                                                   const sg::SourceLocation& at) {
+    return [this, edits, at](sg::Material& m) {
+        sg::Material& target = top_layer(m);
+        for (const auto& edit : edits) edit(target.finish);
+        settle_finish(target.finish, at);
+    };
 }
 
 Evaluator::NormalEdit Evaluator::patterned_normal(const PatternEdit& pattern,
@@ -716,7 +781,10 @@ Evaluator::NormalEdit Evaluator::patterned_normal(const PatternEdit& pattern,
     if (amount) size = to_float(amount->first, amount->second, "a bump size");
     return [pattern, size, at, waves = m_scene.global.number_of_waves](sg::Normal& n) {
         n.kind = sg::Normal::Kind::Patterned;
-        n.pattern = sg::Pattern{};
+        sg::Pattern fresh;
+        fresh.pattern_from_object = n.pattern.pattern_from_object;
+        fresh.warps = n.pattern.warps;
+        n.pattern = fresh;
         n.pattern.number_of_waves = waves;
         pattern(n.pattern);
         n.pattern.location = at;

@@ -189,6 +189,39 @@ TEST(ParserTextures, DefaultFinishReachesPigmentOnlyObjectsAndTextures) {
     EXPECT_DOUBLE_EQ(material_of(scene, 2).finish.phong, 1.0);
 }
 
+TEST(ParserTextures, BlocksEditWhatTheTextureHas) {
+    // POV edits a texture's pigment, normal and finish in place.
+    auto scene = parse_ok(
+        "#declare T = texture { pigment { rgb <1, 0, 0> } finish { ambient 0.5 diffuse 0.3 } }\n"
+        "sphere { 0, 1 texture { T finish { phong 1 } } }\n"
+        "sphere { 0, 1 texture { T } finish { phong 1 } }\n"
+        "sphere { 0, 1 pigment { bozo } pigment { scale 0.2 } }\n"
+        "#default { normal { onion 0.8 scale 0.4 } }\n"
+        "sphere { 0, 1 normal { slope_map { [0 <0, 1>] [1 <1, 0>] } } }\n"
+        "#declare L = texture { pigment { rgb 1 } } texture { pigment { rgbt <0, 0, 1, 0.5> } }\n"
+        "sphere { 0, 1 texture { L finish { ambient 1 } } }");
+    for (std::size_t i = 0; i < 2; ++i) {
+        const sg::Material& m = material_of(scene, i);
+        EXPECT_DOUBLE_EQ(m.finish.phong, 1.0) << i;
+        EXPECT_EQ(m.finish.ambient, sg::Vec3(0.5)) << i;
+        EXPECT_DOUBLE_EQ(m.finish.diffuse, 0.3) << i;
+        EXPECT_EQ(m.pigment.color.rgb, sg::Vec3(1, 0, 0)) << i;
+    }
+    const sg::Pigment& bozo = material_of(scene, 2).pigment;
+    EXPECT_EQ(bozo.pattern.kind, sg::Pattern::Kind::Bozo);
+    EXPECT_EQ(apply(bozo.pattern.pattern_from_object, {0.2, 0, 0}), sg::Vec3(1, 0, 0));
+    const sg::Normal& onion = *material_of(scene, 3).normal;
+    EXPECT_EQ(onion.pattern.kind, sg::Pattern::Kind::Onion);
+    EXPECT_NEAR(onion.bump_size, 0.8, 1e-12);
+    EXPECT_EQ(onion.slope_map.size(), 2u);
+    EXPECT_NEAR(apply(onion.pattern.pattern_from_object, {0.4, 0, 0}).x, 1.0, 1e-12);
+    // A finish after a layered texture changes its top layer.
+    const sg::Material& layered = material_of(scene, 4);
+    ASSERT_EQ(layered.layers_above.size(), 1u);
+    EXPECT_EQ(layered.layers_above[0]->finish.ambient, sg::Vec3(1.0));
+    EXPECT_NE(layered.finish.ambient, sg::Vec3(1.0));
+}
+
 TEST(ParserDirectives, DeprecatedDeclarationWarnsOnUse) {
     ParseResult result = parse_scene_string(
         "#declare deprecated once \"use T2\" T1 = texture { pigment { rgb 1 } }\n"

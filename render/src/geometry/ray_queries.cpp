@@ -25,11 +25,16 @@ void fill_embree_ray(const Ray& ray, RTCRay& out) {
     out.flags = 0;
 }
 
-// POV's normal { }: every integrator sees the bent normal, kept on the
-// side the surface's own shading normal was on.
-inline void perturb_normal(Hit& hit) {
-    if (const NormalPerturbation* normal = hit.material ? hit.material->normal_perturbation() : nullptr)
-        hit.shading_normal = normal->perturb(hit, hit.shading_normal);
+// POV's normal { }: every integrator sees the bent normal. POV bends the
+// normal turned towards the ray (a bump seen from behind stays a bump);
+// the hit keeps it on the side its own shading normal was on.
+inline void perturb_normal(Hit& hit, const Vec3& ray_direction) {
+    const NormalPerturbation* normal = hit.material ? hit.material->normal_perturbation() : nullptr;
+    if (!normal) return;
+    const bool behind = glm::dot(hit.geometric_normal, ray_direction) > 0.0f;
+    const Vec3 towards_ray = behind ? -hit.shading_normal : hit.shading_normal;
+    const Vec3 bent = normal->perturb(hit, towards_ray);
+    hit.shading_normal = behind ? -bent : bent;
 }
 
 }  // namespace
@@ -47,7 +52,7 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
     const EmbreeHit found{rayhit.ray.tnear,     rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
                           rayhit.hit.instID[0], rayhit.hit.u,    rayhit.hit.v};
     if (!complete_hit(ray, found, hit)) return false;
-    if (m_data->has_normal_perturbation) perturb_normal(hit);
+    if (m_data->has_normal_perturbation) perturb_normal(hit, ray.direction);
     return true;
 }
 
@@ -147,7 +152,7 @@ void EmbreeScene::intersect_batch(const Ray* rays, int count, Hit* hits, bool* f
     }
     if (m_data->has_normal_perturbation)
         for (int i = 0; i < count; ++i)
-            if (found[i]) perturb_normal(hits[i]);
+            if (found[i]) perturb_normal(hits[i], rays[i].direction);
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {

@@ -102,3 +102,32 @@ TEST(Textures, MissingImageIsASceneErrorAtTheImageMap) {
 
 }  // namespace
 }  // namespace lancer
+
+namespace lancer {
+namespace {
+
+// POV bends the normal turned towards the ray: a slope seen from either
+// side of a surface tilts the same way in the viewer's frame.
+TEST(Normals, BentTowardsTheRayOnEitherSide) {
+    auto m = std::make_shared<sg::Material>();
+    auto normal = std::make_shared<sg::Normal>();
+    normal->pattern.kind = sg::Pattern::Kind::Gradient;
+    normal->pattern.vector = {1, 0, 0};
+    normal->bump_size = 1.0;
+    m->normal = normal;
+    sg::SceneGraph graph;
+    graph.objects.push_back(plane_object({0, 0, -1}, 0.0, m));
+    auto scene = compile_scene(graph);
+    Hit front, back;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0.3f, 0.2f, -1), Vec3(0, 0, 1)), front));
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(0.3f, 0.2f, 1), Vec3(0, 0, -1)), back));
+    const Vec3 seen_front = front.facing_normal(Vec3(0, 0, -1));
+    const Vec3 seen_back = back.facing_normal(Vec3(0, 0, 1));
+    EXPECT_GT(std::fabs(seen_front.x), 0.05f);  // the gradient does bend it
+    EXPECT_NEAR(seen_front.x, seen_back.x, 1e-5f);
+    EXPECT_NEAR(seen_front.z, -seen_back.z, 1e-5f);
+    EXPECT_NEAR(glm::length(front.shading_normal), 1.0f, 1e-5f);
+}
+
+}  // namespace
+}  // namespace lancer
