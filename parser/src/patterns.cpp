@@ -1,7 +1,8 @@
 // Patterns, warps, colour and pigment maps, block patterns, normals: the
 // scene graph's sg::Pattern, sg::Pigment and sg::Normal as POV-Ray 3.7
 // reads them (its defaults, including each pattern's default colour map,
-// measured from Debian's povray: docs/patterns.md).
+// measured from Debian's povray; docs/scene-language.md, "Patterns, maps
+// and normals").
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
