@@ -108,6 +108,17 @@ void Evaluator::directive_declare(const RawToken& d, bool local) {
         return abort_parse();
     }
     if (!expect_raw_punct("=", "after '#" + d.text + " " + name + "'")) return;
+    // A block lancer ignores (sky_sphere, fog, media …) declares nothing;
+    // the declaration must not read on into what follows.
+    if (const RawToken* next = peek_raw(); next && next->kind == RawKind::Identifier && !lookup(next->text)) {
+        const RawToken keyword = *next;
+        ++m_frames.back()->position;
+        if (skip_ignored_block(keyword)) {
+            take_punct(";");
+            return;
+        }
+        --m_frames.back()->position;
+    }
     Value value = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
     if (m_aborted) return;
     bool terminated = take_punct(";");

@@ -222,6 +222,16 @@ TEST(ParserTextures, BlocksEditWhatTheTextureHas) {
     EXPECT_NE(layered.finish.ambient, sg::Vec3(1.0));
 }
 
+TEST(ParserDirectives, DeclaringAnIgnoredBlockDeclaresNothingAndReadsNoFurther) {
+    // skies.inc declares sky_spheres; the next statement must stay its own.
+    ParseResult result =
+        parse_scene_string("#declare S = sky_sphere { pigment { rgb 1 } }\n#declare A = 2;\nsphere { 0, A }", "s.pov");
+    ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
+    ASSERT_EQ(result.scene->objects.size(), 1u);
+    EXPECT_DOUBLE_EQ(std::get<sg::Sphere>(result.scene->objects[0].shape).radius, 2.0);
+    EXPECT_EQ(test::count_warnings(result), 1);
+}
+
 TEST(ParserDirectives, DeprecatedDeclarationWarnsOnUse) {
     ParseResult result = parse_scene_string(
         "#declare deprecated once \"use T2\" T1 = texture { pigment { rgb 1 } }\n"
