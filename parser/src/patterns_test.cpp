@@ -232,6 +232,11 @@ TEST(ParserDirectives, DeclaringAnIgnoredBlockDeclaresNothingAndReadsNoFurther) 
     EXPECT_EQ(test::count_warnings(result), 1);
 }
 
+TEST(ParserDirectives, OldDefaultWithoutHashIsRead) {
+    auto scene = parse_ok("default { finish { ambient 0 diffuse 0.9 } }\nsphere { 0, 1 pigment { rgb 1 } }");
+    EXPECT_DOUBLE_EQ(material_of(scene).finish.diffuse, 0.9);
+}
+
 TEST(ParserDirectives, DeprecatedDeclarationWarnsOnUse) {
     ParseResult result = parse_scene_string(
         "#declare deprecated once \"use T2\" T1 = texture { pigment { rgb 1 } }\n"

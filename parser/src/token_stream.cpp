@@ -242,6 +242,14 @@ Evaluator::Symbol Evaluator::next_token() {
         }
         if (raw->kind == RawKind::Identifier) {
             if (skip_ignored_block(*raw)) continue;
+            // POV still reads the old `default { … }` as #default.
+            if (raw->text == "default" && !lookup(raw->text) && !directives_blocked()) {
+                const RawToken* next = peek_raw();
+                if (next && next->kind == RawKind::Punct && next->text == "{") {
+                    directive_default(*raw);
+                    continue;
+                }
+            }
             auto macro = m_macros.find(raw->text);
             if (macro != m_macros.end() && !lookup(raw->text)) {
                 auto keep = macro->second;
