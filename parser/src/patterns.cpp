@@ -611,7 +611,7 @@ Evaluator::PigmentEdit Evaluator::pigment_pattern_edit(const PatternEdit& edit, 
     // POV accepts pattern modifiers on any pigment; on one without a
     // pattern (a plain colour, an image) they change nothing.
     return [edit](sg::Pigment& p) {
-        if (p.kind == sg::Pigment::Kind::Patterned || p.kind == sg::Pigment::Kind::Average) edit(p.pattern);
+        if (p.kind != sg::Pigment::Kind::Solid) edit(p.pattern);
     };
 }
 

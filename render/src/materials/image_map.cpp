@@ -2,6 +2,7 @@
 // map_type projections.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include <OpenImageIO/texture.h>
 
 #include "lancer/scene_error.h"
+#include "materials/pattern.h"
 #include "materials/pattern_space.h"
 
 namespace lancer {
@@ -115,6 +117,9 @@ class ImageTexture final : public Texture {
           m_map(pigment.image),
           m_filename(pigment.image.path),
           m_pattern_from_object(pigment.pattern_from_object),
+          m_warps(pigment.pattern.warps.empty() && pigment.pattern.turbulence == sg::Vec3(0.0)
+                      ? std::nullopt
+                      : std::optional<CompiledPattern>(std::in_place, pigment.pattern, NoiseGenerator::RangeCorrected)),
           m_spaces(spaces) {
         OIIO::TextureSystem& system = m_images->get();
         OIIO::ImageSpec spec;
@@ -146,7 +151,9 @@ class ImageTexture final : public Texture {
 
     TextureSample evaluate(const Hit& hit) const override {
         Vec2 uv = hit.uv;
-        const glm::dvec3 p = pattern_point(hit, m_spaces, m_pattern_from_object);
+        // POV warps the point (turbulence, warp { }) before projecting it.
+        const glm::dvec3 p = m_warps ? m_warps->pattern_point(pattern_point(hit, m_spaces, glm::dmat4(1.0)))
+                                     : pattern_point(hit, m_spaces, m_pattern_from_object);
         switch (m_map.map_type) {
         case sg::MapType::Planar: uv = planar_map(p); break;
         case sg::MapType::Spherical: uv = spherical_map(p); break;
@@ -185,6 +192,9 @@ class ImageTexture final : public Texture {
     sg::ImageMap m_map;
     OIIO::ustring m_filename;
     glm::dmat4 m_pattern_from_object;
+    // The pigment's transforms, warps and turbulence, when it has warps or
+    // turbulence (the projections only: POV does not warp (u,v)).
+    std::optional<CompiledPattern> m_warps;
     const TextureSpaces& m_spaces;
     int m_channels = 3;
     bool m_decode_srgb = true;
