@@ -166,6 +166,19 @@ void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer, boo
 // ------------------------------------------------------------- patterns
 
 namespace {
+// A new pattern written in a pigment or normal: a pigment being edited
+// keeps its transforms and warps, as POV's Parse_Pattern does.
+void restart_pattern(sg::Pattern& pattern, const std::function<void(sg::Pattern&)>& kind, int waves,
+                     const sg::SourceLocation& at) {
+    sg::Pattern fresh;
+    fresh.pattern_from_object = pattern.pattern_from_object;
+    fresh.warps = pattern.warps;
+    fresh.number_of_waves = waves;
+    pattern = fresh;
+    kind(pattern);
+    pattern.location = at;
+}
+
 // A setting's value as an int without overflow (values past int's range
 // are out of every pattern's range anyway; the caller's checks report them).
 int saturated_int(double value) {
@@ -546,15 +559,7 @@ Evaluator::PigmentEdit Evaluator::patterned_pigment(const PatternEdit& pattern, 
     // as POV scenes do, before the objects).
     return [pattern, at, waves = m_scene.global.number_of_waves](sg::Pigment& p) {
         p.kind = sg::Pigment::Kind::Patterned;
-        // A new pattern in a pigment being edited keeps its transforms and
-        // warps, as POV's Parse_Pattern does.
-        sg::Pattern fresh;
-        fresh.pattern_from_object = p.pattern.pattern_from_object;
-        fresh.warps = p.pattern.warps;
-        p.pattern = fresh;
-        p.pattern.number_of_waves = waves;
-        pattern(p.pattern);
-        p.pattern.location = at;
+        restart_pattern(p.pattern, pattern, waves, at);
         p.color_map.reset();
         p.pigment_map.clear();
         p.block_pigments.clear();
@@ -782,13 +787,7 @@ Evaluator::NormalEdit Evaluator::patterned_normal(const PatternEdit& pattern,
     if (amount) size = to_float(amount->first, amount->second, "a bump size");
     return [pattern, size, at, waves = m_scene.global.number_of_waves](sg::Normal& n) {
         n.kind = sg::Normal::Kind::Patterned;
-        sg::Pattern fresh;
-        fresh.pattern_from_object = n.pattern.pattern_from_object;
-        fresh.warps = n.pattern.warps;
-        n.pattern = fresh;
-        n.pattern.number_of_waves = waves;
-        pattern(n.pattern);
-        n.pattern.location = at;
+        restart_pattern(n.pattern, pattern, waves, at);
         if (size) n.bump_size = *size;
     };
 }
