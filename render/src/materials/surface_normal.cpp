@@ -174,18 +174,12 @@ class SurfaceNormal final : public NormalPerturbation {
         : m_root(make_node(normal, generator)), m_spaces(spaces), m_uv_mapping(normal.pattern.uv_mapping) {}
 
     Vec3 perturb(const Hit& hit, const Vec3& shading_normal) const override {
-        glm::dmat3 object_from_world(1.0);
-        glm::dvec3 point(hit.position);
-        if (hit.object_id < m_spaces.size()) {
-            const glm::dmat4& space = m_spaces[hit.object_id];
-            object_from_world = glm::dmat3(space);
-            point = glm::dvec3(space * glm::dvec4(point, 1.0));
-        }
+        const glm::dmat3 object_from_world =
+            hit.object_id < m_spaces.size() ? glm::dmat3(m_spaces[hit.object_id]) : glm::dmat3(1.0);
         // Normals move by the inverse transpose of what moves points.
         const glm::dmat3 normal_to_object = glm::transpose(glm::inverse(object_from_world));
         const glm::dvec3 object_normal = unit(normal_to_object * glm::dvec3(shading_normal));
-        if (m_uv_mapping) point = glm::dvec3(hit.uv.x, hit.uv.y, 0.0);
-        const glm::dvec3 bent = m_root->perturb(object_normal, point);
+        const glm::dvec3 bent = m_root->perturb(object_normal, surface_point(hit, m_spaces, m_uv_mapping));
         const glm::dvec3 world = unit(glm::transpose(object_from_world) * bent);
         if (!std::isfinite(world.x) || !std::isfinite(world.y) || !std::isfinite(world.z) || world == glm::dvec3(0.0))
             return shading_normal;
