@@ -82,8 +82,9 @@ class PigmentMapPigment final : public PointPigment {
         }
     }
     TextureSample at(const glm::dvec3& point, const PatternContext& context) const override {
-        const BlendPair pair = search_blend_map(m_values, m_pattern.value(point, context));
+        // One pass through the warps serves the value and the entries' point.
         const glm::dvec3 inner = m_pattern.pattern_point(point);
+        const BlendPair pair = search_blend_map(m_values, m_pattern.value_at_pattern_point(inner, context));
         const TextureSample current = m_pigments[pair.current]->at(inner, context);
         if (pair.previous == pair.current) return current;
         return mix(m_pigments[pair.previous]->at(inner, context), current, pair.fraction);

@@ -77,8 +77,8 @@ class PatternNormalNode final : public NormalNode {
 
   private:
     glm::dvec3 perturb_by_map(const glm::dvec3& normal, const glm::dvec3& point) const {
-        const BlendPair pair = search_blend_map(m_map_values, m_pattern.value(point));
         const glm::dvec3 inner_point = m_pattern.pattern_point(point);
+        const BlendPair pair = search_blend_map(m_map_values, m_pattern.value_at_pattern_point(inner_point));
         const glm::dvec3 inner_normal = m_pattern.normal_to_pattern_space(normal);
         glm::dvec3 result = m_map[pair.current]->perturb(inner_normal, inner_point);
         if (pair.previous != pair.current) {
