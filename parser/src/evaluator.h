@@ -295,6 +295,11 @@ class Evaluator {
                                 const sg::SourceLocation& at);
     NormalEdit bump_map_normal(const sg::ImageMap& image, const std::optional<std::pair<Value, SourceRange>>& amount,
                                const sg::SourceLocation& at);
+    NormalEdit block_normal(const PatternEdit& pattern, const std::optional<std::pair<Value, SourceRange>>& amount,
+                            const std::vector<sg::NormalRef>& normals, const sg::SourceLocation& at);
+    // bump_size and use_color inside an image_map (they belong to bump_map).
+    void refuse_bump_items(const sg::ImageMap& image, const char* block);
+    void missing_weight(const sg::SourceLocation& at, const char* map);
     NormalEdit normal_pattern_edit(const PatternEdit& edit, const sg::SourceLocation& at);
     NormalEdit normal_accuracy(const Value& v, const SourceRange& where);
     sg::SlopeMapEntry slope_entry(const Value& value, const SourceRange& wv, const Value& slope, const SourceRange& ws);
@@ -318,6 +323,7 @@ class Evaluator {
     std::function<void(sg::Material&)> texture_pattern(const PatternEdit& pattern,
                                                        const std::vector<std::shared_ptr<sg::Material>>& blocks,
                                                        const sg::SourceLocation& at);
+    std::function<void(sg::Material&)> average_texture(const sg::SourceLocation& at);
     std::function<void(sg::Material&)> texture_map_edit(const std::vector<sg::TextureMapEntry>& entries,
                                                         const sg::SourceLocation& at);
     // The texture a new texture, or an object's first pigment or finish,

@@ -179,6 +179,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::shared_ptr<std::vector<sg::PigmentMapEntry>>> pigment_map pigment_map_entries
 %nterm <std::shared_ptr<sg::Pigment>> pigment_body
 %nterm <sg::NormalRef> normal normal_body
+%nterm <std::vector<sg::NormalRef>> block_normals
 %nterm <Edits<sg::Normal>> normal_mods normal_block normal_edits
 %nterm <std::function<void(sg::Normal&)>> normal_start normal_mod
 %nterm <std::shared_ptr<std::vector<sg::NormalMapEntry>>> normal_map normal_map_entries
@@ -650,10 +651,13 @@ texture_map_entries
   : %empty             {}
   | texture_map_entries "[" arith opt_comma texture_body "]"
       { $$ = std::move($1); $$.push_back(sg::TextureMapEntry{ev.to_float($3, @3, "a map value"), $5}); }
+  /* An average's entry may leave out its weight (POV's default 1). */
+  | texture_map_entries "[" texture_body "]"
+      { $$ = std::move($1); $$.push_back(sg::TextureMapEntry{sg::kUnweighted, $3}); }
   ;
 
 texture_items
-  : %empty             {}
+  : %empty %prec OPT_EMPTY {}
   | texture_items TEXTURE_ID { $$ = std::move($1); auto t = $2.value.texture;
                                $$.push_back([t](sg::Material& m) { m = *t; }); }
   | texture_items UNDECLARED_ID { $$ = std::move($1); ev.unknown_identifier($2.text, LOC(@2), "a texture"); }
@@ -661,6 +665,7 @@ texture_items
   | texture_items finish_block  { $$ = std::move($1); $$.push_back(ev.material_finish_edit($2, LOC(@2))); }
   | texture_items normal_block  { $$ = std::move($1); $$.push_back(ev.material_normal_edit($2, LOC(@2))); }
   | texture_items pattern_name { $$ = std::move($1); $$.push_back(ev.texture_pattern($2, {}, LOC(@2))); }
+  | texture_items "average" { $$ = std::move($1); $$.push_back(ev.average_texture(LOC(@2))); }
   | texture_items block_pattern_name texture_seq { $$ = std::move($1); $$.push_back(ev.texture_pattern($2, $3, LOC(@2))); }
   | texture_items pattern_modifier { $$ = std::move($1); auto e = $2;
                                $$.push_back([e](sg::Material& m) { if (m.pattern) e(*m.pattern); }); }
@@ -930,6 +935,7 @@ normal_start
   | NORMAL_ID          { auto n = $1.value.normal; $$ = [n](sg::Normal& target) { target = *n; }; }
   | pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
   | block_pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
+  | block_pattern_name opt_amount block_normals { $$ = ev.block_normal($1, $2, $3, LOC(@1)); }
   | "bump_map" "{" image_items "}" opt_amount { $$ = ev.bump_map_normal($3, $5, LOC(@1)); }
   | "average"          { $$ = [](sg::Normal& n) { n.kind = sg::Normal::Kind::Average; }; }
   ;
@@ -972,6 +978,12 @@ normal_mod
   | "uv_mapping"       { $$ = [](sg::Normal& n) { n.pattern.uv_mapping = true; }; }
   ;
 
+/* checker normal { … } normal { … }: one normal per block. */
+block_normals
+  : normal             { $$.push_back($1); }
+  | block_normals opt_comma normal { $$ = std::move($1); $$.push_back($3); }
+  ;
+
 normal_map
   : "normal_map" "{" NORMAL_MAP_ID "}" { $$ = std::make_shared<std::vector<sg::NormalMapEntry>>(*$3.value.normal_map); }
   | "normal_map" "{" normal_map_entries "}" { $$ = $3; }
@@ -981,6 +993,8 @@ normal_map_entries
   : %empty             { $$ = std::make_shared<std::vector<sg::NormalMapEntry>>(); }
   | normal_map_entries "[" arith opt_comma normal_body "]"
       { $$ = $1; $$->push_back(sg::NormalMapEntry{ev.to_float($3, @3, "a map value"), $5}); }
+  | normal_map_entries "[" normal_body "]"
+      { $$ = $1; $$->push_back(sg::NormalMapEntry{sg::kUnweighted, $3}); }
   ;
 
 slope_map_entries
@@ -989,7 +1003,7 @@ slope_map_entries
   ;
 
 image_map
-  : "image_map" "{" image_items "}" { $$ = $3; ev.finish_image_map($$, LOC(@1)); }
+  : "image_map" "{" image_items "}" { $$ = $3; ev.finish_image_map($$, LOC(@1)); ev.refuse_bump_items($$, "image_map"); }
   ;
 
 image_items
@@ -1008,6 +1022,11 @@ image_items
   | image_items "filter" "all" expr { $$ = $1; $$.filter_all = ev.to_float($4, @4); }
   | image_items "transmit" "all" expr { $$ = $1; $$.transmit_all = ev.to_float($4, @4); }
   | image_items "gamma" expr { $$ = $1; $$.srgb = ev.to_float($3, @3) != 1.0; }
+  /* bump_map's own items (an image_map refuses them) */
+  | image_items "bump_size" arith { $$ = $1; $$.bump_size = ev.to_float($3, @3, "a bump_size"); $$.bump_item_location = LOC(@2); }
+  | image_items "use_color" { $$ = $1; $$.use_color = true; $$.bump_item_location = LOC(@2); }
+  | image_items "use_colour" { $$ = $1; $$.use_color = true; $$.bump_item_location = LOC(@2); }
+  | image_items "use_index" { $$ = $1; $$.use_color = false; $$.bump_item_location = LOC(@2); }
   ;
 
 finish

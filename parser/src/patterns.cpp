@@ -13,6 +13,21 @@ namespace lancer::parse {
 
 namespace {
 
+// An average's entries written without a weight get POV's 1; every other
+// map needs a value in each entry. False when one is missing.
+template <class Entry>
+bool settle_weights(std::vector<Entry>& entries, bool average) {
+    bool complete = true;
+    for (Entry& entry : entries) {
+        if (entry.value != sg::kUnweighted) continue;
+        if (average)
+            entry.value = 1.0;
+        else
+            complete = false;
+    }
+    return complete;
+}
+
 using PatternKind = sg::Pattern::Kind;
 
 sg::Color rgb(double r, double g, double b) {
@@ -708,6 +723,8 @@ void Evaluator::settle_pigment(sg::Pigment& settled, const sg::SourceLocation& a
     }
     if (pigment->kind == sg::Pigment::Kind::Average && pigment->pigment_map.empty())
         error(at, "average needs a pigment_map of the pigments to average");
+    if (!settle_weights(pigment->pigment_map, pigment->kind == sg::Pigment::Kind::Average))
+        missing_weight(at, "pigment_map");
     // POV-Ray accepts a negative colour; on a surface it takes light away
     // from what it reflects, which surprises more often than it is meant.
     auto negative = [](const sg::Color& c) { return c.rgb.x < 0.0 || c.rgb.y < 0.0 || c.rgb.z < 0.0; };
@@ -735,6 +752,7 @@ void Evaluator::settle_normal(sg::Normal& normal, const sg::SourceLocation& at) 
     normal.location = at;
     if (normal.kind == sg::Normal::Kind::Average && normal.normal_map.empty())
         error(at, "average needs a normal_map of the normals to average");
+    if (!settle_weights(normal.normal_map, normal.kind == sg::Normal::Kind::Average)) missing_weight(at, "normal_map");
 }
 
 namespace {
@@ -792,17 +810,52 @@ Evaluator::NormalEdit Evaluator::patterned_normal(const PatternEdit& pattern,
     };
 }
 
+Evaluator::NormalEdit Evaluator::block_normal(const PatternEdit& pattern,
+                                              const std::optional<std::pair<Value, SourceRange>>& amount,
+                                              const std::vector<sg::NormalRef>& normals, const sg::SourceLocation& at) {
+    NormalEdit start = patterned_normal(pattern, amount, at);
+    return [this, start, normals, at](sg::Normal& n) {
+        start(n);
+        n.normal_map.clear();
+        n.block_normals = normals;
+        const std::size_t count = default_block_colours(n.pattern.kind).size();
+        if (n.block_normals.size() > count) {
+            error(at, std::string(block_pattern_name(n.pattern.kind)) + " takes at most " + std::to_string(count) +
+                          " normals, got " + std::to_string(n.block_normals.size()));
+            n.block_normals.resize(count);
+        }
+        // POV leaves the blocks without a normal of their own flat.
+        while (n.block_normals.size() < count) {
+            auto flat = std::make_shared<sg::Normal>();
+            flat->bump_size = 0.0;
+            n.block_normals.push_back(flat);
+        }
+    };
+}
+
+void Evaluator::missing_weight(const sg::SourceLocation& at, const char* map) {
+    error(at, std::string("each ") + map +
+                  " entry needs its value first ([0.5 …]); only average's entries may leave it out");
+}
+
+void Evaluator::refuse_bump_items(const sg::ImageMap& image, const char* block) {
+    if (image.bump_size || image.use_color)
+        error(image.bump_item_location,
+              std::string("bump_size, use_color and use_index belong in a bump_map, not in ") + block);
+}
+
 Evaluator::NormalEdit Evaluator::bump_map_normal(const sg::ImageMap& image,
                                                  const std::optional<std::pair<Value, SourceRange>>& amount,
                                                  const sg::SourceLocation& at) {
     sg::ImageMap map = image;
     finish_image_map(map, at);
-    std::optional<double> size;
+    std::optional<double> size = map.bump_size;
     if (amount) size = to_float(amount->first, amount->second, "a bump size");
     return [map, size](sg::Normal& n) {
         n.kind = sg::Normal::Kind::BumpMap;
         n.bump_map = map;
         if (size) n.bump_size = *size;
+        if (map.use_color) n.bump_map_use_color = *map.use_color;
     };
 }
 
@@ -881,6 +934,16 @@ std::function<void(sg::Material&)> Evaluator::texture_pattern(const PatternEdit&
     };
 }
 
+std::function<void(sg::Material&)> Evaluator::average_texture(const sg::SourceLocation& at) {
+    return [at](sg::Material& m) {
+        m.pattern = sg::Pattern{};
+        m.pattern->location = at;
+        m.average = true;
+        m.texture_map.clear();
+        m.block_textures.clear();
+    };
+}
+
 std::function<void(sg::Material&)> Evaluator::texture_map_edit(const std::vector<sg::TextureMapEntry>& entries,
                                                                const sg::SourceLocation& at) {
     return [this, entries, at](sg::Material& m) {
@@ -890,6 +953,7 @@ std::function<void(sg::Material&)> Evaluator::texture_map_edit(const std::vector
         }
         if (entries.empty()) error(at, "texture_map needs at least one entry");
         m.texture_map = entries;
+        if (!settle_weights(m.texture_map, m.average)) missing_weight(at, "texture_map");
         m.block_textures.clear();
     };
 }

@@ -1,5 +1,10 @@
 // Patterns, maps, normals, patterned and layered textures and #default as
 // the parser reads them: the scene graph POV-Ray's rules give.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "parse_test_helpers.h"
@@ -245,6 +250,75 @@ TEST(ParserDirectives, DeprecatedDeclarationWarnsOnUse) {
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     EXPECT_EQ(test::count_warnings(result), 1);  // once
     EXPECT_NE(test::all_diagnostics(result).find("'T1' is deprecated: use T2"), std::string::npos);
+}
+
+TEST(ParserPatterns, AverageEntriesMayLeaveOutTheirWeight) {
+    auto scene = parse_ok(
+        "plane { z, 0 normal { average normal_map { [gradient x, -5 scallop_wave] [2 gradient y] } } }\n"
+        "plane { z, 0 texture { average texture_map { [pigment { rgb 1 }] [3.0 pigment { rgb x } finish { phong 1 }] "
+        "} } }");
+    const sg::NormalRef& n = material_of(scene, 0).normal;
+    ASSERT_TRUE(n);
+    EXPECT_EQ(n->kind, sg::Normal::Kind::Average);
+    ASSERT_EQ(n->normal_map.size(), 2u);
+    EXPECT_DOUBLE_EQ(n->normal_map[0].value, 1.0);  // POV's default weight
+    EXPECT_DOUBLE_EQ(n->normal_map[0].normal->bump_size, -5.0);
+    EXPECT_DOUBLE_EQ(n->normal_map[1].value, 2.0);
+    const sg::Material& t = material_of(scene, 1);
+    EXPECT_TRUE(t.average);
+    ASSERT_EQ(t.texture_map.size(), 2u);
+    EXPECT_DOUBLE_EQ(t.texture_map[0].value, 1.0);
+    EXPECT_DOUBLE_EQ(t.texture_map[1].value, 3.0);
+    // Any other map needs each entry's value.
+    EXPECT_NE(first_error("plane { z, 0 normal { gradient x normal_map { [bumps] [1 dents] } } }")
+                  .message.find("needs its value"),
+              std::string::npos);
+    EXPECT_NE(first_error("plane { z, 0 texture { onion texture_map { [pigment { rgb 1 }] } } }")
+                  .message.find("needs its value"),
+              std::string::npos);
+}
+
+TEST(ParserPatterns, BlockPatternNormalsOnePerBlock) {
+    auto scene = parse_ok(
+        "box { 0, 1 normal { checker normal { marble turbulence 0.5 } normal { radial sine_wave } } }\n"
+        "box { 0, 1 normal { hexagon 0.5 normal { bumps } } }");
+    const sg::NormalRef& checker = material_of(scene, 0).normal;
+    ASSERT_TRUE(checker);
+    EXPECT_EQ(checker->pattern.kind, sg::Pattern::Kind::Checker);
+    ASSERT_EQ(checker->block_normals.size(), 2u);
+    EXPECT_EQ(checker->block_normals[0]->pattern.kind, sg::Pattern::Kind::Marble);
+    EXPECT_EQ(checker->block_normals[1]->pattern.kind, sg::Pattern::Kind::Radial);
+    const sg::NormalRef& hexagon = material_of(scene, 1).normal;
+    ASSERT_TRUE(hexagon);
+    ASSERT_EQ(hexagon->block_normals.size(), 3u);  // the missing blocks stay flat
+    EXPECT_DOUBLE_EQ(hexagon->block_normals[2]->bump_size, 0.0);
+    EXPECT_NE(first_error("box { 0, 1 normal { checker normal { bumps } normal { dents } normal { wrinkles } } }")
+                  .message.find("at most 2 normals"),
+              std::string::npos);
+}
+
+TEST(ParserPatterns, BumpMapTakesItsOwnItemsInsideTheBlock) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("lancer_bump_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string image = (dir / "bumps.png").string();
+    std::ofstream(image) << "x";
+    auto scene = parse_ok("sphere { 0, 1 normal { bump_map { png \"" + image +
+                          "\" bump_size 10 use_color interpolate 2 once } } }\n"
+                          "sphere { 0, 1 normal { bump_map { png \"" +
+                          image + "\" bump_size 10 } 3 } }");
+    const sg::NormalRef& inside = material_of(scene, 0).normal;
+    ASSERT_TRUE(inside);
+    EXPECT_EQ(inside->kind, sg::Normal::Kind::BumpMap);
+    EXPECT_DOUBLE_EQ(inside->bump_size, 10.0);
+    EXPECT_TRUE(inside->bump_map_use_color);
+    EXPECT_TRUE(inside->bump_map.once);
+    EXPECT_DOUBLE_EQ(material_of(scene, 1).normal->bump_size, 3.0);  // the amount after the block wins
+    const std::string before = "sphere { 0, 1 pigment { image_map { png \"" + image + "\" ";
+    const Diagnostic in_image_map = first_error(before + "bump_size 2 } } }");
+    EXPECT_NE(in_image_map.message.find("belong in a bump_map"), std::string::npos);
+    EXPECT_EQ(in_image_map.location.column, before.size() + 1);
+    fs::remove_all(dir);
 }
 
 }  // namespace

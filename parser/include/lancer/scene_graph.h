@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -57,6 +58,11 @@ struct ImageMap {
     double transmit_all = 0.0;
     bool srgb = true;  // 8-bit formats are sRGB-encoded; EXR/HDR are linear
     SourceLocation location;
+    // Written inside a bump_map block (POV allows them there as well as
+    // after it); an image_map refuses them.
+    std::optional<double> bump_size;
+    std::optional<bool> use_color;
+    SourceLocation bump_item_location;
 };
 
 // ---------------------------------------------------------------- patterns
@@ -229,6 +235,10 @@ using ColorMap = std::vector<ColorMapEntry>;
 using ColorMapRef = std::shared_ptr<const ColorMap>;
 
 using PigmentRef = std::shared_ptr<const Pigment>;
+// The weight of an average's map entry written without one; POV gives it
+// 1, and any other map refuses it.
+inline constexpr double kUnweighted = -std::numeric_limits<double>::infinity();
+
 struct PigmentMapEntry {
     double value = 0.0;
     PigmentRef pigment;
@@ -367,6 +377,7 @@ struct Material {
     std::vector<TextureMapEntry> texture_map;
     std::vector<MaterialRef> block_textures;
     std::vector<MaterialRef> layers_above;  // bottom to top
+    bool average = false;                   // texture { average texture_map { … } }: the entries weighted
     bool uv_mapping = false;                // POV's texture { uv_mapping … }: every pattern of it at (u, v, 0)
     std::string name;                       // the #declare'd name, if any, for summaries and errors
     SourceLocation location;

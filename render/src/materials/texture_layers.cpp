@@ -66,6 +66,34 @@ class LayeredTexture final : public Texture {
     std::vector<std::unique_ptr<Texture>> m_layers;
 };
 
+// POV's average texture lights each entry and weighs the results; lancer
+// averages the pigments and normals and weighs the finishes alike, which
+// is the same picture where the entries' finishes agree.
+sg::Material average_of(const std::vector<sg::Material>& entries, const std::vector<float>& weights,
+                        sg::Material result) {
+    result.pigment.kind = sg::Pigment::Kind::Average;
+    result.pigment.location = result.location;
+    std::vector<sg::Finish> finishes;
+    std::vector<double> finish_weights;
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        result.pigment.pigment_map.push_back({weights[i], std::make_shared<sg::Pigment>(entries[i].pigment)});
+        finishes.push_back(entries[i].finish);
+        finish_weights.push_back(weights[i]);
+    }
+    result.finish = blend_finishes(finishes, finish_weights);
+    const bool any_normal =
+        std::any_of(entries.begin(), entries.end(), [](const sg::Material& m) { return bool(m.normal); });
+    if (any_normal) {
+        auto normal = std::make_shared<sg::Normal>();
+        normal->kind = sg::Normal::Kind::Average;
+        normal->location = result.location;
+        for (std::size_t i = 0; i < entries.size(); ++i)
+            normal->normal_map.push_back({weights[i], entries[i].normal ? entries[i].normal : flat_normal()});
+        result.normal = normal;
+    }
+    return result;
+}
+
 }  // namespace
 
 sg::Material flatten_patterned_texture(const sg::Material& texture) {
@@ -85,6 +113,7 @@ sg::Material flatten_patterned_texture(const sg::Material& texture) {
     std::vector<sg::Material> flat;
     for (const auto& entry : entries) flat.push_back(flatten_patterned_texture(*entry));
     result.finish = flat.front().finish;
+    if (texture.average) return average_of(flat, values, result);
 
     result.pigment.kind = sg::Pigment::Kind::Patterned;
     result.pigment.pattern = *texture.pattern;
