@@ -11,7 +11,7 @@ render_settings { integrator "shadow" { } width 320 height 240 }
 camera { location <0, 3.2, -7> look_at <0, 0.8, 0> right x * 4 / 3 angle 55 }
 light_source { <-3, 8, -6> color rgb 1 }
 
-#declare Grid = pigment { image_map { png "assets/uv_grid.png" interpolate 2 } }
+#declare Grid = pigment { uv_mapping image_map { png "assets/uv_grid.png" interpolate 2 } }
 
 // The plane's (u,v) are its x and z: one grid tile per 4 units.
 plane { y, 0 texture { pigment { Grid scale 4 } finish { ambient 0.05 } } }

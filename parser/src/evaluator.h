@@ -297,8 +297,10 @@ class Evaluator {
                                const sg::SourceLocation& at);
     NormalEdit block_normal(const PatternEdit& pattern, const std::optional<std::pair<Value, SourceRange>>& amount,
                             const std::vector<sg::NormalRef>& normals, const sg::SourceLocation& at);
-    // bump_size and use_color inside an image_map (they belong to bump_map).
-    void refuse_bump_items(const sg::ImageMap& image, const char* block);
+    // An image block's items that belong to another kind of image block
+    // (bump_size in an image_map, use_alpha in a bump_map).
+    void refuse_foreign_image_items(const sg::ImageMap& image, const char* block);
+    PatternEdit image_pattern(const sg::ImageMap& image, const sg::SourceLocation& at);
     void missing_weight(const sg::SourceLocation& at, const char* map);
     NormalEdit normal_pattern_edit(const PatternEdit& edit, const sg::SourceLocation& at);
     NormalEdit normal_accuracy(const Value& v, const SourceRange& where);

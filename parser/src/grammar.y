@@ -69,6 +69,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        RED "red" GREEN "green" BLUE "blue" FILTER "filter" TRANSMIT "transmit" GRAY "gray" GREY "grey"
        CHECKER "checker" IMAGE_MAP "image_map" PNG "png" JPEG "jpeg" EXR "exr" HDR "hdr" TGA "tga"
        TIFF "tiff" MAP_TYPE "map_type" INTERPOLATE "interpolate" ONCE "once" ALL "all" GAMMA "gamma"
+       IMAGE_PATTERN "image_pattern" USE_ALPHA "use_alpha"
        QUICK_COLOR "quick_color"
        AMBIENT "ambient" EMISSION "emission" DIFFUSE "diffuse" BRILLIANCE "brilliance"
        SPECULAR "specular" ROUGHNESS "roughness" PHONG "phong" PHONG_SIZE "phong_size"
@@ -755,6 +756,7 @@ pigment_mods
 
 pattern_name
   : "agate"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Agate); }
+  | "image_pattern" "{" image_items "}" { $$ = ev.image_pattern($3, LOC(@1)); }
   | "aoi"              { $$ = ev.pattern_kind(sg::Pattern::Kind::Aoi); }
   | "boxed"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Boxed); }
   | "bozo"             { $$ = ev.pattern_kind(sg::Pattern::Kind::Bozo); }
@@ -1003,7 +1005,7 @@ slope_map_entries
   ;
 
 image_map
-  : "image_map" "{" image_items "}" { $$ = $3; ev.finish_image_map($$, LOC(@1)); ev.refuse_bump_items($$, "image_map"); }
+  : "image_map" "{" image_items "}" { $$ = $3; ev.finish_image_map($$, LOC(@1)); ev.refuse_foreign_image_items($$, "image_map"); }
   ;
 
 image_items
@@ -1021,7 +1023,9 @@ image_items
   | image_items "once" { $$ = $1; $$.once = true; }
   | image_items "filter" "all" expr { $$ = $1; $$.filter_all = ev.to_float($4, @4); }
   | image_items "transmit" "all" expr { $$ = $1; $$.transmit_all = ev.to_float($4, @4); }
-  | image_items "gamma" expr { $$ = $1; $$.srgb = ev.to_float($3, @3) != 1.0; }
+  | image_items "gamma" expr { $$ = $1; $$.srgb = ev.to_float($3, @3) != 1.0; $$.gamma_given = true; }
+  /* image_pattern's own item */
+  | image_items "use_alpha" { $$ = $1; $$.use_alpha = true; $$.use_alpha_location = LOC(@2); }
   /* bump_map's own items (an image_map refuses them) */
   | image_items "bump_size" arith { $$ = $1; $$.bump_size = ev.to_float($3, @3, "a bump_size"); $$.bump_item_location = LOC(@2); }
   | image_items "use_color" { $$ = $1; $$.use_color = true; $$.bump_item_location = LOC(@2); }

@@ -517,6 +517,10 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
                 material->pigment.kind = sg::Pigment::Kind::Image;
                 material->pigment.image.path = texture.string();
                 material->pigment.image.location = where.begin;
+                // An OBJ texture lies on the mesh's texcoords, filtered.
+                material->pigment.image.map_type = sg::MapType::UV;
+                material->pigment.pattern.uv_mapping = true;
+                material->pigment.image.interpolate = 2;
                 finish_image_map(material->pigment.image, where.begin);
             } else {
                 warning(where.begin,

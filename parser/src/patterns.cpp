@@ -838,10 +838,23 @@ void Evaluator::missing_weight(const sg::SourceLocation& at, const char* map) {
                   " entry needs its value first ([0.5 …]); only average's entries may leave it out");
 }
 
-void Evaluator::refuse_bump_items(const sg::ImageMap& image, const char* block) {
-    if (image.bump_size || image.use_color)
-        error(image.bump_item_location,
-              std::string("bump_size, use_color and use_index belong in a bump_map, not in ") + block);
+void Evaluator::refuse_foreign_image_items(const sg::ImageMap& image, const char* block) {
+    const std::string name = block;
+    if (name != "bump_map" && (image.bump_size || image.use_color))
+        error(image.bump_item_location, "bump_size, use_color and use_index belong in a bump_map, not in " + name);
+    if (name != "image_pattern" && image.use_alpha)
+        error(image.use_alpha_location, "use_alpha belongs in an image_pattern, not in " + name);
+}
+
+Evaluator::PatternEdit Evaluator::image_pattern(const sg::ImageMap& image, const sg::SourceLocation& at) {
+    auto map = std::make_shared<sg::ImageMap>(image);
+    finish_image_map(*map, at);
+    refuse_foreign_image_items(*map, "image_pattern");
+    if (!map->gamma_given) map->srgb = false;
+    return [map](sg::Pattern& p) {
+        p.kind = PatternKind::ImagePattern;
+        p.image = map;
+    };
 }
 
 Evaluator::NormalEdit Evaluator::bump_map_normal(const sg::ImageMap& image,
@@ -849,6 +862,8 @@ Evaluator::NormalEdit Evaluator::bump_map_normal(const sg::ImageMap& image,
                                                  const sg::SourceLocation& at) {
     sg::ImageMap map = image;
     finish_image_map(map, at);
+    refuse_foreign_image_items(map, "bump_map");
+    if (!map.gamma_given) map.srgb = false;
     std::optional<double> size = map.bump_size;
     if (amount) size = to_float(amount->first, amount->second, "a bump size");
     return [map, size](sg::Normal& n) {

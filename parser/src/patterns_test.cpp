@@ -321,5 +321,34 @@ TEST(ParserPatterns, BumpMapTakesItsOwnItemsInsideTheBlock) {
     fs::remove_all(dir);
 }
 
+TEST(ParserPatterns, ImagePatternReadsItsImageAsStored) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("lancer_image_pattern_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string image = (dir / "mask.png").string();
+    std::ofstream(image) << "x";
+    auto scene =
+        parse_ok("plane { y, 0 pigment { image_pattern { png \"" + image +
+                 "\" use_alpha once } color_map { [0 rgb 0] [1 rgb 1] } } }\n"
+                 "plane { y, 0 pigment { image_pattern { png \"" +
+                 image + "\" gamma 2.2 } } }\n" + "plane { y, 0 pigment { image_map { png \"" + image + "\" } } }");
+    const sg::Pattern& masked = material_of(scene, 0).pigment.pattern;
+    EXPECT_EQ(masked.kind, sg::Pattern::Kind::ImagePattern);
+    ASSERT_TRUE(masked.image);
+    EXPECT_TRUE(masked.image->use_alpha);
+    EXPECT_TRUE(masked.image->once);
+    EXPECT_FALSE(masked.image->srgb);  // data, not colour: no decoding unless gamma is given
+    EXPECT_TRUE(material_of(scene, 1).pigment.pattern.image->srgb);
+    // POV's image_map defaults: planar, no interpolation, decoded colours.
+    const sg::ImageMap& colours = material_of(scene, 2).pigment.image;
+    EXPECT_EQ(colours.map_type, sg::MapType::Planar);
+    EXPECT_EQ(colours.interpolate, 0);
+    EXPECT_TRUE(colours.srgb);
+    EXPECT_NE(first_error("plane { y, 0 pigment { image_map { png \"" + image + "\" use_alpha } } }")
+                  .message.find("use_alpha belongs in an image_pattern"),
+              std::string::npos);
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace lancer

@@ -48,16 +48,20 @@ enum class MapType { Planar = 0, Spherical = 1, Cylindrical = 2, Torus = 5, UV =
 struct ImageMap {
     std::string path;  // resolved to an existing file at evaluation time
     ImageFormat format = ImageFormat::Unknown;
-    // lancer maps image_map through the surface (u,v) by default, which is
-    // what a user of meshes and OBJ files expects; an explicit map_type
-    // selects POV-Ray's projections.
-    MapType map_type = MapType::UV;
-    int interpolate = 2;  // 0 none, 2 bilinear, 4 normalized distance (POV)
+    // POV-Ray's defaults: the planar projection and no interpolation. An
+    // OBJ material's texture and uv_mapping take the surface's (u,v).
+    MapType map_type = MapType::Planar;
+    int interpolate = 0;  // 0 none, 2 bilinear, 4 normalized distance (POV)
     bool once = false;    // no repeat outside [0,1]^2
     double filter_all = 0.0;
     double transmit_all = 0.0;
     bool srgb = true;  // 8-bit formats are sRGB-encoded; EXR/HDR are linear
+    // POV decodes an image_map's colours; a bump_map's or image_pattern's
+    // values are read as stored unless `gamma` is given.
+    bool gamma_given = false;
     SourceLocation location;
+    bool use_alpha = false;  // image_pattern: the value is the alpha (or red)
+    SourceLocation use_alpha_location;
     // Written inside a bump_map block (POV allows them there as well as
     // after it); an image_map refuses them.
     std::optional<double> bump_size;
@@ -208,6 +212,7 @@ struct Pattern {
     bool slope_has_altitude = false;
     std::shared_ptr<const Object> object;    // object pattern
     std::shared_ptr<const Pigment> pigment;  // pigment_pattern
+    std::shared_ptr<const ImageMap> image;   // image_pattern
     std::string file;                        // density_file df3
     int file_interpolate = 0;
     SourceLocation location;

@@ -38,8 +38,8 @@ class SolidPointPigment final : public PointPigment {
 
 class ColorMapPigment final : public PointPigment {
   public:
-    ColorMapPigment(const sg::Pigment& pigment, NoiseGenerator generator)
-        : m_pattern(compile_pattern(pigment.pattern, generator)) {
+    ColorMapPigment(const sg::Pigment& pigment, const MaterialBuild& build)
+        : m_pattern(compile_pattern(pigment.pattern, build)) {
         for (const auto& entry : *pigment.color_map) {
             m_values.push_back(float(entry.value));
             m_colours.push_back(to_sample(entry.color));
@@ -74,11 +74,11 @@ class ColorMapPigment final : public PointPigment {
 
 class PigmentMapPigment final : public PointPigment {
   public:
-    PigmentMapPigment(const sg::Pigment& pigment, NoiseGenerator generator)
-        : m_pattern(compile_pattern(pigment.pattern, generator)) {
+    PigmentMapPigment(const sg::Pigment& pigment, const MaterialBuild& build)
+        : m_pattern(compile_pattern(pigment.pattern, build)) {
         for (const auto& entry : pigment.pigment_map) {
             m_values.push_back(float(entry.value));
-            m_pigments.push_back(make_point_pigment(*entry.pigment, generator));
+            m_pigments.push_back(make_point_pigment(*entry.pigment, build));
         }
     }
     TextureSample at(const glm::dvec3& point, const PatternContext& context) const override {
@@ -103,9 +103,9 @@ class PigmentMapPigment final : public PointPigment {
 
 class BlockPigment final : public PointPigment {
   public:
-    BlockPigment(const sg::Pigment& pigment, NoiseGenerator generator)
-        : m_pattern(compile_pattern(pigment.pattern, generator)) {
-        for (const auto& block : pigment.block_pigments) m_blocks.push_back(make_point_pigment(*block, generator));
+    BlockPigment(const sg::Pigment& pigment, const MaterialBuild& build)
+        : m_pattern(compile_pattern(pigment.pattern, build)) {
+        for (const auto& block : pigment.block_pigments) m_blocks.push_back(make_point_pigment(*block, build));
     }
     TextureSample at(const glm::dvec3& point, const PatternContext& context) const override {
         const int index = std::clamp(m_pattern.block_index(point), 0, int(m_blocks.size()) - 1);
@@ -125,13 +125,13 @@ class BlockPigment final : public PointPigment {
 // POV's average: the pigments of the map weighted by their values.
 class AveragePigment final : public PointPigment {
   public:
-    AveragePigment(const sg::Pigment& pigment, NoiseGenerator generator)
-        : m_warps(compile_pattern(pigment.pattern, generator)) {
+    AveragePigment(const sg::Pigment& pigment, const MaterialBuild& build)
+        : m_warps(compile_pattern(pigment.pattern, build)) {
         double total = 0.0;
         for (const auto& entry : pigment.pigment_map) {
             m_weights.push_back(float(entry.value));
             total += entry.value;
-            m_pigments.push_back(make_point_pigment(*entry.pigment, generator));
+            m_pigments.push_back(make_point_pigment(*entry.pigment, build));
         }
         m_total = float(total);
     }
@@ -158,31 +158,31 @@ class AveragePigment final : public PointPigment {
 
 }  // namespace
 
-std::unique_ptr<PointPigment> make_point_pigment(const sg::Pigment& pigment, NoiseGenerator generator) {
+std::unique_ptr<PointPigment> make_point_pigment(const sg::Pigment& pigment, const MaterialBuild& build) {
     switch (pigment.kind) {
     case sg::Pigment::Kind::Solid: return std::make_unique<SolidPointPigment>(to_sample(pigment.color));
-    case sg::Pigment::Kind::Average: return std::make_unique<AveragePigment>(pigment, generator);
+    case sg::Pigment::Kind::Average: return std::make_unique<AveragePigment>(pigment, build);
     case sg::Pigment::Kind::Patterned:
-        if (!pigment.block_pigments.empty()) return std::make_unique<BlockPigment>(pigment, generator);
-        if (!pigment.pigment_map.empty()) return std::make_unique<PigmentMapPigment>(pigment, generator);
-        if (pigment.color_map && !pigment.color_map->empty())
-            return std::make_unique<ColorMapPigment>(pigment, generator);
+        if (!pigment.block_pigments.empty()) return std::make_unique<BlockPigment>(pigment, build);
+        if (!pigment.pigment_map.empty()) return std::make_unique<PigmentMapPigment>(pigment, build);
+        if (pigment.color_map && !pigment.color_map->empty()) return std::make_unique<ColorMapPigment>(pigment, build);
         throw SceneError(pigment.location,
                          "the pattern has no colour map, pigment map or list to take its colours from");
-    default:
-        throw SceneError(pigment.location,
-                         "an image_map inside a pigment_map, a block pattern or average is not supported yet");
+    case sg::Pigment::Kind::Image: return make_image_point_pigment(pigment, build);
     }
+    throw SceneError(pigment.location, "unknown pigment kind");
 }
 
-CompiledPattern compile_pattern(const sg::Pattern& pattern, NoiseGenerator generator) {
-    if (pattern.kind != sg::Pattern::Kind::PigmentPattern) return CompiledPattern(pattern, generator);
+CompiledPattern compile_pattern(const sg::Pattern& pattern, const MaterialBuild& build) {
+    if (pattern.kind == sg::Pattern::Kind::ImagePattern)
+        return CompiledPattern(pattern, build.generator, image_pattern_source(pattern, build));
+    if (pattern.kind != sg::Pattern::Kind::PigmentPattern) return CompiledPattern(pattern, build.generator);
     if (!pattern.pigment) throw SceneError(pattern.location, "pigment_pattern needs a pigment");
-    std::shared_ptr<const PointPigment> inner = make_point_pigment(*pattern.pigment, generator);
+    std::shared_ptr<const PointPigment> inner = make_point_pigment(*pattern.pigment, build);
     // POV's value is the pigment's grey (its Colour::greyscale weights).
-    return CompiledPattern(pattern, generator, [inner](const glm::dvec3& point, const PatternContext& context) {
+    return CompiledPattern(pattern, build.generator, [inner](const glm::dvec3& point, const PatternContext& context) {
         const Color c = inner->at(point, context).rgb;
-        return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
+        return pov_greyscale(c);
     });
 }
 
@@ -204,10 +204,13 @@ namespace {
 // was attached to, or at (u, v, 0) with uv_mapping.
 class PatternTexture final : public Texture {
   public:
-    PatternTexture(const sg::Pigment& pigment, const TextureSpaces& spaces, NoiseGenerator generator)
-        : m_pigment(make_point_pigment(pigment, generator)),
+    PatternTexture(const sg::Pigment& pigment, const TextureSpaces& spaces, const MaterialBuild& build)
+        : m_pigment(make_point_pigment(pigment, build)),
           m_spaces(spaces),
-          m_uv_mapping(pigment.pattern.uv_mapping),
+          // An image through the surface's (u,v) is uv-mapped however it was
+          // asked for (uv_mapping, or an OBJ material's texture).
+          m_uv_mapping(pigment.pattern.uv_mapping ||
+                       (pigment.kind == sg::Pigment::Kind::Image && pigment.image.map_type == sg::MapType::UV)),
           m_average(m_pigment->average()) {}
     TextureSample evaluate(const Hit& hit) const override {
         return m_pigment->at(surface_point(hit, m_spaces, m_uv_mapping), surface_context(hit));
@@ -224,8 +227,8 @@ class PatternTexture final : public Texture {
 }  // namespace
 
 std::unique_ptr<Texture> make_pattern_texture(const sg::Pigment& pigment, const TextureSpaces& spaces,
-                                              NoiseGenerator generator) {
-    return std::make_unique<PatternTexture>(pigment, spaces, generator);
+                                              const MaterialBuild& build) {
+    return std::make_unique<PatternTexture>(pigment, spaces, build);
 }
 
 }  // namespace lancer

@@ -14,6 +14,11 @@
 
 namespace lancer {
 
+// POV's Colour::greyscale(), the grey a pattern reads from a colour.
+inline double pov_greyscale(const Color& c) {
+    return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
+}
+
 class PointPigment {
   public:
     virtual ~PointPigment() = default;
@@ -23,11 +28,16 @@ class PointPigment {
 
 // Solid, patterned and average pigments; throws lancer::SceneError for an
 // image_map nested in a map.
-std::unique_ptr<PointPigment> make_point_pigment(const sg::Pigment& pigment, NoiseGenerator generator);
+std::unique_ptr<PointPigment> make_point_pigment(const sg::Pigment& pigment, const MaterialBuild& build);
+
+// An image_map inside a map, a block list or average; and image_pattern's
+// value at a pattern-space point (image_pattern.cpp).
+std::unique_ptr<PointPigment> make_image_point_pigment(const sg::Pigment& pigment, const MaterialBuild& build);
+CompiledPattern::ValueSource image_pattern_source(const sg::Pattern& pattern, const MaterialBuild& build);
 
 // A pattern ready to evaluate, pigment_pattern included (its pigment's
 // grey is the value).
-CompiledPattern compile_pattern(const sg::Pattern& pattern, NoiseGenerator generator);
+CompiledPattern compile_pattern(const sg::Pattern& pattern, const MaterialBuild& build);
 
 // Where a hit lies for a pattern (object space, or (u, v, 0) with
 // uv_mapping), and what slope and aoi read there (world space, as POV).

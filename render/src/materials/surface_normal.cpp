@@ -8,7 +8,8 @@
 //   - any other pattern bends it by the slope of its value (through a
 //     slope_map when given), sampled at four points of a tetrahedron
 //     `accuracy` from the point and weighted by -5 bump_size 0.02/accuracy;
-//   - average takes the mean of its normals, weighted by their values.
+//   - average takes the mean of its normals, weighted by their values;
+//   - bump_map tilts it by the slope of an image's heights.
 // The normal is renormalised on entering and leaving each pattern space,
 // so a pattern's scale does not change how deep its bumps look.
 #include <algorithm>
@@ -16,6 +17,7 @@
 
 #include "lancer/scene_error.h"
 #include "materials/blend_map.h"
+#include "materials/image_sampler.h"
 #include "materials/pattern.h"
 #include "materials/pattern_space.h"
 #include "materials/point_pigment.h"
@@ -48,12 +50,12 @@ class NormalNode {
     virtual glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point) const = 0;
 };
 
-std::unique_ptr<NormalNode> make_node(const sg::Normal& normal, NoiseGenerator generator);
+std::unique_ptr<NormalNode> make_node(const sg::Normal& normal, const MaterialBuild& build);
 
 class PatternNormalNode final : public NormalNode {
   public:
-    PatternNormalNode(const sg::Normal& normal, NoiseGenerator generator)
-        : m_pattern(compile_pattern(normal.pattern, generator)),
+    PatternNormalNode(const sg::Normal& normal, const MaterialBuild& build)
+        : m_pattern(compile_pattern(normal.pattern, build)),
           m_amount(normal.bump_size),
           m_accuracy(normal.accuracy),
           m_own_normal(m_pattern.has_own_normal()) {
@@ -63,9 +65,9 @@ class PatternNormalNode final : public NormalNode {
         }
         for (const auto& entry : normal.normal_map) {
             m_map_values.push_back(float(entry.value));
-            m_map.push_back(make_node(*entry.normal, generator));
+            m_map.push_back(make_node(*entry.normal, build));
         }
-        for (const auto& block : normal.block_normals) m_blocks.push_back(make_node(*block, generator));
+        for (const auto& block : normal.block_normals) m_blocks.push_back(make_node(*block, build));
     }
 
     glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point) const override {
@@ -128,12 +130,12 @@ class PatternNormalNode final : public NormalNode {
 
 class AverageNormalNode final : public NormalNode {
   public:
-    AverageNormalNode(const sg::Normal& normal, NoiseGenerator generator)
-        : m_warps(compile_pattern(normal.pattern, generator)) {
+    AverageNormalNode(const sg::Normal& normal, const MaterialBuild& build)
+        : m_warps(compile_pattern(normal.pattern, build)) {
         for (const auto& entry : normal.normal_map) {
             m_weights.push_back(entry.value);
             m_total += entry.value;
-            m_normals.push_back(make_node(*entry.normal, generator));
+            m_normals.push_back(make_node(*entry.normal, build));
         }
     }
     glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point) const override {
@@ -152,26 +154,71 @@ class AverageNormalNode final : public NormalNode {
     std::vector<std::unique_ptr<NormalNode>> m_normals;
 };
 
-std::unique_ptr<NormalNode> make_node(const sg::Normal& normal, NoiseGenerator generator) {
+// POV's bump_map: the image is a height field (its grey times bump_size)
+// over the pattern's x-y plane. The surface through the heights at the
+// point's pixel and at the two pixels diagonally below it tilts the normal,
+// in a frame whose x axis is horizontal (normal x world y).
+class BumpMapNode final : public NormalNode {
+  public:
+    BumpMapNode(const sg::Normal& normal, const MaterialBuild& build)
+        : m_warps(normal.pattern, build.generator),
+          m_image(open_image(normal.bump_map, build)),
+          m_amount(normal.bump_size) {}
+
+    glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point) const override {
+        const std::optional<glm::dvec2> uv = m_image.project(m_warps.pattern_point(point));
+        if (!uv) return normal;
+        const glm::dvec2 pixel(1.0 / m_image.width(), 1.0 / m_image.height());
+        const double here = height(*uv);
+        const double below_left = height(*uv + glm::dvec2(-pixel.x, -pixel.y));
+        const double below_right = height(*uv + glm::dvec2(pixel.x, -pixel.y));
+        // The triangle (0, here, 0), (-1, below_left, 1), (1, below_right, 1).
+        const glm::dvec3 left(-1.0, below_left, 1.0);
+        const glm::dvec3 tilt =
+            unit(glm::cross(glm::dvec3(1.0, below_right, 1.0) - left, glm::dvec3(0.0, here, 0.0) - left));
+
+        glm::dvec3 up = unit(m_warps.normal_to_pattern_space(normal));
+        glm::dvec3 across = glm::cross(up, glm::dvec3(0.0, 1.0, 0.0));
+        double length = glm::length(across);
+        if (length < 1e-10) {
+            // Along the y axis: POV's fixed frame.
+            up = glm::dvec3(0.0, std::fabs(up.y - 1.0) < 1e-10 ? 1.0 : -1.0, 0.0);
+            across = glm::dvec3(1.0, 0.0, 0.0);
+            length = 1.0;
+        }
+        across /= length;
+        const glm::dvec3 along = unit(glm::cross(across, up));
+        return m_warps.normal_from_pattern_space(tilt.x * across + tilt.y * up - tilt.z * along);
+    }
+
+  private:
+    double height(const glm::dvec2& uv) const { return m_amount * pov_greyscale(m_image.at(uv).rgb); }
+
+    CompiledPattern m_warps;  // the normal's transforms and warps
+    ImageSampler m_image;
+    double m_amount;
+};
+
+std::unique_ptr<NormalNode> make_node(const sg::Normal& normal, const MaterialBuild& build) {
     try {
         switch (normal.kind) {
-        case sg::Normal::Kind::Patterned: return std::make_unique<PatternNormalNode>(normal, generator);
-        case sg::Normal::Kind::Average: return std::make_unique<AverageNormalNode>(normal, generator);
-        case sg::Normal::Kind::BumpMap: break;
+        case sg::Normal::Kind::Patterned: return std::make_unique<PatternNormalNode>(normal, build);
+        case sg::Normal::Kind::Average: return std::make_unique<AverageNormalNode>(normal, build);
+        case sg::Normal::Kind::BumpMap: return std::make_unique<BumpMapNode>(normal, build);
         }
     } catch (const std::runtime_error& unsupported) {
         if (dynamic_cast<const SceneError*>(&unsupported)) throw;
         throw SceneError(normal.location, std::string("normal: ") + unsupported.what());
     }
-    throw SceneError(normal.location, "bump_map is not supported yet");
+    throw SceneError(normal.location, "unknown normal kind");
 }
 
 // The top level: from the world to the space of the object the texture was
 // attached to, and back.
 class SurfaceNormal final : public NormalPerturbation {
   public:
-    SurfaceNormal(const sg::Normal& normal, const TextureSpaces& spaces, NoiseGenerator generator)
-        : m_root(make_node(normal, generator)), m_spaces(spaces), m_uv_mapping(normal.pattern.uv_mapping) {}
+    SurfaceNormal(const sg::Normal& normal, const TextureSpaces& spaces, const MaterialBuild& build)
+        : m_root(make_node(normal, build)), m_spaces(spaces), m_uv_mapping(normal.pattern.uv_mapping) {}
 
     Vec3 perturb(const Hit& hit, const Vec3& shading_normal) const override {
         const glm::dmat3 object_from_world =
@@ -195,8 +242,8 @@ class SurfaceNormal final : public NormalPerturbation {
 }  // namespace
 
 std::unique_ptr<NormalPerturbation> make_surface_normal(const sg::Normal& normal, const TextureSpaces& spaces,
-                                                        NoiseGenerator generator) {
-    return std::make_unique<SurfaceNormal>(normal, spaces, generator);
+                                                        const MaterialBuild& build) {
+    return std::make_unique<SurfaceNormal>(normal, spaces, build);
 }
 
 }  // namespace lancer

@@ -26,7 +26,7 @@ bool is_plain_checker(const sg::Pigment& pigment) {
 
 std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
     switch (pigment.kind) {
-    case sg::Pigment::Kind::Image: return make_image_texture(pigment, m_spaces, m_images);
+    case sg::Pigment::Kind::Image:
     case sg::Pigment::Kind::Patterned:
     case sg::Pigment::Kind::Average:
         if (is_plain_checker(pigment))
@@ -34,7 +34,7 @@ std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
                                         to_sample(pigment.block_pigments[1]->color),
                                         pigment.pattern.pattern_from_object, m_spaces);
         try {
-            return make_pattern_texture(pigment, m_spaces, m_noise_generator);
+            return make_pattern_texture(pigment, m_spaces, MaterialBuild(m_noise_generator, &m_images));
         } catch (const SceneError&) {
             throw;
         } catch (const std::runtime_error& unsupported) {
@@ -46,7 +46,7 @@ std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
 }
 
 std::unique_ptr<NormalPerturbation> TextureFactory::make_normal(const sg::Normal& normal) {
-    return make_surface_normal(normal, m_spaces, m_noise_generator);
+    return make_surface_normal(normal, m_spaces, MaterialBuild(m_noise_generator, &m_images));
 }
 
 std::unique_ptr<Texture> TextureFactory::make_solid(const Color& rgb, float filter, float transmit) {

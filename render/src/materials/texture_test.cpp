@@ -64,6 +64,7 @@ TEST(Textures, ImageMapThroughUvDecodesSrgb) {
     auto m = std::make_shared<sg::Material>();
     m->pigment.kind = sg::Pigment::Kind::Image;
     m->pigment.image.path = write_test_png(dir);
+    m->pigment.image.map_type = sg::MapType::UV;
     m->pigment.image.interpolate = 0;  // nearest texel: exact values
     sg::SceneGraph graph;
     // A plane's (u,v) is its (x, z); v = 1 is the image's top.

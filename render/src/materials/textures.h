@@ -22,6 +22,17 @@ using TextureSpaces = std::vector<glm::dmat4>;
 // image_map.
 class ImageTextureSystem;
 
+// What building a pigment, pattern or normal needs beyond its scene-graph
+// node: the scene's noise generator, and the factory's image cache, opened
+// on the first image (null: each image opens its own).
+struct MaterialBuild {
+    MaterialBuild(NoiseGenerator noise = NoiseGenerator::RangeCorrected,
+                  std::shared_ptr<ImageTextureSystem>* image_cache = nullptr)
+        : generator(noise), images(image_cache) {}
+    NoiseGenerator generator;
+    std::shared_ptr<ImageTextureSystem>* images;
+};
+
 class TextureFactory {
   public:
     explicit TextureFactory(const TextureSpaces& spaces);
@@ -39,8 +50,6 @@ class TextureFactory {
     // A constant colour (default black pigment, light materials).
     static std::unique_ptr<Texture> make_solid(const Color& rgb, float filter = 0.0f, float transmit = 0.0f);
 
-    bool has_image_system() const { return m_images != nullptr; }
-
   private:
     const TextureSpaces& m_spaces;
     std::shared_ptr<ImageTextureSystem> m_images;
@@ -54,7 +63,7 @@ std::unique_ptr<Texture> make_solid_texture(const TextureSample& value);
 std::unique_ptr<Texture> make_checker_texture(const TextureSample& first, const TextureSample& second,
                                               const glm::dmat4& pattern_from_object, const TextureSpaces& spaces);
 std::unique_ptr<Texture> make_pattern_texture(const sg::Pigment& pigment, const TextureSpaces& spaces,
-                                              NoiseGenerator generator);
+                                              const MaterialBuild& build);
 // A patterned texture (texture_map, a block list of textures) as one
 // material: the map of its entries' pigments and normals, the first
 // entry's finish (texture_layers.cpp says why). Others are returned as
@@ -68,14 +77,6 @@ std::unique_ptr<Texture> make_layered_texture(std::vector<std::unique_ptr<Textur
 std::vector<double> layer_visibility(const std::vector<TextureSample>& averages);
 sg::Finish blend_finishes(const std::vector<sg::Finish>& finishes, const std::vector<double>& weights);
 std::unique_ptr<NormalPerturbation> make_surface_normal(const sg::Normal& normal, const TextureSpaces& spaces,
-                                                        NoiseGenerator generator);
-// Creates the shared TextureSystem on first use.
-std::unique_ptr<Texture> make_image_texture(const sg::Pigment& pigment, const TextureSpaces& spaces,
-                                            std::shared_ptr<ImageTextureSystem>& images);
-
-// POV-Ray map_type projections of a pattern-space point to (u,v), v up.
-Vec2 planar_map(const glm::dvec3& p);
-Vec2 spherical_map(const glm::dvec3& p);
-Vec2 cylindrical_map(const glm::dvec3& p);
+                                                        const MaterialBuild& build);
 
 }  // namespace lancer
