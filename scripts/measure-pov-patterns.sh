@@ -128,6 +128,9 @@ tiling24|box|PIGMENT tiling 24 color_map { [0 rgb 0] [1 rgb 1] }
 tiling25|box|PIGMENT tiling 25 color_map { [0 rgb 0] [1 rgb 1] }
 tiling26|box|PIGMENT tiling 26 color_map { [0 rgb 0] [1 rgb 1] }
 tiling27|box|PIGMENT tiling 27 color_map { [0 rgb 0] [1 rgb 1] }
+tiling25_deep|box|PIGMENT tiling 25 scale 0.04 color_map { [0 rgb 0] [1 rgb 1] }
+tiling26_deep|box|PIGMENT tiling 26 scale 0.04 color_map { [0 rgb 0] [1 rgb 1] }
+tiling27_deep|box|PIGMENT tiling 27 scale 0.04 color_map { [0 rgb 0] [1 rgb 1] }
 tiling_scaled|box|PIGMENT tiling 5 scale 0.4 rotate 20*y color_map { [0 rgb 0] [1 rgb 1] }
 density8|unit|density_file df3 "density8.df3" interpolate 0
 density8_trilinear|unit|density_file df3 "density8.df3" interpolate 1

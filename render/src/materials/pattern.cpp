@@ -147,8 +147,6 @@ PatternSetup make_setup(const sg::Pattern& pattern, NoiseGenerator generator) {
     if (s.kind == Kind::Tiling && (s.tiling_type < 1 || s.tiling_type > 27))
         throw std::runtime_error("tiling number must be 1 to 27, not " + std::to_string(s.tiling_type));
     if (s.kind == Kind::Pavement) check_pavement(s);
-    if (s.kind == Kind::Tiling && !tiling_supported(s.tiling_type))
-        throw std::runtime_error("tiling " + std::to_string(s.tiling_type) + " is not supported yet");
     if (s.kind == Kind::Magnet && s.magnet_type != 1 && s.magnet_type != 2)
         throw std::runtime_error("magnet type must be 1 or 2, not " + std::to_string(s.magnet_type));
     if (s.kind == Kind::Mandel || s.kind == Kind::Julia || s.kind == Kind::Magnet) check_fractal(s);

@@ -743,6 +743,44 @@ std::vector<ReferenceCase> reference_cases() {
         {"tiling10", [] { return tiling(10); }, kColour},
         {"tiling11", [] { return tiling(11); }, kColour},
         {"tiling12", [] { return tiling(12); }, kColour},
+        {"tiling13", [] { return tiling(13); }, kColour},
+        {"tiling14", [] { return tiling(14); }, kColour},
+        {"tiling15", [] { return tiling(15); }, kColour},
+        {"tiling16", [] { return tiling(16); }, kColour},
+        {"tiling17", [] { return tiling(17); }, kColour},
+        {"tiling18", [] { return tiling(18); }, kColour},
+        {"tiling19", [] { return tiling(19); }, kColour},
+        {"tiling20", [] { return tiling(20); }, kColour},
+        {"tiling21", [] { return tiling(21); }, kColour},
+        {"tiling22", [] { return tiling(22); }, kColour},
+        {"tiling23", [] { return tiling(23); }, kColour},
+        {"tiling24", [] { return tiling(24); }, kColour},
+        {"tiling25", [] { return tiling(25); }, kColour},
+        {"tiling26", [] { return tiling(26); }, kColour},
+        {"tiling27", [] { return tiling(27); }, kColour},
+        // The Penrose tilings scaled down: points up to 75 from the origin
+        // take several deflations.
+        {"tiling25_deep",
+         [] {
+             sg::Pattern p = tiling(25);
+             p.pattern_from_object = pattern_scale(0.04);
+             return p;
+         },
+         kColour},
+        {"tiling26_deep",
+         [] {
+             sg::Pattern p = tiling(26);
+             p.pattern_from_object = pattern_scale(0.04);
+             return p;
+         },
+         kColour},
+        {"tiling27_deep",
+         [] {
+             sg::Pattern p = tiling(27);
+             p.pattern_from_object = pattern_scale(0.04);
+             return p;
+         },
+         kColour},
         {"tiling_scaled",
          [] {
              sg::Pattern p = tiling(5);
