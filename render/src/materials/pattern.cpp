@@ -37,7 +37,6 @@ const char* unsupported_name(Kind kind) {
     case Kind::ImagePattern: return "image_pattern";
     case Kind::PigmentPattern: return "pigment_pattern";
     case Kind::Function: return "function";
-    case Kind::Pavement: return "pavement";
     default: return nullptr;
     }
 }
@@ -287,6 +286,7 @@ double raw_value(const PatternSetup& s, const glm::dvec3& p, const PatternContex
     case Kind::Cylindrical: return cylindrical_pattern(p);
     case Kind::DensityFile: return density_file_pattern(s, p);
     case Kind::Tiling: return tiling_pattern(s, p);
+    case Kind::Pavement: return pavement_pattern(s, p);
     case Kind::Dents: return dents_pattern(s, p);
     // facets is a normal only; as a value POV would refuse it. 0 keeps a
     // pigment usable.

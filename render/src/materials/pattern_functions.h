@@ -253,6 +253,10 @@ double penrose_tiling(int type, double x, double z);
 double quilted_pattern(const PatternSetup& s, const glm::dvec3& p);
 void quilted_normal(const PatternSetup& s, const glm::dvec3& p, double amount, glm::dvec3& normal);
 
+// ---- pavement_pattern.cpp
+// POV's pavement: 0 inside a tile to 1 on its border.
+double pavement_pattern(const PatternSetup& s, const glm::dvec3& p);
+
 // ---- density_pattern.cpp
 double density_file_pattern(const PatternSetup& s, const glm::dvec3& p);
 
