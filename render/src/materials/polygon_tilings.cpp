@@ -121,7 +121,7 @@ HexSquareTrianglePoint fold_hex_square_triangle(double x, double z) {
     constexpr double kHalfHeight = kSqrt3 + 1.0;     // half its height
     constexpr double kCentreX = 1.0 + kHalfSqrt3;    // the hexagon's centre
     constexpr double kCentreZ = 0.5 + kHalfSqrt3;
-    HexSquareTrianglePoint f;
+    HexSquareTrianglePoint folded;
     x = wrap_into(x + 0.5, 3.0 + kSqrt3);
     z = wrap_into(z, 2.0 * kHalfHeight);
     if (x > kHalfWidth) {
@@ -131,11 +131,11 @@ HexSquareTrianglePoint fold_hex_square_triangle(double x, double z) {
     if (z > kHalfHeight) z -= kHalfHeight;
     if (z > kCentreZ) {
         z = kHalfHeight - z;
-        f.mirrored_z = 1;
+        folded.mirrored_z = 1;
     }
     if (x > kCentreX) {
         x = kSqrt3 + 2.0 - x;
-        f.mirrored_x = 1;
+        folded.mirrored_x = 1;
     }
     // Left of the hexagon's lower-left side and of the square: the other
     // square and triangle, which a turn about the centre brings here.
@@ -143,39 +143,39 @@ HexSquareTrianglePoint fold_hex_square_triangle(double x, double z) {
         const double dx = x - kCentreX, dz = z - kCentreZ;
         x = dx / 2.0 - dz * kHalfSqrt3 + kCentreX;
         z = std::fabs(dz / 2.0 + dx * kHalfSqrt3 + kCentreZ);
-        f.turned = 1;
+        folded.turned = 1;
         if (x > kCentreX) {
             x = kSqrt3 + 2.0 - x;
-            f.mirrored_x ^= 1;
-            f.mirrored_z ^= 1;
+            folded.mirrored_x ^= 1;
+            folded.mirrored_z ^= 1;
         }
     }
-    f.x = x;
-    f.z = z;
-    return f;
+    folded.x = x;
+    folded.z = z;
+    return folded;
 }
 
-enum class HstShape { Hexagon, Square, Triangle, None };
+enum class HexSquareTriangleShape { Hexagon, Square, Triangle, None };
 
 // Which tile the folded point is in, and its measure there.
-HstShape hex_square_triangle_shape(const HexSquareTrianglePoint& f, double& measure) {
-    const double x = f.x, z = f.z;
+HexSquareTriangleShape hex_square_triangle_shape(const HexSquareTrianglePoint& folded, double& measure) {
+    const double x = folded.x, z = folded.z;
     if (!(kSqrt3 * x + z < kHalfSqrt3 + 2.0) && !(z < 0.5)) {
         const double dz = std::fabs(z - 0.5), dx = std::fabs(x - kHalfSqrt3);
         measure = std::min(2.0 * dz * kSqrt3, (kSqrt3 * dx + dz) * kSqrt3 - 1.5);
-        return HstShape::Hexagon;
+        return HexSquareTriangleShape::Hexagon;
     }
-    if (!(z < 0.5)) return HstShape::None;
+    if (!(z < 0.5)) return HexSquareTriangleShape::None;
     const double dx = x - (kHalfSqrt3 + 0.5);
     if (dx > 0.0) {
         const double from_hexagon = std::max(1.0 + (z - 0.5) * 2.0 * kSqrt3, 0.0);
         const double from_middle = std::max(1.0 - dx * 2.0 * kSqrt3, 0.0);
         measure = std::max(from_hexagon, from_middle);
-        return HstShape::Square;
+        return HexSquareTriangleShape::Square;
     }
     const double across = std::fabs(dx);
     measure = std::max(2.0 - across * 2.0 * kSqrt3, (kSqrt3 * z + across) * kSqrt3 + 0.5);
-    return HstShape::Triangle;
+    return HexSquareTriangleShape::Triangle;
 }
 
 // 16: three kinds (squares, triangles, hexagons; the triangle's measure
@@ -183,10 +183,10 @@ HstShape hex_square_triangle_shape(const HexSquareTrianglePoint& f, double& meas
 double hex_square_triangle_3(double x, double z) {
     double measure = 0.0;
     switch (hex_square_triangle_shape(fold_hex_square_triangle(x, z), measure)) {
-    case HstShape::Hexagon: return std::max(3.0 - measure, 2.0000001) / 3.0;
-    case HstShape::Square:
-    case HstShape::Triangle: return measure / 3.0;
-    case HstShape::None: break;
+    case HexSquareTriangleShape::Hexagon: return std::max(3.0 - measure, 2.0000001) / 3.0;
+    case HexSquareTriangleShape::Square:
+    case HexSquareTriangleShape::Triangle: return measure / 3.0;
+    case HexSquareTriangleShape::None: break;
     }
     return 0.0;
 }
@@ -194,13 +194,15 @@ double hex_square_triangle_3(double x, double z) {
 // 17: six kinds: the three square orientations, the two triangle ones,
 // then the hexagon.
 double hex_square_triangle_6(double x, double z) {
-    const HexSquareTrianglePoint f = fold_hex_square_triangle(x, z);
+    const HexSquareTrianglePoint folded = fold_hex_square_triangle(x, z);
     double measure = 0.0;
-    switch (hex_square_triangle_shape(f, measure)) {
-    case HstShape::Hexagon: return std::max(6.0 - measure, 5.000001) / 6.0;
-    case HstShape::Square: return (measure + f.turned * (1.000001 + (f.mirrored_x + f.mirrored_z) % 2)) / 6.0;
-    case HstShape::Triangle: return (((f.turned + f.mirrored_x) % 2 ? 2.0 : 3.0) + measure) / 6.0;
-    case HstShape::None: break;
+    switch (hex_square_triangle_shape(folded, measure)) {
+    case HexSquareTriangleShape::Hexagon: return std::max(6.0 - measure, 5.000001) / 6.0;
+    case HexSquareTriangleShape::Square:
+        return (measure + folded.turned * (1.000001 + (folded.mirrored_x + folded.mirrored_z) % 2)) / 6.0;
+    case HexSquareTriangleShape::Triangle:
+        return (((folded.turned + folded.mirrored_x) % 2 ? 2.0 : 3.0) + measure) / 6.0;
+    case HexSquareTriangleShape::None: break;
     }
     return 0.0;
 }
