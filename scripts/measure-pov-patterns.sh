@@ -17,7 +17,7 @@ mkdir -p "$out"
 # [-0.1,1.1]^3) | pattern body. density_file reads the small df3 files
 # committed beside the values (made once by a script with random voxels:
 # 5x4x3 of 8 bits, 3x3x2 of 16 bits, 2x3x4 of 32 bits).
-# This povray does not take square, triangular and tiling in pattern
+# This povray does not take square, triangular, tiling and pavement in pattern
 # functions: a body starting PIGMENT is a pigment whose red channel is the
 # block index (or, through a 0..1 grey map, the value in single precision).
 patterns() {
@@ -128,6 +128,33 @@ tiling24|box|PIGMENT tiling 24 color_map { [0 rgb 0] [1 rgb 1] }
 tiling25|box|PIGMENT tiling 25 color_map { [0 rgb 0] [1 rgb 1] }
 tiling26|box|PIGMENT tiling 26 color_map { [0 rgb 0] [1 rgb 1] }
 tiling27|box|PIGMENT tiling 27 color_map { [0 rgb 0] [1 rgb 1] }
+tiling25_deep|box|PIGMENT tiling 25 scale 0.04 color_map { [0 rgb 0] [1 rgb 1] }
+tiling26_deep|box|PIGMENT tiling 26 scale 0.04 color_map { [0 rgb 0] [1 rgb 1] }
+tiling27_deep|box|PIGMENT tiling 27 scale 0.04 color_map { [0 rgb 0] [1 rgb 1] }
+pavement4_1|box|PIGMENT pavement number_of_sides 4 number_of_tiles 1 pattern 1 exterior 0 interior 0 form 0 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement4_2|box|PIGMENT pavement number_of_sides 4 number_of_tiles 2 pattern 1 exterior 0 interior 0 form 1 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement4_3_2|box|PIGMENT pavement number_of_sides 4 number_of_tiles 3 pattern 2 exterior 1 interior 1 form 2 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement4_4_3|box|PIGMENT pavement number_of_sides 4 number_of_tiles 4 pattern 3 exterior 2 interior 2 form 0 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement4_4_5|box|PIGMENT pavement number_of_sides 4 number_of_tiles 4 pattern 5 exterior 2 interior 2 form 2 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement4_5_7|box|PIGMENT pavement number_of_sides 4 number_of_tiles 5 pattern 7 exterior 2 interior 1 form 3 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement4_5_12|box|PIGMENT pavement number_of_sides 4 number_of_tiles 5 pattern 12 exterior 1 interior 0 form 1 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement4_6_15|box|PIGMENT pavement number_of_sides 4 number_of_tiles 6 pattern 15 exterior 0 interior 1 form 2 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement4_6_34|box|PIGMENT pavement number_of_sides 4 number_of_tiles 6 pattern 34 exterior 1 interior 2 form 0 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement4_6_35|box|PIGMENT pavement number_of_sides 4 number_of_tiles 6 pattern 35 exterior 2 interior 0 form 3 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement3_1|box|PIGMENT pavement number_of_sides 3 number_of_tiles 1 pattern 1 exterior 0 interior 0 form 0 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement3_2|box|PIGMENT pavement number_of_sides 3 number_of_tiles 2 pattern 1 exterior 1 interior 1 form 1 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement3_3|box|PIGMENT pavement number_of_sides 3 number_of_tiles 3 pattern 1 exterior 2 interior 2 form 2 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement3_4_3|box|PIGMENT pavement number_of_sides 3 number_of_tiles 4 pattern 3 exterior 1 interior 2 form 1 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement3_5_4|box|PIGMENT pavement number_of_sides 3 number_of_tiles 5 pattern 4 exterior 2 interior 1 form 2 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement3_6_8|box|PIGMENT pavement number_of_sides 3 number_of_tiles 6 pattern 8 exterior 1 interior 0 form 0 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement3_6_12|box|PIGMENT pavement number_of_sides 3 number_of_tiles 6 pattern 12 exterior 2 interior 2 form 2 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement6_1|box|PIGMENT pavement number_of_sides 6 number_of_tiles 1 pattern 1 exterior 0 interior 1 form 1 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement6_2|box|PIGMENT pavement number_of_sides 6 number_of_tiles 2 pattern 1 exterior 2 interior 0 form 2 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement6_3_2|box|PIGMENT pavement number_of_sides 6 number_of_tiles 3 pattern 2 exterior 1 interior 2 form 0 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement6_4_4|box|PIGMENT pavement number_of_sides 6 number_of_tiles 4 pattern 4 exterior 2 interior 0 form 1 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement6_4_7|box|PIGMENT pavement number_of_sides 6 number_of_tiles 4 pattern 7 exterior 1 interior 1 form 2 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement6_5_8|box|PIGMENT pavement number_of_sides 6 number_of_tiles 5 pattern 8 exterior 0 interior 2 form 0 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
+pavement6_5_22|box|PIGMENT pavement number_of_sides 6 number_of_tiles 5 pattern 22 exterior 2 interior 1 form 2 scale 0.3 color_map { [0 rgb 0] [1 rgb 1] }
 tiling_scaled|box|PIGMENT tiling 5 scale 0.4 rotate 20*y color_map { [0 rgb 0] [1 rgb 1] }
 density8|unit|density_file df3 "density8.df3" interpolate 0
 density8_trilinear|unit|density_file df3 "density8.df3" interpolate 1

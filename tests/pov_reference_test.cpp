@@ -17,7 +17,8 @@
 // intersection, merge, inverse, clipped_by, textures per child; in glass,
 // refracting at every face a difference keeps), and the patterns (each on a
 // flat tile showing the pigment itself: the geometric, block and noise
-// patterns, wave types, warps, colour and pigment maps, average) and
+// patterns, wave types, warps, colour and pigment maps, average, the
+// tilings 1 to 27 and pavements of squares, triangles and hexagons) and
 // normals (own normals, slopes of values, slope_map, normal_map), layered
 // and patterned textures, #default and interior fade, uv_mapping, and
 // images (image_map's projections, image_pattern, bump_map).
@@ -68,8 +69,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
                                            "polygons_polynomials", "superellipsoids", "blobs", "prisms", "lathes",
                                            "text", "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals",
                                            "height_fields", "patterns_geometric", "patterns_blocks", "patterns_noise",
-                                           "patterns_warps", "normals", "textures", "patterns_tilings", "uv_mapping",
-                                           "csg_meshes", "images"),
+                                           "patterns_warps", "patterns_tilings", "patterns_tilings_more", "normals",
+                                           "textures", "uv_mapping", "csg_meshes", "images"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 }  // namespace

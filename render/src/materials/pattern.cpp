@@ -37,7 +37,6 @@ const char* unsupported_name(Kind kind) {
     case Kind::ImagePattern: return "image_pattern";
     case Kind::PigmentPattern: return "pigment_pattern";
     case Kind::Function: return "function";
-    case Kind::Pavement: return "pavement";
     default: return nullptr;
     }
 }
@@ -147,8 +146,6 @@ PatternSetup make_setup(const sg::Pattern& pattern, NoiseGenerator generator) {
     if (s.kind == Kind::Tiling && (s.tiling_type < 1 || s.tiling_type > 27))
         throw std::runtime_error("tiling number must be 1 to 27, not " + std::to_string(s.tiling_type));
     if (s.kind == Kind::Pavement) check_pavement(s);
-    if (s.kind == Kind::Tiling && !tiling_supported(s.tiling_type))
-        throw std::runtime_error("tiling " + std::to_string(s.tiling_type) + " is not supported yet");
     if (s.kind == Kind::Magnet && s.magnet_type != 1 && s.magnet_type != 2)
         throw std::runtime_error("magnet type must be 1 or 2, not " + std::to_string(s.magnet_type));
     if (s.kind == Kind::Mandel || s.kind == Kind::Julia || s.kind == Kind::Magnet) check_fractal(s);
@@ -289,6 +286,7 @@ double raw_value(const PatternSetup& s, const glm::dvec3& p, const PatternContex
     case Kind::Cylindrical: return cylindrical_pattern(p);
     case Kind::DensityFile: return density_file_pattern(s, p);
     case Kind::Tiling: return tiling_pattern(s, p);
+    case Kind::Pavement: return pavement_pattern(s, p);
     case Kind::Dents: return dents_pattern(s, p);
     // facets is a normal only; as a value POV would refuse it. 0 keeps a
     // pigment usable.

@@ -27,8 +27,8 @@ class CompiledPattern {
   public:
     // global_generator: global_settings' noise_generator (POV's default 2).
     // Throws std::runtime_error("<pattern> is not supported yet") for object,
-    // image_pattern, pigment_pattern, function, pavement and tiling 13 to
-    // 27, and for parameters POV refuses (mandel exponent outside 2..33,
+    // image_pattern, pigment_pattern and function, and for parameters POV
+    // refuses (mandel exponent outside 2..33,
     // magnet type other than 1 or 2, slope without any direction, tiling
     // outside 1..27, pavement sides/tiles/pattern out of POV's ranges).
     CompiledPattern(const sg::Pattern& pattern, NoiseGenerator global_generator);

@@ -246,10 +246,16 @@ double fractal_pattern(const PatternSetup& s, const glm::dvec3& p);
 // ---- tiling_patterns.cpp
 // POV's tiling N: the tile's kind and the distance from its edge, in [0, 1].
 double tiling_pattern(const PatternSetup& s, const glm::dvec3& p);
-// Whether lancer has tiling N yet (CompiledPattern refuses the others).
-bool tiling_supported(int type);
+// ---- polygon_tilings.cpp: tiling 13 to 24 at (x, z)
+double polygon_tiling(int type, double x, double z);
+// ---- penrose_tilings.cpp: tiling 25 to 27 at (x, z)
+double penrose_tiling(int type, double x, double z);
 double quilted_pattern(const PatternSetup& s, const glm::dvec3& p);
 void quilted_normal(const PatternSetup& s, const glm::dvec3& p, double amount, glm::dvec3& normal);
+
+// ---- pavement_pattern.cpp
+// POV's pavement: 0 inside a tile to 1 on its border.
+double pavement_pattern(const PatternSetup& s, const glm::dvec3& p);
 
 // ---- density_pattern.cpp
 double density_file_pattern(const PatternSetup& s, const glm::dvec3& p);

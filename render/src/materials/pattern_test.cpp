@@ -215,12 +215,29 @@ TEST(Patterns, BlackHolePullsTowardsItsCentre) {
 }
 
 TEST(Patterns, UnsupportedPatternsThrow) {
-    for (Kind kind : {Kind::Object, Kind::ImagePattern, Kind::PigmentPattern, Kind::Function, Kind::Pavement}) {
+    for (Kind kind : {Kind::Object, Kind::ImagePattern, Kind::PigmentPattern, Kind::Function}) {
         EXPECT_THROW(CompiledPattern(make(kind), NoiseGenerator::RangeCorrected), std::runtime_error);
     }
     sg::Pattern tiling = make(Kind::Tiling);
     tiling.tiling_type = 28;  // POV has 27
     EXPECT_THROW(CompiledPattern(tiling, NoiseGenerator::RangeCorrected), std::runtime_error);
+}
+
+TEST(Patterns, PavementOutsidePovsRangesThrows) {
+    auto paving = [](int sides, int tiles, int number) {
+        sg::Pattern p = make(Kind::Pavement);
+        p.pavement_sides = sides;
+        p.pavement_tiles = tiles;
+        p.pavement_number = number;
+        return p;
+    };
+    EXPECT_NO_THROW(CompiledPattern(paving(4, 6, 35), NoiseGenerator::RangeCorrected));
+    EXPECT_NO_THROW(CompiledPattern(paving(6, 5, 22), NoiseGenerator::RangeCorrected));
+    EXPECT_NO_THROW(CompiledPattern(paving(3, 6, 12), NoiseGenerator::RangeCorrected));
+    for (const sg::Pattern& p : {paving(5, 1, 1), paving(4, 7, 1), paving(6, 6, 1), paving(4, 0, 1), paving(4, 5, 13),
+                                 paving(3, 4, 4), paving(6, 3, 0)}) {
+        EXPECT_THROW(CompiledPattern(p, NoiseGenerator::RangeCorrected), std::runtime_error);
+    }
 }
 
 TEST(Patterns, DensityFileWithoutVoxelsIsZero) {
@@ -319,6 +336,20 @@ sg::Pattern density_file(const std::string& file, int interpolate) {
 sg::Pattern tiling(int type) {
     sg::Pattern p = make(Kind::Tiling);
     p.tiling_type = type;
+    return p;
+}
+
+// Pavement as measured: scaled by 0.3 so that the points cover a few
+// repeats of each paving.
+sg::Pattern pavement(int sides, int tiles, int number, int exterior, int interior, int form) {
+    sg::Pattern p = make(Kind::Pavement);
+    p.pavement_sides = sides;
+    p.pavement_tiles = tiles;
+    p.pavement_number = number;
+    p.pavement_exterior = exterior;
+    p.pavement_interior = interior;
+    p.pavement_form = form;
+    p.pattern_from_object = pattern_scale(0.3);
     return p;
 }
 
@@ -743,6 +774,70 @@ std::vector<ReferenceCase> reference_cases() {
         {"tiling10", [] { return tiling(10); }, kColour},
         {"tiling11", [] { return tiling(11); }, kColour},
         {"tiling12", [] { return tiling(12); }, kColour},
+        {"tiling13", [] { return tiling(13); }, kColour},
+        {"tiling14", [] { return tiling(14); }, kColour},
+        {"tiling15", [] { return tiling(15); }, kColour},
+        {"tiling16", [] { return tiling(16); }, kColour},
+        {"tiling17", [] { return tiling(17); }, kColour},
+        {"tiling18", [] { return tiling(18); }, kColour},
+        {"tiling19", [] { return tiling(19); }, kColour},
+        {"tiling20", [] { return tiling(20); }, kColour},
+        {"tiling21", [] { return tiling(21); }, kColour},
+        {"tiling22", [] { return tiling(22); }, kColour},
+        {"tiling23", [] { return tiling(23); }, kColour},
+        {"tiling24", [] { return tiling(24); }, kColour},
+        {"tiling25", [] { return tiling(25); }, kColour},
+        {"tiling26", [] { return tiling(26); }, kColour},
+        {"tiling27", [] { return tiling(27); }, kColour},
+        // The Penrose tilings scaled down: points up to 75 from the origin
+        // take several deflations.
+        {"tiling25_deep",
+         [] {
+             sg::Pattern p = tiling(25);
+             p.pattern_from_object = pattern_scale(0.04);
+             return p;
+         },
+         kColour},
+        {"tiling26_deep",
+         [] {
+             sg::Pattern p = tiling(26);
+             p.pattern_from_object = pattern_scale(0.04);
+             return p;
+         },
+         kColour},
+        {"tiling27_deep",
+         [] {
+             sg::Pattern p = tiling(27);
+             p.pattern_from_object = pattern_scale(0.04);
+             return p;
+         },
+         kColour},
+        // pavement (number_of_sides, number_of_tiles, pattern, exterior,
+        // interior, form), through a grey map as tiling.
+        {"pavement4_1", [] { return pavement(4, 1, 1, 0, 0, 0); }, kColour},
+        {"pavement4_2", [] { return pavement(4, 2, 1, 0, 0, 1); }, kColour},
+        {"pavement4_3_2", [] { return pavement(4, 3, 2, 1, 1, 2); }, kColour},
+        {"pavement4_4_3", [] { return pavement(4, 4, 3, 2, 2, 0); }, kColour},
+        {"pavement4_4_5", [] { return pavement(4, 4, 5, 2, 2, 2); }, kColour},
+        {"pavement4_5_7", [] { return pavement(4, 5, 7, 2, 1, 3); }, kColour},
+        {"pavement4_5_12", [] { return pavement(4, 5, 12, 1, 0, 1); }, kColour},
+        {"pavement4_6_15", [] { return pavement(4, 6, 15, 0, 1, 2); }, kColour},
+        {"pavement4_6_34", [] { return pavement(4, 6, 34, 1, 2, 0); }, kColour},
+        {"pavement4_6_35", [] { return pavement(4, 6, 35, 2, 0, 3); }, kColour},
+        {"pavement3_1", [] { return pavement(3, 1, 1, 0, 0, 0); }, kColour},
+        {"pavement3_2", [] { return pavement(3, 2, 1, 1, 1, 1); }, kColour},
+        {"pavement3_3", [] { return pavement(3, 3, 1, 2, 2, 2); }, kColour},
+        {"pavement3_4_3", [] { return pavement(3, 4, 3, 1, 2, 1); }, kColour},
+        {"pavement3_5_4", [] { return pavement(3, 5, 4, 2, 1, 2); }, kColour},
+        {"pavement3_6_8", [] { return pavement(3, 6, 8, 1, 0, 0); }, kColour},
+        {"pavement3_6_12", [] { return pavement(3, 6, 12, 2, 2, 2); }, kColour},
+        {"pavement6_1", [] { return pavement(6, 1, 1, 0, 1, 1); }, kColour},
+        {"pavement6_2", [] { return pavement(6, 2, 1, 2, 0, 2); }, kColour},
+        {"pavement6_3_2", [] { return pavement(6, 3, 2, 1, 2, 0); }, kColour},
+        {"pavement6_4_4", [] { return pavement(6, 4, 4, 2, 0, 1); }, kColour},
+        {"pavement6_4_7", [] { return pavement(6, 4, 7, 1, 1, 2); }, kColour},
+        {"pavement6_5_8", [] { return pavement(6, 5, 8, 0, 2, 0); }, kColour},
+        {"pavement6_5_22", [] { return pavement(6, 5, 22, 2, 1, 2); }, kColour},
         {"tiling_scaled",
          [] {
              sg::Pattern p = tiling(5);

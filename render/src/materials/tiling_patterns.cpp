@@ -4,8 +4,8 @@
 // tiling folds the point into one tile by its symmetries, then gives the
 // tile's kind and how far the point is from the tile's centre towards its
 // edge (a single kind: 0 inside to 1 on the edge; k kinds: kind/k plus
-// that share). Tilings POV does not define here are refused by
-// CompiledPattern.
+// that share). Tilings 13 to 24 are in polygon_tilings.cpp, 25 to 27 in
+// penrose_tilings.cpp.
 #include <algorithm>
 #include <cmath>
 
@@ -332,10 +332,6 @@ double square_in_bricks(double x, double z) {
 
 }  // namespace
 
-bool tiling_supported(int type) {
-    return type >= 1 && type <= 12;
-}
-
 double tiling_pattern(const PatternSetup& s, const glm::dvec3& p) {
     const double x = p.x, z = p.z;
     switch (s.tiling_type) {
@@ -350,6 +346,21 @@ double tiling_pattern(const PatternSetup& s, const glm::dvec3& p) {
     case 10: return squares_offset(x, z);
     case 11: return square_in_bricks(wrap(x, 3.0), wrap(z, 3.0));
     case 12: return square_in_bricks(std::fabs(wrap(x, 6.0) - 3.0), std::fabs(wrap(z, 6.0) - 3.0));
+    case 13:
+    case 14:
+    case 15:
+    case 16:
+    case 17:
+    case 18:
+    case 19:
+    case 20:
+    case 21:
+    case 22:
+    case 23:
+    case 24: return polygon_tiling(s.tiling_type, x, z);
+    case 25:
+    case 26:
+    case 27: return penrose_tiling(s.tiling_type, x, z);
     default: return squares(x, z);
     }
 }
