@@ -301,6 +301,8 @@ class Evaluator {
     // (bump_size in an image_map, use_alpha in a bump_map).
     void refuse_foreign_image_items(const sg::ImageMap& image, const char* block);
     PatternEdit image_pattern(const sg::ImageMap& image, const sg::SourceLocation& at);
+    // object { O [list] }: inside O (1) or outside (0), a block pattern of two.
+    PatternEdit object_pattern(const std::shared_ptr<ShapeValue>& shape, const sg::SourceLocation& at);
     void missing_weight(const sg::SourceLocation& at, const char* map);
     NormalEdit normal_pattern_edit(const PatternEdit& edit, const sg::SourceLocation& at);
     NormalEdit normal_accuracy(const Value& v, const SourceRange& where);

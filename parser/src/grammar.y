@@ -668,6 +668,8 @@ texture_items
   | texture_items pattern_name { $$ = std::move($1); $$.push_back(ev.texture_pattern($2, {}, LOC(@2))); }
   | texture_items "average" { $$ = std::move($1); $$.push_back(ev.average_texture(LOC(@2))); }
   | texture_items block_pattern_name texture_seq { $$ = std::move($1); $$.push_back(ev.texture_pattern($2, $3, LOC(@2))); }
+  | texture_items "object" "{" object_ref texture_seq "}"
+      { $$ = std::move($1); $$.push_back(ev.texture_pattern(ev.object_pattern($4, LOC(@2)), $5, LOC(@2))); }
   | texture_items pattern_modifier { $$ = std::move($1); auto e = $2;
                                $$.push_back([e](sg::Material& m) { if (m.pattern) e(*m.pattern); }); }
   | texture_items "uv_mapping" { $$ = std::move($1); $$.push_back([](sg::Material& m) { m.uv_mapping = true; }); }
@@ -728,6 +730,11 @@ pigment_start
   | block_pattern_name { $$ = ev.patterned_pigment($1, LOC(@1)); }
   | block_pattern_name block_colours { $$ = ev.block_pigment($1, $2, @2, LOC(@1)); }
   | block_pattern_name block_pigments { $$ = ev.block_pigment($1, $2, LOC(@1)); }
+  | "object" "{" object_ref "}" { $$ = ev.patterned_pigment(ev.object_pattern($3, LOC(@1)), LOC(@1)); }
+  | "object" "{" object_ref block_colours "}"
+      { $$ = ev.block_pigment(ev.object_pattern($3, LOC(@1)), $4, @4, LOC(@1)); }
+  | "object" "{" object_ref block_pigments "}"
+      { $$ = ev.block_pigment(ev.object_pattern($3, LOC(@1)), $4, LOC(@1)); }
   | "average"          { $$ = ev.average_pigment(LOC(@1)); }
   ;
 
@@ -938,6 +945,9 @@ normal_start
   | pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
   | block_pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
   | block_pattern_name opt_amount block_normals { $$ = ev.block_normal($1, $2, $3, LOC(@1)); }
+  | "object" "{" object_ref "}" { $$ = ev.block_normal(ev.object_pattern($3, LOC(@1)), std::nullopt, {}, LOC(@1)); }
+  | "object" "{" object_ref block_normals "}"
+      { $$ = ev.block_normal(ev.object_pattern($3, LOC(@1)), std::nullopt, $4, LOC(@1)); }
   | "bump_map" "{" image_items "}" opt_amount { $$ = ev.bump_map_normal($3, $5, LOC(@1)); }
   | "average"          { $$ = [](sg::Normal& n) { n.kind = sg::Normal::Kind::Average; }; }
   ;

@@ -79,7 +79,8 @@ sg::ColorMapRef default_color_map(PatternKind kind) {
 // Block patterns' default colours and how many entries each takes.
 std::vector<sg::Color> default_block_colours(PatternKind kind) {
     switch (kind) {
-    case PatternKind::Checker: return {rgb(0, 0, 1), rgb(0, 1, 0)};
+    case PatternKind::Checker:
+    case PatternKind::Object: return {rgb(0, 0, 1), rgb(0, 1, 0)};  // POV gives object checker's map
     case PatternKind::Hexagon: return {rgb(0, 0, 1), rgb(0, 1, 0), rgb(1, 0, 0)};
     case PatternKind::Brick: return {rgb(0.5, 0.5, 0.5), rgb(0.6, 0.15, 0.15)};
     case PatternKind::Square: return {rgb(1, 0, 0), rgb(0, 1, 0), rgb(0, 0, 1), rgb(1, 1, 0)};
@@ -101,6 +102,7 @@ const char* block_pattern_name(PatternKind kind) {
     case PatternKind::Brick: return "brick";
     case PatternKind::Square: return "square";
     case PatternKind::Triangular: return "triangular";
+    case PatternKind::Object: return "object";
     default: return "cubic";
     }
 }
@@ -844,6 +846,16 @@ void Evaluator::refuse_foreign_image_items(const sg::ImageMap& image, const char
         error(image.bump_item_location, "bump_size, use_color and use_index belong in a bump_map, not in " + name);
     if (name != "image_pattern" && image.use_alpha)
         error(image.use_alpha_location, "use_alpha belongs in an image_pattern, not in " + name);
+}
+
+Evaluator::PatternEdit Evaluator::object_pattern(const std::shared_ptr<ShapeValue>& shape,
+                                                 const sg::SourceLocation& at) {
+    auto object = std::make_shared<sg::Object>(shape->object);
+    if (!shape->lights.empty()) warning(at, "the object pattern ignores the light sources in its object");
+    return [object](sg::Pattern& p) {
+        p.kind = PatternKind::Object;
+        p.object = object;
+    };
 }
 
 Evaluator::PatternEdit Evaluator::image_pattern(const sg::ImageMap& image, const sg::SourceLocation& at) {

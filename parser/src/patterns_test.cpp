@@ -321,6 +321,29 @@ TEST(ParserPatterns, BumpMapTakesItsOwnItemsInsideTheBlock) {
     fs::remove_all(dir);
 }
 
+TEST(ParserPatterns, ObjectPatternIsAListOfTwo) {
+    auto scene = parse_ok(
+        "#declare S = sphere { 0, 1 }\n"
+        "plane { z, 0 pigment { object { S rgb x, rgb y } } }\n"
+        "plane { z, 0 pigment { object { box { -1, 1 } } } }\n"
+        "plane { z, 0 texture { object { S texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } } } }\n"
+        "plane { z, 0 normal { object { S normal { bumps } } } }");
+    const sg::Pigment& colours = material_of(scene, 0).pigment;
+    EXPECT_EQ(colours.pattern.kind, sg::Pattern::Kind::Object);
+    ASSERT_TRUE(colours.pattern.object);
+    ASSERT_EQ(colours.block_pigments.size(), 2u);
+    EXPECT_EQ(colours.block_pigments[1]->color.rgb, sg::Vec3(0, 1, 0));  // inside
+    const sg::Pigment& defaults = material_of(scene, 1).pigment;
+    ASSERT_EQ(defaults.block_pigments.size(), 2u);  // POV's: checker's blue and green
+    EXPECT_EQ(defaults.block_pigments[0]->color.rgb, sg::Vec3(0, 0, 1));
+    EXPECT_EQ(material_of(scene, 2).block_textures.size(), 2u);
+    ASSERT_TRUE(material_of(scene, 3).normal);
+    EXPECT_EQ(material_of(scene, 3).normal->block_normals.size(), 2u);
+    EXPECT_NE(first_error("plane { z, 0 pigment { object { sphere { 0, 1 } rgb 0, rgb 1, rgb 2 } } }")
+                  .message.find("object takes at most 2"),
+              std::string::npos);
+}
+
 TEST(ParserPatterns, ImagePatternReadsItsImageAsStored) {
     namespace fs = std::filesystem;
     const fs::path dir = fs::temp_directory_path() / ("lancer_image_pattern_" + std::to_string(::getpid()));

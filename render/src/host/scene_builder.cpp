@@ -72,6 +72,7 @@ class Builder {
     explicit Builder(sg::SceneGraph& graph) : m_graph(graph), m_data(std::make_unique<SceneData>()) {
         m_data->texture_factory = std::make_unique<TextureFactory>(m_data->texture_spaces);
         m_data->texture_factory->set_noise_generator(m_graph.global.noise_generator);
+        m_data->texture_factory->set_inside_tests([this](const sg::Object& object) { return inside_test(object); });
     }
 
     std::unique_ptr<SceneData> run() {
@@ -87,6 +88,8 @@ class Builder {
         compute_bounds();
         add_sg_lights();
         take_mesh_hit_data();
+        // The maker refers to this builder, which ends here.
+        m_data->texture_factory->set_inside_tests(nullptr);
         return std::move(m_data);
     }
 
@@ -443,6 +446,18 @@ class Builder {
                                  std::to_string(kMaxPolynomialShapeOrder) + ")");
         }
         throw SceneError(object.location, "lancer has no renderer for this kind of object");
+    }
+
+    // The object pattern's solid: a CSG tree of the object (in pattern
+    // space) that is never traced, only asked what is inside it.
+    InsideTest inside_test(const sg::Object& object) {
+        auto tree = std::make_unique<CsgTree>();
+        tree->root = add_csg_node(*tree, object, DMat4(1.0), nullptr, DMat4(1.0), true, false);
+        tree->compute_bounds(m_data->instances);
+        const CsgTree* solid = tree.get();
+        m_data->csg_trees.push_back(std::move(tree));
+        const SceneData* data = m_data.get();
+        return [solid, data](const glm::dvec3& p) { return solid->inside(data->instances, solid->root, p); };
     }
 
     // A CSG object (or one an inversion or clip makes one): its leaves,

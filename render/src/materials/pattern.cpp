@@ -196,6 +196,7 @@ static sg::Pattern with_kind(sg::Pattern pattern, Kind kind) {
 struct CompiledPattern::State {
     PatternSetup setup;
     CompiledPattern::ValueSource source;  // replaces the pattern function when set
+    bool source_gives_blocks = false;     // source is a list pattern's block index
     glm::dmat4 pattern_from_object{1.0};
     std::vector<WarpStep> warps;  // in the order they act: the last written first
     // Classic turbulence moves the point before every pattern function but
@@ -215,6 +216,12 @@ struct CompiledPattern::State {
 CompiledPattern::CompiledPattern(const sg::Pattern& pattern, NoiseGenerator global_generator, ValueSource source)
     : CompiledPattern(with_kind(pattern, Kind::Gradient), global_generator) {
     m_state->source = std::move(source);
+}
+
+CompiledPattern::CompiledPattern(const sg::Pattern& pattern, NoiseGenerator global_generator, BlockSource source)
+    : CompiledPattern(with_kind(pattern, Kind::Gradient), global_generator) {
+    m_state->source = std::move(source.index);
+    m_state->source_gives_blocks = true;
 }
 
 CompiledPattern::CompiledPattern(const sg::Pattern& pattern, NoiseGenerator global_generator)
@@ -367,6 +374,7 @@ int CompiledPattern::block_count() const {
 int CompiledPattern::block_index(const glm::dvec3& object_point) const {
     const PatternSetup& s = m_state->setup;
     const glm::dvec3 p = pattern_point(object_point);
+    if (m_state->source_gives_blocks) return int(m_state->source(p, {}));
     switch (s.kind) {
     case Kind::Checker: return checker_block(p);
     case Kind::Hexagon: return hexagon_block(p);

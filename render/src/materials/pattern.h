@@ -26,8 +26,10 @@ struct PatternContext {
 class CompiledPattern {
   public:
     // global_generator: global_settings' noise_generator (POV's default 2).
-    // Throws std::runtime_error("<pattern> is not supported yet") for object,
-    // image_pattern, pigment_pattern and function, and for parameters POV
+    // Throws std::runtime_error for the patterns whose values come from
+    // elsewhere (object, image_pattern, pigment_pattern: use the source
+    // constructors below, as compile_pattern() does), for function ("not
+    // supported yet"), and for parameters POV
     // refuses (mandel exponent outside 2..33,
     // magnet type other than 1 or 2, slope without any direction, tiling
     // outside 1..27, pavement sides/tiles/pattern out of POV's ranges).
@@ -38,6 +40,12 @@ class CompiledPattern {
     // as for any pattern.
     using ValueSource = std::function<double(const glm::dvec3& pattern_point, const PatternContext& context)>;
     CompiledPattern(const sg::Pattern& pattern, NoiseGenerator global_generator, ValueSource source);
+    // A list pattern whose block index comes from elsewhere (object: 1
+    // inside the object, 0 outside).
+    struct BlockSource {
+        ValueSource index;
+    };
+    CompiledPattern(const sg::Pattern& pattern, NoiseGenerator global_generator, BlockSource source);
     ~CompiledPattern();
     CompiledPattern(CompiledPattern&&) noexcept;
     CompiledPattern& operator=(CompiledPattern&&) noexcept;

@@ -174,6 +174,15 @@ std::unique_ptr<PointPigment> make_point_pigment(const sg::Pigment& pigment, con
 }
 
 CompiledPattern compile_pattern(const sg::Pattern& pattern, const MaterialBuild& build) {
+    if (pattern.kind == sg::Pattern::Kind::Object) {
+        if (!pattern.object) throw SceneError(pattern.location, "the object pattern needs an object");
+        if (!build.inside_tests) throw SceneError(pattern.location, "the object pattern needs a scene to test against");
+        InsideTest inside = (*build.inside_tests)(*pattern.object);
+        return CompiledPattern(pattern, build.generator,
+                               CompiledPattern::BlockSource{[inside](const glm::dvec3& point, const PatternContext&) {
+                                   return inside(point) ? 1.0 : 0.0;
+                               }});
+    }
     if (pattern.kind == sg::Pattern::Kind::ImagePattern)
         return CompiledPattern(pattern, build.generator, image_pattern_source(pattern, build));
     if (pattern.kind != sg::Pattern::Kind::PigmentPattern) return CompiledPattern(pattern, build.generator);

@@ -214,7 +214,7 @@ TEST(Patterns, BlackHolePullsTowardsItsCentre) {
     EXPECT_NEAR(value_at(p, {1.5, 0, 0}), 0.5, 1e-12);  // outside: untouched
 }
 
-TEST(Patterns, UnsupportedPatternsThrow) {
+TEST(Patterns, PatternsWithoutTheirSourceThrow) {
     for (Kind kind : {Kind::Object, Kind::ImagePattern, Kind::PigmentPattern, Kind::Function}) {
         EXPECT_THROW(CompiledPattern(make(kind), NoiseGenerator::RangeCorrected), std::runtime_error);
     }

@@ -34,7 +34,7 @@ std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
                                         to_sample(pigment.block_pigments[1]->color),
                                         pigment.pattern.pattern_from_object, m_spaces);
         try {
-            return make_pattern_texture(pigment, m_spaces, MaterialBuild(m_noise_generator, &m_images));
+            return make_pattern_texture(pigment, m_spaces, build());
         } catch (const SceneError&) {
             throw;
         } catch (const std::runtime_error& unsupported) {
@@ -46,7 +46,7 @@ std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
 }
 
 std::unique_ptr<NormalPerturbation> TextureFactory::make_normal(const sg::Normal& normal) {
-    return make_surface_normal(normal, m_spaces, MaterialBuild(m_noise_generator, &m_images));
+    return make_surface_normal(normal, m_spaces, build());
 }
 
 std::unique_ptr<Texture> TextureFactory::make_solid(const Color& rgb, float filter, float transmit) {

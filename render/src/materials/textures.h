@@ -1,6 +1,7 @@
 // Building pigments from the scene graph (internal to liblancer).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -22,15 +23,23 @@ using TextureSpaces = std::vector<glm::dmat4>;
 // image_map.
 class ImageTextureSystem;
 
+// POV's Inside_Object for the object pattern: whether a point of pattern
+// space lies in the object's solid. The scene builder makes them (this
+// room does not know shapes).
+using InsideTest = std::function<bool(const glm::dvec3& point)>;
+using InsideTestMaker = std::function<InsideTest(const sg::Object& object)>;
+
 // What building a pigment, pattern or normal needs beyond its scene-graph
-// node: the scene's noise generator, and the factory's image cache, opened
-// on the first image (null: each image opens its own).
+// node: the scene's noise generator, the factory's image cache, opened on
+// the first image (null: each image opens its own), and the maker of the
+// object pattern's inside tests (null: the object pattern is refused).
 struct MaterialBuild {
     MaterialBuild(NoiseGenerator noise = NoiseGenerator::RangeCorrected,
-                  std::shared_ptr<ImageTextureSystem>* image_cache = nullptr)
-        : generator(noise), images(image_cache) {}
+                  std::shared_ptr<ImageTextureSystem>* image_cache = nullptr, const InsideTestMaker* solids = nullptr)
+        : generator(noise), images(image_cache), inside_tests(solids) {}
     NoiseGenerator generator;
     std::shared_ptr<ImageTextureSystem>* images;
+    const InsideTestMaker* inside_tests;
 };
 
 class TextureFactory {
@@ -42,6 +51,7 @@ class TextureFactory {
 
     // global_settings' noise_generator, for patterns that do not choose.
     void set_noise_generator(int generator) { m_noise_generator = NoiseGenerator(generator); }
+    void set_inside_tests(InsideTestMaker maker) { m_inside_tests = std::move(maker); }
 
     // Throws lancer::SceneError at the image_map's location when the image
     // cannot be read, and at a pattern's when lancer cannot evaluate it.
@@ -54,6 +64,11 @@ class TextureFactory {
     const TextureSpaces& m_spaces;
     std::shared_ptr<ImageTextureSystem> m_images;
     NoiseGenerator m_noise_generator = NoiseGenerator::RangeCorrected;
+    InsideTestMaker m_inside_tests;
+
+    MaterialBuild build() {
+        return MaterialBuild(m_noise_generator, &m_images, m_inside_tests ? &m_inside_tests : nullptr);
+    }
 };
 
 // One constructor per pattern family, each in a file of its own; the
