@@ -22,7 +22,7 @@
 // normals (own normals, slopes of values, slope_map, normal_map), layered
 // and patterned textures, #default and interior fade, uv_mapping, and
 // images (image_map's projections, image_pattern, bump_map) and the object
-// pattern.
+// pattern, irid and diffuse backside.
 #include <filesystem>
 #include <string>
 
@@ -71,7 +71,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
                                            "text", "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals",
                                            "height_fields", "patterns_geometric", "patterns_blocks", "patterns_noise",
                                            "patterns_warps", "patterns_tilings", "patterns_tilings_more", "normals",
-                                           "textures", "uv_mapping", "csg_meshes", "images", "object_pattern"),
+                                           "textures", "uv_mapping", "csg_meshes", "images", "object_pattern",
+                                           "irid_backside"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 }  // namespace

@@ -69,7 +69,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        RED "red" GREEN "green" BLUE "blue" FILTER "filter" TRANSMIT "transmit" GRAY "gray" GREY "grey"
        CHECKER "checker" IMAGE_MAP "image_map" PNG "png" JPEG "jpeg" EXR "exr" HDR "hdr" TGA "tga"
        TIFF "tiff" MAP_TYPE "map_type" INTERPOLATE "interpolate" ONCE "once" ALL "all" GAMMA "gamma"
-       IMAGE_PATTERN "image_pattern" USE_ALPHA "use_alpha"
+       IMAGE_PATTERN "image_pattern" USE_ALPHA "use_alpha" IRID "irid" THICKNESS "thickness"
+       IRID_WAVELENGTH "irid_wavelength"
        QUICK_COLOR "quick_color"
        AMBIENT "ambient" EMISSION "emission" DIFFUSE "diffuse" BRILLIANCE "brilliance"
        SPECULAR "specular" ROUGHNESS "roughness" PHONG "phong" PHONG_SIZE "phong_size"
@@ -139,7 +140,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::function<void(sg::Pigment&)>> pigment_start
 %nterm <sg::ImageMap> image_map image_items
 %nterm <std::shared_ptr<sg::Finish>> finish
-%nterm <Edits<sg::Finish>> finish_items reflection_items reflection_opts finish_block
+%nterm <Edits<sg::Finish>> finish_items reflection_items reflection_opts finish_block irid_items
 %nterm <std::function<void(sg::Finish&)>> finish_item reflection_item
 %nterm <std::shared_ptr<sg::Interior>> interior
 %nterm <Edits<sg::Interior>> interior_items
@@ -1066,6 +1067,14 @@ finish_item
   | "ambient" colour   { sg::Vec3 c = ev.to_color($2, @2).rgb; $$ = [c](sg::Finish& f) { f.ambient = c; }; }
   | "emission" colour  { sg::Vec3 c = ev.to_color($2, @2).rgb; $$ = [c](sg::Finish& f) { f.emission = c; }; }
   | "diffuse" opt_albedo expr { $$ = ev.finish_scalar("diffuse", $2, $3, @3); }
+  /* POV's diffuse backside: the share of light arriving from behind */
+  | "diffuse" opt_albedo expr "," expr
+      { auto front = ev.finish_scalar("diffuse", $2, $3, @3); auto back = ev.finish_scalar("diffuse_back", $2, $5, @5);
+        $$ = [front, back](sg::Finish& f) { front(f); back(f); }; }
+  | "irid" "{" arith irid_items "}"
+      { double amount = ev.to_float($3, @3, "an irid amount"); auto items = $4;
+        $$ = [amount, items](sg::Finish& f) { f.irid = amount; f.irid_thickness = 0.0; f.irid_turbulence = 0.0;
+                                              for (auto& item : items) item(f); }; }
   | "brilliance" expr  { $$ = ev.finish_scalar("brilliance", false, $2, @2); }
   | "specular" opt_albedo expr { $$ = ev.finish_scalar("specular", $2, $3, @3); }
   | "roughness" expr   { $$ = ev.finish_scalar("roughness", false, $2, @2); }
@@ -1079,6 +1088,14 @@ finish_item
       { auto edits = $3; $$ = [edits](sg::Finish& f) { f.reflection = sg::Reflection{}; for (auto& e : edits) e(f); }; }
   | "conserve_energy" opt_bool { bool on = $2; $$ = [on](sg::Finish& f) { f.conserve_energy = on; }; }
   | "crand" expr       { $$ = [](sg::Finish&) {}; ev.ignored(LOC(@1), "crand"); }
+  ;
+
+irid_items
+  : %empty             {}
+  | irid_items "thickness" arith { $$ = std::move($1); double t = ev.to_float($3, @3, "a film thickness");
+                                   $$.push_back([t](sg::Finish& f) { f.irid_thickness = t; }); }
+  | irid_items "turbulence" arith { $$ = std::move($1); double t = ev.to_vec3($3, @3).x;
+                                    $$.push_back([t](sg::Finish& f) { f.irid_turbulence = t; }); }
   ;
 
 /* reflection { [min,] max [fresnel on] [falloff F] [exponent E] [metallic M] } */
@@ -1372,6 +1389,7 @@ global_item
   | "charset" UNDECLARED_ID { ev.ignored(LOC(@1), "charset"); }
   | "number_of_waves" expr { ev.scene().global.number_of_waves = ev.to_int($2, @2); }
   | "noise_generator" expr { ev.scene().global.noise_generator = std::max(1, ev.noise_generator($2, @2)); }
+  | "irid_wavelength" colour { ev.scene().global.irid_wavelength = ev.to_color($2, @2).rgb; }
   | "max_intersections" expr { ev.ignored(LOC(@1), "max_intersections"); }
   | "hf_gray_16" opt_bool { ev.ignored(LOC(@1), "hf_gray_16 (how POV-Ray writes height-field images)"); }
   ;

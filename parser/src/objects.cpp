@@ -311,7 +311,10 @@ void Evaluator::settle_finish(sg::Finish& settled, const sg::SourceLocation& at)
     sg::Finish* finish = &settled;
     // POV-Ray's Parse_Finish: a value given as an albedo becomes the peak
     // that reflects that share, with the finish's final exponents.
-    if (finish->diffuse_albedo) finish->diffuse *= (finish->brilliance + 1.0) / 2.0;
+    if (finish->diffuse_albedo) {
+        finish->diffuse *= (finish->brilliance + 1.0) / 2.0;
+        finish->diffuse_back *= (finish->brilliance + 1.0) / 2.0;
+    }
     if (finish->phong_albedo) finish->phong *= (finish->phong_size + 1.0) / 2.0;
     if (finish->specular_albedo && finish->roughness > 0.0) {
         const double k = 1.0 / finish->roughness;
@@ -346,6 +349,7 @@ std::function<void(sg::Finish&)> Evaluator::finish_scalar(const std::string& nam
             f.diffuse = x;
             f.diffuse_albedo = albedo;
         };
+    if (name == "diffuse_back") return [x](sg::Finish& f) { f.diffuse_back = x; };
     if (name == "brilliance") return [x](sg::Finish& f) { f.brilliance = x; };
     if (name == "specular")
         return [x, albedo](sg::Finish& f) {

@@ -54,9 +54,9 @@ const std::unordered_set<std::string>& builtin_names() {
 
 // Ignored POV blocks: swallowed with a warning so nothing is dropped silently.
 const std::unordered_set<std::string>& ignored_blocks() {
-    static const std::unordered_set<std::string> names = {"photons",    "radiosity",  "media", "fog",
-                                                          "sky_sphere", "rainbow",    "irid",  "interior_texture",
-                                                          "subsurface", "mm_per_unit"};
+    static const std::unordered_set<std::string> names = {
+        "photons", "radiosity",        "media",      "fog",        "sky_sphere",
+        "rainbow", "interior_texture", "subsurface", "mm_per_unit"};
     return names;
 }
 

@@ -45,7 +45,8 @@ class DiffusePointLanes {
     static bool covers(const Hit& hit) {
         const Material& material = *hit.material;
         return hit.emitter == nullptr && material.pigment_is_constant() && !material.has_glossy() &&
-               material.parameters().brilliance == 1.0f;
+               material.parameters().brilliance == 1.0f && material.parameters().diffuse_back == 0.0f &&
+               !material.has_iridescence();
     }
 
     // Radiance towards rays[k] from hits[k] (covered hits), k < count <=

@@ -336,6 +336,12 @@ struct Finish {
     double phong = 0.0;  // peak of the Phong highlight
     double phong_size = 40.0;
     double metallic = 0.0;
+    double diffuse_back = 0.0;  // POV's `diffuse a, b`: light arriving from behind the surface
+    // POV's irid { amount thickness t turbulence f }: thin-film tint of the
+    // light the surface reflects.
+    double irid = 0.0;
+    double irid_thickness = 0.0;
+    double irid_turbulence = 0.0;
     Reflection reflection;
     bool conserve_energy = false;  // transmitted light scaled by 1 - reflection
     // `diffuse albedo`, `phong albedo`, `specular albedo`: the value was the
@@ -761,6 +767,7 @@ struct Camera {
 
 struct GlobalSettings {
     double assumed_gamma = 1.0;
+    Vec3 irid_wavelength{0.70, 0.52, 0.48};  // POV's default
     // False in POV-Ray's legacy mode (a scene whose #version is below 3.7
     // and which sets no assumed_gamma): image files receive the working
     // values unchanged, as POV-Ray 3.6 wrote them.

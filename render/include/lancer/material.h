@@ -72,6 +72,19 @@ struct MaterialParameters {
     // without bias, so path ignores it).
     float reflection_exponent = 1.0f;
     bool conserve_energy = false;  // transmitted light is scaled by 1 - mirror reflectance
+    // POV's `diffuse a, b`: b is the diffuse share of light arriving from
+    // behind the surface (translucency). POV's irid { }: the light the
+    // surface reflects from each light is tinted by a thin film's
+    // interference, per channel 1 + irid cos(2 pi thickness (|N.L| + |N.V|)
+    // / wavelength), the thickness varied by turbulence at the hit. Both are
+    // POV's local lighting, kept by raycast, shadow, whitted and gather;
+    // path, a physical model, leaves them out.
+    float diffuse_back = 0.0f;
+    float irid = 0.0f;
+    float irid_thickness = 0.0f;
+    float irid_turbulence = 0.0f;
+    Color irid_wavelengths{0.70f, 0.52f, 0.48f};  // global_settings irid_wavelength
+    int noise_generator = 2;                      // global_settings noise_generator (irid's turbulence)
     float ior = 1.0f;
     // POV's interior fade (docs/scene-language.md): fade_distance 0 is none.
     float fade_distance = 0.0f;
@@ -137,6 +150,25 @@ class Material {
         float shape = 1.0f;
         if (m_params.brilliance != 1.0f) shape = std::pow(cos_i, m_params.brilliance - 1.0f);
         return diffuse_lobe_weight(m_params.diffuse, opacity, shape) * surface.pigment;
+    }
+    // POV's backside diffuse for light arriving from behind (wi below the
+    // surface, n facing wo); black when the finish has none.
+    Color backside_diffuse_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wi) const {
+        const float cos_i = -glm::dot(n, wi);
+        if (!(cos_i > 0.0f) || m_params.diffuse_back == 0.0f) return Color(0.0f);
+        const float opacity = 1.0f - transparency(surface);
+        float shape = 1.0f;
+        if (m_params.brilliance != 1.0f) shape = std::pow(cos_i, m_params.brilliance - 1.0f);
+        return diffuse_lobe_weight(m_params.diffuse_back, opacity, shape) * surface.pigment;
+    }
+    bool has_iridescence() const { return m_params.irid != 0.0f; }
+    // The film's thickness at a world position (turbulence varies it).
+    float film_thickness(const Vec3& position) const;
+    // irid's tint of the light reflected from wi towards wo.
+    Color iridescence(float film_thickness, const Vec3& n, const Vec3& wo, const Vec3& wi) const {
+        const float phase = 2.0f * kPi * film_thickness * (std::abs(glm::dot(n, wi)) + std::abs(glm::dot(n, wo)));
+        const Color& w = m_params.irid_wavelengths;
+        return Color(1.0f) + m_params.irid * Color(std::cos(phase / w.r), std::cos(phase / w.g), std::cos(phase / w.b));
     }
     // The glossy part alone (phong + specular), POV's highlights.
     Color glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const;

@@ -38,6 +38,10 @@ MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment, 
     p.reflection_metallic = float(m.finish.reflection.metallic);
     p.reflection_exponent = float(m.finish.reflection.exponent);
     p.conserve_energy = m.finish.conserve_energy;
+    p.diffuse_back = float(m.finish.diffuse_back);
+    p.irid = float(m.finish.irid);
+    p.irid_thickness = float(m.finish.irid_thickness);
+    p.irid_turbulence = float(m.finish.irid_turbulence);
     p.ior = float(m.interior.ior);
     p.fade_distance = float(m.interior.fade_distance);
     p.fade_power = float(m.interior.fade_power);
@@ -154,8 +158,10 @@ class Builder {
             normal = m_data->normals.back().get();
             m_data->has_normal_perturbation = true;
         }
-        m_data->materials.push_back(
-            std::make_unique<Material>(to_parameters(source, m_data->textures.back().get(), normal)));
+        MaterialParameters parameters = to_parameters(source, m_data->textures.back().get(), normal);
+        parameters.irid_wavelengths = Color(m_graph.global.irid_wavelength);
+        parameters.noise_generator = m_graph.global.noise_generator;
+        m_data->materials.push_back(std::make_unique<Material>(parameters));
         return m_data->materials.back().get();
     }
 

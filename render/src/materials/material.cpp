@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lancer/texture.h"
+#include "materials/noise.h"
 
 namespace lancer {
 namespace {
@@ -45,6 +46,15 @@ Material::Material(const MaterialParameters& parameters)
         m_constant_pigment = SurfaceSample{constant->rgb, constant->filter, constant->transmit};
         m_pigment_is_constant = true;
     }
+}
+
+float Material::film_thickness(const Vec3& position) const {
+    if (m_params.irid_turbulence == 0.0f) return m_params.irid_thickness;
+    // POV's: turbulence of 5 octaves (omega 0.5, lambda 2) at the hit, from
+    // [0, 1] to 1 +- irid_turbulence times the thickness.
+    const int generator = glm::clamp(m_params.noise_generator, 1, 3);
+    const double noise = pov_turbulence(glm::dvec3(position), 0.5, 2.0, 5, NoiseGenerator(generator));
+    return m_params.irid_thickness * float(1.0 + (2.0 * noise - 1.0) * m_params.irid_turbulence);
 }
 
 Color Material::glossy_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const {

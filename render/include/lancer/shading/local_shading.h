@@ -20,15 +20,18 @@ struct ShadingContext {
     const Hit& hit;
     const Material& material;
     SurfaceSample surface;
-    Vec3 wo;        // unit, from the hit towards where the ray came from
-    Vec3 normal;    // unit shading normal on the side of wo (surfaces are two-sided)
-    bool entering;  // the ray arrives on the front face (from outside a closed object)
+    Vec3 wo;                      // unit, from the hit towards where the ray came from
+    Vec3 normal;                  // unit shading normal on the side of wo (surfaces are two-sided)
+    bool entering;                // the ray arrives on the front face (from outside a closed object)
+    float film_thickness = 0.0f;  // irid's, at this hit
 };
 
 inline ShadingContext make_shading_context(const Hit& hit, const Ray& ray) {
     const Vec3 wo = -glm::normalize(ray.direction);
-    return ShadingContext{hit, *hit.material,         hit.material->sample_surface(hit),
-                          wo,  hit.facing_normal(wo), hit.is_front_face(wo)};
+    ShadingContext at{hit, *hit.material,         hit.material->sample_surface(hit),
+                      wo,  hit.facing_normal(wo), hit.is_front_face(wo)};
+    if (at.material.has_iridescence()) at.film_thickness = at.material.film_thickness(hit.position);
+    return at;
 }
 
 // Reflected radiance split by lobe, so an integrator can weight or replace
@@ -66,9 +69,16 @@ inline LobeRadiance reflect_light_sample(const ShadingContext& at, const LightSa
     const float cosine = std::abs(glm::dot(at.normal, sample.wi));
     const Color incident = sample.radiance * (sample.pdf == 1.0f ? cosine : cosine / sample.pdf);
     LobeRadiance reflected;
-    reflected.diffuse = at.material.diffuse_brdf(at.surface, at.normal, at.wo, sample.wi) * incident;
-    if (at.material.has_glossy())
-        reflected.glossy = at.material.glossy_brdf(at.surface, at.normal, at.wo, sample.wi) * incident;
+    if (glm::dot(at.normal, sample.wi) > 0.0f) {
+        reflected.diffuse = at.material.diffuse_brdf(at.surface, at.normal, at.wo, sample.wi) * incident;
+        if (at.material.has_glossy())
+            reflected.glossy = at.material.glossy_brdf(at.surface, at.normal, at.wo, sample.wi) * incident;
+    } else {
+        // POV lights a surface from behind only through diffuse backside.
+        reflected.diffuse = at.material.backside_diffuse_brdf(at.surface, at.normal, sample.wi) * incident;
+    }
+    if (at.material.has_iridescence())
+        reflected *= at.material.iridescence(at.film_thickness, at.normal, at.wo, sample.wi);
     if (!is_finite(reflected.diffuse) || !is_finite(reflected.glossy)) return {};
     return reflected;
 }
