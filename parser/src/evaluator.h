@@ -301,6 +301,11 @@ class Evaluator {
     // (bump_size in an image_map, use_alpha in a bump_map).
     void refuse_foreign_image_items(const sg::ImageMap& image, const char* block);
     PatternEdit image_pattern(const sg::ImageMap& image, const sg::SourceLocation& at);
+    // Functions (functions.cpp, patterns.cpp).
+    Value call_function(const Value& function, const std::vector<Value>& arguments, const SourceRange& where);
+    Value pattern_function(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);
+    Value pigment_function(const std::shared_ptr<sg::Pigment>& pigment, const sg::SourceLocation& at);
+    PatternEdit function_pattern(const Value& function, const sg::SourceLocation& at);
     // object { O [list] }: inside O (1) or outside (0), a block pattern of two.
     PatternEdit object_pattern(const std::shared_ptr<ShapeValue>& shape, const sg::SourceLocation& at);
     void missing_weight(const sg::SourceLocation& at, const char* map);
@@ -406,6 +411,9 @@ class Evaluator {
     bool push_file(const std::string& text, const std::string& label, const std::string& path,
                    const std::string& folder, const sg::SourceLocation& included_from);
     Symbol classify(const RawToken& raw);
+    // function [(params)] { … } read from the token stream (functions.cpp):
+    // a FUNCTION_LITERAL, or FUNCTION_OPEN before a pattern or pigment body.
+    std::optional<Symbol> read_function(const RawToken& keyword);
     Symbol symbol_for_identifier(const RawToken& raw);
     Symbol make_symbol(Kind kind, const RawToken& raw, Value value = {});
     const RawToken* peek_raw();
@@ -493,6 +501,7 @@ class Evaluator {
     std::string m_last_closed_block;
 
     friend class Parser;
+    friend class FunctionCompiler;
     friend class ObjMaterialReader;
     friend Value builtin_rand(Evaluator& ev, const std::vector<Value>& args, const SourceRange& where);
     friend Value builtin_seed(Evaluator& ev, const std::vector<Value>& args, const SourceRange& where);

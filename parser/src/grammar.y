@@ -52,6 +52,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        PIGMENT_MAP_ID "pigment_map identifier" NORMAL_MAP_ID "normal_map identifier"
        INTERIOR_ID "interior identifier" CAMERA_ID "camera identifier"
        LIGHT_ID "light_source identifier" TRANSFORM_ID "transform identifier"
+       FUNCTION_LITERAL "function definition" FUNCTION_ID "function identifier"
        UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" UNSUPPORTED "unsupported keyword"
 
 /* Keywords: the alias is the spelling; token_stream.cpp (keyword_table) builds its table from these. */
@@ -70,7 +71,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        CHECKER "checker" IMAGE_MAP "image_map" PNG "png" JPEG "jpeg" EXR "exr" HDR "hdr" TGA "tga"
        TIFF "tiff" MAP_TYPE "map_type" INTERPOLATE "interpolate" ONCE "once" ALL "all" GAMMA "gamma"
        IMAGE_PATTERN "image_pattern" USE_ALPHA "use_alpha" IRID "irid" THICKNESS "thickness"
-       IRID_WAVELENGTH "irid_wavelength"
+       IRID_WAVELENGTH "irid_wavelength" FUNCTION_OPEN "function {"
        QUICK_COLOR "quick_color"
        AMBIENT "ambient" EMISSION "emission" DIFFUSE "diffuse" BRILLIANCE "brilliance"
        SPECULAR "specular" ROUGHNESS "roughness" PHONG "phong" PHONG_SIZE "phong_size"
@@ -256,6 +257,9 @@ declared_value
   | light              { $$.kind = Value::Kind::Light; $$.light = std::make_shared<sg::Light>($1); }
   | transform_block    { $$.kind = Value::Kind::Transform; $$.transform = $1; }
   | normal             { $$.kind = Value::Kind::Normal; $$.normal = $1; }
+  | FUNCTION_LITERAL   { $$ = std::move($1.value); }
+  | FUNCTION_OPEN "pattern" "{" pigment_edits "}" "}" { $$ = ev.pattern_function($4, LOC(@1)); }
+  | FUNCTION_OPEN pigment "}" { $$ = ev.pigment_function($2, LOC(@1)); }
   | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
   | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
   | normal_map         { $$.kind = Value::Kind::NormalMap; $$.normal_map = $1; }
@@ -765,6 +769,7 @@ pigment_mods
 pattern_name
   : "agate"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Agate); }
   | "image_pattern" "{" image_items "}" { $$ = ev.image_pattern($3, LOC(@1)); }
+  | FUNCTION_LITERAL   { $$ = ev.function_pattern($1.value, LOC(@1)); }
   | "aoi"              { $$ = ev.pattern_kind(sg::Pattern::Kind::Aoi); }
   | "boxed"            { $$ = ev.pattern_kind(sg::Pattern::Kind::Boxed); }
   | "bozo"             { $$ = ev.pattern_kind(sg::Pattern::Kind::Bozo); }
@@ -1240,6 +1245,7 @@ primary
   | "(" expr ")"       { $$ = std::move($2); $$.boolean_literal = false; }
   | "<" vector_items ">" { $$ = ev.make_vector($2, @$); }
   | BUILTIN "(" opt_args ")" { $$ = ev.call_builtin($1.text, $3, @$); }
+  | FUNCTION_ID "(" opt_args ")" { $$ = ev.call_function($1.value, $3, @$); }
   ;
 
 vector_items
@@ -1292,6 +1298,9 @@ macro_arg
   | pigment            { $$.kind = Value::Kind::Pigment; $$.pigment = $1; }
   | finish             { $$.kind = Value::Kind::Finish; $$.finish = $1; }
   | normal             { $$.kind = Value::Kind::Normal; $$.normal = $1; }
+  | FUNCTION_LITERAL   { $$ = std::move($1.value); }
+  | FUNCTION_OPEN "pattern" "{" pigment_edits "}" "}" { $$ = ev.pattern_function($4, LOC(@1)); }
+  | FUNCTION_OPEN pigment "}" { $$ = ev.pigment_function($2, LOC(@1)); }
   | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
   | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
   | normal_map         { $$.kind = Value::Kind::NormalMap; $$.normal_map = $1; }

@@ -63,8 +63,8 @@ const std::unordered_set<std::string>& ignored_blocks() {
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
     static const std::unordered_set<std::string> names = {
-        "isosurface",       "parametric",       "lemon",     "array",   "spline",       "function", "fisheye",
-        "panoramic",        "ultra_wide_angle", "omnimax",   "layered", "material_map", "pattern",  "tiles",
+        "isosurface",       "parametric",       "lemon",     "array",   "spline",       "fisheye",
+        "panoramic",        "ultra_wide_angle", "omnimax",   "layered", "material_map", "tiles",
         "interior_texture", "isosurface",       "dictionary"};
     return names;
 }
@@ -250,6 +250,13 @@ Evaluator::Symbol Evaluator::next_token() {
                     continue;
                 }
             }
+            if (raw->text == "function" && !lookup(raw->text) && !directives_blocked()) {
+                if (std::optional<Symbol> function = read_function(*raw)) {
+                    m_last_returned.reset();
+                    return std::move(*function);
+                }
+                continue;
+            }
             auto macro = m_macros.find(raw->text);
             if (macro != m_macros.end() && !lookup(raw->text)) {
                 auto keep = macro->second;
@@ -365,6 +372,7 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
         case VK::ColorMap: kind = Parser::token::TOK_COLOR_MAP_ID; break;
         case VK::PigmentMap: kind = Parser::token::TOK_PIGMENT_MAP_ID; break;
         case VK::NormalMap: kind = Parser::token::TOK_NORMAL_MAP_ID; break;
+        case VK::Function: kind = Parser::token::TOK_FUNCTION_ID; break;
         default: break;
         }
         Value copy = *value;

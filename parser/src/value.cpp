@@ -45,6 +45,7 @@ std::string describe(Value::Kind kind) {
     case Value::Kind::ColorMap: return "a color_map";
     case Value::Kind::PigmentMap: return "a pigment_map";
     case Value::Kind::NormalMap: return "a normal_map";
+    case Value::Kind::Function: return "a function";
     }
     return "a value";
 }

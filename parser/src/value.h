@@ -53,7 +53,8 @@ struct Value {
         Normal,
         ColorMap,
         PigmentMap,
-        NormalMap
+        NormalMap,
+        Function
     };
     Kind kind = Kind::Float;
     // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
@@ -72,6 +73,7 @@ struct Value {
     sg::ColorMapRef color_map;
     std::shared_ptr<const std::vector<sg::PigmentMapEntry>> pigment_map;
     std::shared_ptr<const std::vector<sg::NormalMapEntry>> normal_map;
+    sg::FunctionRef function;
     sg::Mat4 transform{1.0};
     sg::SourceLocation location;  // where it was written, when a check needs it later
 

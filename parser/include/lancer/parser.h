@@ -54,6 +54,9 @@ struct ParseOptions {
     // Triangles in the whole scene (mesh, mesh2, obj_mesh): ~100 bytes each
     // once the renderer holds them, so the default stops at ~5 GiB.
     long max_triangles = 50'000'000;
+    // What a function called while parsing may need of the renderer (noise,
+    // patterns, pigments); null: such a call is a located error.
+    const sg::FunctionNatives* function_natives = nullptr;
     // Top-level objects: loops nest, and each nested #while has its own
     // iteration cap, so only this bounds what nested loops can create.
     long max_objects = 2'000'000;

@@ -19,6 +19,8 @@
 
 #include <glm/glm.hpp>
 
+#include "lancer/function.h"
+
 namespace lancer::sg {
 
 using Vec2 = glm::dvec2;
@@ -213,6 +215,7 @@ struct Pattern {
     std::shared_ptr<const Object> object;    // object pattern
     std::shared_ptr<const Pigment> pigment;  // pigment_pattern
     std::shared_ptr<const ImageMap> image;   // image_pattern
+    FunctionRef function;                    // function { … } as a pattern
     std::string file;                        // density_file df3
     int file_interpolate = 0;
     SourceLocation location;

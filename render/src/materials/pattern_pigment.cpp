@@ -7,6 +7,7 @@
 
 #include "lancer/scene_error.h"
 #include "materials/blend_map.h"
+#include "materials/function_natives.h"
 #include "materials/pattern_space.h"
 #include "materials/point_pigment.h"
 
@@ -182,6 +183,16 @@ CompiledPattern compile_pattern(const sg::Pattern& pattern, const MaterialBuild&
                                CompiledPattern::BlockSource{[inside](const glm::dvec3& point, const PatternContext&) {
                                    return inside(point) ? 1.0 : 0.0;
                                }});
+    }
+    if (pattern.kind == sg::Pattern::Kind::Function) {
+        if (!pattern.function) throw SceneError(pattern.location, "the function pattern needs a function");
+        auto natives = std::make_shared<const RenderFunctionNatives>(*pattern.function, build);
+        sg::FunctionRef function = pattern.function;
+        return CompiledPattern(pattern, build.generator,
+                               [function, natives](const glm::dvec3& point, const PatternContext&) {
+                                   const double xyz[3] = {point.x, point.y, point.z};
+                                   return sg::evaluate_function(*function, xyz, 3, natives.get());
+                               });
     }
     if (pattern.kind == sg::Pattern::Kind::ImagePattern)
         return CompiledPattern(pattern, build.generator, image_pattern_source(pattern, build));

@@ -1,0 +1,124 @@
+// POV-Ray's user-defined functions (`function { expr }`, `function(a, b)
+// { expr }`, `function { internal(N) }`, `function { pattern { … } }`,
+// `function { pigment { … } }`), compiled by the parser into a small stack
+// program that the parser (for calls in expressions) and the renderer (for
+// the function pattern and isosurfaces) run alike. Header-only: the scene
+// graph is headers, and both sides interpret the same code.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace lancer::sg {
+
+struct Pattern;
+struct Pigment;
+struct SourceLocation;
+
+// What a function may ask of the renderer: noise, patterns and pigments
+// live there. The parser evaluates functions that need none of them.
+class FunctionNatives {
+  public:
+    virtual ~FunctionNatives() = default;
+    // POV's Noise() in [0, 1] with noise_generator 1, 2 or 3.
+    virtual double noise(const glm::dvec3& p, int generator) const = 0;
+    // The pattern's value (function { pattern { … } }) at p.
+    virtual double pattern(const Pattern& pattern, const glm::dvec3& p) const = 0;
+    // The pigment's colour (r, g, b, filter, transmit) at p.
+    virtual std::array<double, 5> pigment(const Pigment& pigment, const glm::dvec3& p) const = 0;
+};
+
+struct Function {
+    enum class Op : std::uint8_t {
+        Constant,   // push constants[index]
+        Parameter,  // push the argument `index`
+        Add,
+        Subtract,
+        Multiply,
+        Divide,
+        Negate,
+        Not,
+        Less,
+        LessEqual,
+        Greater,
+        GreaterEqual,
+        Equal,
+        NotEqual,
+        And,
+        Or,
+        Math1,     // index: a Math1 code; one operand
+        Math2,     // index: a Math2 code; two operands
+        Minimum,   // count operands
+        Maximum,   // count operands
+        Select,    // count 3 or 4: POV's select(a, b, c [, d])
+        Call,      // callees[index] with count arguments (a pigment function: its `channel`)
+        Internal,  // POV's internal function `index` with count arguments
+    };
+    enum Math1Code {
+        Abs,
+        Acos,
+        Acosh,
+        Asin,
+        Asinh,
+        Atan,
+        Atanh,
+        Ceil,
+        Cos,
+        Cosh,
+        Degrees,
+        Exp,
+        Floor,
+        Int,
+        Ln,
+        Log,
+        Radians,
+        Sin,
+        Sinh,
+        Sqrt,
+        Sqr,
+        Tan,
+        Tanh,
+        Sign
+    };
+    enum Math2Code { Atan2, Mod, Pow, Div };
+    struct Instruction {
+        Op op = Op::Constant;
+        int index = 0;
+        int count = 0;
+        int channel = 0;
+    };
+
+    std::vector<std::string> parameters;  // x, y, z unless written
+    std::vector<Instruction> code;
+    std::vector<double> constants;
+    std::vector<std::shared_ptr<const Function>> callees;
+    // The function's own body when it is not an expression.
+    int internal = -1;                       // function { internal(N) }
+    std::shared_ptr<const Pattern> pattern;  // function { pattern { … } }
+    std::shared_ptr<const Pigment> pigment;  // function { pigment { … } }: a colour
+    int stack_size = 0;
+    std::string name;  // the #declare'd name, for messages
+};
+using FunctionRef = std::shared_ptr<const Function>;
+
+// Thrown for what a function cannot do: an internal function lancer lacks,
+// a pattern asked for without a renderer.
+struct FunctionError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// POV's channel of a pigment function: .red .green .blue .filter .transmit
+// (.x .y .z .t, .gray as POV's grey weights); 0..4 and 5 for grey.
+double evaluate_function(const Function& f, const double* arguments, int count, const FunctionNatives* natives,
+                         int channel = 0);
+
+}  // namespace lancer::sg
+
+#include "lancer/function_eval.h"

@@ -1,0 +1,90 @@
+// POV-Ray's user functions as the parser compiles and evaluates them.
+#include <gtest/gtest.h>
+
+#include "parse_test_helpers.h"
+
+namespace lancer {
+namespace {
+
+using test::first_error;
+using test::parse_ok;
+
+// The value of a float #declare'd by the scene.
+double declared(const std::string& scene_text, const std::string& name) {
+    ParseResult result = parse_scene_string(scene_text + "\n#debug str(" + name + ", 0, 9)", "f.pov");
+    EXPECT_TRUE(result.ok()) << test::all_diagnostics(result);
+    for (const auto& d : result.diagnostics)
+        if (d.message.rfind("#debug: ", 0) == 0) return std::stod(d.message.substr(8));
+    ADD_FAILURE() << "no #debug output";
+    return 0.0;
+}
+
+TEST(ParserFunctions, ArithmeticPrecedenceAndParameters) {
+    EXPECT_DOUBLE_EQ(declared("#declare F = function(a, b) { a * a + b * 2 - 1 }\n#declare R = F(3, 4);", "R"), 16.0);
+    // Default parameters x, y, z; unary minus binds tighter than *.
+    EXPECT_DOUBLE_EQ(declared("#declare F = function { -x * 2 + y / 4 - z }\n#declare R = F(1, 2, 3);", "R"), -4.5);
+    // Comparisons and logic give 0 or 1.
+    EXPECT_DOUBLE_EQ(declared("#declare F = function { (x < 1) + (x >= 1) * 10 + (y = 2 & z != 0) * 100 }\n"
+                              "#declare R = F(0.5, 2, 1);",
+                              "R"),
+                     101.0);
+}
+
+TEST(ParserFunctions, BuiltinsSelectAndCalls) {
+    EXPECT_NEAR(declared("#declare F = function { sin(pi / 2) + pow(2, 3) + sqrt(16) + abs(-1) + min(3, 1, 2) + "
+                         "max(1, 5) + mod(7, 3) + floor(-0.5) }\n#declare R = F(0, 0, 0);",
+                         "R"),
+                1 + 8 + 4 + 1 + 1 + 5 + 1 - 1, 1e-12);
+    // select(a, negative, zero, positive); with three, a >= 0 takes the third.
+    EXPECT_DOUBLE_EQ(declared("#declare F = function { select(x, 1, 2, 3) }\n#declare R = F(0, 0, 0);", "R"), 2.0);
+    EXPECT_DOUBLE_EQ(declared("#declare F = function { select(x, 1, 2) }\n#declare R = F(0, 0, 0);", "R"), 2.0);
+    // A function calls another; a declared float is bound at definition.
+    EXPECT_DOUBLE_EQ(declared("#declare K = 3;\n#declare G = function(a) { a * K }\n#declare K = 100;\n"
+                              "#declare F = function { G(x) + 1 }\n#declare R = F(2, 0, 0);",
+                              "R"),
+                     7.0);
+}
+
+TEST(ParserFunctions, FunctionsIncLoadsAndItsInternalsEvaluate) {
+    EXPECT_DOUBLE_EQ(declared("#include \"functions.inc\"\n#declare R = f_sphere(3, 4, 0, 1);", "R"), 4.0);
+    EXPECT_NEAR(declared("#include \"functions.inc\"\n#declare R = f_torus(2, 0, 0, 1.5, 0.25);", "R"), 0.25, 1e-12);
+    EXPECT_NEAR(declared("#include \"functions.inc\"\n#declare R = f_rounded_box(2, 0, 0, 0.1, 1, 1, 1);", "R"), 1.0,
+                1e-5);
+    // f_noise3d needs the renderer's noise: a located error while parsing.
+    const Diagnostic noise = first_error("#include \"functions.inc\"\n#declare R = f_noise3d(1, 2, 3);");
+    EXPECT_NE(noise.message.find("noise"), std::string::npos);
+    EXPECT_EQ(noise.location.line, 2);
+}
+
+TEST(ParserFunctions, PatternsAndPigmentsAsFunctions) {
+    auto scene = parse_ok(
+        "#declare P = function { pattern { agate scale 2 } }\n"
+        "#declare C = function { pigment { checker rgb 1, rgb 0 } }\n"
+        "plane { z, 0 pigment { function { P(x, y, z) * C(x, y, z).red } color_map { [0 rgb 0] [1 rgb 1] } } }");
+    const sg::Pattern& p = scene.objects[0].material->pigment.pattern;
+    EXPECT_EQ(p.kind, sg::Pattern::Kind::Function);
+    ASSERT_TRUE(p.function);
+    ASSERT_EQ(p.function->callees.size(), 2u);
+    ASSERT_TRUE(p.function->callees[0]->pattern);
+    EXPECT_EQ(p.function->callees[0]->pattern->kind, sg::Pattern::Kind::Agate);
+    EXPECT_TRUE(p.function->callees[1]->pigment);
+}
+
+TEST(ParserFunctions, BadBodiesAreLocatedErrors) {
+    const Diagnostic unknown = first_error("#declare F = function { x + nothing_here }");
+    EXPECT_NE(unknown.message.find("unknown identifier 'nothing_here'"), std::string::npos);
+    EXPECT_EQ(unknown.location.column, 29);
+    EXPECT_NE(first_error("#declare F = function { sin(1, 2) }").message.find("one argument"), std::string::npos);
+    EXPECT_NE(first_error("#declare F = function { x + }").message.find("unexpected '}'"), std::string::npos);
+    EXPECT_NE(first_error("#declare F = function { x").message.find("not closed"), std::string::npos);
+    EXPECT_NE(first_error("#declare V = <1, 2, 3>;\n#declare F = function { V }").message.find("a 3-component vector"),
+              std::string::npos);
+    // An internal function lancer lacks is an error where it is used, not
+    // where functions.inc declares it.
+    EXPECT_NE(first_error("#include \"functions.inc\"\nplane { z, 0 pigment { function { f_heart(x, y, z, 1) } } }")
+                  .message.find("internal function 23"),
+              std::string::npos);
+}
+
+}  // namespace
+}  // namespace lancer

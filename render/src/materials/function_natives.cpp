@@ -1,0 +1,45 @@
+#include "materials/function_natives.h"
+
+#include "materials/noise.h"
+
+namespace lancer {
+
+RenderFunctionNatives::RenderFunctionNatives(const sg::Function& root, const MaterialBuild& build)
+    : m_generator(build.generator) {
+    gather(root, build);
+}
+
+RenderFunctionNatives::~RenderFunctionNatives() = default;
+
+void RenderFunctionNatives::gather(const sg::Function& f, const MaterialBuild& build) {
+    // Refused here, before any thread runs it.
+    if (f.internal >= 0 && !sg::function_detail::internal_function_supported(f.internal))
+        throw sg::FunctionError("POV-Ray's internal function " + std::to_string(f.internal) +
+                                (f.name.empty() ? std::string() : " (" + f.name + ")") + " is not supported yet");
+    if (f.pattern && !m_patterns.count(f.pattern.get()))
+        m_patterns.emplace(f.pattern.get(), std::make_unique<CompiledPattern>(compile_pattern(*f.pattern, build)));
+    if (f.pigment && !m_pigments.count(f.pigment.get()))
+        m_pigments.emplace(f.pigment.get(), make_point_pigment(*f.pigment, build));
+    for (const auto& callee : f.callees) gather(*callee, build);
+}
+
+double RenderFunctionNatives::noise(const glm::dvec3& p, int generator) const {
+    // 0: the scene's generator (f_noise3d).
+    const NoiseGenerator chosen = generator >= 1 && generator <= 3 ? NoiseGenerator(generator) : m_generator;
+    return pov_noise(p, chosen);
+}
+
+double RenderFunctionNatives::pattern(const sg::Pattern& pattern, const glm::dvec3& p) const {
+    const auto found = m_patterns.find(&pattern);
+    if (found == m_patterns.end()) return 0.0;
+    return found->second->value(p);
+}
+
+std::array<double, 5> RenderFunctionNatives::pigment(const sg::Pigment& pigment, const glm::dvec3& p) const {
+    const auto found = m_pigments.find(&pigment);
+    if (found == m_pigments.end()) return {0.0, 0.0, 0.0, 0.0, 0.0};
+    const TextureSample c = found->second->at(p, PatternContext{});
+    return {c.rgb.r, c.rgb.g, c.rgb.b, c.filter, c.transmit};
+}
+
+}  // namespace lancer
