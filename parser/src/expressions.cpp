@@ -176,6 +176,17 @@ Value Evaluator::arithmetic(char op, const Value& a, const Value& b, const Sourc
 
 Value Evaluator::compare(const std::string& op, const Value& a, const SourceRange& wa, const Value& b,
                          const SourceRange& wb) {
+    if (a.kind == Value::Kind::String && b.kind == Value::Kind::String) {
+        // POV compares strings as strcmp does.
+        const int order = a.text.compare(b.text);
+        const bool r = op == "<"    ? order < 0
+                       : op == "<=" ? order <= 0
+                       : op == ">"  ? order > 0
+                       : op == ">=" ? order >= 0
+                       : op == "="  ? order == 0
+                                    : order != 0;
+        return Value::number(r ? 1.0 : 0.0);
+    }
     double x = to_float(a, wa, "a float operand of '" + op + "'");
     double y = to_float(b, wb, "a float operand of '" + op + "'");
     bool r = op == "<"    ? x < y

@@ -70,6 +70,13 @@ TEST(ParserFunctions, PatternsAndPigmentsAsFunctions) {
     EXPECT_TRUE(p.function->callees[1]->pigment);
 }
 
+TEST(ParserExpressions, StringsCompareAsStrcmp) {
+    EXPECT_DOUBLE_EQ(declared("#declare R = (\"a\" != \"\") + (\"abc\" < \"abd\") * 2 + (\"x\" = \"x\") * 4 + "
+                              "(\"b\" <= \"a\") * 8;",
+                              "R"),
+                     7.0);
+}
+
 TEST(ParserFunctions, BadBodiesAreLocatedErrors) {
     const Diagnostic unknown = first_error("#declare F = function { x + nothing_here }");
     EXPECT_NE(unknown.message.find("unknown identifier 'nothing_here'"), std::string::npos);

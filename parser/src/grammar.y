@@ -138,7 +138,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <Edits<sg::Material>> texture_items material_items
 %nterm <std::shared_ptr<sg::Pigment>> pigment
 %nterm <Edits<sg::Pigment>> pigment_mods pigment_block pigment_edits
-%nterm <std::function<void(sg::Pigment&)>> pigment_start
+%nterm <std::function<void(sg::Pigment&)>> pigment_start unweighted_start
+%nterm <std::shared_ptr<sg::Pigment>> unweighted_pigment
 %nterm <sg::ImageMap> image_map image_items
 %nterm <std::shared_ptr<sg::Finish>> finish
 %nterm <Edits<sg::Finish>> finish_items reflection_items reflection_opts finish_block irid_items
@@ -743,6 +744,16 @@ pigment_start
   | "average"          { $$ = ev.average_pigment(LOC(@1)); }
   ;
 
+unweighted_pigment
+  : unweighted_start pigment_mods { $2.insert($2.begin(), $1); $$ = ev.build_pigment($2, LOC(@1)); }
+  ;
+
+unweighted_start
+  : PIGMENT_ID         { auto p = $1.value.pigment; $$ = [p](sg::Pigment& target) { target = *p; }; }
+  | pattern_name       { $$ = ev.patterned_pigment($1, LOC(@1)); }
+  | block_pattern_name { $$ = ev.patterned_pigment($1, LOC(@1)); }
+  ;
+
 block_colours
   : colour             { $$.push_back($1); }
   | block_colours opt_comma colour { $$ = std::move($1); $$.push_back($3); }
@@ -923,6 +934,10 @@ pigment_map_entries
   : %empty             { $$ = std::make_shared<std::vector<sg::PigmentMapEntry>>(); }
   | pigment_map_entries "[" arith opt_comma pigment_body "]"
       { $$ = $1; $$->push_back(sg::PigmentMapEntry{ev.to_float($3, @3, "a map value"), $5}); }
+  /* An average's entry may leave out its weight (POV's 1) when it starts
+   * with a pattern or a declared pigment rather than a number. */
+  | pigment_map_entries "[" unweighted_pigment "]"
+      { $$ = $1; $$->push_back(sg::PigmentMapEntry{sg::kUnweighted, $3}); }
   ;
 
 /* ----------------------------------------------------------------- normals */

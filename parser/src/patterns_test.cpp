@@ -278,6 +278,22 @@ TEST(ParserPatterns, AverageEntriesMayLeaveOutTheirWeight) {
               std::string::npos);
 }
 
+TEST(ParserPatterns, AveragePigmentEntriesMayLeaveOutTheirWeight) {
+    auto scene = parse_ok(
+        "#declare P = pigment { rgb 1 }\n"
+        "plane { z, 0 pigment { average pigment_map { [function { x } color_map { [0 rgb 0] [1 rgb 1] }] [P] [2 "
+        "bozo] } } }");
+    const sg::Pigment& p = material_of(scene).pigment;
+    ASSERT_EQ(p.pigment_map.size(), 3u);
+    EXPECT_DOUBLE_EQ(p.pigment_map[0].value, 1.0);
+    EXPECT_EQ(p.pigment_map[0].pigment->pattern.kind, sg::Pattern::Kind::Function);
+    EXPECT_DOUBLE_EQ(p.pigment_map[1].value, 1.0);
+    EXPECT_DOUBLE_EQ(p.pigment_map[2].value, 2.0);
+    EXPECT_NE(
+        first_error("plane { z, 0 pigment { gradient x pigment_map { [bozo] } } }").message.find("needs its value"),
+        std::string::npos);
+}
+
 TEST(ParserPatterns, BlockPatternNormalsOnePerBlock) {
     auto scene = parse_ok(
         "box { 0, 1 normal { checker normal { marble turbulence 0.5 } normal { radial sine_wave } } }\n"
