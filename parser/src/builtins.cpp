@@ -66,19 +66,20 @@ Value builtin_rand(Evaluator& ev, const std::vector<Value>& args, const SourceRa
 
 Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>& args, const SourceRange& where) {
     static const std::unordered_map<std::string, std::pair<int, int>> arity = {
-        {"abs", {1, 1}},          {"sqrt", {1, 1}},        {"sqr", {1, 1}},          {"pow", {2, 2}},
-        {"exp", {1, 1}},          {"log", {1, 1}},         {"ln", {1, 1}},           {"sin", {1, 1}},
-        {"cos", {1, 1}},          {"tan", {1, 1}},         {"asin", {1, 1}},         {"acos", {1, 1}},
-        {"atan", {1, 1}},         {"atan2", {2, 2}},       {"sinh", {1, 1}},         {"cosh", {1, 1}},
-        {"tanh", {1, 1}},         {"asinh", {1, 1}},       {"acosh", {1, 1}},        {"atanh", {1, 1}},
-        {"min", {1, 99}},         {"max", {1, 99}},        {"floor", {1, 1}},        {"ceil", {1, 1}},
-        {"mod", {2, 2}},          {"int", {1, 1}},         {"div", {2, 2}},          {"radians", {1, 1}},
-        {"degrees", {1, 1}},      {"vlength", {1, 1}},     {"vnormalize", {1, 1}},   {"vcross", {2, 2}},
-        {"vdot", {2, 2}},         {"vrotate", {2, 2}},     {"vaxis_rotate", {3, 3}}, {"seed", {1, 1}},
-        {"rand", {1, 1}},         {"select", {3, 4}},      {"concat", {1, 99}},      {"str", {3, 3}},
-        {"strlen", {1, 1}},       {"substr", {3, 3}},      {"chr", {1, 1}},          {"val", {1, 1}},
-        {"strupr", {1, 1}},       {"strlwr", {1, 1}},      {"vstr", {5, 5}},         {"asc", {1, 1}},
-        {"bitwise_and", {2, 99}}, {"bitwise_or", {2, 99}}, {"file_exists", {1, 1}}};
+        {"abs", {1, 1}},           {"sqrt", {1, 1}},        {"sqr", {1, 1}},          {"pow", {2, 2}},
+        {"exp", {1, 1}},           {"log", {1, 1}},         {"ln", {1, 1}},           {"sin", {1, 1}},
+        {"cos", {1, 1}},           {"tan", {1, 1}},         {"asin", {1, 1}},         {"acos", {1, 1}},
+        {"atan", {1, 1}},          {"atan2", {2, 2}},       {"sinh", {1, 1}},         {"cosh", {1, 1}},
+        {"tanh", {1, 1}},          {"asinh", {1, 1}},       {"acosh", {1, 1}},        {"atanh", {1, 1}},
+        {"min", {1, 99}},          {"max", {1, 99}},        {"floor", {1, 1}},        {"ceil", {1, 1}},
+        {"mod", {2, 2}},           {"int", {1, 1}},         {"div", {2, 2}},          {"radians", {1, 1}},
+        {"degrees", {1, 1}},       {"vlength", {1, 1}},     {"vnormalize", {1, 1}},   {"vcross", {2, 2}},
+        {"vdot", {2, 2}},          {"vrotate", {2, 2}},     {"vaxis_rotate", {3, 3}}, {"seed", {1, 1}},
+        {"rand", {1, 1}},          {"select", {3, 4}},      {"concat", {1, 99}},      {"str", {3, 3}},
+        {"strlen", {1, 1}},        {"substr", {3, 3}},      {"chr", {1, 1}},          {"val", {1, 1}},
+        {"strupr", {1, 1}},        {"strlwr", {1, 1}},      {"vstr", {5, 5}},         {"asc", {1, 1}},
+        {"bitwise_and", {2, 99}},  {"bitwise_or", {2, 99}}, {"file_exists", {1, 1}},  {"dimensions", {1, 1}},
+        {"dimension_size", {2, 2}}};
     auto expected = arity.find(name);
     if (expected == arity.end()) {
         error(where.begin, "unknown function '" + name + "'");
@@ -94,6 +95,22 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
     }
     Call c{*this, name, args, where};
     auto number = [&](double x) { return checked(Value::number(x), where, "the result of " + name + "()"); };
+
+    if (name == "dimensions" || name == "dimension_size") {
+        const Value& a = args[0];
+        if (a.kind != Value::Kind::Array || !a.array) {
+            error(where.begin, name + "() needs an array, got " + describe(a));
+            return Value::number(0.0);
+        }
+        if (name == "dimensions") return number(double(a.array->sizes.size()));
+        const double d = c.f(1);  // POV counts dimensions from 1
+        if (!(d >= 1.0) || d > double(a.array->sizes.size())) {
+            error(where.begin, "dimension_size(): the array has " + std::to_string(a.array->sizes.size()) +
+                                   " dimension(s), asked for " + std::to_string(d));
+            return Value::number(0.0);
+        }
+        return number(double(a.array->sizes[std::size_t(d) - 1]));
+    }
 
     // Float functions.
     if (name == "abs") return number(std::fabs(c.f(0)));

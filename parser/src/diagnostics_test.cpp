@@ -113,7 +113,7 @@ const BadScene kBadScenes[] = {
     {"RgbfNeedsFour", "#declare C = rgbf <1, 1, 1>;", "rgbf expects", 1, 19},
     {"SingularMatrix", "sphere { 0, 1 matrix <0,0,0, 0,0,0, 0,0,0, 0,0,0> }", "singular", 1, 23},
     {"ForStepZero", "#for (I, 0, 10, 0) #end", "step is 0", 1, 1},
-    {"ArraysUnsupported", "#declare A[3] = 1;", "arrays are not supported", 1, 10},
+    {"ElementOfNoArray", "#declare A[3] = 1;", "'A' is not an array", 1, 10},
     {"DirectiveInsideValue", "#declare A = 1 + #if (1) 2 #end;", "unexpected directive", 1, 18},
 };
 

@@ -103,10 +103,8 @@ void Evaluator::directive_declare(const RawToken& d, bool local) {
         return abort_parse();
     }
     if (m_aborted) return;
-    if (take_punct("[")) {
-        error(where, "arrays are not supported by lancer ('" + name + "[...]')");
-        return abort_parse();
-    }
+    if (const RawToken* next = peek_raw(); next && next->kind == RawKind::Punct && next->text == "[")
+        return assign_array_element(name, d, local, where);
     if (!expect_raw_punct("=", "after '#" + d.text + " " + name + "'")) return;
     // A block lancer ignores (sky_sphere, fog, media …) declares nothing;
     // the declaration must not read on into what follows.
@@ -131,6 +129,8 @@ void Evaluator::directive_declare(const RawToken& d, bool local) {
         named->name = name;
         value.texture = named;
     }
+    // #declare B = A copies the array (a macro's argument stays A itself).
+    if (value.kind == Value::Kind::Array && value.array) value.array = std::make_shared<ArrayData>(*value.array);
     store(name, std::move(value), local, where);
     if (deprecation) m_deprecated[name] = *deprecation;
 }

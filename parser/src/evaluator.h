@@ -301,6 +301,16 @@ class Evaluator {
     // (bump_size in an image_map, use_alpha in a bump_map).
     void refuse_foreign_image_items(const sg::ImageMap& image, const char* block);
     PatternEdit image_pattern(const sg::ImageMap& image, const sg::SourceLocation& at);
+    // Arrays (arrays.cpp).
+    int array_size(const Value& size, const SourceRange& where);
+    Value make_array(const std::vector<int>& sizes, const ArrayInit& init, const sg::SourceLocation& at);
+    // The element named by the [i][j]… that follows in the token stream.
+    Value array_element(const Value& array, const sg::SourceLocation& at);
+    // #declare A[i]… = value: reads the indices and the value, and stores it.
+    void assign_array_element(const std::string& name, const RawToken& directive, bool local,
+                              const sg::SourceLocation& where);
+    bool read_array_indices(const ArrayData& data, const sg::SourceLocation& at, std::size_t& flat,
+                            std::vector<int>& indices);
     // Functions (functions.cpp, patterns.cpp).
     Value call_function(const Value& function, const std::vector<Value>& arguments, const SourceRange& where);
     Value pattern_function(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);
@@ -415,6 +425,7 @@ class Evaluator {
     // a FUNCTION_LITERAL, or FUNCTION_OPEN before a pattern or pigment body.
     std::optional<Symbol> read_function(const RawToken& keyword);
     Symbol symbol_for_identifier(const RawToken& raw);
+    Kind token_for_value(const Value& value);
     Symbol make_symbol(Kind kind, const RawToken& raw, Value value = {});
     const RawToken* peek_raw();
     const RawToken* take_raw();

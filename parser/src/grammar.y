@@ -42,6 +42,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %token END 0 "end of file"
 %token START_SCENE "start of scene" START_VALUE "start of value" START_EXPR "start of expression"
        START_ARGS "start of arguments" START_COND "start of condition" START_STRING "start of file name"
+       START_INDEX "start of an index"
 %token LBRACE "{" RBRACE "}" LPAREN "(" RPAREN ")" LBRACKET "[" RBRACKET "]"
        LT "<" GT ">" LE "<=" GE ">=" EQ "=" NE "!=" PLUS "+" MINUS "-" STAR "*" SLASH "/"
        COMMA "," SEMI ";" DOT "." QUESTION "?" COLON ":" AND "&" OR "|" NOT "!"
@@ -71,7 +72,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        CHECKER "checker" IMAGE_MAP "image_map" PNG "png" JPEG "jpeg" EXR "exr" HDR "hdr" TGA "tga"
        TIFF "tiff" MAP_TYPE "map_type" INTERPOLATE "interpolate" ONCE "once" ALL "all" GAMMA "gamma"
        IMAGE_PATTERN "image_pattern" USE_ALPHA "use_alpha" IRID "irid" THICKNESS "thickness"
-       IRID_WAVELENGTH "irid_wavelength" FUNCTION_OPEN "function {"
+       IRID_WAVELENGTH "irid_wavelength" FUNCTION_OPEN "function {" ARRAY "array"
        QUICK_COLOR "quick_color"
        AMBIENT "ambient" EMISSION "emission" DIFFUSE "diffuse" BRILLIANCE "brilliance"
        SPECULAR "specular" ROUGHNESS "roughness" PHONG "phong" PHONG_SIZE "phong_size"
@@ -129,6 +130,9 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <Value> expr arith postfix primary colour colour_base declared_value string_value bare_colour
 %nterm <std::vector<Value>> arith_seq expr_list opt_args vector_items expr_seq macro_args macro_arg_list
 %nterm <Value> macro_arg vector_item
+%nterm <std::vector<int>> array_sizes
+%nterm <ArrayInit> array_init array_item
+%nterm <std::vector<ArrayInit>> array_items
 %nterm <std::string> component param_name
 %nterm <ShapePtr> object object_ref
 %nterm <Edits<ShapeValue>> object_mods union_items mesh_items
@@ -221,6 +225,26 @@ start
    * token after them is read only once the directive has run. */
   | START_COND "(" expr ")"  { ev.finish_nested(std::move($3), @3, !yyla.empty()); YYACCEPT; }
   | START_STRING string_value { ev.finish_nested(std::move($2), @2, !yyla.empty()); YYACCEPT; }
+  | START_INDEX "[" expr "]" { ev.finish_nested(std::move($3), @3, !yyla.empty()); YYACCEPT; }
+  ;
+
+array_sizes
+  : "[" expr "]"       { $$.push_back(ev.array_size($2, @2)); }
+  | array_sizes "[" expr "]" { $$ = std::move($1); $$.push_back(ev.array_size($3, @3)); }
+  ;
+
+array_init
+  : "{" array_items opt_comma "}" { $$.items = std::move($2); $$.location = LOC(@1); }
+  ;
+
+array_items
+  : array_item         { $$.push_back(std::move($1)); }
+  | array_items "," array_item { $$ = std::move($1); $$.push_back(std::move($3)); }
+  ;
+
+array_item
+  : declared_value     { $$.value = std::move($1); $$.location = LOC(@1); }
+  | array_init         { $$ = std::move($1); }
   ;
 
 string_value
@@ -259,6 +283,10 @@ declared_value
   | transform_block    { $$.kind = Value::Kind::Transform; $$.transform = $1; }
   | normal             { $$.kind = Value::Kind::Normal; $$.normal = $1; }
   | FUNCTION_LITERAL   { $$ = std::move($1.value); }
+  /* The barrier keeps a directive after `array[N]` (no ; needed) unrun
+   * while it is only looked at. */
+  | "array" begin_value array_sizes end_value { $$ = ev.make_array($3, {}, LOC(@1)); }
+  | "array" begin_value array_sizes end_value array_init { $$ = ev.make_array($3, $5, LOC(@1)); }
   | FUNCTION_OPEN "pattern" "{" pigment_edits "}" "}" { $$ = ev.pattern_function($4, LOC(@1)); }
   | FUNCTION_OPEN pigment "}" { $$ = ev.pigment_function($2, LOC(@1)); }
   | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
@@ -1314,6 +1342,10 @@ macro_arg
   | finish             { $$.kind = Value::Kind::Finish; $$.finish = $1; }
   | normal             { $$.kind = Value::Kind::Normal; $$.normal = $1; }
   | FUNCTION_LITERAL   { $$ = std::move($1.value); }
+  /* The barrier keeps a directive after `array[N]` (no ; needed) unrun
+   * while it is only looked at. */
+  | "array" begin_value array_sizes end_value { $$ = ev.make_array($3, {}, LOC(@1)); }
+  | "array" begin_value array_sizes end_value array_init { $$ = ev.make_array($3, $5, LOC(@1)); }
   | FUNCTION_OPEN "pattern" "{" pigment_edits "}" "}" { $$ = ev.pattern_function($4, LOC(@1)); }
   | FUNCTION_OPEN pigment "}" { $$ = ev.pigment_function($2, LOC(@1)); }
   | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }

@@ -42,13 +42,13 @@ const std::unordered_map<std::string, Kind>& punct_table() {
 
 const std::unordered_set<std::string>& builtin_names() {
     static const std::unordered_set<std::string> names = {
-        "abs",         "sqrt",         "pow",        "exp",     "log",     "ln",         "sin",    "cos",
-        "tan",         "asin",         "acos",       "atan",    "atan2",   "sinh",       "cosh",   "tanh",
-        "asinh",       "acosh",        "atanh",      "min",     "max",     "floor",      "ceil",   "mod",
-        "int",         "div",          "radians",    "degrees", "vlength", "vnormalize", "vcross", "vdot",
-        "vrotate",     "vaxis_rotate", "seed",       "rand",    "select",  "concat",     "str",    "strlen",
-        "substr",      "chr",          "val",        "strupr",  "strlwr",  "vstr",       "asc",    "sqr",
-        "bitwise_and", "bitwise_or",   "file_exists"};
+        "abs",         "sqrt",         "pow",         "exp",        "log",           "ln",         "sin",    "cos",
+        "tan",         "asin",         "acos",        "atan",       "atan2",         "sinh",       "cosh",   "tanh",
+        "asinh",       "acosh",        "atanh",       "min",        "max",           "floor",      "ceil",   "mod",
+        "int",         "div",          "radians",     "degrees",    "vlength",       "vnormalize", "vcross", "vdot",
+        "vrotate",     "vaxis_rotate", "seed",        "rand",       "select",        "concat",     "str",    "strlen",
+        "substr",      "chr",          "val",         "strupr",     "strlwr",        "vstr",       "asc",    "sqr",
+        "bitwise_and", "bitwise_or",   "file_exists", "dimensions", "dimension_size"};
     return names;
 }
 
@@ -63,9 +63,8 @@ const std::unordered_set<std::string>& ignored_blocks() {
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
     static const std::unordered_set<std::string> names = {
-        "isosurface",       "parametric",       "lemon",     "array",   "spline",       "fisheye",
-        "panoramic",        "ultra_wide_angle", "omnimax",   "layered", "material_map", "tiles",
-        "interior_texture", "isosurface",       "dictionary"};
+        "isosurface", "parametric", "lemon",        "spline", "fisheye",          "panoramic",  "ultra_wide_angle",
+        "omnimax",    "layered",    "material_map", "tiles",  "interior_texture", "isosurface", "dictionary"};
     return names;
 }
 
@@ -257,8 +256,20 @@ Evaluator::Symbol Evaluator::next_token() {
                 }
                 continue;
             }
+            if (const Value* named = lookup(raw->text); named && named->kind == Value::Kind::Array) {
+                const RawToken* next = peek_raw();
+                if (next && next->kind == RawKind::Punct && next->text == "[") {
+                    Value element = array_element(*named, raw->location);
+                    m_last_returned.reset();
+                    if (m_aborted) continue;
+                    m_previous_word = raw->text;
+                    return make_symbol(token_for_value(element), *raw, std::move(element));
+                }
+            }
+            // A macro call seen only as the lookahead after a value (no ';'
+            // after `#declare S = ""`) runs once the value is stored.
             auto macro = m_macros.find(raw->text);
-            if (macro != m_macros.end() && !lookup(raw->text)) {
+            if (macro != m_macros.end() && !lookup(raw->text) && !directives_blocked()) {
                 auto keep = macro->second;
                 expand_macro(*raw, *keep);
                 continue;
@@ -357,27 +368,9 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
                 warning(raw.location, "'" + name + "' is deprecated" + (d.message.empty() ? "" : ": " + d.message));
             d.warned = true;
         }
-        using VK = Value::Kind;
-        Kind kind = Parser::token::TOK_VALUE_ID;
-        switch (value->kind) {
-        case VK::Object: kind = Parser::token::TOK_OBJECT_ID; break;
-        case VK::Texture: kind = Parser::token::TOK_TEXTURE_ID; break;
-        case VK::Pigment: kind = Parser::token::TOK_PIGMENT_ID; break;
-        case VK::Finish: kind = Parser::token::TOK_FINISH_ID; break;
-        case VK::Interior: kind = Parser::token::TOK_INTERIOR_ID; break;
-        case VK::Camera: kind = Parser::token::TOK_CAMERA_ID; break;
-        case VK::Light: kind = Parser::token::TOK_LIGHT_ID; break;
-        case VK::Transform: kind = Parser::token::TOK_TRANSFORM_ID; break;
-        case VK::Normal: kind = Parser::token::TOK_NORMAL_ID; break;
-        case VK::ColorMap: kind = Parser::token::TOK_COLOR_MAP_ID; break;
-        case VK::PigmentMap: kind = Parser::token::TOK_PIGMENT_MAP_ID; break;
-        case VK::NormalMap: kind = Parser::token::TOK_NORMAL_MAP_ID; break;
-        case VK::Function: kind = Parser::token::TOK_FUNCTION_ID; break;
-        default: break;
-        }
         Value copy = *value;
         copy.boolean_literal = false;
-        return make_symbol(kind, raw, std::move(copy));
+        return make_symbol(token_for_value(copy), raw, std::move(copy));
     }
     if (unsupported_words().count(name)) {
         error(raw.location, "'" + name + "' is a POV-Ray feature that lancer does not support");
@@ -387,6 +380,27 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
     }
     m_last_undeclared = name;
     return make_symbol(Parser::token::TOK_UNDECLARED_ID, raw);
+}
+
+// Declared values reach the grammar as tokens of their kind.
+Evaluator::Kind Evaluator::token_for_value(const Value& value) {
+    using VK = Value::Kind;
+    switch (value.kind) {
+    case VK::Object: return Parser::token::TOK_OBJECT_ID;
+    case VK::Texture: return Parser::token::TOK_TEXTURE_ID;
+    case VK::Pigment: return Parser::token::TOK_PIGMENT_ID;
+    case VK::Finish: return Parser::token::TOK_FINISH_ID;
+    case VK::Interior: return Parser::token::TOK_INTERIOR_ID;
+    case VK::Camera: return Parser::token::TOK_CAMERA_ID;
+    case VK::Light: return Parser::token::TOK_LIGHT_ID;
+    case VK::Transform: return Parser::token::TOK_TRANSFORM_ID;
+    case VK::Normal: return Parser::token::TOK_NORMAL_ID;
+    case VK::ColorMap: return Parser::token::TOK_COLOR_MAP_ID;
+    case VK::PigmentMap: return Parser::token::TOK_PIGMENT_MAP_ID;
+    case VK::NormalMap: return Parser::token::TOK_NORMAL_MAP_ID;
+    case VK::Function: return Parser::token::TOK_FUNCTION_ID;
+    default: return Parser::token::TOK_VALUE_ID;
+    }
 }
 
 bool Evaluator::skip_ignored_block(const RawToken& keyword) {

@@ -46,6 +46,7 @@ std::string describe(Value::Kind kind) {
     case Value::Kind::PigmentMap: return "a pigment_map";
     case Value::Kind::NormalMap: return "a normal_map";
     case Value::Kind::Function: return "a function";
+    case Value::Kind::Array: return "an array";
     }
     return "a value";
 }

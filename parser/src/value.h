@@ -36,6 +36,8 @@ struct CameraSpec {
     sg::SourceLocation location_in_source;
 };
 
+struct ArrayData;
+
 struct Value {
     enum class Kind {
         Float,
@@ -54,7 +56,8 @@ struct Value {
         ColorMap,
         PigmentMap,
         NormalMap,
-        Function
+        Function,
+        Array
     };
     Kind kind = Kind::Float;
     // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
@@ -74,6 +77,7 @@ struct Value {
     std::shared_ptr<const std::vector<sg::PigmentMapEntry>> pigment_map;
     std::shared_ptr<const std::vector<sg::NormalMapEntry>> normal_map;
     sg::FunctionRef function;
+    std::shared_ptr<ArrayData> array;  // Array: shared by reference (macro arguments), copied by #declare
     sg::Mat4 transform{1.0};
     sg::SourceLocation location;  // where it was written, when a check needs it later
 
@@ -89,6 +93,19 @@ struct Value {
         result.v[0] = x;
         return result;
     }
+};
+
+// POV's array[n1][n2]…: elements in row-major order, unset until assigned.
+struct ArrayData {
+    std::vector<int> sizes;
+    std::vector<std::optional<Value>> elements;
+};
+
+// An array initializer as written: a value, or a braced list of them.
+struct ArrayInit {
+    std::optional<Value> value;
+    std::vector<ArrayInit> items;
+    sg::SourceLocation location;
 };
 
 // "a float", "a 3-vector", "a colour", "an object" ... for messages.
