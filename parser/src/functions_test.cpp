@@ -77,6 +77,18 @@ TEST(ParserExpressions, StringsCompareAsStrcmp) {
                      7.0);
 }
 
+TEST(ParserFunctions, MacrosPassAndBuildFunctions) {
+    EXPECT_DOUBLE_EQ(declared("#declare G = function { x + 1 }\n"
+                              "#macro Twice(F) function { F(x, y, z) * 2 } #end\n"
+                              "#declare H = Twice(G)\n"
+                              "#macro Apply(F) F(1, 0, 0) #end\n"
+                              "#declare R = Apply(H) + Apply(function { x * 10 });",
+                              "R"),
+                     14.0);
+    // A macro call inside an expression and in a directive's argument.
+    EXPECT_DOUBLE_EQ(declared("#macro Sq(A) (A * A) #end\n#declare R = 1 + Sq(3);", "R"), 10.0);
+}
+
 TEST(ParserFunctions, BadBodiesAreLocatedErrors) {
     const Diagnostic unknown = first_error("#declare F = function { x + nothing_here }");
     EXPECT_NE(unknown.message.find("unknown identifier 'nothing_here'"), std::string::npos);

@@ -1324,6 +1324,7 @@ macro_arg_list
 
 macro_arg
   : colour             { $$ = std::move($1); }
+  | FUNCTION_ID        { $$ = std::move($1.value); }
   | OBJECT_ID          { $$ = std::move($1.value); }
   | TEXTURE_ID         { $$ = std::move($1.value); }
   | PIGMENT_ID         { $$ = std::move($1.value); }

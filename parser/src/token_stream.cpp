@@ -249,7 +249,7 @@ Evaluator::Symbol Evaluator::next_token() {
                     continue;
                 }
             }
-            if (raw->text == "function" && !lookup(raw->text) && !directives_blocked()) {
+            if (raw->text == "function" && !lookup(raw->text)) {
                 if (std::optional<Symbol> function = read_function(*raw)) {
                     m_last_returned.reset();
                     return std::move(*function);
@@ -266,10 +266,8 @@ Evaluator::Symbol Evaluator::next_token() {
                     return make_symbol(token_for_value(element), *raw, std::move(element));
                 }
             }
-            // A macro call seen only as the lookahead after a value (no ';'
-            // after `#declare S = ""`) runs once the value is stored.
             auto macro = m_macros.find(raw->text);
-            if (macro != m_macros.end() && !lookup(raw->text) && !directives_blocked()) {
+            if (macro != m_macros.end() && !lookup(raw->text)) {
                 auto keep = macro->second;
                 expand_macro(*raw, *keep);
                 continue;
