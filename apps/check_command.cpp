@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "lancer/host/scene_compiler.h"
 #include "lancer/parser.h"
 #include "lancer/scene_summary.h"
 #include "render_job.h"
@@ -51,6 +52,8 @@ Command add_check_command(CLI::App& app) {
             parse_options.image_height = options->height > 0 ? options->height : options->width * 3 / 4;
             parse_options.image_size_from_command_line = true;
         }
+        const auto natives = make_parse_time_function_natives();
+        parse_options.function_natives = natives.get();
         ParseResult result = parse_scene_file(options->scene, parse_options);
         int warnings = 0;
         for (const auto& diagnostic : result.diagnostics) {

@@ -19,6 +19,8 @@ std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request) {
         options.image_height = *request.image_height;
         options.image_size_from_command_line = true;
     }
+    const auto natives = make_parse_time_function_natives();
+    options.function_natives = natives.get();
     ParseResult parsed = parse_scene_file(request.path, options);
     for (const Diagnostic& diagnostic : parsed.diagnostics) print_diagnostic(diagnostic);
     if (!parsed.ok()) return std::nullopt;

@@ -1,7 +1,10 @@
 // The command line's own contract: version, usage errors.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "run_command.h"
+#include "temp_folder.h"
 
 namespace lancer::test {
 
@@ -27,6 +30,18 @@ TEST(Cli, CheckNamesTheIntegratorARenderWouldUse) {
     result = run_lancer("check " + scenes + "hard_shadows.pov");  // render_settings names shadow
     EXPECT_EQ(result.exit_code, 0) << result.output;
     EXPECT_NE(result.output.find("integrator: shadow\n"), std::string::npos) << result.output;
+}
+
+// Noise and pattern functions called while parsing are the renderer's,
+// with POV-Ray's values (povray 3.7 #debug prints 0.612779047 0.512266456).
+TEST(Cli, FunctionsCalledWhileParsingUseTheRenderersNoiseAndPatterns) {
+    TempFolder folder;
+    const std::string scene = (folder.path() / "noise.pov").string();
+    std::ofstream(scene) << "#include \"functions.inc\"\n#declare P = function { pattern { agate } }\n"
+                            "#debug concat(str(f_noise3d(0.3, 0.6, 0.9), 0, 9), \" \", str(P(0.3, 0.6, 0.9), 0, 9))\n";
+    const CommandResult result = run_lancer("check '" + scene + "'");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("#debug: 0.612779047 0.512266456"), std::string::npos) << result.output;
 }
 
 }  // namespace lancer::test

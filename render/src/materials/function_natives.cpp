@@ -42,4 +42,38 @@ std::array<double, 5> RenderFunctionNatives::pigment(const sg::Pigment& pigment,
     return {c.rgb.r, c.rgb.g, c.rgb.b, c.filter, c.transmit};
 }
 
+namespace {
+
+// For functions called while parsing (single-threaded): each pattern and
+// pigment is compiled when asked for, as the scene graph may free and reuse
+// them between calls.
+class ParseTimeNatives final : public sg::FunctionNatives {
+  public:
+    double noise(const glm::dvec3& p, int generator) const override {
+        return pov_noise(p,
+                         generator >= 1 && generator <= 3 ? NoiseGenerator(generator) : NoiseGenerator::RangeCorrected);
+    }
+    double pattern(const sg::Pattern& pattern, const glm::dvec3& p) const override {
+        try {
+            return compile_pattern(pattern, MaterialBuild()).value(p);
+        } catch (const std::exception& e) {
+            throw sg::FunctionError(e.what());
+        }
+    }
+    std::array<double, 5> pigment(const sg::Pigment& pigment, const glm::dvec3& p) const override {
+        try {
+            const TextureSample c = make_point_pigment(pigment, MaterialBuild())->at(p, PatternContext{});
+            return {c.rgb.r, c.rgb.g, c.rgb.b, c.filter, c.transmit};
+        } catch (const std::exception& e) {
+            throw sg::FunctionError(e.what());
+        }
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<sg::FunctionNatives> make_parse_time_function_natives() {
+    return std::make_unique<ParseTimeNatives>();
+}
+
 }  // namespace lancer

@@ -16,4 +16,8 @@ namespace lancer {
 // location on bad input (unreadable image, mesh index out of range).
 std::unique_ptr<RenderScene> compile_scene(sg::SceneGraph graph);
 
+// What POV-Ray's functions need of the renderer (noise, patterns,
+// pigments) while a scene is parsed: ParseOptions::function_natives.
+std::unique_ptr<sg::FunctionNatives> make_parse_time_function_natives();
+
 }  // namespace lancer
