@@ -10,6 +10,7 @@ packages=(
   libglm-dev libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools
   libtinyobjloader-dev libcli11-dev libfreetype-dev fonts-povray
+  povray-includes
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 

@@ -1135,7 +1135,7 @@ finish_item
   | "reflection" "{" reflection_items "}"
       { auto edits = $3; $$ = [edits](sg::Finish& f) { f.reflection = sg::Reflection{}; for (auto& e : edits) e(f); }; }
   | "conserve_energy" opt_bool { bool on = $2; $$ = [on](sg::Finish& f) { f.conserve_energy = on; }; }
-  | "crand" expr       { $$ = [](sg::Finish&) {}; ev.ignored(LOC(@1), "crand"); }
+  | "crand" expr       { $$ = ev.finish_scalar("crand", false, $2, @2); }
   ;
 
 irid_items

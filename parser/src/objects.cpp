@@ -350,6 +350,7 @@ std::function<void(sg::Finish&)> Evaluator::finish_scalar(const std::string& nam
             f.diffuse_albedo = albedo;
         };
     if (name == "diffuse_back") return [x](sg::Finish& f) { f.diffuse_back = x; };
+    if (name == "crand") return [x](sg::Finish& f) { f.crand = x; };
     if (name == "brilliance") return [x](sg::Finish& f) { f.brilliance = x; };
     if (name == "specular")
         return [x, albedo](sg::Finish& f) {

@@ -46,7 +46,7 @@ class DiffusePointLanes {
         const Material& material = *hit.material;
         return hit.emitter == nullptr && material.pigment_is_constant() && !material.has_glossy() &&
                material.parameters().brilliance == 1.0f && material.parameters().diffuse_back == 0.0f &&
-               !material.has_iridescence();
+               material.parameters().crand == 0.0f && !material.has_iridescence();
     }
 
     // Radiance towards rays[k] from hits[k] (covered hits), k < count <=

@@ -340,6 +340,7 @@ struct Finish {
     double phong_size = 40.0;
     double metallic = 0.0;
     double diffuse_back = 0.0;  // POV's `diffuse a, b`: light arriving from behind the surface
+    double crand = 0.0;         // POV's grain: a random share taken from the diffuse light
     // POV's irid { amount thickness t turbulence f }: thin-film tint of the
     // light the surface reflects.
     double irid = 0.0;

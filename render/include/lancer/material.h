@@ -80,6 +80,7 @@ struct MaterialParameters {
     // POV's local lighting, kept by raycast, shadow, whitted and gather;
     // path, a physical model, leaves them out.
     float diffuse_back = 0.0f;
+    float crand = 0.0f;  // POV's crand: grain taken from the diffuse light (classic integrators)
     float irid = 0.0f;
     float irid_thickness = 0.0f;
     float irid_turbulence = 0.0f;

@@ -39,6 +39,7 @@ MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment, 
     p.reflection_exponent = float(m.finish.reflection.exponent);
     p.conserve_energy = m.finish.conserve_energy;
     p.diffuse_back = float(m.finish.diffuse_back);
+    p.crand = float(m.finish.crand);
     p.irid = float(m.finish.irid);
     p.irid_thickness = float(m.finish.irid_thickness);
     p.irid_turbulence = float(m.finish.irid_turbulence);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "lancer/material.h"
+#include "lancer/shading/local_shading.h"
 
 namespace lancer {
 namespace {
@@ -51,6 +52,71 @@ TEST(PovFinish, AlbedoShares) {
     EXPECT_FLOAT_EQ(phong_albedo(40.0f), 2.0f / 41.0f);
     const float k = 20.0f;
     EXPECT_NEAR(1.0f / specular_albedo(k), (k + 2.0f) / (4.0f * (2.0f - std::pow(2.0f, -k / 2.0f))), 1e-5f);
+}
+
+// What one point light of colour C along wi gives a white surface facing
+// +z seen from +z, through the classic integrators' local shading.
+LobeRadiance lit(const MaterialParameters& p, const Vec3& position, const Vec3& wi) {
+    const Material material(p);
+    Hit hit;
+    hit.position = position;
+    hit.geometric_normal = hit.shading_normal = Vec3(0.0f, 0.0f, 1.0f);
+    ShadingContext at{
+        hit, material, SurfaceSample{Color(1.0f), 0.0f, 0.0f}, Vec3(0.0f, 0.0f, 1.0f), Vec3(0.0f, 0.0f, 1.0f), true};
+    if (material.has_iridescence()) at.film_thickness = material.film_thickness(position);
+    LightSample sample;
+    sample.radiance = Color(kPi);  // POV's light colour 1
+    sample.wi = wi;
+    sample.pdf = 1.0f;
+    sample.is_delta = true;
+    return reflect_light_sample(at, sample);
+}
+
+TEST(PovFinish, DiffuseBacksideLightsFromBehindWithTheSecondValue) {
+    MaterialParameters p;
+    p.diffuse = 0.6f;
+    const Vec3 behind = glm::normalize(Vec3(0.3f, 0.0f, -1.0f));
+    EXPECT_FLOAT_EQ(lit(p, Vec3(0.0f), behind).diffuse.g, 0.0f);  // none without it
+    p.diffuse_back = 0.4f;
+    EXPECT_NEAR(lit(p, Vec3(0.0f), behind).diffuse.g, 0.4f * -behind.z, 1e-5f);
+    p.phong = 1.0f;  // no highlight from behind
+    EXPECT_FLOAT_EQ(lit(p, Vec3(0.0f), behind).glossy.g, 0.0f);
+}
+
+TEST(PovFinish, IridTintsEachChannelByThinFilmInterference) {
+    MaterialParameters p;
+    p.diffuse = 1.0f;
+    p.irid = 0.5f;
+    p.irid_thickness = 0.3f;
+    const Vec3 wi = glm::normalize(Vec3(0.0f, 0.6f, 0.8f));
+    const LobeRadiance r = lit(p, Vec3(0.0f), wi);
+    const float phase = 2.0f * kPi * 0.3f * (0.8f + 1.0f);
+    EXPECT_NEAR(r.diffuse.r, 0.8f * (1.0f + 0.5f * std::cos(phase / 0.70f)), 1e-4f);
+    EXPECT_NEAR(r.diffuse.g, 0.8f * (1.0f + 0.5f * std::cos(phase / 0.52f)), 1e-4f);
+    EXPECT_NEAR(r.diffuse.b, 0.8f * (1.0f + 0.5f * std::cos(phase / 0.48f)), 1e-4f);
+}
+
+TEST(PovFinish, CrandTakesAGrainOfHalfItsValueOnAverage) {
+    MaterialParameters p;
+    p.diffuse = 1.0f;
+    p.crand = 0.4f;
+    const Vec3 wi(0.0f, 0.0f, 1.0f);
+    double sum = 0.0, lowest = 1.0, highest = 0.0;
+    constexpr int kPoints = 4000;
+    for (int i = 0; i < kPoints; ++i) {
+        const double value = lit(p, Vec3(0.01f * float(i), 0.37f, 0.0f), wi).diffuse.g;
+        sum += value;
+        lowest = std::min(lowest, value);
+        highest = std::max(highest, value);
+    }
+    // 1 - 0.4 u, u uniform in [0, 1): mean 0.8 (standard error ~0.002).
+    EXPECT_NEAR(sum / kPoints, 0.8, 0.01);
+    EXPECT_GE(lowest, 0.6 - 1e-6);
+    EXPECT_LE(highest, 1.0 + 1e-6);
+    EXPECT_LT(lowest, 0.62);  // the grain spans its range
+    EXPECT_GT(highest, 0.98);
+    // The same point gives the same grain: a render repeats.
+    EXPECT_EQ(lit(p, Vec3(0.5f), wi).diffuse.g, lit(p, Vec3(0.5f), wi).diffuse.g);
 }
 
 }  // namespace

@@ -8,9 +8,11 @@
 #pragma once
 
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "lancer/render_scene.h"
+#include "lancer/shading/point_hash.h"
 #include "lancer/shading/shadow_rays.h"
 
 namespace lancer {
@@ -76,6 +78,14 @@ inline LobeRadiance reflect_light_sample(const ShadingContext& at, const LightSa
     } else {
         // POV lights a surface from behind only through diffuse backside.
         reflected.diffuse = at.material.backside_diffuse_brdf(at.surface, at.normal, sample.wi) * incident;
+    }
+    if (const float crand = at.material.parameters().crand; crand > 0.0f) {
+        // POV's crand takes a random share of crand * pigment * light from
+        // each light's diffuse: a grain, here a hash of point and light.
+        std::uint32_t direction;
+        std::memcpy(&direction, &sample.wi.x, sizeof direction);
+        const float grain = float(point_hash(at.hit.position, direction));
+        reflected.diffuse -= (crand * grain / (kPi * sample.pdf)) * at.surface.pigment * sample.radiance;
     }
     if (at.material.has_iridescence())
         reflected *= at.material.iridescence(at.film_thickness, at.normal, at.wo, sample.wi);

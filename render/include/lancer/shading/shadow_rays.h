@@ -11,6 +11,7 @@
 
 #include "lancer/area_light_grid.h"
 #include "lancer/render_scene.h"
+#include "lancer/shading/point_hash.h"
 
 namespace lancer {
 
@@ -130,15 +131,7 @@ class PovAreaShadow {
     // POV jitters at random from render to render; lancer's jitter is a
     // hash of the shading point and the grid point, so a render repeats.
     double jitter(std::size_t index, int axis) const {
-        std::uint32_t bits[3];
-        std::memcpy(bits, &m_from.position, sizeof bits);
-        std::uint64_t h = (std::uint64_t(bits[0]) << 32 | bits[1]) ^ (std::uint64_t(bits[2]) << 16) ^
-                          (std::uint64_t(index) << 1 | std::uint64_t(axis)) * 0x9e3779b97f4a7c15ull;
-        // splitmix64's finaliser
-        h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-        h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-        h ^= h >> 31;
-        return double(h >> 11) * 0x1.0p-53;
+        return point_hash(m_from.position, std::uint64_t(index) << 1 | std::uint64_t(axis));
     }
 
     const RenderScene& m_scene;
