@@ -21,6 +21,26 @@ namespace lancer::pattern_detail {
 inline constexpr double kPovEpsilon = 1.0e-10;
 inline constexpr double kTwoPi = 6.283185307179586476925286766559;
 
+// (int)v as POV writes it, defined for every double: truncated toward 0,
+// held inside int's range, 0 for NaN (points far out, or not finite, must
+// not be undefined behaviour).
+inline int truncated_int(double v) {
+    if (!(v == v)) return 0;
+    if (v >= 2147483647.0) return 2147483647;
+    if (v <= -2147483648.0) return -2147483647 - 1;
+    return int(v);
+}
+
+// The same for the 64-bit cell counts of the pavings, kept within 2^61 so
+// doubling them cannot overflow.
+inline std::int64_t truncated_int64(double v) {
+    constexpr double kLimit = 2305843009213693952.0;  // 2^61
+    if (!(v == v)) return 0;
+    if (v >= kLimit) return std::int64_t(1) << 61;
+    if (v <= -kLimit) return -(std::int64_t(1) << 61);
+    return std::int64_t(v);
+}
+
 // POV's cycloidal(): sin(2 pi v) of v's fraction, the fraction rounded
 // through 50000ths as POV does, so values agree to the last bit.
 inline double cycloidal(double v) {

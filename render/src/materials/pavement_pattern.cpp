@@ -329,7 +329,7 @@ double square_pavement(const PatternSetup& s, const glm::dvec3& p) {
     const TileMap* map = find_map(kSquarePavings, std::size(kSquarePavings), s.pavement_tiles, s.pavement_number);
     if (!map) return 0.0;
     const double fx = std::floor(p.x), fz = std::floor(p.z);
-    const SquareCell cell = square_cell(*map, std::int64_t(fx), std::int64_t(fz));
+    const SquareCell cell = square_cell(*map, truncated_int64(fx), truncated_int64(fz));
     const double x = p.x - fx, z = p.z - fz;
 
     // A tile turning through this cell: bordered on the two sides away
@@ -602,7 +602,7 @@ struct TrianglePoint {
 TrianglePoint locate_triangle(double px, double pz) {
     const double fx = std::floor(px), fz = std::floor(pz / kSqrt3);
     double x = px - fx, z = pz - kSqrt3 * fz;
-    std::int64_t column = 2 * std::int64_t(fx), row = 2 * std::int64_t(fz);
+    std::int64_t column = 2 * truncated_int64(fx), row = 2 * truncated_int64(fz);
     if (z > kHalfSqrt3) {  // the upper row of the band, half a cell along
         z -= kHalfSqrt3;
         if (x > 0.5) {

@@ -157,7 +157,7 @@ double kites_and_rhombs(double x, double z, bool rhombs) {
     // Deflate by phi^2 (two subdivisions) until the point is inside the
     // seed kite, whose outer side is at distance cos 18 from the origin.
     const double reach = std::fabs(g.sin72 * x + g.cos72 * z) / g.sin72;
-    int steps = std::max(0, int(std::ceil(std::log(reach) / std::log(g.sqr_phi))));
+    int steps = std::max(0, truncated_int(std::ceil(std::log(reach) / std::log(g.sqr_phi))));
     const double shrink = std::pow(g.inv_sqr_phi, steps);
     x *= shrink;
     z *= shrink;
@@ -346,7 +346,7 @@ double pentagons(double x, double z) {
     fold_into_wedge(x, z, r);
     // Deflate by phi^4 (four subdivisions) until inside the seed pentagon.
     const double reach = x * 2 * g.tan36;
-    const int steps = std::max(0, int(std::ceil(std::log(reach) / std::log(g.sqr_phi * g.sqr_phi))));
+    const int steps = std::max(0, truncated_int(std::ceil(std::log(reach) / std::log(g.sqr_phi * g.sqr_phi))));
     const double shrink = std::pow(g.inv_sqr_phi * g.inv_sqr_phi, steps);
     return subdivide_p1(x * shrink, z * shrink, 4 * steps);
 }

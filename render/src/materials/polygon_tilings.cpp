@@ -92,7 +92,7 @@ bool on_lattice(int i, int j, int shift) {
 double two_squares(double x, double z) {
     x = wrap_into(x, 5.0);
     z = wrap_into(z, 5.0);
-    const int i = int(x), j = int(z);
+    const int i = truncated_int(x), j = truncated_int(z);
     if (on_lattice(i, j, 0)) return std::max(across_band(x - i), across_band(z - j)) / 2.0;
     for (int corner = 0; corner < 4; ++corner) {
         const int ci = i + (corner & 1), cj = j + (corner >> 1);
@@ -213,7 +213,7 @@ double hex_square_triangle_6(double x, double z) {
 double brick_pairs(double x, double z) {
     x = wrap_into(x, 4.0);
     z = wrap_into(z, 4.0);
-    const int i = int(x), j = int(z);
+    const int i = truncated_int(x), j = truncated_int(z);
     double across, along, kind;
     if ((i / 2 + j / 2) % 2 == 0) {
         across = across_band(x - i);
@@ -257,7 +257,7 @@ double triangle_tile_measure(double x, double z, int& kind) {
 // hexagon's two rows of triangles' worth, else triangles. Kinds: the two
 // triangle orientations, then the hexagon.
 double snub_hexagons(double x, double z, int hand) {
-    int row = int(z / kHalfSqrt3) / 3;  // POV's own truncating count
+    int row = truncated_int(z / kHalfSqrt3) / 3;  // POV's own truncating count
     if (z < 0.0) row -= 1;
     x += hand * (row / 2.0);
     z = wrap_into(z, 3.0 * kHalfSqrt3);
@@ -290,7 +290,7 @@ double snub_hexagons(double x, double z, int hand) {
         }
     }
     int kind = 0;
-    int band = int(z / kHalfSqrt3);
+    int band = truncated_int(z / kHalfSqrt3);
     if (band == 2) {
         band = 1;
         z = 2.0 * kSqrt3 - z;

@@ -197,7 +197,7 @@ double rectangles(double x, double z) {
     // (x or z rounds to 4 just below a multiple of 4: POV's switch then
     // matches no cell and moves nothing.)
     static constexpr Cell kNoCell = {0, 0, true};
-    const int column = int(x), row = int(z);
+    const int column = truncated_int(x), row = truncated_int(z);
     const Cell& cell = column < 4 && row < 4 ? kCells[column + row * 4] : kNoCell;
     x -= cell.dx;
     z -= cell.dz;
@@ -309,7 +309,7 @@ double square_in_bricks(double x, double z) {
         {1, 2, AlongZ}, {1, 2, AlongZ}, {2, 2, AlongX},  // row 2
     };
     static constexpr Cell kNoCell = {0, 0, AlongX};
-    const int index = int(x) + int(z) * 3;
+    const int index = truncated_int(x) + truncated_int(z) * 3;
     const Cell& cell = index < 9 ? kCells[index] : kNoCell;
     x -= cell.dx;
     z -= cell.dz;
