@@ -46,6 +46,14 @@ int channel_of(const std::string& member) {
     return -1;
 }
 
+Value function_value(const sg::FunctionRef& f, const sg::SourceLocation& at) {
+    Value value;
+    value.kind = Value::Kind::Function;
+    value.function = f;
+    value.location = at;
+    return value;
+}
+
 }  // namespace
 
 // The compiler: recursive descent over the raw tokens of one body, with
@@ -133,8 +141,7 @@ class FunctionCompiler {
         case Op::Minimum:
         case Op::Maximum:
         case Op::Select:
-        case Op::Call:
-        case Op::Internal: m_depth -= count - 1; break;
+        case Op::Call: m_depth -= count - 1; break;
         default: --m_depth; break;
         }
         m_f.stack_size = std::max(m_f.stack_size, m_depth + 1);
@@ -426,11 +433,7 @@ std::optional<Evaluator::Symbol> Evaluator::read_function(const RawToken& keywor
         abort_parse();
         m_suppress_syntax_errors = true;
     }
-    Value value;
-    value.kind = Value::Kind::Function;
-    value.function = f;
-    value.location = keyword.location;
-    return make_symbol(Parser::token::TOK_FUNCTION_LITERAL, keyword, std::move(value));
+    return make_symbol(Parser::token::TOK_FUNCTION_LITERAL, keyword, function_value(f, keyword.location));
 }
 
 Value Evaluator::call_function(const Value& function, const std::vector<Value>& arguments, const SourceRange& where) {
@@ -465,22 +468,14 @@ Value Evaluator::pattern_function(const Edits<sg::Pigment>& edits, const sg::Sou
     auto f = std::make_shared<sg::Function>();
     f->parameters = {"x", "y", "z"};
     f->pattern = std::make_shared<sg::Pattern>(build_pigment(edits, at)->pattern);
-    Value value;
-    value.kind = Value::Kind::Function;
-    value.function = f;
-    value.location = at;
-    return value;
+    return function_value(f, at);
 }
 
 Value Evaluator::pigment_function(const std::shared_ptr<sg::Pigment>& pigment, const sg::SourceLocation& at) {
     auto f = std::make_shared<sg::Function>();
     f->parameters = {"x", "y", "z"};
     f->pigment = pigment;
-    Value value;
-    value.kind = Value::Kind::Function;
-    value.function = f;
-    value.location = at;
-    return value;
+    return function_value(f, at);
 }
 
 Evaluator::PatternEdit Evaluator::function_pattern(const Value& function, const sg::SourceLocation& at) {

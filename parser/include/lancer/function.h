@@ -53,13 +53,12 @@ struct Function {
         NotEqual,
         And,
         Or,
-        Math1,     // index: a Math1 code; one operand
-        Math2,     // index: a Math2 code; two operands
-        Minimum,   // count operands
-        Maximum,   // count operands
-        Select,    // count 3 or 4: POV's select(a, b, c [, d])
-        Call,      // callees[index] with count arguments (a pigment function: its `channel`)
-        Internal,  // POV's internal function `index` with count arguments
+        Math1,    // index: a Math1 code; one operand
+        Math2,    // index: a Math2 code; two operands
+        Minimum,  // count operands
+        Maximum,  // count operands
+        Select,   // count 3 or 4: POV's select(a, b, c [, d])
+        Call,     // callees[index] with count arguments (a pigment function: its `channel`)
     };
     enum Math1Code {
         Abs,

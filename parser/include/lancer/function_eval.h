@@ -225,12 +225,6 @@ inline double evaluate_function(const Function& f, const double* arguments, int 
             stack[top++] = value;
             break;
         }
-        case Op::Internal: {
-            top -= in.count;
-            stack[top] = function_detail::internal_function(in.index, stack + top, in.count, natives);
-            ++top;
-            break;
-        }
         }
     }
     return top > 0 ? stack[top - 1] : 0.0;
