@@ -450,6 +450,7 @@ int run_render(const RenderArguments& arguments) {
         write_options.working_gamma = scene.working_gamma;
         write_options.gamma_correction = scene.gamma_correction;
         write_image(film, output, write_options);
+        warn_after_render(*scene.scene);
         if (stats.interrupted && (checkpointing || arguments.resume)) write_checkpoint(checkpoint_path, identity, film);
         report.total_seconds = seconds_so_far();
         if (arguments.stats_option->count()) write_stats_json(report, arguments.stats);

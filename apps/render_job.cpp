@@ -59,6 +59,16 @@ void warn_about_scene_for(const sg::SceneGraph& scene, const std::string& integr
     for (const Diagnostic& warning : energy_gaining_finishes(scene)) print_diagnostic(warning);
 }
 
+void warn_after_render(const RenderScene& scene) {
+    for (const RenderAdvice& advice : advice_after_render(scene)) {
+        Diagnostic warning;
+        warning.severity = Diagnostic::Severity::Warning;
+        warning.location = advice.location;
+        warning.message = advice.message;
+        print_diagnostic(warning);
+    }
+}
+
 JobIntegrator load_job_integrator(const sg::RenderSettings& settings, const std::string& name,
                                   const std::vector<std::string>& assignments) {
     JobIntegrator job;

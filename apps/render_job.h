@@ -72,6 +72,9 @@ std::map<std::string, sg::ParameterValue> scene_parameters_for(const sg::RenderS
 // Prints what the scene means for this integrator alone: for `path`, the
 // finishes that return more light than they receive.
 void warn_about_scene_for(const sg::SceneGraph& scene, const std::string& integrator);
+// POV-Ray's warnings that only a finished render can give (an
+// isosurface's max_gradient against the slopes its rays met).
+void warn_after_render(const RenderScene& scene);
 
 // Loads `name` (empty: the scene's integrator, else kDefaultIntegrator),
 // resolves its parameters (the scene's, under `assignments` from -p) and

@@ -22,7 +22,8 @@
 // normals (own normals, slopes of values, slope_map, normal_map), layered
 // and patterned textures, #default and interior fade, uv_mapping, and
 // images (image_map's projections, image_pattern, bump_map) and the object
-// pattern, irid and diffuse backside, and user functions as patterns.
+// pattern, irid and diffuse backside, user functions as patterns, and
+// isosurfaces.
 #include <filesystem>
 #include <string>
 
@@ -72,7 +73,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
                                            "height_fields", "patterns_geometric", "patterns_blocks", "patterns_noise",
                                            "patterns_warps", "patterns_tilings", "patterns_tilings_more", "normals",
                                            "textures", "uv_mapping", "csg_meshes", "images", "object_pattern",
-                                           "irid_backside", "functions"),
+                                           "irid_backside", "functions", "isosurfaces"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 }  // namespace

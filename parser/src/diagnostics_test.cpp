@@ -73,7 +73,7 @@ const BadScene kBadScenes[] = {
     {"DeclareKeyword", "#declare sphere = 1;", "reserved word", 1, 10},
     {"DeclareWithoutEquals", "#declare A 1;", "expected '='", 1, 12},
     {"ErrorDirective", "#error \"stop here\"", "stop here", 1, 1},
-    {"UnsupportedShape", "isosurface { function { x } }", "does not support", 1, 1},
+    {"UnsupportedShape", "lemon { 0, y, 1, 0.5, 1 }", "does not support", 1, 1},
     {"EmptyBlob", "blob { threshold 0.5 }", "at least one component", 1, 1},
     {"DegenerateCylinder", "cylinder { 0, 0, 1 }", "degenerate cylinder", 1, 15},
     {"DegenerateCone", "cone { x, 1, x, 0.5 }", "degenerate cone", 1, 14},

@@ -196,6 +196,17 @@ class Evaluator {
     std::function<void(sg::HeightField&)> unsupported_height_field_format(const std::string& keyword,
                                                                           const sg::SourceLocation& at);
     ShapePtr make_height_field(const Edits<sg::HeightField>& items, const sg::SourceLocation& at);
+    // ---- isosurface (isosurface.cpp)
+    std::function<void(sg::Isosurface&)> isosurface_box(const Value& a, const SourceRange& wa, const Value& b,
+                                                        const SourceRange& wb);
+    std::function<void(sg::Isosurface&)> isosurface_sphere(const Value& center, const SourceRange& wc,
+                                                           const Value& radius, const SourceRange& wr);
+    std::function<void(sg::Isosurface&)> isosurface_number(const std::string& keyword, const Value& value,
+                                                           const SourceRange& where);
+    std::function<void(sg::Isosurface&)> isosurface_evaluate(const std::array<Value, 3>& values,
+                                                             const std::array<SourceRange, 3>& where);
+    ShapePtr make_isosurface(const Value& function, const SourceRange& where, const Edits<sg::Isosurface>& items,
+                             const sg::SourceLocation& at);
     // ---- CSG (csg.cpp)
     ShapePtr make_csg(sg::Object::Kind kind, const sg::SourceLocation& at);
     void finish_csg(ShapeValue& shape);
@@ -390,6 +401,9 @@ class Evaluator {
     void init_safe_roots(const std::string& scene_folder);
     // False only in safe mode, for a path outside the allowed folders.
     bool allowed_file(const std::string& path) const;
+    // False only in safe mode, for a path outside the scene's folder (the
+    // only place --safe lets a scene's #fopen write).
+    bool allowed_write(const std::string& path) const;
     void refuse_file(const sg::SourceLocation& where, const std::string& what, const std::string& name);
     // Reads a whole file after checking its size against max_file_bytes;
     // false with a located error when it cannot.
@@ -430,6 +444,8 @@ class Evaluator {
     const RawToken* peek_raw();
     const RawToken* take_raw();
     bool directives_blocked() const;
+    Symbol read_token();
+    bool macro_waits_for_value_end() const;
     bool skip_ignored_block(const RawToken& keyword);
     void pop_frame();
     Value parse_nested(Kind start, const sg::SourceLocation& at, bool barrier);
@@ -453,6 +469,16 @@ class Evaluator {
     void directive_undef(const RawToken& directive);
     void directive_version(const RawToken& directive);
     void directive_default(const RawToken& directive);
+    // user files (user_files.cpp)
+    void directive_fopen(const RawToken& directive);
+    void directive_fclose(const RawToken& directive);
+    void directive_read(const RawToken& directive);
+    void directive_write(const RawToken& directive);
+    std::shared_ptr<UserFile> user_file(const std::string& handle, const sg::SourceLocation& where,
+                                        const std::string& directive);
+    void close_user_file(const std::string& handle);
+    std::optional<Value> read_user_value(UserFile& file);
+    bool at_user_file_end(UserFile& file);
     void expand_macro(const RawToken& name, const Macro& macro);
     enum class SkipStop { End, ElseOrEnd, CaseOrEnd };
     const RawToken* skip_block(const sg::SourceLocation& opened_at, const std::string& opener, SkipStop stop);
@@ -481,7 +507,9 @@ class Evaluator {
     // Every inclusion gets its own label pointer; its include chain is kept here.
     std::map<const std::string*, std::vector<sg::SourceLocation>> m_include_chains;
     std::map<const std::string*, std::shared_ptr<const TokenBuffer>> m_buffers;
-    int m_barrier_depth = -1;  // directives in frames at or below this depth wait
+    int m_barrier_depth = -1;   // directives in frames at or below this depth wait
+    int m_barrier_nesting = 0;  // the bracket nesting where the declared value began
+    Parser::symbol_kind_type m_previous_kind = Parser::symbol_kind::S_YYEMPTY;
     int m_nested_base_depth = 0;
     int m_nesting = 0;  // open ( { [ in the token stream
     long m_tokens_read = 0;

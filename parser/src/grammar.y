@@ -126,6 +126,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        SOLID "solid" COORDS "coords" SIZE "size" EXTERIOR "exterior" CONTROL0 "control0" CONTROL1 "control1"
        NUMBER_OF_SIDES "number_of_sides" NUMBER_OF_TILES "number_of_tiles" ALTITUDE "altitude"
        DENSITY_FILE "density_file" DF3 "df3" PATTERN "pattern"
+       ISOSURFACE "isosurface" CONTAINED_BY "contained_by" MAX_GRADIENT "max_gradient" EVALUATE "evaluate"
+       MAX_TRACE "max_trace" ALL_INTERSECTIONS "all_intersections"
 
 %nterm <Value> expr arith postfix primary colour colour_base declared_value string_value bare_colour
 %nterm <std::vector<Value>> arith_seq expr_list opt_args vector_items expr_seq macro_args macro_arg_list
@@ -170,6 +172,9 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <Edits<sg::JuliaFractal>> julia_items
 %nterm <std::function<void(sg::JuliaFractal&)>> julia_item
 %nterm <Edits<sg::HeightField>> height_field_items
+%nterm <Edits<sg::Isosurface>> isosurface_items
+%nterm <std::function<void(sg::Isosurface&)>> isosurface_item
+%nterm <Value> isosurface_function
 %nterm <std::function<void(sg::HeightField&)>> height_field_item
 %nterm <Edits<sg::Polynomial>> polynomial_terms
 %nterm <int> colour_channel
@@ -372,6 +377,8 @@ object
       { $$ = ev.make_julia_fractal($3, @3, $4, LOC(@1)); ev.apply($$, $5); }
   | "height_field" "{" height_field_items object_mods "}"
       { $$ = ev.make_height_field($3, LOC(@1)); ev.apply($$, $4); }
+  | "isosurface" "{" isosurface_function isosurface_items object_mods "}"
+      { $$ = ev.make_isosurface($3, @3, $4, LOC(@1)); ev.apply($$, $5); }
   | "triangle" "{" arith opt_comma arith opt_comma arith object_mods "}"
       { $$ = ev.make_triangle({$3, $5, $7}, {@3, @5, @7}, LOC(@1)); ev.apply($$, $8); }
   | "smooth_triangle" "{" arith opt_comma arith opt_comma arith opt_comma arith opt_comma arith opt_comma arith object_mods "}"
@@ -542,6 +549,33 @@ julia_item
   | "reciprocal"       { $$ = [](sg::JuliaFractal& j) { j.function = sg::JuliaFractal::Function::Reciprocal; }; }
   | "pwr" "(" expr "," expr ")" { $$ = ev.julia_power($3, @3, $5, @5); }
   | BUILTIN            { $$ = ev.julia_function($1.text, LOC(@1)); }
+  ;
+
+/* isosurface { function { f(x, y, z) } [contained_by { box { <a>, <b> } | sphere { <c>, r } }]
+ *              [threshold t] [accuracy a] [max_gradient g] [evaluate p0, p1, p2] [open]
+ *              [max_trace n | all_intersections] } (Parse_Isosurface: the function comes first) */
+isosurface_function
+  : FUNCTION_LITERAL   { $$ = std::move($1.value); }
+  | FUNCTION_OPEN "pattern" "{" pigment_edits "}" "}" { $$ = ev.pattern_function($4, LOC(@1)); }
+  ;
+
+isosurface_items
+  : %empty             {}
+  | isosurface_items isosurface_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+isosurface_item
+  : "contained_by" "{" "}" { $$ = [](sg::Isosurface&) {}; }
+  | "contained_by" "{" "box" "{" arith opt_comma arith "}" "}" { $$ = ev.isosurface_box($5, @5, $7, @7); }
+  | "contained_by" "{" "sphere" "{" arith opt_comma arith "}" "}" { $$ = ev.isosurface_sphere($5, @5, $7, @7); }
+  | "threshold" expr %prec OPT_EMPTY { $$ = ev.isosurface_number("threshold", $2, @2); }
+  | "accuracy" expr %prec OPT_EMPTY { $$ = ev.isosurface_number("accuracy", $2, @2); }
+  | "max_gradient" expr %prec OPT_EMPTY { $$ = ev.isosurface_number("max_gradient", $2, @2); }
+  | "max_trace" expr %prec OPT_EMPTY { $$ = ev.isosurface_number("max_trace", $2, @2); }
+  | "evaluate" arith opt_comma arith opt_comma arith %prec OPT_EMPTY
+      { $$ = ev.isosurface_evaluate({$2, $4, $6}, {@2, @4, @6}); }
+  | "open"             { $$ = [](sg::Isosurface& i) { i.open = true; }; }
+  | "all_intersections" { $$ = [](sg::Isosurface& i) { i.max_trace = 10; }; }
   ;
 
 /* height_field { [type] "file" [gamma g] [premultiplied b] [smooth] [water_level w] } */

@@ -43,6 +43,7 @@ const char* object_kind_name(sg::Object::Kind kind) {
     case sg::Object::Kind::BicubicPatch: return "bicubic_patch";
     case sg::Object::Kind::JuliaFractal: return "julia_fractal";
     case sg::Object::Kind::HeightField: return "height_field";
+    case sg::Object::Kind::Isosurface: return "isosurface";
     }
     return "object";
 }

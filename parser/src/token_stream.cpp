@@ -63,8 +63,8 @@ const std::unordered_set<std::string>& ignored_blocks() {
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
     static const std::unordered_set<std::string> names = {
-        "isosurface", "parametric", "lemon",        "spline", "fisheye",          "panoramic",  "ultra_wide_angle",
-        "omnimax",    "layered",    "material_map", "tiles",  "interior_texture", "isosurface", "dictionary"};
+        "parametric", "lemon",   "spline",       "fisheye", "panoramic",        "ultra_wide_angle",
+        "omnimax",    "layered", "material_map", "tiles",   "interior_texture", "dictionary"};
     return names;
 }
 
@@ -198,6 +198,31 @@ void Evaluator::abort_parse() {
 }
 
 Evaluator::Symbol Evaluator::next_token() {
+    Symbol symbol = read_token();
+    m_previous_kind = symbol.kind();
+    return symbol;
+}
+
+// POV-Ray checks for the ';' after a declared value without invoking a
+// macro (its Ok_To_Declare): `#declare C = "" M(C)` declares C, then calls
+// M. Here the lookahead that ends a declared value is read while its
+// barrier holds; a macro name right after a complete operand at the
+// value's own nesting waits, like a directive, until the value is stored.
+bool Evaluator::macro_waits_for_value_end() const {
+    if (!directives_blocked() || m_nesting != m_barrier_nesting) return false;
+    using T = Parser::symbol_kind;
+    switch (m_previous_kind) {
+    case T::S_NUMBER:
+    case T::S_STRING:
+    case T::S_CONSTANT:
+    case T::S_VALUE_ID:
+    case T::S_RPAREN:
+    case T::S_RBRACKET: return true;
+    default: return false;
+    }
+}
+
+Evaluator::Symbol Evaluator::read_token() {
     while (true) {
         if (m_aborted) {
             return Symbol(Parser::token::TOK_END, SourceRange{m_last_location, m_last_location});
@@ -268,6 +293,10 @@ Evaluator::Symbol Evaluator::next_token() {
             }
             auto macro = m_macros.find(raw->text);
             if (macro != m_macros.end() && !lookup(raw->text)) {
+                if (macro_waits_for_value_end()) {
+                    m_last_returned = Pending{raw, nullptr, frame, index, false};
+                    return make_symbol(Parser::token::TOK_DIRECTIVE, *raw, Value::string(raw->text));
+                }
                 auto keep = macro->second;
                 expand_macro(*raw, *keep);
                 continue;
@@ -491,6 +520,7 @@ void Evaluator::finish_arguments(std::vector<Value> arguments) {
 
 void Evaluator::begin_value_barrier() {
     m_barrier_depth = m_nested_base_depth;
+    m_barrier_nesting = m_nesting;
 }
 void Evaluator::end_value_barrier() {
     m_barrier_depth = -1;

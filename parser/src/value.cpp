@@ -47,6 +47,7 @@ std::string describe(Value::Kind kind) {
     case Value::Kind::NormalMap: return "a normal_map";
     case Value::Kind::Function: return "a function";
     case Value::Kind::Array: return "an array";
+    case Value::Kind::File: return "a file handle";
     }
     return "a value";
 }

@@ -37,6 +37,7 @@ struct CameraSpec {
 };
 
 struct ArrayData;
+struct UserFile;
 
 struct Value {
     enum class Kind {
@@ -57,7 +58,8 @@ struct Value {
         PigmentMap,
         NormalMap,
         Function,
-        Array
+        Array,
+        File
     };
     Kind kind = Kind::Float;
     // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
@@ -78,6 +80,7 @@ struct Value {
     std::shared_ptr<const std::vector<sg::NormalMapEntry>> normal_map;
     sg::FunctionRef function;
     std::shared_ptr<ArrayData> array;  // Array: shared by reference (macro arguments), copied by #declare
+    std::shared_ptr<UserFile> file;    // File: a #fopen'd file, shared by every copy of its handle
     sg::Mat4 transform{1.0};
     sg::SourceLocation location;  // where it was written, when a check needs it later
 

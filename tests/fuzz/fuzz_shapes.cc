@@ -1,4 +1,4 @@
-// libFuzzer target for the analytic shapes' parameters (issue 16): the
+// libFuzzer target for the analytic shapes' parameters (issues 16, 18): the
 // input picks a shape and its parameters, then rays. Every crossing must be
 // finite and inside the ray's interval and the shape's bounds, every
 // surface normal finite and of unit length; nothing may crash or hang.
@@ -11,6 +11,7 @@
 
 #include "geometry/bicubic_patch.h"
 #include "geometry/height_field.h"
+#include "geometry/isosurface.h"
 #include "geometry/julia_fractal.h"
 #include "geometry/ovus.h"
 #include "geometry/shape.h"
@@ -53,11 +54,13 @@ char g_parameters[256] = "";
 }
 
 std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
-    // 16 kinds: a regression file's first byte keeps naming its shape.
-    static const char* const kinds[] = {
-        "cone", "torus",        "disc",          "quadric",       "poly",         "polygon", "superellipsoid", "sphere",
-        "ovus", "sphere_sweep", "bicubic_patch", "julia_fractal", "height_field", "blob",    "lathe",          "sor"};
-    const int kind = in.byte() % 16;
+    // 17 kinds: a regression file's first byte (below 16 for the first
+    // sixteen) keeps naming its shape.
+    static const char* const kinds[] = {"cone",          "torus",          "disc",         "quadric", "poly",
+                                        "polygon",       "superellipsoid", "sphere",       "ovus",    "sphere_sweep",
+                                        "bicubic_patch", "julia_fractal",  "height_field", "blob",    "lathe",
+                                        "sor",           "isosurface"};
+    const int kind = in.byte() % 17;
     g_kind = kinds[kind];
     g_parameters[0] = 0;
     switch (kind) {
@@ -166,10 +169,50 @@ std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
         for (auto& p : points) p = glm::dvec2(std::fabs(in.number(2)), in.number(3));
         return lancer::make_lathe_shape(lancer::SplineKind(in.byte() % 4), points);
     }
-    default: {
+    case 15: {
         std::vector<glm::dvec2> points(4 + in.byte() % 8);
         for (auto& p : points) p = glm::dvec2(std::fabs(in.number(2)), in.number(3));
         return lancer::make_sor_shape(points, in.byte() & 1);
+    }
+    default: {
+        // a (x^2 + y^2 + z^2) - b + c sin(k x) sin(k z), in a box or sphere.
+        using Op = lancer::sg::Function::Op;
+        auto f = std::make_shared<lancer::sg::Function>();
+        f->parameters = {"x", "y", "z"};
+        f->constants = {in.number(3), in.number(3), in.number(2), in.number(40)};
+        const auto op = [](Op code, int index = 0) {
+            lancer::sg::Function::Instruction instruction;
+            instruction.op = code;
+            instruction.index = index;
+            return instruction;
+        };
+        const int sin_code = lancer::sg::Function::Sin;
+        f->code = {op(Op::Parameter, 0),    op(Op::Parameter, 0), op(Op::Multiply),     op(Op::Parameter, 1),
+                   op(Op::Parameter, 1),    op(Op::Multiply),     op(Op::Add),          op(Op::Parameter, 2),
+                   op(Op::Parameter, 2),    op(Op::Multiply),     op(Op::Add),          op(Op::Constant, 0),
+                   op(Op::Multiply),        op(Op::Constant, 1),  op(Op::Subtract),     op(Op::Constant, 2),
+                   op(Op::Constant, 3),     op(Op::Parameter, 0), op(Op::Multiply),     op(Op::Math1, sin_code),
+                   op(Op::Multiply),        op(Op::Constant, 3),  op(Op::Parameter, 2), op(Op::Multiply),
+                   op(Op::Math1, sin_code), op(Op::Multiply),     op(Op::Add)};
+        f->stack_size = 4;
+        lancer::IsosurfaceParameters iso;
+        iso.function = f;
+        iso.sphere_container = in.byte() & 1;
+        iso.box_lower = in.vector(4);
+        iso.box_upper = in.vector(4);
+        iso.sphere_center = in.vector(4);
+        iso.sphere_radius = std::fabs(in.number(4));
+        iso.threshold = in.number(2);
+        iso.accuracy = std::fabs(in.number(0.1));
+        iso.max_gradient = std::fabs(in.number(50));
+        iso.evaluate = in.byte() & 1;
+        iso.evaluate_parameters = glm::abs(in.vector(3));
+        iso.open = in.byte() & 1;
+        iso.max_trace = 1 + in.byte() % 10;
+        std::snprintf(g_parameters, sizeof g_parameters, "a %g b %g c %g k %g accuracy %g max_gradient %g",
+                      f->constants[0], f->constants[1], f->constants[2], f->constants[3], iso.accuracy,
+                      iso.max_gradient);
+        return lancer::make_isosurface_shape(iso);
     }
     }
 }

@@ -587,6 +587,30 @@ struct JuliaFractal {
     double slice_distance = 0.0;
 };
 
+// POV's isosurface: where function(x, y, z) = threshold inside its
+// container (a box or a sphere); the solid is where the function is below
+// the threshold. The function's roots are found by subdividing the ray's
+// chord while max_gradient (a Lipschitz bound) allows a root between two
+// samples, down to intervals of `accuracy`.
+struct Isosurface {
+    FunctionRef function;
+    enum class Container { Box, Sphere };
+    Container container = Container::Box;
+    Vec3 box_corner1{-1.0}, box_corner2{1.0};  // ordered per axis
+    Vec3 sphere_center{0.0};
+    double sphere_radius = 1.0;
+    double threshold = 0.0;
+    double accuracy = 0.001;
+    double max_gradient = 1.1;
+    // evaluate P0, P1, P2: POV's adaptive max_gradient (a minimum, a
+    // growth factor and an attenuation).
+    bool evaluate = false;
+    Vec3 evaluate_parameters{0.0};
+    bool open = false;  // the container's surface is not part of the object
+    int max_trace = 1;  // crossings looked for per ray; all_intersections: 10
+    SourceLocation location;
+};
+
 // POV's height_field: an image's values as heights over the unit square
 // (x across the image, z along it), in the box <0,0,0> .. <1,1,1>.
 struct HeightField {
@@ -669,11 +693,12 @@ struct Object {
         SphereSweep,
         BicubicPatch,
         JuliaFractal,
-        HeightField
+        HeightField,
+        Isosurface
     };
     Kind kind = Kind::Sphere;
     std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric, Polygon, Polynomial, Superellipsoid,
-                 Blob, Prism, Lathe, Text, Sor, Ovus, SphereSweep, BicubicPatch, JuliaFractal, HeightField>
+                 Blob, Prism, Lathe, Text, Sor, Ovus, SphereSweep, BicubicPatch, JuliaFractal, HeightField, Isosurface>
         shape;
     // POV's inverse: inside and outside swapped (what CSG and clipped_by see).
     bool inverse = false;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geometry/csg.h"
+#include "geometry/isosurface.h"
 #include "geometry/shape.h"
 #include "geometry/shapes.h"
 #include "lancer/camera.h"
@@ -84,6 +85,14 @@ struct SceneData {
     Color background{0.0f};
     SceneOptions options;
     Bounds bounds;
+    // Each isosurface's steepest slope met while rendering, for POV's
+    // max_gradient advice afterwards.
+    struct IsosurfaceRecord {
+        IsosurfaceParameters parameters;
+        std::shared_ptr<IsosurfaceGradientRecord> gradients;
+        sg::SourceLocation location;
+    };
+    std::vector<IsosurfaceRecord> isosurfaces;
 };
 
 }  // namespace lancer

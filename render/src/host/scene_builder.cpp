@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <tuple>
 
 #include "geometry/bicubic_patch.h"
 #include "geometry/height_field.h"
@@ -260,7 +261,8 @@ class Builder {
             add_mesh_details(instance, *mesh);
         } else {
             instance.kind = ShapeKind::Analytic;
-            instance.shape = analytic_shape(object, world_from_object);
+            const auto* iso = std::get_if<sg::Isosurface>(&object.shape);
+            instance.shape = iso ? isosurface_shape(*iso, object.location) : analytic_shape(object, world_from_object);
             DVec3 lower, upper;
             instance.bounded = instance.shape->bounds(lower, upper);
             if (instance.bounded)
@@ -306,6 +308,36 @@ class Builder {
         instance.bounded = instance.shape->bounds(lower, upper);
         if (instance.bounded)
             world_bounds(instance.placement, lower, upper, instance.bounds_lower, instance.bounds_upper);
+    }
+
+    std::shared_ptr<const Shape> isosurface_shape(const sg::Isosurface& iso, const sg::SourceLocation& at) {
+        IsosurfaceParameters parameters;
+        parameters.function = iso.function;
+        if (!iso.function) throw SceneError(at, "isosurface: it has no function");
+        parameters.natives = m_data->texture_factory->function_natives(*iso.function);
+        parameters.sphere_container = iso.container == sg::Isosurface::Container::Sphere;
+        parameters.box_lower = iso.box_corner1;
+        parameters.box_upper = iso.box_corner2;
+        parameters.sphere_center = iso.sphere_center;
+        parameters.sphere_radius = iso.sphere_radius;
+        parameters.threshold = iso.threshold;
+        parameters.accuracy = iso.accuracy;
+        parameters.max_gradient = iso.max_gradient;
+        parameters.evaluate = iso.evaluate;
+        parameters.evaluate_parameters = iso.evaluate_parameters;
+        parameters.open = iso.open;
+        parameters.max_trace = iso.max_trace;
+        // One record per isosurface written, however often it is reused
+        // (copies share the function and the location).
+        auto& records =
+            m_isosurface_records[{iso.function.get(), iso.location.file.get(), iso.location.line, iso.location.column}];
+        if (!records) {
+            records = std::make_shared<IsosurfaceGradientRecord>();
+            m_data->isosurfaces.push_back({parameters, records, iso.location.file ? iso.location : at});
+        }
+        auto shape = make_isosurface_shape(parameters, records);
+        if (!shape) throw SceneError(at, "isosurface: its container or settings are not finite");
+        return shape;
     }
 
     static JuliaFractalParameters julia_parameters(const sg::JuliaFractal& julia) {
@@ -809,6 +841,8 @@ class Builder {
     sg::SceneGraph& m_graph;
     std::unique_ptr<SceneData> m_data;
     std::map<const sg::TriangleMesh*, int> m_mesh_uses;
+    std::map<std::tuple<const sg::Function*, const std::string*, int, int>, std::shared_ptr<IsosurfaceGradientRecord>>
+        m_isosurface_records;
     std::map<const sg::TriangleMesh*, const MeshData*> m_meshes;
     std::map<const sg::Material*, const Material*> m_materials;
     const Material* m_default_material = nullptr;

@@ -2,6 +2,7 @@
 #include <stdexcept>
 
 #include "lancer/scene_error.h"
+#include "materials/function_natives.h"
 #include "materials/pattern_space.h"
 
 namespace lancer {
@@ -51,6 +52,10 @@ std::unique_ptr<NormalPerturbation> TextureFactory::make_normal(const sg::Normal
 
 std::unique_ptr<Texture> TextureFactory::make_solid(const Color& rgb, float filter, float transmit) {
     return make_solid_texture(TextureSample{rgb, filter, transmit});
+}
+
+std::shared_ptr<const sg::FunctionNatives> TextureFactory::function_natives(const sg::Function& function) {
+    return std::make_shared<const RenderFunctionNatives>(function, build());
 }
 
 }  // namespace lancer

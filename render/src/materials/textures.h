@@ -59,6 +59,9 @@ class TextureFactory {
     std::unique_ptr<NormalPerturbation> make_normal(const sg::Normal& normal);
     // A constant colour (default black pigment, light materials).
     static std::unique_ptr<Texture> make_solid(const Color& rgb, float filter = 0.0f, float transmit = 0.0f);
+    // What `function` and its callees ask of the renderer (noise, patterns,
+    // pigments), for a shape that evaluates it (the isosurface).
+    std::shared_ptr<const sg::FunctionNatives> function_natives(const sg::Function& function);
 
   private:
     const TextureSpaces& m_spaces;

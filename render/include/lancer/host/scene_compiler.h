@@ -3,6 +3,8 @@
 #pragma once
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "lancer/render_scene.h"
 #include "lancer/scene_graph.h"
@@ -15,6 +17,16 @@ namespace lancer {
 // from). Throws lancer::SceneError (lancer/scene_error.h) with a source
 // location on bad input (unreadable image, mesh index out of range).
 std::unique_ptr<RenderScene> compile_scene(sg::SceneGraph graph);
+
+// What only a finished render can tell about a scene, located where the
+// scene wrote the object: POV-Ray's max_gradient advice for isosurfaces
+// (holes where max_gradient was below the steepest slope rays met, or
+// slowness where it was far above). Empty for a scene without isosurfaces.
+struct RenderAdvice {
+    sg::SourceLocation location;
+    std::string message;
+};
+std::vector<RenderAdvice> advice_after_render(const RenderScene& scene);
 
 // What POV-Ray's functions need of the renderer (noise, patterns,
 // pigments) while a scene is parsed: ParseOptions::function_natives.
