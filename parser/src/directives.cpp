@@ -54,13 +54,17 @@ void Evaluator::run_directive(const RawToken& d) {
     if (n == "undef") return directive_undef(d);
     if (n == "version") return directive_version(d);
     if (n == "default") return directive_default(d);
-    if (n == "fopen" || n == "fclose" || n == "read" || n == "write" || n == "render") {
+    if (n == "fopen") return directive_fopen(d);
+    if (n == "fclose") return directive_fclose(d);
+    if (n == "read") return directive_read(d);
+    if (n == "write") return directive_write(d);
+    if (n == "render") {
         error(d.location, "#" + n + " is a POV-Ray directive that lancer does not support");
     } else {
-        static const std::vector<std::string> known = {"declare", "local",   "undef", "include", "if",    "ifdef",
-                                                       "ifndef",  "elseif",  "else",  "end",     "while", "for",
-                                                       "switch",  "case",    "range", "break",   "macro", "version",
-                                                       "debug",   "warning", "error", "default"};
+        static const std::vector<std::string> known = {
+            "declare", "local",   "undef", "include", "if",    "ifdef",  "ifndef", "elseif", "else",
+            "end",     "while",   "for",   "switch",  "case",  "range",  "break",  "macro",  "version",
+            "debug",   "warning", "error", "default", "fopen", "fclose", "read",   "write"};
         std::string best;
         size_t best_distance = 3;
         for (const auto& k : known) {

@@ -65,6 +65,13 @@ bool Evaluator::allowed_file(const std::string& path) const {
     return false;
 }
 
+bool Evaluator::allowed_write(const std::string& path) const {
+    if (!m_options.safe) return true;
+    if (m_safe_roots.empty()) return false;
+    const fs::path target = resolved(path);
+    return !target.empty() && is_within(fs::path(m_safe_roots.front()), target);
+}
+
 void Evaluator::refuse_file(const sg::SourceLocation& where, const std::string& what, const std::string& name) {
     error(where, what + " \"" + name + "\" is outside the scene's folder and the include path (refused by --safe)");
 }
