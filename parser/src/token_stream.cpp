@@ -62,9 +62,9 @@ const std::unordered_set<std::string>& ignored_blocks() {
 
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
-    static const std::unordered_set<std::string> names = {
-        "isosurface", "parametric", "lemon",        "spline", "fisheye",          "panoramic",  "ultra_wide_angle",
-        "omnimax",    "layered",    "material_map", "tiles",  "interior_texture", "isosurface", "dictionary"};
+    static const std::unordered_set<std::string> names = {"isosurface",       "parametric", "lemon",        "spline",
+                                                          "mesh_camera",      "layered",    "material_map", "tiles",
+                                                          "interior_texture", "isosurface", "dictionary"};
     return names;
 }
 
