@@ -238,6 +238,12 @@ void Evaluator::set_camera(const CameraSpec& spec) {
     if (spec.aperture != 0.0 && spec.blur_samples == 0)
         warning(spec.location_in_source,
                 "aperture without blur_samples: no focal blur (POV-Ray traces none either); add blur_samples N");
+    const bool parallel_rays = spec.projection == Projection::Orthographic ||
+                               spec.projection == Projection::Cylinder3 || spec.projection == Projection::Cylinder4;
+    if (c.focal_blur() && parallel_rays)
+        warning(spec.location_in_source,
+                std::string("focal blur starts every ray at the camera's location (POV-Ray's rule, kept), so this ") +
+                    projection_name(spec.projection) + " camera loses its parallel rays: the picture is a blur");
     if (spec.aperture == 0.0 && (spec.blur_samples > 0 || spec.focal_point))
         warning(spec.location_in_source, "blur_samples and focal_point do nothing without an aperture");
 }
