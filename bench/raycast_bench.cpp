@@ -229,7 +229,7 @@ struct BenchScene {
         camera_rays.reserve(std::size_t(kWidth) * kHeight);
         for (int y = 0; y < kHeight; ++y) {
             for (int x = 0; x < kWidth; ++x) {
-                camera_rays.push_back(scene->camera().generate_ray(x + 0.5f, y + 0.5f, kWidth, kHeight));
+                scene->camera().generate_ray(x + 0.5f, y + 0.5f, kWidth, kHeight, camera_rays.emplace_back());
             }
         }
         build_bare_embree();

@@ -285,6 +285,92 @@ TEST(Extremes, FarFromTheOrigin) {
     }
 }
 
+// What the camera extremes look at: a checkered floor and a few balls
+// around the location, moved by `offset` with the camera.
+std::string camera_scene(const std::string& camera, double offset) {
+    const std::string o = "<" + std::to_string(offset) + ", 0, " + std::to_string(offset) + ">";
+    return "#declare O = " + o + ";\n" + camera +
+           R"(
+light_source { <-10, 20, -15> + O color rgb 1 }
+plane { y, 0 pigment { checker color rgb 0.9 color rgb 0.3 } translate O }
+sphere { <0, 1, 4> + O, 1 pigment { color rgb <0.9, 0.3, 0.2> } }
+sphere { <3, 0.7, 0> + O, 0.7 pigment { color rgb <0.2, 0.5, 0.9> } }
+sphere { <-2, 0.5, -3> + O, 0.5 pigment { color rgb <0.3, 0.8, 0.3> } }
+background { color rgb <0.4, 0.5, 0.7> }
+)";
+}
+
+// Guards against (issue 19): camera rays built in float from a location
+// ~1e5 away (directions of the wide projections losing their angles,
+// lens offsets vanishing next to the location). Expected: every projection
+// renders the scene moved to 1e5 as at the origin, within 1% (whitted; the
+// float ULP at 1e5 is ~0.008 at the checker's edges).
+TEST(Extremes, EveryCameraFarFromTheOrigin) {
+    const char* cameras[] = {"perspective angle 70",
+                             "orthographic angle 50",
+                             "fisheye angle 200",
+                             "ultra_wide_angle angle 200",
+                             "omnimax",
+                             "panoramic",
+                             "cylinder 1 angle 200",
+                             "cylinder 2 angle 120",
+                             "cylinder 3 angle 300 up y * 3",
+                             "cylinder 4 angle 200 right x * 6",
+                             "spherical",
+                             "perspective angle 60 aperture 0.3 blur_samples 7"};
+    for (const char* type : cameras) {
+        const std::string camera = std::string("camera { ") + type + " location <0, 2, -5> + O look_at <0, 1, 0> + O }";
+        const Film reference = render(camera_scene(camera, 0.0), "whitted", {}, 48, 36);
+        const Film moved = render(camera_scene(camera, 1e5), "whitted", {}, 48, 36);
+        EXPECT_TRUE(all_finite(moved)) << type;
+        const double difference = relative_difference(moved, reference);
+        std::cout << "[ camera   ] " << type << " +1e5: " << 100.0 * difference << " %\n";
+        EXPECT_LT(difference, 0.01) << type << " offset by 1e5";
+    }
+}
+
+// Guards against: fields of view near 0 (a perspective direction 1e5 times
+// |right|, whose sums lose the image in float) and near 360 (tan and asin
+// at their poles). Expected: finite everywhere; a 0.001-degree perspective
+// view of a ball 1000 away, 0.0175 wide, still shows the ball's edge (both
+// ball and background pixels); the wide projections at 359.99 and 360
+// degrees see both the floor and the sky, never NaN.
+TEST(Extremes, FieldsOfViewNearZeroAndNear360) {
+    const std::string narrow = R"(
+camera { location <0, 1, -1000> look_at <0.005, 1, 0> right x * 4 / 3 angle 0.001 }
+light_source { <0, 5, -1000> color rgb 1 }
+sphere { <0, 1, 0>, 0.01 pigment { color rgb 1 } finish { ambient 1 diffuse 0 } }
+)";
+    const Film tiny = render(narrow, "whitted", {}, 32, 24);
+    EXPECT_TRUE(all_finite(tiny));
+    int lit = 0;
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 32; ++x) lit += tiny.mean(x, y).r > 0.5f;
+    EXPECT_GT(lit, 32 * 24 / 10) << "the ball is missing";
+    EXPECT_LT(lit, 32 * 24 * 9 / 10) << "the ball's edge is missing";
+    for (const char* type : {"fisheye angle 359.99", "fisheye angle 360", "ultra_wide_angle angle 360",
+                             "cylinder 1 angle 360", "spherical angle 360, 180", "perspective angle 179.999"}) {
+        const Film wide =
+            render(camera_scene(std::string("camera { ") + type + " location <0, 2, 0> }", 0.0), "whitted", {}, 32, 24);
+        EXPECT_TRUE(all_finite(wide)) << type;
+        EXPECT_GT(max_value(wide), 0.1f) << type;
+    }
+}
+
+// Guards against: look_at along the sky (sky x view is zero: NaN right and
+// up, a black picture) and nearly along it (a right vector of length 1e-9
+// normalised). Expected: exactly along, POV's rule (the right vector kept,
+// with a warning) and a picture; nearly along, a picture of the same floor
+// as a camera tilted a hair the other way.
+TEST(Extremes, LookAtAlongAndNearlyAlongTheSky) {
+    for (const char* target : {"<0, -10, 0>", "<1e-9, -10, 0>", "<0, -10, 1e-9>"}) {
+        const std::string camera = std::string("camera { location <0, 10, 0> look_at ") + target + " angle 60 }";
+        const Film film = render(camera_scene(camera, 0.0), "whitted", {}, 32, 24);
+        EXPECT_TRUE(all_finite(film)) << target;
+        EXPECT_GT(max_value(film), 0.1f) << target;
+    }
+}
+
 // Guards against, for the quadric family, polynomials, blobs, splines and
 // CSG (issue 16): roots lost or found twice as the scale or the distance
 // from the origin changes (acne, leaks at seams, missing silhouettes).

@@ -369,7 +369,13 @@ class Evaluator {
                                                const Value& n2, const SourceRange& wn2);
     std::function<void(sg::Light&)> area_rectangle(const Value& a1, const SourceRange& w1, const Value& a2,
                                                    const SourceRange& w2);
+    // ---- the camera (camera.cpp)
     double camera_angle(const Value& v, const SourceRange& where);
+    sg::Camera::Projection cylinder_camera(const Value& v, const SourceRange& where);
+    std::function<void(CameraSpec&)> blur_samples(const Value& first, const SourceRange& wf, const Value* second,
+                                                  const SourceRange& ws);
+    std::function<void(CameraSpec&)> blur_confidence(const Value& v, const SourceRange& where);
+    std::function<void(CameraSpec&)> blur_variance(const Value& v, const SourceRange& where);
     void add_object(const ShapePtr& shape);
     void add_light(const sg::Light& light, const sg::Mat4& world_from_local);
     void check_area_light(sg::Light& light);

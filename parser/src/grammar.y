@@ -85,6 +85,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        LOCATION "location" LOOK_AT "look_at" ANGLE "angle" UP "up" RIGHT "right" SKY "sky"
        DIRECTION "direction" PERSPECTIVE "perspective" ORTHOGRAPHIC "orthographic"
        APERTURE "aperture" BLUR_SAMPLES "blur_samples" FOCAL_POINT "focal_point"
+       CONFIDENCE "confidence" VARIANCE "variance" FISHEYE "fisheye" ULTRA_WIDE_ANGLE "ultra_wide_angle"
+       OMNIMAX "omnimax" PANORAMIC "panoramic"
        PARALLEL "parallel" POINT_AT "point_at" AREA_LIGHT "area_light" JITTER "jitter"
        ADAPTIVE "adaptive" CIRCULAR "circular" ORIENT "orient" AREA_SPHERE "area_sphere" AREA_RECTANGLE "area_rectangle" CYLINDER "cylinder" PROJECTED_THROUGH "projected_through"
        FADE_DISTANCE "fade_distance" FADE_POWER "fade_power" SHADOWLESS "shadowless"
@@ -158,6 +160,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <CameraSpec> camera
 %nterm <Edits<CameraSpec>> camera_items
 %nterm <std::function<void(CameraSpec&)>> camera_item
+%nterm <sg::Camera::Projection> camera_type
 %nterm <Edits<ParameterList>> param_items
 %nterm <bool> opt_bool opt_albedo opt_open
 %nterm <Edits<sg::Prism>> prism_options
@@ -1445,19 +1448,37 @@ camera_items
 
 camera_item
   : CAMERA_ID          { CameraSpec c = *$1.value.camera; $$ = [c](CameraSpec& target) { target = c; }; }
-  | "perspective"      { $$ = [](CameraSpec& c) { c.projection = sg::Camera::Projection::Perspective; }; }
-  | "orthographic"     { $$ = [](CameraSpec& c) { c.projection = sg::Camera::Projection::Orthographic; }; }
-  | "location" expr    { auto v = ev.to_vec3($2, @2); $$ = [v](CameraSpec& c) { c.location = v; }; }
-  | "look_at" expr     { auto v = ev.to_vec3($2, @2); $$ = [v](CameraSpec& c) { c.look_at = v; }; }
-  | "direction" expr   { auto v = ev.nonzero_vec3($2, @2, "direction"); $$ = [v](CameraSpec& c) { c.direction = v; }; }
-  | "right" expr       { auto v = ev.nonzero_vec3($2, @2, "right"); $$ = [v](CameraSpec& c) { c.right = v; }; }
-  | "up" expr          { auto v = ev.nonzero_vec3($2, @2, "up"); $$ = [v](CameraSpec& c) { c.up = v; }; }
-  | "sky" expr         { auto v = ev.nonzero_vec3($2, @2, "sky"); $$ = [v](CameraSpec& c) { c.sky = v; }; }
-  | "angle" expr       { double a = ev.camera_angle($2, @2); $$ = [a](CameraSpec& c) { c.angle = a; }; }
-  | "aperture" expr    { $$ = [](CameraSpec&) {}; ev.ignored(LOC(@1), "aperture (no focal blur)"); }
-  | "blur_samples" expr { $$ = [](CameraSpec&) {}; ev.ignored(LOC(@1), "blur_samples"); }
-  | "focal_point" expr { $$ = [](CameraSpec&) {}; ev.ignored(LOC(@1), "focal_point"); }
-  | transform_item     { sg::Mat4 t = $1; $$ = [t](CameraSpec& c) { c.world_from_camera = t * c.world_from_camera; }; }
+  | camera_type        { auto p = $1; auto at = LOC(@1); $$ = [p, at](CameraSpec& c) { c.set_projection(p, at); }; }
+  | "location" expr    { auto v = ev.to_vec3($2, @2); $$ = [v](CameraSpec& c) { c.location = v; c.other_item_seen = true; }; }
+  | "look_at" expr     { auto v = ev.to_vec3($2, @2); $$ = [v](CameraSpec& c) { c.look_at = v; c.other_item_seen = true; }; }
+  | "direction" expr   { auto v = ev.nonzero_vec3($2, @2, "direction"); $$ = [v](CameraSpec& c) { c.direction = v; c.other_item_seen = true; }; }
+  | "right" expr       { auto v = ev.nonzero_vec3($2, @2, "right"); $$ = [v](CameraSpec& c) { c.right = v; c.other_item_seen = true; }; }
+  | "up" expr          { auto v = ev.nonzero_vec3($2, @2, "up"); $$ = [v](CameraSpec& c) { c.up = v; c.other_item_seen = true; }; }
+  | "sky" expr         { auto v = ev.nonzero_vec3($2, @2, "sky"); $$ = [v](CameraSpec& c) { c.sky = v; c.other_item_seen = true; }; }
+  | "angle"            { auto at = LOC(@1); $$ = [at](CameraSpec& c) { c.set_angle(0.0, std::nullopt, at, false); }; }
+  | "angle" expr       { double a = ev.camera_angle($2, @2); auto at = LOC(@2); $$ = [a, at](CameraSpec& c) { c.set_angle(a, std::nullopt, at, true); }; }
+  | "angle" expr "," expr
+      { double h = ev.camera_angle($2, @2), v = ev.camera_angle($4, @4); auto at = LOC(@2);
+        $$ = [h, v, at](CameraSpec& c) { c.set_angle(h, v, at, true); }; }
+  | "aperture" expr    { double a = ev.to_float($2, @2, "a float aperture"); $$ = [a](CameraSpec& c) { c.aperture = a; c.other_item_seen = true; }; }
+  | "blur_samples" expr { $$ = ev.blur_samples($2, @2, nullptr, @2); }
+  | "blur_samples" expr "," expr { $$ = ev.blur_samples($2, @2, &$4, @4); }
+  | "focal_point" expr { auto v = ev.to_vec3($2, @2); $$ = [v](CameraSpec& c) { c.focal_point = v; c.other_item_seen = true; }; }
+  | "confidence" expr  { $$ = ev.blur_confidence($2, @2); }
+  | "variance" expr    { $$ = ev.blur_variance($2, @2); }
+  | normal             { auto n = $1; $$ = [n](CameraSpec& c) { c.normal = n; c.other_item_seen = true; }; }
+  | transform_item     { sg::Mat4 t = $1; $$ = [t](CameraSpec& c) { c.world_from_camera = t * c.world_from_camera; c.other_item_seen = true; }; }
+  ;
+
+camera_type
+  : "perspective"      { $$ = sg::Camera::Projection::Perspective; }
+  | "orthographic"     { $$ = sg::Camera::Projection::Orthographic; }
+  | "fisheye"          { $$ = sg::Camera::Projection::Fisheye; }
+  | "ultra_wide_angle" { $$ = sg::Camera::Projection::UltraWideAngle; }
+  | "omnimax"          { $$ = sg::Camera::Projection::Omnimax; }
+  | "panoramic"        { $$ = sg::Camera::Projection::Panoramic; }
+  | "spherical"        { $$ = sg::Camera::Projection::Spherical; }
+  | "cylinder" expr    { $$ = ev.cylinder_camera($2, @2); }
   ;
 
 /* ------------------------------------------------------ settings, extension */

@@ -1,5 +1,5 @@
-// Lights, the camera (resolved exactly as POV-Ray 3.7 does) and the
-// scene-level settings, including lancer's render_settings extension.
+// Lights and the scene-level settings, including lancer's render_settings
+// extension (the camera is in camera.cpp).
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -7,98 +7,6 @@
 #include "evaluator.h"
 
 namespace lancer::parse {
-
-// POV-Ray 3.7 camera (pov-3.7-semantics.md section 1): vectors are applied in
-// the fixed order right, direction, angle, up, sky, location, look_at,
-// whatever order the block lists them in; transforms come last.
-sg::Camera resolve_camera(const CameraSpec& spec, bool* sky_along_view) {
-    sg::Camera camera;
-    camera.projection = spec.projection;
-    camera.location_in_source = spec.location_in_source;
-    sg::Vec3 right = spec.right.value_or(sg::Vec3(1.33, 0.0, 0.0));
-    sg::Vec3 direction = spec.direction.value_or(sg::Vec3(0.0, 0.0, 1.0));
-    sg::Vec3 up = spec.up.value_or(sg::Vec3(0.0, 1.0, 0.0));
-    sg::Vec3 sky = spec.sky.value_or(sg::Vec3(0.0, 1.0, 0.0));
-    sg::Vec3 location = spec.location.value_or(sg::Vec3(0.0));
-    if (spec.angle) {
-        // angle is the horizontal field of view: |direction| = |right| / 2 / tan(angle / 2).
-        double length = 0.5 * glm::length(right) / std::tan(glm::radians(*spec.angle) / 2.0);
-        direction = glm::normalize(direction) * length;
-    }
-    if (spec.look_at) {
-        sg::Vec3 target = *spec.look_at;
-        if (glm::length(target - location) > 0.0) {
-            double handedness = glm::dot(glm::cross(up, direction), right) < 0.0 ? -1.0 : 1.0;
-            sg::Vec3 d = glm::normalize(target - location);
-            sg::Vec3 new_right = glm::cross(sky, d);
-            // Looking along the sky: POV keeps the right vector it had
-            // (with a warning) and still turns up to face the view.
-            if (glm::length(new_right) < 1e-10) {
-                new_right = right;
-                if (sky_along_view) *sky_along_view = true;
-            }
-            const double right_length = glm::length(right);
-            right = glm::normalize(new_right) * right_length * handedness;
-            up = glm::normalize(glm::cross(d, right)) * glm::length(up);
-            // Keep up's sense when right was flipped (left-handed frame).
-            if (handedness < 0.0) up = -up;
-            direction = d * glm::length(direction);
-        }
-    }
-    if (spec.projection == sg::Camera::Projection::Orthographic && ((!spec.up && !spec.right) || spec.angle)) {
-        // POV-Ray's orthographic camera sees the area the perspective one
-        // sees at the look_at distance (look_at defaulting to <0,0,1>):
-        // right and up grow by |look_at - location| / |direction|.
-        const double k1 = glm::length(spec.look_at.value_or(sg::Vec3(0.0, 0.0, 1.0)) - location);
-        const double k2 = glm::length(direction);
-        if (k1 > 1e-10 && k2 > 1e-10) {
-            right *= k1 / k2;
-            up *= k1 / k2;
-        }
-    }
-    const sg::Mat4& m = spec.world_from_camera;
-    camera.location = sg::Vec3(m * glm::dvec4(location, 1.0));
-    camera.direction = sg::Vec3(m * glm::dvec4(direction, 0.0));
-    camera.right = sg::Vec3(m * glm::dvec4(right, 0.0));
-    camera.up = sg::Vec3(m * glm::dvec4(up, 0.0));
-    return camera;
-}
-
-double Evaluator::camera_angle(const Value& v, const SourceRange& where) {
-    double angle = to_float(v, where, "a float angle in degrees");
-    if (v.kind == Value::Kind::Float && (angle <= 0.0 || angle >= 180.0)) {
-        error(where.begin, "camera angle must be between 0 and 180 degrees (exclusive), got " + std::to_string(angle));
-        return 67.38;
-    }
-    return angle;
-}
-
-void Evaluator::set_camera(const CameraSpec& spec) {
-    if (m_saw_camera)
-        warning(spec.location_in_source, "a second camera replaces the first (POV-Ray uses the last one)");
-    m_saw_camera = true;
-    if (spec.look_at && glm::length(*spec.look_at - spec.location.value_or(sg::Vec3(0.0))) == 0.0) {
-        error(spec.location_in_source, "camera location and look_at point must be different (as in POV-Ray)");
-        return;
-    }
-    bool sky_along_view = false;
-    m_scene.camera = resolve_camera(spec, &sky_along_view);
-    // The three vectors must span space, or every ray is the same ray (or
-    // none): POV-Ray renders such a camera as garbage or black.
-    const sg::Camera& c = *m_scene.camera;
-    const double volume = std::fabs(glm::dot(glm::cross(c.right, c.up), c.direction));
-    const double scale = glm::length(c.right) * glm::length(c.up) * glm::length(c.direction);
-    if (!(volume > 1e-9 * scale)) {
-        error(spec.location_in_source,
-              "the camera's direction, up and right vectors lie in one plane (or one is zero): they must span "
-              "space");
-        return;
-    }
-    if (sky_along_view)
-        warning(spec.location_in_source,
-                "the camera looks along its sky direction: the right vector is kept as given (POV-Ray's rule); "
-                "set sky to choose which way is up");
-}
 
 sg::Light Evaluator::make_light(const Value& position, const SourceRange& wp, const Value& colour,
                                 const SourceRange& wc, const sg::SourceLocation& at) {

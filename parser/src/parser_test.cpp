@@ -517,6 +517,61 @@ TEST(ParserCamera, FixedOrderSkyRightAndOrthographic) {
     EXPECT_EQ(ortho.camera->projection, sg::Camera::Projection::Orthographic);
 }
 
+TEST(ParserCamera, TypesAndTheirAngles) {
+    auto fisheye = parse_ok("camera { fisheye angle 270 location <0, 1, 0> look_at <0, 1, 5> }");
+    EXPECT_EQ(fisheye.camera->projection, sg::Camera::Projection::Fisheye);
+    EXPECT_DOUBLE_EQ(fisheye.camera->angle, 270.0);
+    // Only perspective and orthographic cameras turn angle into |direction|.
+    EXPECT_DOUBLE_EQ(glm::length(fisheye.camera->direction), 1.0);
+    EXPECT_DOUBLE_EQ(parse_ok("camera { omnimax }").camera->angle, 90.0);  // POV's default
+    auto spherical = parse_ok("camera { spherical angle 200 }");
+    EXPECT_DOUBLE_EQ(spherical.camera->horizontal_angle, 200.0);
+    EXPECT_DOUBLE_EQ(spherical.camera->vertical_angle, 100.0);  // half the first, as POV
+    auto both = parse_ok("camera { spherical angle 90, 30 }");
+    EXPECT_DOUBLE_EQ(both.camera->vertical_angle, 30.0);
+    EXPECT_EQ(parse_ok("camera { cylinder 3 }").camera->projection, sg::Camera::Projection::Cylinder3);
+    // A bare orthographic angle scales to the look_at distance, keeping direction.
+    auto ortho = parse_ok("camera { orthographic location <0, 0, -4> look_at 0 right x up y angle }");
+    expect_vec(ortho.camera->right, {4, 0, 0});
+    expect_vec(ortho.camera->direction, {0, 0, 1});
+}
+
+TEST(ParserCamera, FocalBlurAsPovReadsIt) {
+    auto scene = parse_ok(
+        "camera { location <0, 0, -5> look_at 0 angle 90 aperture 0.5 blur_samples 5, 40 confidence 0.8 "
+        "variance 0.001 focal_point <3, 4, -5> }");
+    const auto& c = *scene.camera;
+    EXPECT_TRUE(c.focal_blur());
+    EXPECT_DOUBLE_EQ(c.aperture, 0.5);
+    EXPECT_EQ(c.blur_samples_min, 5);
+    EXPECT_EQ(c.blur_samples, 40);
+    EXPECT_DOUBLE_EQ(c.confidence, 0.8);
+    EXPECT_DOUBLE_EQ(c.variance, 0.001);
+    EXPECT_DOUBLE_EQ(c.focal_distance, 5.0);  // |focal_point - location|
+    // Without focal_point: POV's Direction_Length, what angle made it.
+    auto unfocused = parse_ok("camera { angle 90 aperture 1 blur_samples 4 }");
+    EXPECT_EQ(unfocused.camera->blur_samples, 4);
+    EXPECT_EQ(unfocused.camera->blur_samples_min, 0);
+    EXPECT_NEAR(unfocused.camera->focal_distance, 0.665, 1e-12);
+    // A bare direction leaves it at 1, as in POV-Ray.
+    EXPECT_DOUBLE_EQ(parse_ok("camera { direction z * 3 }").camera->focal_distance, 1.0);
+}
+
+TEST(ParserCamera, FocalBlurSettingsThatDoNothingWarn) {
+    for (const char* text :
+         {"camera { aperture 1 }", "camera { blur_samples 10 }", "camera { orthographic aperture 1 blur_samples 10 }",
+          "camera { aperture 1 blur_samples 10 confidence 1.5 }"}) {
+        const ParseResult result = parse_scene_string(text, "w.pov");
+        EXPECT_TRUE(result.ok()) << text;
+        EXPECT_GE(test::count_warnings(result), 1) << text;
+    }
+    EXPECT_EQ(test::count_warnings(parse_scene_string("camera { aperture 1 blur_samples 10 }", "w.pov")), 0);
+}
+
+TEST(ParserCamera, NormalIsKept) {
+    EXPECT_TRUE(parse_ok("camera { normal { bumps 0.5 } }").camera->normal);
+}
+
 TEST(ParserCamera, ImageSizeFromOptionsAndRenderSettings) {
     ParseOptions options;
     options.image_width = 800;

@@ -27,13 +27,38 @@ struct ShapeValue {
 };
 
 // A camera block's settings as written; resolved in POV's fixed order
-// (right, direction, angle, up, sky, location, look_at) by resolve_camera.
+// (right, direction, angle, up, sky, location, look_at, focal_point) by
+// resolve_camera.
 struct CameraSpec {
     sg::Camera::Projection projection = sg::Camera::Projection::Perspective;
-    std::optional<sg::Vec3> location, look_at, direction, right, up, sky;
-    std::optional<double> angle;
+    std::optional<sg::Vec3> location, look_at, direction, right, up, sky, focal_point;
+    // `angle`: the first value; the spherical camera's second one, if given.
+    // An orthographic `angle` may have no value (POV reads it as 0).
+    std::optional<double> angle, vertical_angle;
+    bool angle_has_value = false;
+    sg::SourceLocation angle_location;
+    double aperture = 0.0;
+    int blur_samples = 0, blur_samples_min = 0;
+    double confidence = 0.9, variance = 1.0 / 10000.0;
+    sg::NormalRef normal;
     sg::Mat4 world_from_camera{1.0};  // transforms written in the block
     sg::SourceLocation location_in_source;
+    // POV-Ray reads the camera type before any other item: a type after
+    // one is an error (set_camera reports it).
+    bool other_item_seen = false;
+    std::optional<sg::SourceLocation> late_type_location;
+
+    void set_projection(sg::Camera::Projection type, const sg::SourceLocation& at) {
+        if (other_item_seen && !late_type_location) late_type_location = at;
+        projection = type;
+    }
+    void set_angle(double first, std::optional<double> second, const sg::SourceLocation& at, bool has_value) {
+        angle = first;
+        vertical_angle = second;
+        angle_has_value = has_value;
+        angle_location = at;
+        other_item_seen = true;
+    }
 };
 
 struct ArrayData;

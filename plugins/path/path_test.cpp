@@ -274,7 +274,8 @@ TEST_F(PathFixture, DirectLightingEqualsShadow) {
     auto unused = shadow->make_sampler(0);
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
-            const Ray ray = scene->camera().generate_ray(x + 0.5f, y + 0.5f, kWidth, kHeight);
+            Ray ray;
+            ASSERT_TRUE(scene->camera().generate_ray(x + 0.5f, y + 0.5f, kWidth, kHeight, ray));
             unused->start_sample(x, y, 0);
             const Color expected = shade_camera_ray(*shadow, ray, *scene, *unused);
             sampler->start_sample(x, y, 0);

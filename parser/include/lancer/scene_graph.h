@@ -778,18 +778,52 @@ struct Light {
 
 // ------------------------------------------------------------------ camera
 
-// Resolved as POV-Ray 3.7 does (pov-3.7-semantics.md §1): the ray through
+// Resolved as POV-Ray 3.7 does (pov-3.7-semantics.md §1): the vectors
+// below are the ones POV's CreateCameraRay reads, after look_at, angle and
+// the block's transforms. For the perspective camera the ray through
 // normalized image coordinates (x0, y0) in [-0.5, 0.5] is
-// normalize(direction + x0 * right + y0 * up) from location (perspective),
-// or direction from location + x0 * right + y0 * up (orthographic).
+// normalize(direction + x0 * right + y0 * up) from location; the other
+// projections are in docs/scene-language.md (render/src/camera/ has them).
 struct Camera {
-    enum class Projection { Perspective, Orthographic };
+    enum class Projection {
+        Perspective,
+        Orthographic,
+        Fisheye,
+        UltraWideAngle,
+        Omnimax,
+        Panoramic,
+        Cylinder1,  // cylinder 1: vertical axis, rays from the location
+        Cylinder2,  // cylinder 2: horizontal axis, rays from the location
+        Cylinder3,  // cylinder 3: vertical axis, rays from a vertical line
+        Cylinder4,  // cylinder 4: horizontal axis, rays from a horizontal line
+        Spherical,
+    };
     Projection projection = Projection::Perspective;
     Vec3 location{0.0};
     Vec3 direction{0.0, 0.0, 1.0};
     Vec3 right{1.33, 0.0, 0.0};
     Vec3 up{0.0, 1.0, 0.0};
+    // POV's `angle` as the non-perspective projections read it, in degrees
+    // (fisheye: the whole field; ultra_wide_angle and cylinders: across the
+    // image). POV's default when none is given is 90.
+    double angle = 90.0;
+    // The spherical camera's `angle H, V`: the longitude and latitude spans.
+    double horizontal_angle = 360.0, vertical_angle = 180.0;
+    // Focal blur: on when aperture != 0 and blur_samples > 0. A point at
+    // focal_distance along `direction` (measured in units of |direction|,
+    // as POV-Ray does) stays sharp.
+    double aperture = 0.0;
+    int blur_samples = 0;      // the most samples per pixel POV takes
+    int blur_samples_min = 0;  // POV's least before its confidence test may stop
+    double confidence = 0.9;
+    double variance = 1.0 / 10000.0;
+    double focal_distance = 1.0;
+    // normal { } on a camera: each ray's direction is bent as a surface
+    // normal would be, the pattern read at (x0, y0, 0) of the image plane.
+    NormalRef normal;
     SourceLocation location_in_source;
+
+    bool focal_blur() const { return aperture != 0.0 && blur_samples > 0; }
 };
 
 // ---------------------------------------------------------------- settings

@@ -1,5 +1,7 @@
 // The camera, resolved from the scene graph as POV-Ray 3.7 frames it
-// (pov-3.7-semantics.md §1, the POV-Ray reference kept outside this repository).
+// (pov-3.7-semantics.md §1): every POV projection, focal blur's thin lens
+// and a camera normal. The pinhole perspective camera, nearly every scene's,
+// is inline and lane-parallel; the others are in render/src/camera/.
 #pragma once
 
 #include <cmath>
@@ -8,42 +10,82 @@
 
 namespace lancer {
 
+class NormalPerturbation;
+
 class Camera {
   public:
-    enum class Projection { Perspective, Orthographic };
+    enum class Projection {
+        Perspective,
+        Orthographic,
+        Fisheye,
+        UltraWideAngle,
+        Omnimax,
+        Panoramic,
+        Cylinder1,
+        Cylinder2,
+        Cylinder3,
+        Cylinder4,
+        Spherical,
+    };
+
+    // POV-Ray's focal blur: rays leave a lens across the aperture and meet
+    // again at focal_distance along the direction (in units of
+    // |direction|, as POV measures it).
+    struct FocalBlur {
+        float aperture = 0.0f;  // 0: a pinhole
+        float focal_distance = 1.0f;
+        int samples = 0;      // POV's blur_samples (its most per pixel)
+        int samples_min = 0;  // the least before POV's confidence test
+        float confidence = 0.9f;
+        float variance = 1.0f / 10000.0f;
+    };
 
     Camera() = default;
     Camera(Projection projection, const Vec3& location, const Vec3& direction, const Vec3& right, const Vec3& up)
         : m_projection(projection), m_location(location), m_direction(direction), m_right(right), m_up(up) {}
 
-    // Ray through the film point (x, y) in pixels, (0,0) the top-left corner
-    // of the image and (width, height) the bottom-right. Pixel centres are at
-    // half-integers, as POV-Ray's. Inline: the host calls it once per
-    // camera sample, and the ray is then built where it is stored.
-    Ray generate_ray(float x, float y, int width, int height) const {
+    // POV's `angle` for the non-planar projections (degrees; default 90)
+    // and the spherical camera's two spans.
+    void set_angles(double angle, double horizontal, double vertical) {
+        m_angle = angle;
+        m_horizontal_angle = horizontal;
+        m_vertical_angle = vertical;
+    }
+    void set_focal_blur(const FocalBlur& blur) { m_blur = blur; }
+    // Bends every ray's direction as a surface normal (POV's camera
+    // normal { }); the perturbation must outlive the camera.
+    void set_normal(const NormalPerturbation* normal) { m_normal = normal; }
+
+    // The ray through the film point (x, y) in pixels, (0,0) the top-left
+    // corner of the image and (width, height) the bottom-right; pixel
+    // centres are at half-integers, as POV-Ray's. `lens` is the point of
+    // the aperture the ray leaves from, in POV's sample-grid units (the
+    // disc of radius 0.5; ignored without focal blur). Returns false where
+    // the projection sees nothing (a fisheye's corners, outside omnimax's
+    // circle): POV traces no ray there and the sample is black.
+    bool generate_ray(float x, float y, int width, int height, Ray& ray, const Vec2& lens = Vec2(0.0f)) const {
+        if (!is_pinhole_perspective()) return generate_general_ray(x, y, width, height, lens, ray);
         // Normalised image coordinates: x0 in [-0.5, 0.5] left to right, y0
         // in [-0.5, 0.5] bottom to top.
         const float x0 = x / float(width) - 0.5f;
         const float y0 = 0.5f - y / float(height);
-        Ray ray;
-        if (m_projection == Projection::Orthographic) {
-            ray.origin = m_location + x0 * m_right + y0 * m_up;
-            ray.direction = glm::normalize(m_direction);
-        } else {
-            ray.origin = m_location;
-            ray.direction = glm::normalize(m_direction + x0 * m_right + y0 * m_up);
-        }
+        ray.origin = m_location;
+        ray.direction = glm::normalize(m_direction + x0 * m_right + y0 * m_up);
         ray.t_min = 0.0f;
         ray.t_max = kInfinity;
-        return ray;
+        return true;
     }
 
-    // generate_ray for `count` film points (x[i], y[i]), bit for bit, into
-    // out[i]. Computed lane by lane, so the compiler takes several rays per
-    // instruction: the host generates a tile's camera rays at once.
-    void generate_rays(const float* x, const float* y, int count, int width, int height, Ray* out) const {
-        if (m_projection == Projection::Orthographic) {
-            for (int i = 0; i < count; ++i) out[i] = generate_ray(x[i], y[i], width, height);
+    // generate_ray for `count` film points (x[i], y[i]) and lens points
+    // lens[i] (null: the lens centre), bit for bit, into out[i] and
+    // sees[i]. The pinhole perspective camera is computed lane by lane, so
+    // the compiler takes several rays per instruction: the host generates
+    // a tile's camera rays at once.
+    void generate_rays(const float* x, const float* y, const Vec2* lens, int count, int width, int height, Ray* out,
+                       bool* sees) const {
+        if (!is_pinhole_perspective()) {
+            for (int i = 0; i < count; ++i)
+                sees[i] = generate_general_ray(x[i], y[i], width, height, lens ? lens[i] : Vec2(0.0f), out[i]);
             return;
         }
         constexpr int kLanes = 16;
@@ -68,6 +110,7 @@ class Camera {
                 ray.direction = Vec3(dx[i], dy[i], dz[i]);
                 ray.t_min = 0.0f;
                 ray.t_max = kInfinity;
+                sees[first + i] = true;
             }
         }
     }
@@ -77,13 +120,28 @@ class Camera {
     const Vec3& direction() const { return m_direction; }
     const Vec3& right() const { return m_right; }
     const Vec3& up() const { return m_up; }
+    double angle() const { return m_angle; }
+    const FocalBlur& focal_blur() const { return m_blur; }
+    bool has_focal_blur() const { return m_blur.aperture != 0.0f && m_blur.samples > 0; }
+    const NormalPerturbation* normal() const { return m_normal; }
 
   private:
+    bool is_pinhole_perspective() const {
+        return m_projection == Projection::Perspective && !has_focal_blur() && m_normal == nullptr;
+    }
+    // Every other projection, focal blur and the camera normal, in double
+    // precision (render/src/camera/camera_projections.cpp).
+    bool generate_general_ray(float x, float y, int width, int height, const Vec2& lens, Ray& ray) const;
+
     Projection m_projection = Projection::Perspective;
     Vec3 m_location{0.0f};
     Vec3 m_direction{0.0f, 0.0f, 1.0f};
     Vec3 m_right{1.33f, 0.0f, 0.0f};
     Vec3 m_up{0.0f, 1.0f, 0.0f};
+    double m_angle = 90.0;
+    double m_horizontal_angle = 360.0, m_vertical_angle = 180.0;
+    FocalBlur m_blur;
+    const NormalPerturbation* m_normal = nullptr;
 };
 
 }  // namespace lancer

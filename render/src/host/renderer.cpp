@@ -25,6 +25,7 @@
 #include "lancer/host/counting_scene.h"
 #include "lancer/host/estimate.h"
 
+#include "host/aperture_samples.h"
 #include "host/pass_planner.h"
 #include "host/progress.h"
 
@@ -56,37 +57,58 @@ struct CameraSample {
 // pixels: a 16x16 tile at one sample each fills it. Long batches let
 // RenderScene::intersect_batch overlap one packet's memory accesses with
 // the next packet's tracing, and the rays are generated all at once
-// (Camera::generate_rays) from the film points. It positions each sample's
-// random stream when the integrator asks for it: a sample's stream starts
-// at (pixel, index) and, when the host jittered the film point, continues
-// past that draw.
+// (Camera::generate_rays) from the film and lens points. It positions each
+// sample's random stream when the integrator asks for it: a sample's stream
+// starts at (pixel, index) and continues past the host's own draws (the
+// film point's jitter, the lens point).
 struct CameraBatch final : CameraSampleStreams {
     static constexpr int kBlock = 4;
     static constexpr int kCapacity = 16 * kBlock * kBlock;
     CameraSample samples[kCapacity];
     float film_x[kCapacity], film_y[kCapacity];
+    Vec2 lens[kCapacity];
     Ray rays[kCapacity];
+    bool sees[kCapacity];
     Hit hits[kCapacity];
     bool found[kCapacity];
     Color radiance[kCapacity];
     int size = 0;
     Sampler* sampler = nullptr;
     bool jittered = false;
+    bool lens_sampled = false;
 
-    void add(int x, int y, std::uint32_t index, const Vec2& film_point) {
+    void add(int x, int y, std::uint32_t index, const Vec2& film_point, const Vec2& lens_point) {
         samples[size] = CameraSample{x, y, index};
         film_x[size] = film_point.x;
         film_y[size] = film_point.y;
+        lens[size] = lens_point;
         ++size;
     }
     bool full() const { return size == kCapacity; }
+    // Sample `from` moves to place `to` (to <= from), ray included.
+    void move(int from, int to) {
+        samples[to] = samples[from];
+        film_x[to] = film_x[from];
+        film_y[to] = film_y[from];
+        lens[to] = lens[from];
+        rays[to] = rays[from];
+    }
 
     Sampler& stream(int i) const override {
         sampler->start_sample(samples[i].x, samples[i].y, samples[i].index);
         if (jittered) sampler->next_2d();
+        if (lens_sampled) sampler->next_2d();
         return *sampler;
     }
 };
+
+// A camera with focal blur takes at least its blur_samples per pixel, as
+// POV-Ray traces them, when the count is fixed.
+RenderOptions with_focal_blur_samples(RenderOptions options, const Camera& camera) {
+    if (camera.has_focal_blur() && options.time_budget_seconds <= 0.0 && options.noise_target <= 0.0)
+        options.samples_per_pixel = std::max(options.samples_per_pixel, camera.focal_blur().samples);
+    return options;
+}
 // Samples per pixel over a window: their sum, least and most.
 struct SampleCounts {
     std::uint64_t sum = 0;
@@ -121,7 +143,7 @@ class ImageRender {
     ImageRender(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options, Film& film)
         : m_scene(scene),
           m_integrator(integrator),
-          m_options(options),
+          m_options(with_focal_blur_samples(options, scene.camera())),
           m_film(film),
           m_start(Clock::now()),
           m_window(clamped_window(options, film.width(), film.height())),
@@ -129,11 +151,13 @@ class ImageRender {
           m_tiles_x((m_window.x1 - m_window.x0 + m_tile - 1) / m_tile),
           m_tiles((m_window.y1 - m_window.y0 + m_tile - 1) / m_tile * m_tiles_x),
           m_window_pixels(std::uint64_t(m_window.x1 - m_window.x0) * std::uint64_t(m_window.y1 - m_window.y0)),
-          m_planner(options, integrator.is_deterministic(), m_window),
+          m_planner(m_options, integrator.is_deterministic(), m_window),
           // One sample of a deterministic integrator goes through the pixel
           // centre (POV-Ray's picture without antialiasing); more samples,
           // of any integrator, spread over the pixel and antialias.
           m_pixel_centre(integrator.is_deterministic() && m_planner.cap() == 1),
+          m_lens_sampled(scene.camera().has_focal_blur()),
+          m_aperture(scene.camera().focal_blur().samples, integrator.is_deterministic()),
           m_prototype(integrator.make_sampler(options.seed)),
           m_samplers([this] { return m_prototype->clone(); }),
           // One batch per thread for the whole render: its 41 KB of rays
@@ -143,9 +167,9 @@ class ImageRender {
           // Budget mode stops at the deadline even mid-pass; the planner
           // keeps passes short enough that this is only a backstop.
           m_has_deadline(m_planner.mode() == PassMode::Budget ||
-                         (m_planner.mode() == PassMode::Adaptive && options.time_budget_seconds > 0.0)),
+                         (m_planner.mode() == PassMode::Adaptive && m_options.time_budget_seconds > 0.0)),
           m_deadline(m_start + std::chrono::duration_cast<Clock::duration>(
-                                   std::chrono::duration<double>(std::max(options.time_budget_seconds, 0.0)))) {}
+                                   std::chrono::duration<double>(std::max(m_options.time_budget_seconds, 0.0)))) {}
 
     RenderStats run() {
         const CountingScene* counting = m_options.ray_counter;
@@ -254,20 +278,42 @@ class ImageRender {
         return m_stopped_fraction;
     }
 
-    // The k-th sample of a pixel always uses stream k.
-    Vec2 film_point(Sampler& sampler, int x, int y, std::uint32_t s) const {
-        if (m_pixel_centre) return Vec2(float(x) + 0.5f, float(y) + 0.5f);
+    // The k-th sample of a pixel always uses stream k: its film point, then
+    // with focal blur its lens point.
+    void add_sample(CameraBatch& batch, Sampler& sampler, int x, int y, std::uint32_t s) const {
+        if (m_pixel_centre && !m_lens_sampled) {
+            batch.add(x, y, s, Vec2(float(x) + 0.5f, float(y) + 0.5f), Vec2(0.0f));
+            return;
+        }
         sampler.start_sample(x, y, s);
-        const Vec2 jitter = sampler.next_2d();
-        return Vec2(float(x) + jitter.x, float(y) + jitter.y);
+        Vec2 film(float(x) + 0.5f, float(y) + 0.5f);
+        if (!m_pixel_centre) {
+            const Vec2 jitter = sampler.next_2d();
+            film = Vec2(float(x) + jitter.x, float(y) + jitter.y);
+        }
+        const Vec2 lens = m_lens_sampled ? m_aperture.point(s, sampler.next_2d()) : Vec2(0.0f);
+        batch.add(x, y, s, film, lens);
     }
 
     // Camera rays for the batch's film points, their hits traced together,
-    // shaded by the integrator, added to the film.
+    // shaded by the integrator, added to the film. A sample whose ray the
+    // camera cannot make (outside a fisheye's circle) is black, as in
+    // POV-Ray, and is not traced.
     void shade_batch(CameraBatch& batch) {
         if (batch.size == 0) return;
-        m_scene.camera().generate_rays(batch.film_x, batch.film_y, batch.size, m_film.width(), m_film.height(),
-                                       batch.rays);
+        m_scene.camera().generate_rays(batch.film_x, batch.film_y, batch.lens, batch.size, m_film.width(),
+                                       m_film.height(), batch.rays, batch.sees);
+        int kept = 0;
+        for (int i = 0; i < batch.size; ++i) {
+            if (!batch.sees[i]) {
+                m_film.add_sample(batch.samples[i].x, batch.samples[i].y, Color(0.0f));
+                continue;
+            }
+            if (kept != i) batch.move(i, kept);
+            ++kept;
+        }
+        batch.size = kept;
+        if (batch.size == 0) return;
         m_scene.intersect_batch(batch.rays, batch.size, batch.hits, batch.found, RayCoherence::Coherent);
         const CameraHits traced(batch.size, batch.rays, batch.hits, batch.found, batch);
         m_integrator.shade_camera_hits(traced, m_scene, batch.radiance);
@@ -288,6 +334,7 @@ class ImageRender {
         batch.size = 0;
         batch.sampler = &sampler;
         batch.jittered = !m_pixel_centre;
+        batch.lens_sampled = m_lens_sampled;
         constexpr int kBlock = CameraBatch::kBlock;
         for (int block_y = y_begin; block_y < y_end; block_y += kBlock)
             for (int block_x = x_begin; block_x < x_end; block_x += kBlock) {
@@ -301,9 +348,8 @@ class ImageRender {
                         const std::uint32_t first = m_film.samples_taken(x, y);
                         const std::uint32_t count = m_planner.planned(x - m_window.x0, y - m_window.y0, first);
                         for (std::uint32_t s = first; s < first + count; ++s) {
-                            const Vec2 point = film_point(sampler, x, y, s);
+                            add_sample(batch, sampler, x, y, s);
                             m_film.prefetch(x, y);
-                            batch.add(x, y, s, point);
                             if (batch.full()) shade_batch(batch);
                         }
                         taken += count;
@@ -316,7 +362,7 @@ class ImageRender {
 
     const RenderScene& m_scene;
     const Integrator& m_integrator;
-    const RenderOptions& m_options;
+    const RenderOptions m_options;
     Film& m_film;
     const Clock::time_point m_start;
     const CropWindow m_window;
@@ -324,6 +370,8 @@ class ImageRender {
     const std::uint64_t m_window_pixels;
     PassPlanner m_planner;
     const bool m_pixel_centre;
+    const bool m_lens_sampled;
+    const ApertureSamples m_aperture;
     const std::unique_ptr<Sampler> m_prototype;
     tbb::enumerable_thread_specific<std::unique_ptr<Sampler>> m_samplers;
     tbb::enumerable_thread_specific<std::unique_ptr<CameraBatch>> m_batches;

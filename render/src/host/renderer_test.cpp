@@ -47,6 +47,57 @@ std::unique_ptr<RenderScene> small_scene() {
     return compile_scene(graph);
 }
 
+RenderOptions quiet_options(int width, int height) {
+    RenderOptions options;
+    options.width = width;
+    options.height = height;
+    options.progress = ProgressMode::Quiet;
+    return options;
+}
+
+class WhiteIntegrator final : public Integrator {
+  public:
+    Color shade_camera_hit(const Ray&, const Hit*, const RenderScene&, Sampler&) const override { return Color(1.0f); }
+    bool is_deterministic() const override { return true; }
+};
+
+// Outside a fisheye's circle POV-Ray traces no ray and writes black, not
+// the background: the host adds a black sample without asking the plugin.
+TEST(Renderer, PixelsACameraCannotSeeAreBlack) {
+    sg::SceneGraph graph;
+    graph.camera = sg::Camera{};
+    graph.camera->projection = sg::Camera::Projection::Fisheye;
+    graph.camera->right = {1.0, 0.0, 0.0};
+    graph.camera->angle = 180.0;
+    auto scene = compile_scene(graph);
+    Film film(20, 20);
+    render_image(*scene, WhiteIntegrator(), quiet_options(20, 20), film);
+    EXPECT_EQ(film.mean(0, 0), Color(0.0f));
+    EXPECT_EQ(film.mean(19, 19), Color(0.0f));
+    EXPECT_EQ(film.samples_taken(0, 0), 1u);
+    EXPECT_EQ(film.mean(10, 10), Color(1.0f));
+    EXPECT_EQ(film.mean(0, 10), Color(1.0f));  // on the circle's rim
+}
+
+// A camera with focal blur takes its blur_samples per pixel when the count
+// is fixed, as POV-Ray traces them; a larger count asked for is kept.
+TEST(Renderer, FocalBlurTakesItsBlurSamplesPerPixel) {
+    sg::SceneGraph graph;
+    graph.objects.push_back(sphere_object({0, 0, 5}, 1.0));
+    graph.camera = sg::Camera{};
+    graph.camera->aperture = 0.5;
+    graph.camera->blur_samples = 7;
+    auto scene = compile_scene(graph);
+    Film film(6, 4);
+    render_image(*scene, WhiteIntegrator(), quiet_options(6, 4), film);
+    EXPECT_EQ(film.samples_taken(3, 2), 7u);
+    RenderOptions options = quiet_options(6, 4);
+    options.samples_per_pixel = 9;
+    Film more(6, 4);
+    render_image(*scene, WhiteIntegrator(), options, more);
+    EXPECT_EQ(more.samples_taken(3, 2), 9u);
+}
+
 TEST(Renderer, BitIdenticalForOneAndTwoThreads) {
     auto scene = small_scene();
     NoisyIntegrator integrator;
@@ -97,7 +148,8 @@ TEST(Renderer, BatchedCameraHitsGiveTheSameImage) {
             for (std::uint32_t s = 0; s < 3; ++s) {
                 sampler->start_sample(x, y, s);
                 const Vec2 jitter = sampler->next_2d();
-                const Ray ray = scene->camera().generate_ray(float(x) + jitter.x, float(y) + jitter.y, 37, 23);
+                Ray ray;
+                ASSERT_TRUE(scene->camera().generate_ray(float(x) + jitter.x, float(y) + jitter.y, 37, 23, ray));
                 one_by_one.add_sample(x, y, shade_camera_ray(integrator, ray, *scene, *sampler));
             }
     const RenderStats stats = render_image(*scene, integrator, options, batched);

@@ -102,10 +102,24 @@ class Builder {
   private:
     void build_camera() {
         const sg::Camera camera = m_graph.camera.value_or(sg::Camera{});
+        // The two enumerations list POV's projections in the same order.
+        static_assert(int(Camera::Projection::Spherical) == int(sg::Camera::Projection::Spherical));
+        const auto projection = static_cast<Camera::Projection>(static_cast<int>(camera.projection));
         m_data->camera =
-            Camera(camera.projection == sg::Camera::Projection::Orthographic ? Camera::Projection::Orthographic
-                                                                             : Camera::Projection::Perspective,
-                   Vec3(camera.location), Vec3(camera.direction), Vec3(camera.right), Vec3(camera.up));
+            Camera(projection, Vec3(camera.location), Vec3(camera.direction), Vec3(camera.right), Vec3(camera.up));
+        m_data->camera.set_angles(camera.angle, camera.horizontal_angle, camera.vertical_angle);
+        Camera::FocalBlur blur;
+        blur.aperture = float(camera.aperture);
+        blur.focal_distance = float(camera.focal_distance);
+        blur.samples = camera.blur_samples;
+        blur.samples_min = camera.blur_samples_min;
+        blur.confidence = float(camera.confidence);
+        blur.variance = float(camera.variance);
+        m_data->camera.set_focal_blur(blur);
+        if (camera.normal) {
+            m_data->normals.push_back(m_data->texture_factory->make_normal(*camera.normal));
+            m_data->camera.set_normal(m_data->normals.back().get());
+        }
     }
 
     void count_mesh_uses(const std::vector<sg::Object>& objects) {
