@@ -54,6 +54,8 @@ Command add_check_command(CLI::App& app) {
         }
         const auto natives = make_parse_time_function_natives();
         parse_options.function_natives = natives.get();
+        const auto geometry = make_parse_time_geometry_queries();
+        parse_options.geometry_queries = geometry.get();
         ParseResult result = parse_scene_file(options->scene, parse_options);
         int warnings = 0;
         for (const auto& diagnostic : result.diagnostics) {

@@ -1,7 +1,7 @@
 // `lancer render SCENE [-i INTEGRATOR] [-o OUT] [--width W] [--height H]
 //  [--spp N] [--time SECONDS] [--noise E] [--seed S] [--threads T]
 //  [--crop x0,y0,x1,y1] [-p key=value]... [--stats FILE.json]
-//  [--checkpoint SECONDS] [--resume] [--quiet]`
+//  [--checkpoint SECONDS] [--resume] [--quiet] [--frames A..B [--clock C0..C1]]`
 //
 // Settings come from three places, later ones winning: lancer's defaults,
 // the scene's render_settings, the command line. Every check that can fail
@@ -18,12 +18,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "animation.h"
 #include "cli_output.h"
 #include "commands.h"
 #include "lancer/host/checkpoint.h"
@@ -106,7 +108,9 @@ struct RenderArguments {
     std::string crop;
     std::vector<std::string> parameters;
     bool quiet = false;
-    bool safe = false;  // --safe: files only from the scene's folder and the include path
+    bool safe = false;   // --safe: files only from the scene's folder and the include path
+    std::string frames;  // --frames A..B: an animation, one image per frame
+    std::string clock;   // --clock C0..C1 (default 0..1)
     // Which options the user gave (CLI11 leaves the others untouched).
     CLI::Option* output_option = nullptr;
     CLI::Option* stats_option = nullptr;
@@ -117,6 +121,17 @@ struct RenderArguments {
     CLI::Option* time_option = nullptr;
     CLI::Option* noise_option = nullptr;
     CLI::Option* checkpoint_option = nullptr;
+    CLI::Option* frames_option = nullptr;
+    CLI::Option* clock_option = nullptr;
+};
+
+// One image to make: a still, or one frame of an animation with its own
+// clock and numbered files.
+struct FrameJob {
+    AnimationFrame animation;
+    std::string output;
+    std::string stats;
+    bool animated = false;
 };
 
 // "x0,y0,x1,y1" as four integers, nothing else.
@@ -338,18 +353,14 @@ RenderReport make_report(const RenderArguments& arguments, const std::string& ou
     return report;
 }
 
-int run_render(const RenderArguments& arguments) {
-    const auto started = std::chrono::steady_clock::now();
-    const double age_at_start = process_age_seconds();
-    auto seconds_so_far = [&] {
-        return age_at_start + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    };
-    if (const int status = check_arguments(arguments)) return status;
-
+// Parses, builds, renders and writes one image (a still or a frame);
+// `seconds_so_far` is what the --time budget has spent.
+int render_frame(const RenderArguments& arguments, const FrameJob& job, const std::function<double()>& seconds_so_far) {
     // Parse once; the command line's size is what POV's image_width/height read.
     SceneRequest request;
     request.path = arguments.scene;
     request.safe = arguments.safe;
+    request.animation = job.animation;
     if (arguments.width_option->count() && arguments.height_option->count()) {
         request.image_width = arguments.width;
         request.image_height = arguments.height;
@@ -366,13 +377,12 @@ int run_render(const RenderArguments& arguments) {
     // Output: the scene's stem in the current folder unless named. Every
     // file this render writes is checked now, before any work: none may be
     // the scene or a file it read, none may share a path with another.
-    const std::string output =
-        arguments.output_option->count() ? arguments.output : fs::path(arguments.scene).stem().string() + ".png";
+    const std::string& output = job.output;
     {
         std::vector<std::string> inputs{arguments.scene};
         inputs.insert(inputs.end(), graph->input_files.begin(), graph->input_files.end());
         std::vector<OutputFile> outputs{{"the image (-o)", output}, {"the checkpoint", checkpoint_path_for(output)}};
-        if (arguments.stats_option->count()) outputs.push_back({"--stats", arguments.stats});
+        if (!job.stats.empty()) outputs.push_back({"--stats", job.stats});
         const std::string refused = check_output_files(outputs, inputs);
         if (!refused.empty()) {
             print_error(refused);
@@ -453,7 +463,7 @@ int run_render(const RenderArguments& arguments) {
         warn_after_render(*scene.scene);
         if (stats.interrupted && (checkpointing || arguments.resume)) write_checkpoint(checkpoint_path, identity, film);
         report.total_seconds = seconds_so_far();
-        if (arguments.stats_option->count()) write_stats_json(report, arguments.stats);
+        if (!job.stats.empty()) write_stats_json(report, job.stats);
 
         if (stats.nonfinite_samples > 0) {
             std::fprintf(stderr, "lancer: warning: %llu non-finite samples (NaN or infinite radiance) were dropped\n",
@@ -477,6 +487,51 @@ int run_render(const RenderArguments& arguments) {
     } catch (const std::exception& error) {
         print_error(error.what());
         return kExitBadInput;
+    }
+    return 0;
+}
+
+int run_render(const RenderArguments& arguments) {
+    if (const int status = check_arguments(arguments)) return status;
+    const std::string output =
+        arguments.output_option->count() ? arguments.output : fs::path(arguments.scene).stem().string() + ".png";
+    const std::string stats = arguments.stats_option->count() ? arguments.stats : std::string();
+    if (!arguments.frames_option->count()) {
+        if (arguments.clock_option->count()) {
+            print_error("--clock needs --frames (a still has no clock)");
+            return kExitUsage;
+        }
+        const auto started = std::chrono::steady_clock::now();
+        const double age_at_start = process_age_seconds();
+        const auto seconds_so_far = [&] {
+            return age_at_start + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        };
+        return render_frame(arguments, FrameJob{AnimationFrame{}, output, stats, false}, seconds_so_far);
+    }
+    std::string problem;
+    std::optional<AnimationRange> range = parse_frame_range(arguments.frames, problem);
+    if (range && arguments.clock_option->count() && !parse_clock_range(arguments.clock, *range, problem)) range.reset();
+    if (!range) {
+        print_error(problem);
+        return kExitUsage;
+    }
+    for (int frame = range->initial_frame; frame <= range->final_frame; ++frame) {
+        FrameJob job{range->frame(frame), frame_file_name(output, frame, range->final_frame),
+                     stats.empty() ? std::string() : frame_file_name(stats, frame, range->final_frame), true};
+        // --resume goes on from the frame that was stopped: frames written
+        // whole (an image and no checkpoint beside it) are not made again.
+        if (arguments.resume && fs::exists(job.output) && !fs::exists(checkpoint_path_for(job.output))) continue;
+        if (!arguments.quiet) {
+            std::printf("lancer: frame %d of %d..%d (clock %g) -> %s\n", frame, range->initial_frame,
+                        range->final_frame, job.animation.clock, job.output.c_str());
+            std::fflush(stdout);
+        }
+        // Each frame has the whole --time budget, counted from its start.
+        const auto started = std::chrono::steady_clock::now();
+        const auto seconds_so_far = [&] {
+            return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        };
+        if (const int status = render_frame(arguments, job, seconds_so_far)) return status;
     }
     return 0;
 }
@@ -517,6 +572,11 @@ Command add_render_command(CLI::App& app) {
                          "Integrator parameter key=value (repeatable); overrides the scene's")
             ->allow_extra_args(false);
     render->add_flag("-q,--quiet", arguments->quiet, "No progress and no summary line");
+    arguments->frames_option = render->add_option(
+        "--frames", arguments->frames,
+        "Animation: render frames A..B (POV's +KFI/+KFF), one image each, numbered as POV names them");
+    arguments->clock_option = render->add_option(
+        "--clock", arguments->clock, "Animation: clock from C0 at the first frame to C1 at the last (default 0..1)");
     render->add_flag("--safe", arguments->safe,
                      "Untrusted scene: read includes, OBJ/MTL and image files only from the scene's folder and the "
                      "include path");

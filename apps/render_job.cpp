@@ -14,6 +14,7 @@ std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request) {
     ParseOptions options;
     options.include_path = default_include_path();
     options.safe = request.safe;
+    options.animation = request.animation;
     if (request.image_width && request.image_height) {
         options.image_width = *request.image_width;
         options.image_height = *request.image_height;
@@ -21,6 +22,8 @@ std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request) {
     }
     const auto natives = make_parse_time_function_natives();
     options.function_natives = natives.get();
+    const auto geometry = make_parse_time_geometry_queries();
+    options.geometry_queries = geometry.get();
     ParseResult parsed = parse_scene_file(request.path, options);
     for (const Diagnostic& diagnostic : parsed.diagnostics) print_diagnostic(diagnostic);
     if (!parsed.ok()) return std::nullopt;

@@ -41,6 +41,7 @@ struct SceneRequest {
     std::string path;
     bool safe = false;
     std::optional<int> image_width, image_height;
+    AnimationFrame animation;  // POV's clock and frame constants (all 0 for a still)
 };
 
 // Parses the scene once, printing every diagnostic, and keeps the graph for

@@ -58,6 +58,41 @@ TEST_F(CliRender, WritesTheImageAndASummary) {
     EXPECT_CONTAINS(result.output, "whitted");
 }
 
+TEST_F(CliRender, FramesAreNumberedAsPovRayNamesThem) {
+    // Frames 8..12: the number padded to the final frame's digits.
+    const CommandResult result =
+        render("-q --frames 8..12 --clock 0..2 --stats '" + (m_folder / "run.json").string() + "'", "anim.png");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    for (const char* name : {"anim08.png", "anim09.png", "anim10.png", "anim11.png", "anim12.png"})
+        EXPECT_TRUE(wrote(name)) << name;
+    EXPECT_FALSE(wrote("anim.png"));
+    EXPECT_FALSE(wrote("anim7.png"));
+    EXPECT_TRUE(wrote("run08.json"));
+    EXPECT_TRUE(wrote("run12.json"));
+}
+
+TEST_F(CliRender, ResumingAnAnimationSkipsTheFramesWritten) {
+    ASSERT_EQ(render("-q --frames 1..3", "a.png").exit_code, 0);
+    const auto written = fs::last_write_time(m_folder / "a1.png");
+    fs::remove(m_folder / "a3.png");
+    const CommandResult resumed = render("--frames 1..3 --resume", "a.png");
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+    EXPECT_EQ(fs::last_write_time(m_folder / "a1.png"), written);
+    EXPECT_TRUE(wrote("a3.png"));
+    EXPECT_EQ(resumed.output.find("frame 1 of"), std::string::npos) << resumed.output;
+    EXPECT_CONTAINS(resumed.output, "frame 3 of 1..3");
+}
+
+TEST_F(CliRender, BadFramesAndClockAreUsageErrors) {
+    for (const char* bad : {"--frames 3..1", "--frames 1..", "--frames a..b", "--frames -2..3",
+                            "--frames 1..3 --clock 0", "--frames 1..3 --clock 0..inf", "--clock 0..1"}) {
+        const CommandResult result = render(bad);
+        EXPECT_EQ(result.exit_code, 2) << bad;
+        EXPECT_CONTAINS(result.output, "error:");
+        EXPECT_TRUE(folder_holds_only_the_scene()) << bad;
+    }
+}
+
 TEST_F(CliRender, EveryBuiltInIntegratorRenders) {
     for (const std::string name : {"raycast", "normal", "albedo", "depth"}) {
         const CommandResult result = render("-i " + name + " --quiet", name + ".exr");

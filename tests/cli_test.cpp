@@ -44,4 +44,23 @@ TEST(Cli, FunctionsCalledWhileParsingUseTheRenderersNoiseAndPatterns) {
     EXPECT_NE(result.output.find("#debug: 0.612779047 0.512266456"), std::string::npos) << result.output;
 }
 
+TEST(Cli, GeometryQueriesWhileParsingAnswerAsPovRay) {
+    // povray's #debug of the same lines prints the same numbers.
+    TempFolder folder;
+    const std::string scene = (folder.path() / "queries.pov").string();
+    std::ofstream(scene) << "#declare Ball = sphere { <0, 1, 0>, 1 scale <2, 1, 1> }\n"
+                            "#declare N = <9, 9, 9>;\n"
+                            "#declare P = trace(Ball, <5, 1, 0>, <-1, 0, 0>, N);\n"
+                            "#debug concat(vstr(3, P, \",\", 0, 3), \" \", vstr(3, N, \",\", 0, 3), \" \", "
+                            "vstr(3, max_extent(Ball), \",\", 0, 3), \" \", str(inside(Ball, <1.5, 1, 0>), 0, 0))\n";
+    const CommandResult check = run_lancer("check '" + scene + "'");
+    EXPECT_EQ(check.exit_code, 0) << check.output;
+    EXPECT_NE(check.output.find("#debug: 2.000,1.000,0.000 1.000,0.000,0.000 2.000,2.000,1.000 1"), std::string::npos)
+        << check.output;
+    const CommandResult render = run_lancer("render '" + scene + "' --width 8 --height 8 -q -o '" +
+                                            (folder.path() / "queries.png").string() + "'");
+    EXPECT_EQ(render.exit_code, 0) << render.output;
+    EXPECT_NE(render.output.find("#debug: 2.000,1.000,0.000"), std::string::npos) << render.output;
+}
+
 }  // namespace lancer::test

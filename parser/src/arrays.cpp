@@ -119,6 +119,24 @@ Value Evaluator::array_element(const Value& array, const sg::SourceLocation& at)
     return *data->elements[flat];
 }
 
+bool Evaluator::identifier_defined(const std::string& name, const sg::SourceLocation& at) {
+    const Value* found = lookup(name);
+    if (!found) return m_macros.count(name) > 0;
+    // #ifdef (A[i]) and defined(A[i]): whether the element has a value.
+    const RawToken* next = peek_raw();
+    if (found->kind != Value::Kind::Array || !found->array || !next || next->kind != RawKind::Punct ||
+        next->text != "[")
+        return true;
+    const std::shared_ptr<ArrayData> data = found->array;
+    std::size_t flat = 0;
+    std::vector<int> indices;
+    if (!read_array_indices(*data, at, flat, indices)) {
+        abort_parse();
+        return false;
+    }
+    return data->elements[flat].has_value();
+}
+
 void Evaluator::assign_array_element(const std::string& name, const RawToken& directive, bool local,
                                      const sg::SourceLocation& where) {
     const Value* found = lookup(name);

@@ -194,8 +194,10 @@ void Evaluator::directive_if(const RawToken& d, bool ifdef, bool negate) {
             error(d.location, "expected an identifier in #" + d.text + " (Name)");
             return abort_parse();
         }
+        const bool defined = identifier_defined(name, where);
+        if (m_aborted) return;
         if (!expect_raw_punct(")", "after the identifier of #" + d.text)) return;
-        taken = (lookup(name) != nullptr || m_macros.count(name) > 0) != negate;
+        taken = defined != negate;
     } else {
         taken = evaluate_condition(d, "#if");
     }

@@ -324,6 +324,13 @@ class Evaluator {
                             std::vector<int>& indices);
     // Functions (functions.cpp, patterns.cpp).
     Value call_function(const Value& function, const std::vector<Value>& arguments, const SourceRange& where);
+    // ---- trace(), inside(), min_extent(), max_extent() (geometry_queries.cpp)
+    Value trace(const Value& object, const SourceRange& wo, const Value& origin, const SourceRange& w1,
+                const Value& direction, const SourceRange& w2, const std::string& normal_name,
+                const SourceRange& where);
+    Value inside(const Value& object, const SourceRange& wo, const Value& point, const SourceRange& wp);
+    Value extent(const Value& object, const SourceRange& wo, bool upper_corner);
+    const sg::GeometryQueries* geometry_queries(const std::string& what, const sg::SourceLocation& at);
     Value pattern_function(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);
     Value pigment_function(const std::shared_ptr<sg::Pigment>& pigment, const sg::SourceLocation& at);
     PatternEdit function_pattern(const Value& function, const sg::SourceLocation& at);
@@ -493,6 +500,9 @@ class Evaluator {
     bool evaluate_condition(const RawToken& directive, const std::string& what);
     void store(const std::string& name, Value value, bool local, const sg::SourceLocation& where);
     const Value* lookup(const std::string& name) const;
+    // #ifdef's and defined()'s test: a declared identifier or macro, or for
+    // Name[i]… an array element that has a value (the indices are read).
+    bool identifier_defined(const std::string& name, const sg::SourceLocation& at);
 
     ParseOptions m_options;
     std::vector<std::string> m_safe_roots;  // canonical; set by run() in safe mode

@@ -130,6 +130,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        DENSITY_FILE "density_file" DF3 "df3" PATTERN "pattern"
        ISOSURFACE "isosurface" CONTAINED_BY "contained_by" MAX_GRADIENT "max_gradient" EVALUATE "evaluate"
        MAX_TRACE "max_trace" ALL_INTERSECTIONS "all_intersections"
+       TRACE "trace" INSIDE "inside" MIN_EXTENT "min_extent" MAX_EXTENT "max_extent"
 
 %nterm <Value> expr arith postfix primary colour colour_base declared_value string_value bare_colour
 %nterm <std::vector<Value>> arith_seq expr_list opt_args vector_items expr_seq macro_args macro_arg_list
@@ -178,6 +179,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <Edits<sg::Isosurface>> isosurface_items
 %nterm <std::function<void(sg::Isosurface&)>> isosurface_item
 %nterm <Value> isosurface_function
+%nterm <std::string> trace_normal
 %nterm <std::function<void(sg::HeightField&)>> height_field_item
 %nterm <Edits<sg::Polynomial>> polynomial_terms
 %nterm <int> colour_channel
@@ -1326,6 +1328,18 @@ primary
   | "<" vector_items ">" { $$ = ev.make_vector($2, @$); }
   | BUILTIN "(" opt_args ")" { $$ = ev.call_builtin($1.text, $3, @$); }
   | FUNCTION_ID "(" opt_args ")" { $$ = ev.call_function($1.value, $3, @$); }
+  | "trace" "(" OBJECT_ID "," expr "," expr ")" { $$ = ev.trace($3.value, @3, $5, @5, $7, @7, {}, @$); }
+  | "trace" "(" OBJECT_ID "," expr "," expr "," trace_normal ")"
+      { $$ = ev.trace($3.value, @3, $5, @5, $7, @7, $9, @$); }
+  | "inside" "(" OBJECT_ID "," expr ")" { $$ = ev.inside($3.value, @3, $5, @5); }
+  | "min_extent" "(" OBJECT_ID ")" { $$ = ev.extent($3.value, @3, false); }
+  | "max_extent" "(" OBJECT_ID ")" { $$ = ev.extent($3.value, @3, true); }
+  ;
+
+/* trace()'s fourth argument names the vector that receives the normal. */
+trace_normal
+  : VALUE_ID           { $$ = $1.text; }
+  | UNDECLARED_ID      { $$ = $1.text; }
   ;
 
 vector_items

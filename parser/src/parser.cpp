@@ -47,6 +47,23 @@ ParseResult Evaluator::run(const std::string& text, const std::string& label, co
 
 }  // namespace parse
 
+AnimationFrame animation_frame(int frame, int initial_frame, int final_frame, double initial_clock,
+                               double final_clock) {
+    AnimationFrame a;
+    if (final_frame <= initial_frame) return a;  // one frame: POV-Ray's "no animation"
+    a.clock_on = true;
+    a.frame_number = frame;
+    a.initial_frame = initial_frame;
+    a.final_frame = final_frame;
+    a.initial_clock = initial_clock;
+    a.final_clock = final_clock;
+    const double frames = double(final_frame) - double(initial_frame);
+    a.clock_delta = (final_clock - initial_clock) / frames;
+    // As a fraction of the span, so the last frame's clock is final_clock exactly.
+    a.clock = initial_clock + (final_clock - initial_clock) * ((double(frame) - double(initial_frame)) / frames);
+    return a;
+}
+
 ParseResult parse_scene_file(const std::string& path, const ParseOptions& options) {
     std::error_code ec;
     std::ifstream in(path, std::ios::binary);

@@ -364,9 +364,16 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
     if (name == "tau") return constant(Value::number(2.0 * 3.14159265358979323846));
     if (name == "true" || name == "yes" || name == "on") return boolean(true);
     if (name == "false" || name == "no" || name == "off") return boolean(false);
-    if (name == "clock" || name == "clock_delta" || name == "frame_number" || name == "clock_on" ||
-        name == "initial_clock" || name == "final_clock" || name == "initial_frame" || name == "final_frame") {
-        return constant(Value::number(name == "clock_delta" ? 1.0 : 0.0));
+    {
+        const AnimationFrame& a = m_options.animation;
+        if (name == "clock") return constant(Value::number(a.clock));
+        if (name == "clock_delta") return constant(Value::number(a.clock_delta));
+        if (name == "clock_on") return boolean(a.clock_on);
+        if (name == "frame_number") return constant(Value::number(a.frame_number));
+        if (name == "initial_frame") return constant(Value::number(a.initial_frame));
+        if (name == "final_frame") return constant(Value::number(a.final_frame));
+        if (name == "initial_clock") return constant(Value::number(a.initial_clock));
+        if (name == "final_clock") return constant(Value::number(a.final_clock));
     }
     if (name == "version") return constant(Value::number(m_language_version));
     if (name == "image_width" || name == "image_height") {
@@ -381,12 +388,13 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
         bool ok = take_punct("(");
         sg::SourceLocation where;
         std::string target = ok ? expect_raw_identifier("in defined()", &where) : "";
-        ok = ok && !target.empty() && take_punct(")");
+        const bool defined_target = !target.empty() && identifier_defined(target, where);
+        ok = ok && !target.empty() && !m_aborted && take_punct(")");
         if (!ok) {
             error(raw.location, "expected defined(identifier)");
             return boolean(false);
         }
-        return boolean(lookup(target) != nullptr || m_macros.count(target) > 0);
+        return boolean(defined_target);
     }
     if (const Value* value = lookup(name)) {
         if (auto deprecated = m_deprecated.find(name); deprecated != m_deprecated.end()) {

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "lancer/geometry_queries.h"
 #include "lancer/scene_graph.h"
 
 namespace lancer {
@@ -22,6 +23,22 @@ struct Diagnostic {
     // empty when unknown (format_diagnostic then reads the file).
     std::string source_line;
 };
+
+// POV-Ray's animation constants for the frame being parsed (its +KFI, +KFF,
+// +KI, +KF): clock runs from initial_clock at initial_frame to final_clock
+// at final_frame. All 0 (and clock_on false) outside an animation, as in
+// POV-Ray, which also treats a single frame as no animation.
+struct AnimationFrame {
+    bool clock_on = false;
+    int frame_number = 0;
+    int initial_frame = 0, final_frame = 0;
+    double clock = 0.0, clock_delta = 0.0;
+    double initial_clock = 0.0, final_clock = 0.0;
+};
+
+// The frame `frame` of an animation from initial_frame to final_frame over
+// clocks initial_clock to final_clock, as POV-Ray numbers it.
+AnimationFrame animation_frame(int frame, int initial_frame, int final_frame, double initial_clock, double final_clock);
 
 struct ParseOptions {
     // Searched after the including file's folder: LANCER_INCLUDE_PATH's
@@ -57,6 +74,10 @@ struct ParseOptions {
     // What a function called while parsing may need of the renderer (noise,
     // patterns, pigments); null: such a call is a located error.
     const sg::FunctionNatives* function_natives = nullptr;
+    // What trace(), inside(), min_extent() and max_extent() ask of the
+    // objects declared so far; null: such a call is a located error.
+    const sg::GeometryQueries* geometry_queries = nullptr;
+    AnimationFrame animation;
     // Top-level objects: loops nest, and each nested #while has its own
     // iteration cap, so only this bounds what nested loops can create.
     long max_objects = 2'000'000;

@@ -81,7 +81,9 @@ class Builder {
         m_data->texture_factory->set_inside_tests([this](const sg::Object& object) { return inside_test(object); });
     }
 
-    std::unique_ptr<SceneData> run() {
+    // With `inside_of_first`, also POV's inside test of the graph's first
+    // object (for the parser's inside()).
+    std::unique_ptr<SceneData> run(InsideTest* inside_of_first = nullptr) {
         build_camera();
         m_data->background = Color(m_graph.background);
         m_data->options.max_trace_level = m_graph.global.max_trace_level;
@@ -94,6 +96,7 @@ class Builder {
         compute_bounds();
         add_sg_lights();
         take_mesh_hit_data();
+        if (inside_of_first && !m_graph.objects.empty()) *inside_of_first = inside_test(m_graph.objects.front());
         // The maker refers to this builder, which ends here.
         m_data->texture_factory->set_inside_tests(nullptr);
         return std::move(m_data);
@@ -866,6 +869,13 @@ class Builder {
 
 std::unique_ptr<SceneData> build_scene_data(sg::SceneGraph& graph) {
     return Builder(graph).run();
+}
+
+std::unique_ptr<SceneData> build_object_scene_data(const sg::Object& object, InsideTest& inside) {
+    sg::SceneGraph graph;
+    graph.objects.push_back(object);
+    Builder builder(graph);
+    return builder.run(&inside);
 }
 
 }  // namespace lancer

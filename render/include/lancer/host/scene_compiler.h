@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "lancer/geometry_queries.h"
 #include "lancer/render_scene.h"
 #include "lancer/scene_graph.h"
 
@@ -31,5 +32,9 @@ std::vector<RenderAdvice> advice_after_render(const RenderScene& scene);
 // What POV-Ray's functions need of the renderer (noise, patterns,
 // pigments) while a scene is parsed: ParseOptions::function_natives.
 std::unique_ptr<sg::FunctionNatives> make_parse_time_function_natives();
+
+// What a scene's trace(), inside(), min_extent() and max_extent() ask of
+// its objects while it is parsed: ParseOptions::geometry_queries.
+std::unique_ptr<sg::GeometryQueries> make_parse_time_geometry_queries();
 
 }  // namespace lancer

@@ -1,0 +1,108 @@
+// trace(), inside(), min_extent() and max_extent() while parsing, answered
+// by the render core: the values POV-Ray 3.7 prints (#debug) for the same
+// scenes, misses, unbounded objects, CSG, and the error without a renderer.
+#include <gtest/gtest.h>
+
+#include "lancer/host/scene_compiler.h"
+#include "lancer/parser.h"
+
+namespace lancer {
+namespace {
+
+struct Parsed {
+    std::unique_ptr<sg::GeometryQueries> queries = make_parse_time_geometry_queries();
+    ParseResult result;
+};
+
+Parsed parse_with_queries(const std::string& text) {
+    Parsed parsed;
+    ParseOptions options;
+    options.geometry_queries = parsed.queries.get();
+    parsed.result = parse_scene_string(text, "queries.pov", options);
+    return parsed;
+}
+
+// The sphere radius the scene computes, where the tests put the answer.
+sg::Vec3 answer(const Parsed& parsed, std::size_t i) {
+    EXPECT_TRUE(parsed.result.ok());
+    if (!parsed.result.ok() || parsed.result.scene->objects.size() <= i) return sg::Vec3(NAN);
+    return std::get<sg::Sphere>(parsed.result.scene->objects[i].shape).center;
+}
+
+void expect_near(const sg::Vec3& got, const sg::Vec3& want, double tolerance = 1e-5) {
+    for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(got[axis], want[axis], tolerance) << axis;
+}
+
+TEST(ParseTimeGeometry, TraceGivesPointAndNormalOrZerosOnAMiss) {
+    const Parsed parsed = parse_with_queries(R"(
+        #declare Ball = sphere { <0, 1, 0>, 1 scale <2, 1, 1> }
+        #declare N = <9, 9, 9>;
+        sphere { trace(Ball, <5, 1, 0>, <-1, 0, 0>, N), 1 }
+        sphere { N, 1 }
+        sphere { trace(Ball, <5, 5, 0>, <1, 0, 0>, M), 1 }
+        sphere { M + 0.5, 1 })");
+    expect_near(answer(parsed, 0), sg::Vec3(2, 1, 0));
+    expect_near(answer(parsed, 1), sg::Vec3(1, 0, 0));
+    expect_near(answer(parsed, 2), sg::Vec3(0));
+    expect_near(answer(parsed, 3), sg::Vec3(0.5));  // an undeclared normal name is declared
+}
+
+TEST(ParseTimeGeometry, TraceThroughCsg) {
+    const Parsed parsed = parse_with_queries(R"(
+        #declare D = difference { box { -1, 1 } sphere { 0, 0.5 } }
+        sphere { trace(D, <0, 0, -5>, z, N), 1 }
+        sphere { N, 1 }
+        sphere { trace(D, <0, 0, 0>, <0, 0, 2>, M), 1 }
+        sphere { M, 1 })");
+    expect_near(answer(parsed, 0), sg::Vec3(0, 0, -1));
+    expect_near(answer(parsed, 1), sg::Vec3(0, 0, -1));
+    // From inside the hole: the sphere's surface, its normal facing into
+    // the hole (the subtracted sphere's outside is the hole's wall).
+    expect_near(answer(parsed, 2), sg::Vec3(0, 0, 0.5));
+    EXPECT_NEAR(glm::length(answer(parsed, 3)), 1.0, 1e-5);
+}
+
+TEST(ParseTimeGeometry, ExtentsAsPovRay) {
+    const Parsed parsed = parse_with_queries(R"(
+        #declare Ball = sphere { <0, 1, 0>, 1 scale <2, 1, 1> }
+        #declare U = union { object { Ball } box { <-1, -3, -1>, <0, -2, 0> } rotate y*30 }
+        #declare I = intersection { sphere { 0, 1 } box { <0, 0, 0>, <2, 2, 2> } }
+        #declare Pl = plane { y, 0 }
+        sphere { min_extent(Ball), 1 } sphere { max_extent(Ball), 1 }
+        sphere { min_extent(U), 1 } sphere { max_extent(U), 1 }
+        sphere { min_extent(I), 1 } sphere { max_extent(I), 1 }
+        sphere { min_extent(Pl), 1 } sphere { max_extent(Pl), 1 })");
+    expect_near(answer(parsed, 0), sg::Vec3(-2, 0, -1));
+    expect_near(answer(parsed, 1), sg::Vec3(2, 2, 1));
+    expect_near(answer(parsed, 2), sg::Vec3(-2.2321, -3, -1.8660), 1e-4);
+    expect_near(answer(parsed, 3), sg::Vec3(2.2321, 2, 1.8660), 1e-4);
+    expect_near(answer(parsed, 4), sg::Vec3(0, 0, 0));
+    expect_near(answer(parsed, 5), sg::Vec3(1, 1, 1));
+    EXPECT_DOUBLE_EQ(answer(parsed, 6).y, -1e10);  // POV's bound for what has none
+    EXPECT_DOUBLE_EQ(answer(parsed, 7).x, 1e10);
+}
+
+TEST(ParseTimeGeometry, InsideTestsTheSolid) {
+    const Parsed parsed = parse_with_queries(R"(
+        #declare Ball = sphere { <0, 1, 0>, 1 scale <2, 1, 1> }
+        #declare Hollow = difference { box { -1, 1 } sphere { 0, 0.5 } }
+        sphere { <inside(Ball, <1.5, 1, 0>), inside(Ball, <2.5, 1, 0>), 0>, 1 }
+        sphere { <inside(Hollow, <0.8, 0, 0>), inside(Hollow, 0), inside(Hollow, 2)>, 1 })");
+    expect_near(answer(parsed, 0), sg::Vec3(1, 0, 0));
+    expect_near(answer(parsed, 1), sg::Vec3(1, 0, 0));
+}
+
+TEST(ParseTimeGeometry, LocatedErrors) {
+    const ParseResult without = parse_scene_string("#declare B = sphere { 0, 1 }\n#declare P = trace(B, -5*z, z);\n",
+                                                   "bare.pov", ParseOptions{});
+    ASSERT_FALSE(without.ok());
+    EXPECT_EQ(without.diagnostics.front().location.line, 2);
+    const Parsed zero = parse_with_queries("#declare B = sphere { 0, 1 }\n#declare P = trace(B, -5*z, 0);\n");
+    ASSERT_FALSE(zero.result.ok());
+    EXPECT_NE(zero.result.diagnostics.front().message.find("zero length"), std::string::npos);
+    const Parsed not_object = parse_with_queries("#declare P = trace(1, -5*z, z);\n");
+    EXPECT_FALSE(not_object.result.ok());
+}
+
+}  // namespace
+}  // namespace lancer
