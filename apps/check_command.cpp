@@ -5,11 +5,13 @@
 #include <string>
 #include <vector>
 
+#include "cli_output.h"
 #include "commands.h"
 #include "lancer/host/scene_compiler.h"
 #include "lancer/parser.h"
 #include "lancer/scene_summary.h"
 #include "render_job.h"
+#include "scene_input_options.h"
 
 namespace lancer::app {
 
@@ -17,7 +19,7 @@ namespace {
 
 struct CheckOptions {
     std::string scene;
-    std::vector<std::string> include_path;
+    SceneInputOptions inputs;
     int width = 0;
     int height = 0;
     bool safe = false;
@@ -30,11 +32,7 @@ Command add_check_command(CLI::App& app) {
     Command command;
     command.cli = app.add_subcommand("check", "Parse and evaluate a scene, print a summary");
     command.cli->add_option("scene", options->scene, "Scene file (.pov)")->required();
-    command.cli
-        ->add_option("-I,--include-path", options->include_path,
-                     "Folder searched for #include files (repeatable); searched before LANCER_INCLUDE_PATH")
-        ->take_last()
-        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    add_scene_input_options(*command.cli, options->inputs);
     command.cli->add_option("--width", options->width, "Image width seen as image_width")->check(CLI::PositiveNumber);
     command.cli->add_option("--height", options->height, "Image height seen as image_height")
         ->check(CLI::PositiveNumber);
@@ -44,8 +42,12 @@ Command add_check_command(CLI::App& app) {
     command.run = [options] {
         ParseOptions parse_options;
         parse_options.safe = options->safe;
-        parse_options.include_path = options->include_path;
-        for (const auto& dir : default_include_path()) parse_options.include_path.push_back(dir);
+        parse_options.include_path = default_include_path();
+        std::string problem;
+        if (!apply_scene_input_options(options->inputs, parse_options, problem)) {
+            print_error(problem);
+            return 2;
+        }
         if (options->width > 0 || options->height > 0) {
             // One given: keep POV's 4:3 default for the other.
             parse_options.image_width = options->width > 0 ? options->width : options->height * 4 / 3;

@@ -111,6 +111,7 @@ struct RenderArguments {
     bool safe = false;   // --safe: files only from the scene's folder and the include path
     std::string frames;  // --frames A..B: an animation, one image per frame
     std::string clock;   // --clock C0..C1 (default 0..1)
+    SceneInputOptions inputs;
     // Which options the user gave (CLI11 leaves the others untouched).
     CLI::Option* output_option = nullptr;
     CLI::Option* stats_option = nullptr;
@@ -361,6 +362,7 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
     request.path = arguments.scene;
     request.safe = arguments.safe;
     request.animation = job.animation;
+    request.inputs = arguments.inputs;
     if (arguments.width_option->count() && arguments.height_option->count()) {
         request.image_width = arguments.width;
         request.image_height = arguments.height;
@@ -572,6 +574,7 @@ Command add_render_command(CLI::App& app) {
                          "Integrator parameter key=value (repeatable); overrides the scene's")
             ->allow_extra_args(false);
     render->add_flag("-q,--quiet", arguments->quiet, "No progress and no summary line");
+    add_scene_input_options(*render, arguments->inputs);
     arguments->frames_option = render->add_option(
         "--frames", arguments->frames,
         "Animation: render frames A..B (POV's +KFI/+KFF), one image each, numbered as POV names them");

@@ -15,6 +15,11 @@ std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request) {
     options.include_path = default_include_path();
     options.safe = request.safe;
     options.animation = request.animation;
+    std::string problem;
+    if (!apply_scene_input_options(request.inputs, options, problem)) {
+        print_error(problem);
+        return std::nullopt;
+    }
     if (request.image_width && request.image_height) {
         options.image_width = *request.image_width;
         options.image_height = *request.image_height;

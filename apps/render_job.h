@@ -17,6 +17,7 @@
 #include "lancer/parser.h"
 #include "lancer/render_scene.h"
 #include "lancer/scene_graph.h"
+#include "scene_input_options.h"
 
 namespace lancer::app {
 
@@ -42,6 +43,7 @@ struct SceneRequest {
     bool safe = false;
     std::optional<int> image_width, image_height;
     AnimationFrame animation;  // POV's clock and frame constants (all 0 for a still)
+    SceneInputOptions inputs;  // -I and -D
 };
 
 // Parses the scene once, printing every diagnostic, and keeps the graph for

@@ -76,6 +76,7 @@ struct TradeArguments {
     std::uint64_t seed = 0;
     int threads = 0;
     std::string cache;
+    SceneInputOptions inputs;
     CLI::Option* budget_option = nullptr;
     CLI::Option* width_option = nullptr;
     CLI::Option* height_option = nullptr;
@@ -176,6 +177,7 @@ struct PreparedScene {
 bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
     SceneRequest request;
     request.path = arguments.scene;
+    request.inputs = arguments.inputs;
     if (arguments.width_option->count()) {
         request.image_width = arguments.width;
         request.image_height = arguments.height;
@@ -364,8 +366,11 @@ int run_trade(const TradeArguments& arguments) {
         const std::string settings_text = std::string("lancer ") + kLancerVersion + " size " +
                                           std::to_string(prepared.width) + "x" + std::to_string(prepared.height) +
                                           " seed " + std::to_string(reference_seed) + " path " +
-                                          join_parameters(resolve_for(prepared, path_plugin, kReferenceParameters));
-        const std::string key = reference_key(arguments.scene, default_include_path(), settings_text);
+                                          join_parameters(resolve_for(prepared, path_plugin, kReferenceParameters)) +
+                                          describe_scene_input_options(arguments.inputs);
+        std::vector<std::string> include_folders = arguments.inputs.include_path;
+        for (const auto& folder : default_include_path()) include_folders.push_back(folder);
+        const std::string key = reference_key(arguments.scene, include_folders, settings_text);
         const ReferenceCache cache(arguments.cache.empty() ? default_reference_cache_folder(out / "reference-cache")
                                                            : fs::path(arguments.cache));
         std::optional<CachedReference> reference = cache.find(key);
@@ -496,6 +501,7 @@ Command add_trade_command(CLI::App& app) {
     CLI::App* trade = app.add_subcommand(
         "trade", "Measure speed against accuracy: every integrator at a ladder of settings against a path reference");
     trade->add_option("scene", arguments->scene, "Scene file (.pov)")->required();
+    add_scene_input_options(*trade, arguments->inputs);
     trade->add_option("-o,--out", arguments->out, "Folder for results.csv, the plots, index.html and images")
         ->required();
     arguments->budget_option = trade->add_option("--budget", arguments->budget,

@@ -63,4 +63,28 @@ TEST(Cli, GeometryQueriesWhileParsingAnswerAsPovRay) {
     EXPECT_NE(render.output.find("#debug: 2.000,1.000,0.000"), std::string::npos) << render.output;
 }
 
+TEST(Cli, DeclarationsAndIncludeFoldersOnEveryCommand) {
+    TempFolder folder;
+    const std::string scene = (folder.path() / "declared.pov").string();
+    std::filesystem::create_directories(folder.path() / "lib");
+    std::ofstream((folder.path() / "lib" / "extra.inc").string()) << "#declare FromLib = 3;\n";
+    std::ofstream(scene) << "#include \"extra.inc\"\n"
+                            "#debug concat(str(Size + FromLib, 0, 2), \" \", Name, \"\\n\")\n"
+                            "sphere { 0, Size }\n";
+    const std::string inputs = " -D Size=2.5 -D 'Name=\"ball\"' -I '" + (folder.path() / "lib").string() + "'";
+    const CommandResult check = run_lancer("check '" + scene + "'" + inputs);
+    EXPECT_EQ(check.exit_code, 0) << check.output;
+    EXPECT_NE(check.output.find("#debug: 5.50 ball"), std::string::npos) << check.output;
+    const CommandResult render = run_lancer("render '" + scene + "'" + inputs + " --width 8 --height 8 -q -o '" +
+                                            (folder.path() / "d.png").string() + "'");
+    EXPECT_EQ(render.exit_code, 0) << render.output;
+    EXPECT_NE(render.output.find("#debug: 5.50 ball"), std::string::npos) << render.output;
+    const CommandResult bad = run_lancer("check '" + scene + "' -D Size=abc");
+    EXPECT_NE(bad.exit_code, 0);
+    EXPECT_NE(bad.output.find("-D expects Name=value"), std::string::npos) << bad.output;
+    const CommandResult reserved = run_lancer("check '" + scene + "'" + inputs + " -D sphere=1");
+    EXPECT_NE(reserved.exit_code, 0);
+    EXPECT_NE(reserved.output.find("reserved word"), std::string::npos) << reserved.output;
+}
+
 }  // namespace lancer::test

@@ -1,4 +1,5 @@
 // The public entry points (lancer/parser.h).
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,17 @@ namespace fs = std::filesystem;
 
 namespace parse {
 
+namespace {
+
+bool is_identifier(const std::string& name) {
+    if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
+    for (char c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+    return true;
+}
+
+}  // namespace
+
 ParseResult Evaluator::run(const std::string& text, const std::string& label, const std::string& path,
                            const std::string& folder) {
     m_scene.main_file = path.empty() ? label : path;
@@ -19,6 +31,18 @@ ParseResult Evaluator::run(const std::string& text, const std::string& label, co
     if (m_options.image_size_from_command_line) {
         m_scene.render.width = m_options.image_width;
         m_scene.render.height = m_options.image_height;
+    }
+    for (const CommandLineDeclaration& declaration : m_options.declarations) {
+        if (!is_identifier(declaration.name) || is_reserved_word(declaration.name)) {
+            static const auto command_line = std::make_shared<const std::string>("command line");
+            error(sg::SourceLocation{command_line, 0, 0},
+                  "-D " + declaration.name + ": not a name a scene can declare" +
+                      (is_identifier(declaration.name) ? " (a reserved word)" : ""));
+            continue;
+        }
+        const auto* number = std::get_if<double>(&declaration.value);
+        store(declaration.name,
+              number ? Value::number(*number) : Value::string(std::get<std::string>(declaration.value)), false, {});
     }
     if (push_file(text, label, path, folder, {})) {
         m_pending.push_back(Pending{

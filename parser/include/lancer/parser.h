@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "lancer/geometry_queries.h"
@@ -39,6 +40,13 @@ struct AnimationFrame {
 // The frame `frame` of an animation from initial_frame to final_frame over
 // clocks initial_clock to final_clock, as POV-Ray numbers it.
 AnimationFrame animation_frame(int frame, int initial_frame, int final_frame, double initial_clock, double final_clock);
+
+// A command-line declaration (POV-Ray's Declare=Name=value, lancer's
+// -D Name=value): a global identifier set before the scene is read.
+struct CommandLineDeclaration {
+    std::string name;
+    std::variant<double, std::string> value;
+};
 
 struct ParseOptions {
     // Searched after the including file's folder: LANCER_INCLUDE_PATH's
@@ -78,6 +86,9 @@ struct ParseOptions {
     // objects declared so far; null: such a call is a located error.
     const sg::GeometryQueries* geometry_queries = nullptr;
     AnimationFrame animation;
+    // Declared before the scene's first line (a name that is not an
+    // identifier, or is a reserved word, is an error).
+    std::vector<CommandLineDeclaration> declarations;
     // Top-level objects: loops nest, and each nested #while has its own
     // iteration cap, so only this bounds what nested loops can create.
     long max_objects = 2'000'000;
