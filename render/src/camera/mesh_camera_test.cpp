@@ -264,7 +264,7 @@ TEST(MeshCameraSetup, MeshDropsTheTrianglesPovDropsMesh2KeepsThem) {
     // one dropped).
     DVec3 origin, direction;
     ASSERT_TRUE(rays->generate(1.5, 0.5, 2, 1, 0, origin, direction));
-    EXPECT_NEAR(origin.x, 16.0 / 3.0, 1e-9);
+    EXPECT_NEAR(origin.x, 16.0 / 3.0, 1e-6);  // the face rays are kept in float
 
     settings->meshes[0].drops_degenerate_faces = false;  // mesh2: kept, no ray
     rays = make_mesh_camera_rays(camera);
