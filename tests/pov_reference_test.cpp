@@ -26,7 +26,9 @@
 // isosurfaces; and every POV camera type (fisheye, ultra_wide_angle,
 // omnimax, panoramic, cylinder 1 to 4, spherical; a mirrored, transformed
 // perspective camera, an orthographic `angle` without a value, a camera
-// normal), all looking at camera_world.inc.
+// normal; mesh_camera's distribution types 0 to 3, with smooth, several
+// rays per pixel and meshes of camera_mesh_grid.inc), all looking at
+// camera_world.inc.
 #include <filesystem>
 #include <string>
 
@@ -73,18 +75,18 @@ TEST_P(PovReference, WhittedMatchesPovRay) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, PovReference,
-    ::testing::Values("wall_point_light", "spotlights", "area_room", "area_circular", "cylinder_parallel",
-                      "looks_like_projected", "finishes", "gamma", "legacy_gamma", "area_illumination",
-                      "orthographic_down", "orthographic_default_size", "quadric_family", "csg_solids", "csg_glass",
-                      "polygons_polynomials", "superellipsoids", "blobs", "prisms", "lathes", "text", "sors", "ovus",
-                      "sphere_sweeps", "bicubic_patches", "julia_fractals", "height_fields", "patterns_geometric",
-                      "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
-                      "patterns_tilings_more", "normals", "textures", "uv_mapping", "csg_meshes", "images",
-                      "object_pattern", "irid_backside", "functions", "isosurfaces", "camera_fisheye",
-                      "camera_fisheye_360", "camera_ultra_wide_angle", "camera_omnimax", "camera_panoramic",
-                      "camera_cylinder_1", "camera_cylinder_2", "camera_cylinder_3", "camera_cylinder_4",
-                      "camera_spherical", "camera_spherical_narrow", "camera_transforms",
-                      "camera_orthographic_bare_angle", "camera_normal"),
+    ::testing::Values(
+        "wall_point_light", "spotlights", "area_room", "area_circular", "cylinder_parallel", "looks_like_projected",
+        "finishes", "gamma", "legacy_gamma", "area_illumination", "orthographic_down", "orthographic_default_size",
+        "quadric_family", "csg_solids", "csg_glass", "polygons_polynomials", "superellipsoids", "blobs", "prisms",
+        "lathes", "text", "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals", "height_fields",
+        "patterns_geometric", "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
+        "patterns_tilings_more", "normals", "textures", "uv_mapping", "csg_meshes", "images", "object_pattern",
+        "irid_backside", "functions", "isosurfaces", "camera_fisheye", "camera_fisheye_360", "camera_ultra_wide_angle",
+        "camera_omnimax", "camera_panoramic", "camera_cylinder_1", "camera_cylinder_2", "camera_cylinder_3",
+        "camera_cylinder_4", "camera_spherical", "camera_spherical_narrow", "camera_transforms",
+        "camera_orthographic_bare_angle", "camera_normal", "camera_mesh_per_pixel", "camera_mesh_side_by_side",
+        "camera_mesh_uv_smooth", "camera_mesh_summed", "camera_mesh_averaged"),
     [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 // Focal blur: POV-Ray and lancer both sample the lens (POV with its

@@ -28,6 +28,7 @@ const char* projection_name(Projection p) {
     case Projection::Cylinder3: return "cylinder 3";
     case Projection::Cylinder4: return "cylinder 4";
     case Projection::Spherical: return "spherical";
+    case Projection::Mesh: return "mesh_camera";
     }
     return "camera";
 }
@@ -99,6 +100,7 @@ sg::Camera resolve_camera(const CameraSpec& spec, bool* sky_along_view) {
     camera.confidence = spec.confidence;
     camera.variance = spec.variance;
     camera.normal = spec.normal;
+    camera.mesh = spec.mesh;
     const sg::Mat4& m = spec.world_from_camera;
     camera.location = sg::Vec3(m * glm::dvec4(location, 1.0));
     camera.direction = sg::Vec3(m * glm::dvec4(direction, 0.0));
@@ -214,6 +216,10 @@ void Evaluator::set_camera(const CameraSpec& spec) {
         error(spec.angle_location, "only the spherical camera takes two angles");
         return;
     }
+    if (spec.angle && spec.projection == Projection::Mesh) {
+        error(spec.angle_location, "a mesh_camera takes no angle (its meshes place and aim its rays)");
+        return;
+    }
     if (spec.look_at && glm::length(*spec.look_at - spec.location.value_or(sg::Vec3(0.0))) == 0.0) {
         error(spec.location_in_source, "camera location and look_at point must be different (as in POV-Ray)");
         return;
@@ -225,7 +231,8 @@ void Evaluator::set_camera(const CameraSpec& spec) {
     const sg::Camera& c = *m_scene.camera;
     const double volume = std::fabs(glm::dot(glm::cross(c.right, c.up), c.direction));
     const double scale = glm::length(c.right) * glm::length(c.up) * glm::length(c.direction);
-    if (!(volume > 1e-9 * scale)) {
+    // A mesh camera reads only location.z and direction.z.
+    if (!(volume > 1e-9 * scale) && c.projection != Projection::Mesh) {
         error(spec.location_in_source,
               "the camera's direction, up and right vectors lie in one plane (or one is zero): they must span "
               "space");
@@ -235,6 +242,12 @@ void Evaluator::set_camera(const CameraSpec& spec) {
         warning(spec.location_in_source,
                 "the camera looks along its sky direction: the right vector is kept as given (POV-Ray's rule); "
                 "set sky to choose which way is up");
+    if (c.projection == Projection::Mesh && c.focal_blur()) {
+        warning(spec.location_in_source,
+                "focal blur is ignored on a mesh_camera: POV-Ray puts no lens in front of its rays either");
+        m_scene.camera->aperture = 0.0;
+        return;
+    }
     if (spec.aperture != 0.0 && spec.blur_samples == 0)
         warning(spec.location_in_source,
                 "aperture without blur_samples: no focal blur (POV-Ray traces none either); add blur_samples N");

@@ -136,21 +136,24 @@ std::function<void(sg::BicubicPatch&)> Evaluator::patch_option(const std::string
     return [](sg::BicubicPatch&) {};
 }
 
+bool Evaluator::to_uv(const Value& c, const SourceRange& where, sg::Vec2& uv) {
+    if (c.kind == Value::Kind::Vector && c.size >= 2) {
+        uv = sg::Vec2(c.v[0], c.v[1]);
+    } else if (c.kind == Value::Kind::Float) {
+        uv = sg::Vec2(c.v[0]);
+    } else {
+        error(where.begin, "uv_vectors expects 2-D vectors <u, v>");
+        return false;
+    }
+    double both[2] = {uv.x, uv.y};
+    return check_renderable(both, 2, where, "the uv vector");
+}
+
 std::function<void(sg::BicubicPatch&)> Evaluator::patch_uv_vectors(const std::vector<Value>& corners,
                                                                    const std::vector<SourceRange>& where) {
     sg::Vec2 uv[4];
     for (int i = 0; i < 4; ++i) {
-        const Value& c = corners[std::size_t(i)];
-        if (c.kind == Value::Kind::Vector && c.size >= 2) {
-            uv[i] = sg::Vec2(c.v[0], c.v[1]);
-        } else if (c.kind == Value::Kind::Float) {
-            uv[i] = sg::Vec2(c.v[0]);
-        } else {
-            error(where[std::size_t(i)].begin, "uv_vectors expects 2-D vectors <u, v>");
-            return [](sg::BicubicPatch&) {};
-        }
-        double both[2] = {uv[i].x, uv[i].y};
-        if (!check_renderable(both, 2, where[std::size_t(i)], "the uv vector")) return [](sg::BicubicPatch&) {};
+        if (!to_uv(corners[std::size_t(i)], where[std::size_t(i)], uv[i])) return [](sg::BicubicPatch&) {};
     }
     return [uv0 = uv[0], uv1 = uv[1], uv2 = uv[2], uv3 = uv[3]](sg::BicubicPatch& p) {
         p.uv_corners[0] = uv0;

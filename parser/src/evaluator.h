@@ -223,10 +223,17 @@ class Evaluator {
     std::function<void(ShapeValue&)> finish_edit(const Edits<sg::Finish>& edits, const sg::SourceLocation& at);
     std::function<void(ShapeValue&)> interior_edit(std::shared_ptr<sg::Interior> interior);
     std::function<void(ShapeValue&)> child_edit(ShapePtr child);
-    std::function<void(ShapeValue&)> mesh_triangle_edit(const std::vector<Value>& points,
-                                                        const std::vector<SourceRange>& where,
-                                                        const std::vector<std::shared_ptr<sg::Material>>& textures,
-                                                        const sg::SourceLocation& at);
+    // A mesh's triangle or smooth triangle, with its uv_vectors if given.
+    std::function<void(ShapeValue&)> mesh_triangle_edit(
+        const std::vector<Value>& points, const std::vector<SourceRange>& where,
+        const std::optional<std::vector<std::pair<Value, SourceRange>>>& uv_vectors,
+        const std::vector<std::shared_ptr<sg::Material>>& textures, const sg::SourceLocation& at);
+    // One uv_vectors entry, <u, v> (a float stands for <f, f>); false after
+    // reporting a value that is not one.
+    bool to_uv(const Value& value, const SourceRange& where, sg::Vec2& uv);
+    // POV's mesh { M ... } and mesh2 { M ... }: a copy of the declared mesh M.
+    ShapePtr declared_mesh(const std::shared_ptr<const ShapeValue>& declared, const std::string& name,
+                           sg::Object::Kind kind, const sg::SourceLocation& at);
     std::function<void(sg::TriangleMesh&)> mesh2_vectors(const std::string& section, const Value& count,
                                                          const SourceRange& wc, const std::vector<Value>& items,
                                                          const SourceRange& wi, const sg::SourceLocation& at);
@@ -383,6 +390,16 @@ class Evaluator {
                                                   const SourceRange& ws);
     std::function<void(CameraSpec&)> blur_confidence(const Value& v, const SourceRange& where);
     std::function<void(CameraSpec&)> blur_variance(const Value& v, const SourceRange& where);
+    // ---- the mesh camera (mesh_camera.cpp)
+    // mesh_camera { rays_per_pixel, distribution_type [, max_ray_distance]
+    // meshes [smooth] }; smooth_at is where `smooth` was written, if it
+    // was, and close_at the block's closing brace.
+    std::function<void(CameraSpec&)> mesh_camera(const Value& rays, const SourceRange& wr, const Value& distribution,
+                                                 const SourceRange& wd,
+                                                 const std::optional<std::pair<Value, SourceRange>>& reach,
+                                                 const std::vector<std::pair<ShapePtr, sg::SourceLocation>>& meshes,
+                                                 const std::optional<sg::SourceLocation>& smooth_at,
+                                                 const sg::SourceLocation& at, const sg::SourceLocation& close_at);
     void add_object(const ShapePtr& shape);
     void add_light(const sg::Light& light, const sg::Mat4& world_from_local);
     void check_area_light(sg::Light& light);

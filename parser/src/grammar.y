@@ -60,7 +60,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %token SPHERE "sphere" PLANE "plane" BOX "box" TRIANGLE "triangle" SMOOTH_TRIANGLE "smooth_triangle"
        MESH "mesh" MESH2 "mesh2" UNION "union" MERGE "merge" DIFFERENCE "difference"
        INTERSECTION "intersection" OBJECT "object" OBJ_MESH "obj_mesh"
-       LIGHT_SOURCE "light_source" CAMERA "camera" BACKGROUND "background"
+       LIGHT_SOURCE "light_source" CAMERA "camera" MESH_CAMERA "mesh_camera" BACKGROUND "background"
        GLOBAL_SETTINGS "global_settings" RENDER_SETTINGS "render_settings"
        TRANSLATE "translate" ROTATE "rotate" SCALE "scale" MATRIX "matrix" TRANSFORM "transform"
        INVERSE "inverse" TEXTURE "texture" PIGMENT "pigment" FINISH "finish" INTERIOR "interior"
@@ -162,6 +162,10 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <Edits<CameraSpec>> camera_items
 %nterm <std::function<void(CameraSpec&)>> camera_item
 %nterm <sg::Camera::Projection> camera_type
+%nterm <std::function<void(CameraSpec&)>> mesh_camera
+%nterm <std::vector<std::pair<ShapePtr, sg::SourceLocation>>> mesh_camera_meshes
+%nterm <std::optional<std::pair<Value, SourceRange>>> mesh_camera_reach
+%nterm <std::optional<std::vector<std::pair<Value, SourceRange>>>> opt_uv_vectors
 %nterm <Edits<ParameterList>> param_items
 %nterm <bool> opt_bool opt_albedo opt_open
 %nterm <Edits<sg::Prism>> prism_options
@@ -391,8 +395,12 @@ object
         ev.apply($$, $14); }
   | "mesh" "{" mesh_items "}"
       { $$ = ev.make_mesh(LOC(@1)); ev.apply($$, $3); ev.finish_mesh(*$$, LOC(@1)); }
+  | "mesh" "{" OBJECT_ID object_mods "}"
+      { $$ = ev.declared_mesh($3.value.shape, $3.text, sg::Object::Kind::Mesh, LOC(@1)); ev.apply($$, $4); }
   | "mesh2" "{" mesh2_sections object_mods "}"
       { $$ = ev.make_mesh2($3, LOC(@1)); ev.apply($$, $4); }
+  | "mesh2" "{" OBJECT_ID object_mods "}"
+      { $$ = ev.declared_mesh($3.value.shape, $3.text, sg::Object::Kind::Mesh2, LOC(@1)); ev.apply($$, $4); }
   | "obj_mesh" "{" expr object_mods "}"
       { $$ = ev.make_obj_mesh($3, @3, LOC(@1)); ev.apply($$, $4); }
   | "union" "{" union_items "}"
@@ -632,12 +640,19 @@ mesh_items
   ;
 
 mesh_item
-  : "triangle" "{" arith opt_comma arith opt_comma arith texture_seq "}"
-      { $$ = ev.mesh_triangle_edit({$3, $5, $7}, {@3, @5, @7}, $8, LOC(@1)); }
-  | "smooth_triangle" "{" arith opt_comma arith opt_comma arith opt_comma arith opt_comma arith opt_comma arith texture_seq "}"
-      { $$ = ev.mesh_triangle_edit({$3, $5, $7, $9, $11, $13}, {@3, @5, @7, @9, @11, @13}, $14, LOC(@1)); }
+  : "triangle" "{" arith opt_comma arith opt_comma arith opt_uv_vectors texture_seq "}"
+      { $$ = ev.mesh_triangle_edit({$3, $5, $7}, {@3, @5, @7}, $8, $9, LOC(@1)); }
+  | "smooth_triangle" "{" arith opt_comma arith opt_comma arith opt_comma arith opt_comma arith opt_comma arith opt_uv_vectors texture_seq "}"
+      { $$ = ev.mesh_triangle_edit({$3, $5, $7, $9, $11, $13}, {@3, @5, @7, @9, @11, @13}, $14, $15, LOC(@1)); }
   | "inside_vector" expr { $$ = ev.mesh_inside_vector_edit($2, @2); }
   | object_mod         { $$ = std::move($1); }
+  ;
+
+/* A mesh triangle's uv_vectors <u1,v1>, <u2,v2>, <u3,v3>. */
+opt_uv_vectors
+  : %empty             {}
+  | "uv_vectors" arith opt_comma arith opt_comma arith
+      { $$ = std::vector<std::pair<Value, SourceRange>>{{$2, @2}, {$4, @4}, {$6, @6}}; }
   ;
 
 /* texture_list { N, texture {...}, texture {...} } */
@@ -1463,6 +1478,7 @@ camera_items
 camera_item
   : CAMERA_ID          { CameraSpec c = *$1.value.camera; $$ = [c](CameraSpec& target) { target = c; }; }
   | camera_type        { auto p = $1; auto at = LOC(@1); $$ = [p, at](CameraSpec& c) { c.set_projection(p, at); }; }
+  | mesh_camera        { $$ = std::move($1); }
   | "location" expr    { auto v = ev.to_vec3($2, @2); $$ = [v](CameraSpec& c) { c.location = v; c.other_item_seen = true; }; }
   | "look_at" expr     { auto v = ev.to_vec3($2, @2); $$ = [v](CameraSpec& c) { c.look_at = v; c.other_item_seen = true; }; }
   | "direction" expr   { auto v = ev.nonzero_vec3($2, @2, "direction"); $$ = [v](CameraSpec& c) { c.direction = v; c.other_item_seen = true; }; }
@@ -1493,6 +1509,24 @@ camera_type
   | "panoramic"        { $$ = sg::Camera::Projection::Panoramic; }
   | "spherical"        { $$ = sg::Camera::Projection::Spherical; }
   | "cylinder" expr    { $$ = ev.cylinder_camera($2, @2); }
+  ;
+
+/* mesh_camera { rays_per_pixel, distribution_type [, max_ray_distance] mesh { } ... [smooth] } */
+mesh_camera
+  : "mesh_camera" "{" arith opt_comma arith mesh_camera_reach mesh_camera_meshes "}"
+      { $$ = ev.mesh_camera($3, @3, $5, @5, $6, $7, std::nullopt, LOC(@1), LOC(@8)); }
+  | "mesh_camera" "{" arith opt_comma arith mesh_camera_reach mesh_camera_meshes "smooth" "}"
+      { $$ = ev.mesh_camera($3, @3, $5, @5, $6, $7, LOC(@8), LOC(@1), LOC(@9)); }
+  ;
+
+mesh_camera_reach
+  : %empty %prec OPT_EMPTY {}
+  | opt_comma arith    { $$ = std::make_pair($2, @2); }
+  ;
+
+mesh_camera_meshes
+  : %empty             {}
+  | mesh_camera_meshes object { $$ = std::move($1); $$.emplace_back($2, LOC(@2)); }
   ;
 
 /* ------------------------------------------------------ settings, extension */

@@ -113,7 +113,7 @@ ShapePtr Evaluator::make_triangle(const std::vector<Value>& points, const std::v
     shape->object.location = at;
     auto mesh = std::make_shared<sg::TriangleMesh>();
     shape->object.shape = sg::MeshRef(mesh);
-    mesh_triangle_edit(points, where, {}, at)(*shape);
+    mesh_triangle_edit(points, where, std::nullopt, {}, at)(*shape);
     return shape;
 }
 
@@ -122,6 +122,18 @@ ShapePtr Evaluator::make_mesh(const sg::SourceLocation& at) {
     shape->object.kind = sg::Object::Kind::Mesh;
     shape->object.location = at;
     shape->object.shape = sg::MeshRef(std::make_shared<sg::TriangleMesh>());
+    return shape;
+}
+
+ShapePtr Evaluator::declared_mesh(const std::shared_ptr<const ShapeValue>& declared, const std::string& name,
+                                  sg::Object::Kind kind, const sg::SourceLocation& at) {
+    auto shape = std::make_shared<ShapeValue>(*declared);
+    shape->object.name = name;
+    shape->object.location = at;
+    if (shape->object.kind != sg::Object::Kind::Mesh && shape->object.kind != sg::Object::Kind::Mesh2) {
+        error(at, name + " is not a mesh: " + std::string(kind == sg::Object::Kind::Mesh ? "mesh" : "mesh2") + " { " +
+                      name + " } copies a declared mesh or mesh2 (use object { " + name + " })");
+    }
     return shape;
 }
 
@@ -150,6 +162,7 @@ std::function<void(ShapeValue&)> Evaluator::mesh_inside_vector_edit(const Value&
 // optional per-triangle texture.
 std::function<void(ShapeValue&)> Evaluator::mesh_triangle_edit(
     const std::vector<Value>& points, const std::vector<SourceRange>& where,
+    const std::optional<std::vector<std::pair<Value, SourceRange>>>& uv_vectors,
     const std::vector<std::shared_ptr<sg::Material>>& textures, const sg::SourceLocation& at) {
     add_triangles(1, at);
     bool smooth = points.size() == 6;
@@ -163,8 +176,17 @@ std::function<void(ShapeValue&)> Evaluator::mesh_triangle_edit(
         for (size_t i = 0; i < 3; ++i)
             if (glm::length(n[i]) == 0.0) error(where[2 * i + 1].begin, "smooth_triangle normal must not be zero");
     if (textures.size() > 1) warning(at, "only the first texture of a mesh triangle is used");
+    std::vector<sg::Vec2> uv;
+    if (uv_vectors) {
+        for (const auto& [value, range] : *uv_vectors) {
+            sg::Vec2 corner;
+            if (!to_uv(value, range, corner)) break;
+            uv.push_back(corner);
+        }
+        if (uv.size() != 3) uv.clear();
+    }
     std::shared_ptr<sg::Material> texture = textures.empty() ? nullptr : textures.front();
-    return [p, n, texture](ShapeValue& shape) {
+    return [p, n, uv, texture](ShapeValue& shape) {
         sg::TriangleMesh& mesh = mutable_mesh(shape);
         sg::TriangleMesh::Face face;
         int base = static_cast<int>(mesh.positions.size());
@@ -177,6 +199,13 @@ std::function<void(ShapeValue&)> Evaluator::mesh_triangle_edit(
             for (int i = 0; i < 3; ++i) {
                 mesh.normals.push_back(glm::normalize(n[i]));
                 face.normal[i] = normal_base + i;
+            }
+        }
+        if (!uv.empty()) {
+            const int uv_base = static_cast<int>(mesh.uvs.size());
+            for (int i = 0; i < 3; ++i) {
+                mesh.uvs.push_back(uv[std::size_t(i)]);
+                face.uv[i] = uv_base + i;
             }
         }
         if (texture) {

@@ -778,6 +778,25 @@ struct Light {
 
 // ------------------------------------------------------------------ camera
 
+// POV's mesh_camera { rays_per_pixel, distribution_type [, max_ray_distance]
+// mesh { } ... [smooth] }: every ray leaves a face of a mesh along its
+// normal (docs/scene-language.md says which face each pixel takes).
+struct MeshCamera {
+    struct Mesh {
+        MeshRef mesh;
+        Mat4 world_from_mesh{1.0};  // the mesh's own transforms
+        // POV's mesh { } drops triangles whose corners are collinear and
+        // mesh2 keeps them: face numbers count the faces POV keeps.
+        bool drops_degenerate_faces = false;
+        SourceLocation location;
+    };
+    int rays_per_pixel = 1;
+    int distribution = 0;           // POV's distribution types 0 to 3
+    double max_ray_distance = 0.0;  // a camera ray's reach; 0: unlimited
+    bool smooth = false;            // type 3: the vertex normals interpolated
+    std::vector<Mesh> meshes;       // at least one
+};
+
 // Resolved as POV-Ray 3.7 does (pov-3.7-semantics.md §1): the vectors
 // below are the ones POV's CreateCameraRay reads, after look_at, angle and
 // the block's transforms. For the perspective camera the ray through
@@ -797,6 +816,7 @@ struct Camera {
         Cylinder3,  // cylinder 3: vertical axis, rays from a vertical line
         Cylinder4,  // cylinder 4: horizontal axis, rays from a horizontal line
         Spherical,
+        Mesh,  // mesh_camera: rays from mesh faces (`mesh` below)
     };
     Projection projection = Projection::Perspective;
     Vec3 location{0.0};
@@ -821,6 +841,10 @@ struct Camera {
     // normal { } on a camera: each ray's direction is bent as a surface
     // normal would be, the pattern read at (x0, y0, 0) of the image plane.
     NormalRef normal;
+    // The mesh camera's meshes and settings (Projection::Mesh). POV reads
+    // location.z as how far a ray starts off its face, along the normal,
+    // and a direction.z below zero as rays turned against the normal.
+    std::shared_ptr<const MeshCamera> mesh;
     SourceLocation location_in_source;
 
     bool focal_blur() const { return aperture != 0.0 && blur_samples > 0; }

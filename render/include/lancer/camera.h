@@ -1,7 +1,8 @@
 // The camera, resolved from the scene graph as POV-Ray 3.7 frames it
 // (pov-3.7-semantics.md §1): every POV projection, focal blur's thin lens
 // and a camera normal. The pinhole perspective camera, nearly every scene's,
-// is inline and lane-parallel; the others are in render/src/camera/.
+// is inline and lane-parallel; the others are in render/src/camera/, POV's
+// mesh_camera among them (its faces are the camera's MeshCameraRays).
 #pragma once
 
 #include <cmath>
@@ -11,6 +12,7 @@
 namespace lancer {
 
 class NormalPerturbation;
+class MeshCameraRays;
 
 class Camera {
   public:
@@ -26,6 +28,7 @@ class Camera {
         Cylinder3,
         Cylinder4,
         Spherical,
+        Mesh,  // POV's mesh_camera: rays leave mesh faces (set_mesh)
     };
 
     // POV-Ray's focal blur: rays leave a lens across the aperture and meet
@@ -55,6 +58,13 @@ class Camera {
     // Bends every ray's direction as a surface normal (POV's camera
     // normal { }); the perturbation must outlive the camera.
     void set_normal(const NormalPerturbation* normal) { m_normal = normal; }
+    // The faces a Mesh projection's rays leave from, and how many rays a
+    // pixel averages (POV's rays_per_pixel); the faces must outlive the
+    // camera.
+    void set_mesh(const MeshCameraRays* mesh, int rays_per_pixel) {
+        m_mesh = mesh;
+        m_rays_per_pixel = rays_per_pixel;
+    }
 
     // The ray through the film point (x, y) in pixels, (0,0) the top-left
     // corner of the image and (width, height) the bottom-right; pixel
@@ -62,9 +72,12 @@ class Camera {
     // the aperture the ray leaves from, in POV's sample-grid units (the
     // disc of radius 0.5; ignored without focal blur). Returns false where
     // the projection sees nothing (a fisheye's corners, outside omnimax's
-    // circle): POV traces no ray there and the sample is black.
-    bool generate_ray(float x, float y, int width, int height, Ray& ray, const Vec2& lens = Vec2(0.0f)) const {
-        if (!is_pinhole_perspective()) return generate_general_ray(x, y, width, height, lens, ray);
+    // circle, a mesh camera's pixel past its faces): POV traces no ray
+    // there. `ray_number` (0 to rays_per_pixel() - 1) picks which of a
+    // mesh camera's rays of the pixel this is; other cameras ignore it.
+    bool generate_ray(float x, float y, int width, int height, Ray& ray, const Vec2& lens = Vec2(0.0f),
+                      int ray_number = 0) const {
+        if (!is_pinhole_perspective()) return generate_general_ray(x, y, width, height, lens, ray_number, ray);
         // Normalised image coordinates: x0 in [-0.5, 0.5] left to right, y0
         // in [-0.5, 0.5] bottom to top.
         const float x0 = x / float(width) - 0.5f;
@@ -76,16 +89,17 @@ class Camera {
         return true;
     }
 
-    // generate_ray for `count` film points (x[i], y[i]) and lens points
-    // lens[i] (null: the lens centre), bit for bit, into out[i] and
-    // sees[i]. The pinhole perspective camera is computed lane by lane, so
-    // the compiler takes several rays per instruction: the host generates
-    // a tile's camera rays at once.
+    // generate_ray for `count` film points (x[i], y[i]), lens points
+    // lens[i] (null: the lens centre) and ray numbers ray_numbers[i] (null:
+    // 0), bit for bit, into out[i] and sees[i]. The pinhole perspective
+    // camera is computed lane by lane, so the compiler takes several rays
+    // per instruction: the host generates a tile's camera rays at once.
     void generate_rays(const float* x, const float* y, const Vec2* lens, int count, int width, int height, Ray* out,
-                       bool* sees) const {
+                       bool* sees, const int* ray_numbers = nullptr) const {
         if (!is_pinhole_perspective()) {
             for (int i = 0; i < count; ++i)
-                sees[i] = generate_general_ray(x[i], y[i], width, height, lens ? lens[i] : Vec2(0.0f), out[i]);
+                sees[i] = generate_general_ray(x[i], y[i], width, height, lens ? lens[i] : Vec2(0.0f),
+                                               ray_numbers ? ray_numbers[i] : 0, out[i]);
             return;
         }
         constexpr int kLanes = 16;
@@ -124,6 +138,9 @@ class Camera {
     const FocalBlur& focal_blur() const { return m_blur; }
     bool has_focal_blur() const { return m_blur.aperture != 0.0f && m_blur.samples > 0; }
     const NormalPerturbation* normal() const { return m_normal; }
+    // The rays a pixel averages over those the camera makes: POV's
+    // rays_per_pixel for a mesh camera, 1 for every other.
+    int rays_per_pixel() const { return m_rays_per_pixel; }
 
   private:
     bool is_pinhole_perspective() const {
@@ -131,7 +148,8 @@ class Camera {
     }
     // Every other projection, focal blur and the camera normal, in double
     // precision (render/src/camera/camera_projections.cpp).
-    bool generate_general_ray(float x, float y, int width, int height, const Vec2& lens, Ray& ray) const;
+    bool generate_general_ray(float x, float y, int width, int height, const Vec2& lens, int ray_number,
+                              Ray& ray) const;
 
     Projection m_projection = Projection::Perspective;
     Vec3 m_location{0.0f};
@@ -142,6 +160,8 @@ class Camera {
     double m_horizontal_angle = 360.0, m_vertical_angle = 180.0;
     FocalBlur m_blur;
     const NormalPerturbation* m_normal = nullptr;
+    const MeshCameraRays* m_mesh = nullptr;
+    int m_rays_per_pixel = 1;
 };
 
 }  // namespace lancer

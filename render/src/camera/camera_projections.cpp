@@ -10,6 +10,8 @@
 #include "lancer/hit.h"
 #include "lancer/material.h"
 
+#include "camera/mesh_camera.h"
+
 namespace lancer {
 namespace {
 
@@ -50,7 +52,8 @@ struct Projected {
 
 }  // namespace
 
-bool Camera::generate_general_ray(float x, float y, int width, int height, const Vec2& lens, Ray& ray) const {
+bool Camera::generate_general_ray(float x, float y, int width, int height, const Vec2& lens, int ray_number,
+                                  Ray& ray) const {
     // u runs 0..1 left to right, v 0..1 bottom to top.
     const double u = double(x) / double(width);
     const double v = 1.0 - double(y) / double(height);
@@ -169,9 +172,15 @@ bool Camera::generate_general_ray(float x, float y, int width, int height, const
         p.direction = rotate_about(latitude, unit_up, p.x0);
         break;
     }
+    case Projection::Mesh:
+        // A camera normal's pattern is read at the image point (0, 0) for
+        // every mesh ray, as POV leaves it.
+        if (!m_mesh || !m_mesh->generate(x, y, width, height, ray_number, p.origin, p.direction)) return false;
+        break;
     }
 
-    if (has_focal_blur()) {
+    // POV puts no lens in front of a mesh camera.
+    if (has_focal_blur() && m_projection != Projection::Mesh) {
         // POV's thin lens: the origin moves across the aperture, in the
         // plane of up x direction and direction x that, to the camera's
         // location (POV moves every projection's origin there, the
@@ -198,6 +207,9 @@ bool Camera::generate_general_ray(float x, float y, int width, int height, const
     ray.direction = Vec3(d);
     ray.t_min = 0.0f;
     ray.t_max = kInfinity;
+    // A mesh camera's optional reach (POV's max ray distance, from 1e-10).
+    if (m_projection == Projection::Mesh && m_mesh->settings().max_distance >= 1e-10)
+        ray.t_max = float(m_mesh->settings().max_distance);
     return true;
 }
 

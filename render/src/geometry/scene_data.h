@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "camera/mesh_camera.h"
 #include "geometry/csg.h"
 #include "geometry/isosurface.h"
 #include "geometry/shape.h"
@@ -82,6 +83,7 @@ struct SceneData {
     std::vector<const Light*> lights;
     std::vector<const Light*> local_lights;
     Camera camera;
+    std::unique_ptr<MeshCameraRays> mesh_camera;  // a mesh_camera's faces, which `camera` reads
     Color background{0.0f};
     SceneOptions options;
     Bounds bounds;

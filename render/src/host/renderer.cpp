@@ -50,7 +50,7 @@ CropWindow clamped_window(const RenderOptions& options, int width, int height) {
 
 struct CameraSample {
     int x = 0, y = 0;
-    std::uint32_t index = 0;  // among the pixel's samples: selects its stream
+    std::uint32_t index = 0;  // among the pixel's camera rays: selects its stream
 };
 
 // Camera samples waiting to be traced together, added in 4x4 blocks of
@@ -60,15 +60,22 @@ struct CameraSample {
 // (Camera::generate_rays) from the film and lens points. It positions each
 // sample's random stream when the integrator asks for it: a sample's stream
 // starts at (pixel, index) and continues past the host's own draws (the
-// film point's jitter, the lens point).
+// film point's jitter, the lens point). A mesh camera averages several rays
+// per film sample (Camera::rays_per_pixel): they sit side by side, in
+// groups that a batch never splits.
 struct CameraBatch final : CameraSampleStreams {
     static constexpr int kBlock = 4;
     static constexpr int kCapacity = 16 * kBlock * kBlock;
     CameraSample samples[kCapacity];
     float film_x[kCapacity], film_y[kCapacity];
     Vec2 lens[kCapacity];
+    int ray_number[kCapacity];
     Ray rays[kCapacity];
     bool sees[kCapacity];
+    // Where each ray added went after the untraced ones were dropped (-1:
+    // untraced), and the film pixel of each, in the order added.
+    int slot[kCapacity];
+    int pixel_x[kCapacity], pixel_y[kCapacity];
     Hit hits[kCapacity];
     bool found[kCapacity];
     Color radiance[kCapacity];
@@ -77,14 +84,18 @@ struct CameraBatch final : CameraSampleStreams {
     bool jittered = false;
     bool lens_sampled = false;
 
-    void add(int x, int y, std::uint32_t index, const Vec2& film_point, const Vec2& lens_point) {
+    void add(int x, int y, std::uint32_t index, const Vec2& film_point, const Vec2& lens_point, int ray = 0) {
         samples[size] = CameraSample{x, y, index};
         film_x[size] = film_point.x;
         film_y[size] = film_point.y;
         lens[size] = lens_point;
+        ray_number[size] = ray;
+        pixel_x[size] = x;
+        pixel_y[size] = y;
         ++size;
     }
-    bool full() const { return size == kCapacity; }
+    // Whether another group of `rays` fits.
+    bool full(int rays = 1) const { return size + rays > kCapacity; }
     // Sample `from` moves to place `to` (to <= from), ray included.
     void move(int from, int to) {
         samples[to] = samples[from];
@@ -157,6 +168,7 @@ class ImageRender {
           // of any integrator, spread over the pixel and antialias.
           m_pixel_centre(integrator.is_deterministic() && m_planner.cap() == 1),
           m_lens_sampled(scene.camera().has_focal_blur()),
+          m_rays_per_pixel(std::clamp(scene.camera().rays_per_pixel(), 1, CameraBatch::kCapacity)),
           m_aperture(scene.camera().focal_blur().samples, integrator.is_deterministic()),
           m_prototype(integrator.make_sampler(options.seed)),
           m_samplers([this] { return m_prototype->clone(); }),
@@ -279,8 +291,20 @@ class ImageRender {
     }
 
     // The k-th sample of a pixel always uses stream k: its film point, then
-    // with focal blur its lens point.
+    // with focal blur its lens point. A mesh camera's n rays of sample k
+    // use streams n k to n k + n - 1, all at sample k's film point.
     void add_sample(CameraBatch& batch, Sampler& sampler, int x, int y, std::uint32_t s) const {
+        if (m_rays_per_pixel > 1) {
+            const std::uint32_t first = s * std::uint32_t(m_rays_per_pixel);
+            Vec2 film(float(x) + 0.5f, float(y) + 0.5f);
+            if (!m_pixel_centre) {
+                sampler.start_sample(x, y, first);
+                const Vec2 jitter = sampler.next_2d();
+                film = Vec2(float(x) + jitter.x, float(y) + jitter.y);
+            }
+            for (int r = 0; r < m_rays_per_pixel; ++r) batch.add(x, y, first + std::uint32_t(r), film, Vec2(0.0f), r);
+            return;
+        }
         if (m_pixel_centre && !m_lens_sampled) {
             batch.add(x, y, s, Vec2(float(x) + 0.5f, float(y) + 0.5f), Vec2(0.0f));
             return;
@@ -296,29 +320,41 @@ class ImageRender {
     }
 
     // Camera rays for the batch's film points, their hits traced together,
-    // shaded by the integrator, added to the film. A sample whose ray the
-    // camera cannot make (outside a fisheye's circle) is black, as in
-    // POV-Ray, and is not traced.
+    // shaded by the integrator, added to the film. A ray the camera cannot
+    // make (outside a fisheye's circle) is not traced; as in POV-Ray, a
+    // film sample is the mean of its group's traced rays (a group is one
+    // ray but for a mesh camera), black if none was.
     void shade_batch(CameraBatch& batch) {
         if (batch.size == 0) return;
-        m_scene.camera().generate_rays(batch.film_x, batch.film_y, batch.lens, batch.size, m_film.width(),
-                                       m_film.height(), batch.rays, batch.sees);
+        const int added = batch.size;
+        m_scene.camera().generate_rays(batch.film_x, batch.film_y, batch.lens, added, m_film.width(), m_film.height(),
+                                       batch.rays, batch.sees, batch.ray_number);
         int kept = 0;
-        for (int i = 0; i < batch.size; ++i) {
+        for (int i = 0; i < added; ++i) {
             if (!batch.sees[i]) {
-                m_film.add_sample(batch.samples[i].x, batch.samples[i].y, Color(0.0f));
+                batch.slot[i] = -1;
                 continue;
             }
             if (kept != i) batch.move(i, kept);
-            ++kept;
+            batch.slot[i] = kept++;
         }
         batch.size = kept;
-        if (batch.size == 0) return;
-        m_scene.intersect_batch(batch.rays, batch.size, batch.hits, batch.found, RayCoherence::Coherent);
-        const CameraHits traced(batch.size, batch.rays, batch.hits, batch.found, batch);
-        m_integrator.shade_camera_hits(traced, m_scene, batch.radiance);
-        for (int i = 0; i < batch.size; ++i)
-            m_film.add_sample(batch.samples[i].x, batch.samples[i].y, batch.radiance[i]);
+        if (kept > 0) {
+            m_scene.intersect_batch(batch.rays, kept, batch.hits, batch.found, RayCoherence::Coherent);
+            const CameraHits traced(kept, batch.rays, batch.hits, batch.found, batch);
+            m_integrator.shade_camera_hits(traced, m_scene, batch.radiance);
+        }
+        for (int first = 0; first < added; first += m_rays_per_pixel) {
+            Color sum(0.0f);
+            int traced_rays = 0;
+            for (int i = first; i < first + m_rays_per_pixel; ++i) {
+                if (batch.slot[i] < 0) continue;
+                sum += batch.radiance[batch.slot[i]];
+                ++traced_rays;
+            }
+            if (traced_rays > 1) sum /= float(traced_rays);
+            m_film.add_sample(batch.pixel_x[first], batch.pixel_y[first], sum);
+        }
         batch.size = 0;
     }
 
@@ -348,9 +384,9 @@ class ImageRender {
                         const std::uint32_t first = m_film.samples_taken(x, y);
                         const std::uint32_t count = m_planner.planned(x - m_window.x0, y - m_window.y0, first);
                         for (std::uint32_t s = first; s < first + count; ++s) {
+                            if (batch.full(m_rays_per_pixel)) shade_batch(batch);
                             add_sample(batch, sampler, x, y, s);
                             m_film.prefetch(x, y);
-                            if (batch.full()) shade_batch(batch);
                         }
                         taken += count;
                     }
@@ -371,6 +407,7 @@ class ImageRender {
     PassPlanner m_planner;
     const bool m_pixel_centre;
     const bool m_lens_sampled;
+    const int m_rays_per_pixel;  // camera rays per film sample
     const ApertureSamples m_aperture;
     const std::unique_ptr<Sampler> m_prototype;
     tbb::enumerable_thread_specific<std::unique_ptr<Sampler>> m_samplers;

@@ -7,6 +7,7 @@
 #include <map>
 #include <tuple>
 
+#include "camera/mesh_camera_setup.h"
 #include "geometry/bicubic_patch.h"
 #include "geometry/height_field.h"
 #include "geometry/julia_fractal.h"
@@ -106,7 +107,7 @@ class Builder {
     void build_camera() {
         const sg::Camera camera = m_graph.camera.value_or(sg::Camera{});
         // The two enumerations list POV's projections in the same order.
-        static_assert(int(Camera::Projection::Spherical) == int(sg::Camera::Projection::Spherical));
+        static_assert(int(Camera::Projection::Mesh) == int(sg::Camera::Projection::Mesh));
         const auto projection = static_cast<Camera::Projection>(static_cast<int>(camera.projection));
         m_data->camera =
             Camera(projection, Vec3(camera.location), Vec3(camera.direction), Vec3(camera.right), Vec3(camera.up));
@@ -123,6 +124,9 @@ class Builder {
             m_data->normals.push_back(m_data->texture_factory->make_normal(*camera.normal));
             m_data->camera.set_normal(m_data->normals.back().get());
         }
+        m_data->mesh_camera = make_mesh_camera_rays(camera);
+        if (m_data->mesh_camera)
+            m_data->camera.set_mesh(m_data->mesh_camera.get(), mesh_camera_rays_per_pixel(*camera.mesh));
     }
 
     void count_mesh_uses(const std::vector<sg::Object>& objects) {
