@@ -21,6 +21,7 @@ struct CheckOptions {
     int width = 0;
     int height = 0;
     bool safe = false;
+    long long max_memory_bytes = ParseOptions{}.max_memory_bytes;
 };
 
 }  // namespace
@@ -41,9 +42,11 @@ Command add_check_command(CLI::App& app) {
     command.cli->add_flag("--safe", options->safe,
                           "Untrusted scene: read includes, OBJ/MTL and image files only from the scene's folder "
                           "and the include path");
+    add_max_memory_option(*command.cli, options->max_memory_bytes);
     command.run = [options] {
         ParseOptions parse_options;
         parse_options.safe = options->safe;
+        parse_options.max_memory_bytes = options->max_memory_bytes;
         parse_options.include_path = options->include_path;
         for (const auto& dir : default_include_path()) parse_options.include_path.push_back(dir);
         if (options->width > 0 || options->height > 0) {

@@ -107,6 +107,7 @@ struct RenderArguments {
     std::vector<std::string> parameters;
     bool quiet = false;
     bool safe = false;  // --safe: files only from the scene's folder and the include path
+    long long max_memory_bytes = ParseOptions{}.max_memory_bytes;  // --max-memory
     // Which options the user gave (CLI11 leaves the others untouched).
     CLI::Option* output_option = nullptr;
     CLI::Option* stats_option = nullptr;
@@ -350,6 +351,7 @@ int run_render(const RenderArguments& arguments) {
     SceneRequest request;
     request.path = arguments.scene;
     request.safe = arguments.safe;
+    request.max_memory_bytes = arguments.max_memory_bytes;
     if (arguments.width_option->count() && arguments.height_option->count()) {
         request.image_width = arguments.width;
         request.image_height = arguments.height;
@@ -509,6 +511,7 @@ Command add_render_command(CLI::App& app) {
         "--resume", arguments->resume,
         "Continue from <output>.lancer-checkpoint (same scene and settings required); without one, start over");
     arguments->seed_option = add_seed_option(*render, arguments->seed);
+    add_max_memory_option(*render, arguments->max_memory_bytes);
     render->add_option("--threads", arguments->threads, "Worker threads (default 0: every core)");
     render->add_option("--crop", arguments->crop, "Render only pixels x0 <= x < x1, y0 <= y < y1");
     CLI::Option* parameter_option =

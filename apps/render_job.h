@@ -41,6 +41,7 @@ struct SceneRequest {
     std::string path;
     bool safe = false;
     std::optional<int> image_width, image_height;
+    long long max_memory_bytes = ParseOptions{}.max_memory_bytes;  // --max-memory
 };
 
 // Parses the scene once, printing every diagnostic, and keeps the graph for

@@ -76,6 +76,7 @@ struct TradeArguments {
     std::uint64_t seed = 0;
     int threads = 0;
     std::string cache;
+    long long max_memory_bytes = ParseOptions{}.max_memory_bytes;  // --max-memory
     CLI::Option* budget_option = nullptr;
     CLI::Option* width_option = nullptr;
     CLI::Option* height_option = nullptr;
@@ -176,6 +177,7 @@ struct PreparedScene {
 bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
     SceneRequest request;
     request.path = arguments.scene;
+    request.max_memory_bytes = arguments.max_memory_bytes;
     if (arguments.width_option->count()) {
         request.image_width = arguments.width;
         request.image_height = arguments.height;
@@ -504,6 +506,7 @@ Command add_trade_command(CLI::App& app) {
     arguments->width_option = trade->add_option("--width", arguments->width, "Image width (with --height)");
     arguments->height_option = trade->add_option("--height", arguments->height, "Image height (with --width)");
     arguments->seed_option = add_seed_option(*trade, arguments->seed);
+    add_max_memory_option(*trade, arguments->max_memory_bytes);
     trade->add_option("--threads", arguments->threads, "Worker threads (default 0: every core)");
     trade->add_option("--cache", arguments->cache,
                       "Reference cache folder (default $XDG_CACHE_HOME/lancer/references or ~/.cache/...)");

@@ -423,6 +423,39 @@ TEST(ResourceLimits, GrowingStringsStopAtALocatedError) {
     EXPECT_TRUE(parse_scene_string("#declare S = concat(\"a\", \"b\");", "fine.pov", options).ok());
 }
 
+// Arrays kept in an array, a union that holds two copies of itself, a
+// recursive macro that builds a tree of unions: each grew memory until
+// std::bad_alloc (or the machine's end). The parse now stops at its memory
+// budget with an error at the loop, the macro call or the array.
+TEST(ResourceLimits, GrowingArraysObjectsAndMacrosStopAtTheMemoryBudget) {
+    ParseOptions options;
+    options.max_memory_bytes = 64 << 20;
+    struct Case {
+        const char* scene;
+        const char* where;
+    };
+    for (const Case& c : {
+             Case{"#declare Keep = array[1000];\n#for (I, 0, 999)\n  #declare Keep[I] = array[100000];\n#end\n",
+                  "grow.pov:"},
+             Case{
+                 "#declare U = sphere { 0, 1 }\n#while (1)\n  #declare U = union { object { U } object { U } }\n#end\n",
+                 "grow.pov:2:1: error: the parse holds"},
+             Case{"#macro Tree(N) #if (N > 0) union { Tree(N - 1) Tree(N - 1) } #else sphere { 0, 1 } #end #end\n"
+                  "object { Tree(40) }\n",
+                  "grow.pov:1:"},
+             Case{"#declare Big = array[5000000];\n", "grow.pov:1:16: error: this needs about"},
+         }) {
+        ParseResult result = parse_scene_string(c.scene, "grow.pov", options);
+        ASSERT_FALSE(result.ok()) << c.scene;
+        EXPECT_NE(all_text(result).find(c.where), std::string::npos) << all_text(result);
+        EXPECT_NE(all_text(result).find("past its memory budget of 64 MiB (--max-memory"), std::string::npos)
+            << all_text(result);
+    }
+    EXPECT_TRUE(parse_scene_string("#declare A = array[1000];\n#declare U = union { sphere { 0, 1 } sphere { x, 1 } }",
+                                   "fine.pov", options)
+                    .ok());
+}
+
 TEST(ResourceLimits, MaxTraceLevelOutOfRange) {
     ParseResult result = parse_scene_string("global_settings { max_trace_level 1e9 }", "limits.pov");
     ASSERT_FALSE(result.ok());
