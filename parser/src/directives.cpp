@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "evaluator.h"
+#include "parse_stack.h"
 
 namespace lancer::parse {
 
@@ -460,6 +461,12 @@ void Evaluator::directive_macro(const RawToken& d) {
 void Evaluator::expand_macro(const RawToken& name, const Macro& macro) {
     if (m_macro_depth >= m_options.max_macro_depth) {
         error(name.location, "macro recursion too deep: more than " + std::to_string(m_options.max_macro_depth) +
+                                 " nested calls of '" + macro.name + "'");
+        return abort_parse();
+    }
+    // The depth limit holds whatever a build's frame sizes (parse_stack.h).
+    if (parse_stack_nearly_full()) {
+        error(name.location, "macro recursion too deep for the parser's stack: " + std::to_string(m_macro_depth) +
                                  " nested calls of '" + macro.name + "'");
         return abort_parse();
     }
