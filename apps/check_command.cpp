@@ -23,6 +23,7 @@ struct CheckOptions {
     int width = 0;
     int height = 0;
     bool safe = false;
+    long long max_memory_bytes = ParseOptions{}.max_memory_bytes;
 };
 
 }  // namespace
@@ -39,6 +40,7 @@ Command add_check_command(CLI::App& app) {
     command.cli->add_flag("--safe", options->safe,
                           "Untrusted scene: read includes, OBJ/MTL and image files only from the scene's folder "
                           "and the include path");
+    add_max_memory_option(*command.cli, options->max_memory_bytes);
     command.run = [options] {
         ParseOptions parse_options;
         parse_options.safe = options->safe;
@@ -48,6 +50,7 @@ Command add_check_command(CLI::App& app) {
             print_error(problem);
             return 2;
         }
+        parse_options.max_memory_bytes = options->max_memory_bytes;
         if (options->width > 0 || options->height > 0) {
             // One given: keep POV's 4:3 default for the other.
             parse_options.image_width = options->width > 0 ? options->width : options->height * 4 / 3;

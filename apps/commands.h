@@ -17,6 +17,9 @@ struct Command {
 // bits, checked as such (a plain unsigned option would take -1 or 2^64 and
 // wrap them).
 CLI::Option* add_seed_option(CLI::App& command, std::uint64_t& seed);
+// `--max-memory SIZE` (512M, 8G, bytes) for the commands that parse a
+// scene: ParseOptions::max_memory_bytes.
+CLI::Option* add_max_memory_option(CLI::App& command, long long& bytes);
 
 Command add_check_command(CLI::App& app);
 Command add_render_command(CLI::App& app);

@@ -112,6 +112,7 @@ struct RenderArguments {
     std::string frames;  // --frames A..B: an animation, one image per frame
     std::string clock;   // --clock C0..C1 (default 0..1)
     SceneInputOptions inputs;
+    long long max_memory_bytes = ParseOptions{}.max_memory_bytes;  // --max-memory
     // Which options the user gave (CLI11 leaves the others untouched).
     CLI::Option* output_option = nullptr;
     CLI::Option* stats_option = nullptr;
@@ -363,6 +364,7 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
     request.safe = arguments.safe;
     request.animation = job.animation;
     request.inputs = arguments.inputs;
+    request.max_memory_bytes = arguments.max_memory_bytes;
     if (arguments.width_option->count() && arguments.height_option->count()) {
         request.image_width = arguments.width;
         request.image_height = arguments.height;
@@ -566,6 +568,7 @@ Command add_render_command(CLI::App& app) {
         "--resume", arguments->resume,
         "Continue from <output>.lancer-checkpoint (same scene and settings required); without one, start over");
     arguments->seed_option = add_seed_option(*render, arguments->seed);
+    add_max_memory_option(*render, arguments->max_memory_bytes);
     render->add_option("--threads", arguments->threads, "Worker threads (default 0: every core)");
     render->add_option("--crop", arguments->crop, "Render only pixels x0 <= x < x1, y0 <= y < y1");
     CLI::Option* parameter_option =

@@ -20,6 +20,7 @@ std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request) {
         print_error(problem);
         return std::nullopt;
     }
+    options.max_memory_bytes = request.max_memory_bytes;
     if (request.image_width && request.image_height) {
         options.image_width = *request.image_width;
         options.image_height = *request.image_height;

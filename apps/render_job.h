@@ -44,6 +44,7 @@ struct SceneRequest {
     std::optional<int> image_width, image_height;
     AnimationFrame animation;  // POV's clock and frame constants (all 0 for a still)
     SceneInputOptions inputs;  // -I and -D
+    long long max_memory_bytes = ParseOptions{}.max_memory_bytes;  // --max-memory
 };
 
 // Parses the scene once, printing every diagnostic, and keeps the graph for

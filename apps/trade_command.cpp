@@ -77,6 +77,7 @@ struct TradeArguments {
     int threads = 0;
     std::string cache;
     SceneInputOptions inputs;
+    long long max_memory_bytes = ParseOptions{}.max_memory_bytes;  // --max-memory
     CLI::Option* budget_option = nullptr;
     CLI::Option* width_option = nullptr;
     CLI::Option* height_option = nullptr;
@@ -178,6 +179,7 @@ bool prepare_scene(const TradeArguments& arguments, PreparedScene& prepared) {
     SceneRequest request;
     request.path = arguments.scene;
     request.inputs = arguments.inputs;
+    request.max_memory_bytes = arguments.max_memory_bytes;
     if (arguments.width_option->count()) {
         request.image_width = arguments.width;
         request.image_height = arguments.height;
@@ -510,6 +512,7 @@ Command add_trade_command(CLI::App& app) {
     arguments->width_option = trade->add_option("--width", arguments->width, "Image width (with --height)");
     arguments->height_option = trade->add_option("--height", arguments->height, "Image height (with --width)");
     arguments->seed_option = add_seed_option(*trade, arguments->seed);
+    add_max_memory_option(*trade, arguments->max_memory_bytes);
     trade->add_option("--threads", arguments->threads, "Worker threads (default 0: every core)");
     trade->add_option("--cache", arguments->cache,
                       "Reference cache folder (default $XDG_CACHE_HOME/lancer/references or ~/.cache/...)");

@@ -3,10 +3,12 @@
 // partial image. The files are generated in a temporary folder.
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -116,23 +118,140 @@ TEST_F(BadFiles, FaceIndexBeyondIntIsAnError) {
     EXPECT_NE(slashed.find("out of range"), std::string::npos) << slashed;
 }
 
-// Triangulating a polygon takes time growing with the square of its size:
-// a face of 200,000 vertices took 55 s. Faces are capped at 256 vertices.
-TEST_F(BadFiles, HugeFaceIsRefusedQuickly) {
-    std::string obj;
-    std::string face = "f";
-    constexpr int kVertices = 200000;
-    for (int i = 0; i < kVertices; ++i) {
-        const double angle = 6.283185307179586 * i / kVertices;
-        obj += "v " + std::to_string(std::cos(angle)) + " " + std::to_string(std::sin(angle)) + " 0\n";
+// A face of n corners as an OBJ (its corners in order, then one face line).
+std::string obj_face(const std::vector<glm::dvec2>& corners) {
+    std::string obj, face = "f";
+    char line[96];
+    for (size_t i = 0; i < corners.size(); ++i) {
+        std::snprintf(line, sizeof line, "v %.17g %.17g 0\n", corners[i].x, corners[i].y);
+        obj += line;
         face += " " + std::to_string(i + 1);
     }
-    const std::string message = obj_error(obj + face + "\n");
-    EXPECT_NE(message.find("a face of 200000 vertices"), std::string::npos) << message;
-    std::string small = "f";
-    for (int i = 1; i <= 256; ++i) small += " " + std::to_string(i);
-    ParseResult result = parse_obj(obj + small + "\n");
-    EXPECT_TRUE(result.ok()) << all_text(result);
+    return obj + face + "\n";
+}
+
+// The area of the mesh's triangles (each counted once, however wound), and
+// the area of its vertices read as one polygon in the xy plane.
+double triangle_area(const sg::TriangleMesh& mesh) {
+    double sum = 0.0;
+    for (const auto& f : mesh.faces) {
+        const auto& p = mesh.positions;
+        sum += 0.5 * glm::length(glm::cross(p[f.position[1]] - p[f.position[0]], p[f.position[2]] - p[f.position[0]]));
+    }
+    return sum;
+}
+double polygon_area(const sg::TriangleMesh& mesh) {
+    double sum = 0.0;
+    const auto& p = mesh.positions;
+    for (size_t i = 0; i < p.size(); ++i) {
+        const auto& a = p[i];
+        const auto& b = p[(i + 1) % p.size()];
+        sum += a.x * b.y - a.y * b.x;
+    }
+    return 0.5 * std::abs(sum);
+}
+
+// tinyobjloader's triangulation took time growing with the square of a
+// face's size (a face of 200,000 vertices took 55 s, so faces were capped at
+// 256); lancer's takes O(n log n): a fan where the face is convex.
+TEST_F(BadFiles, HugeConvexFaceIsTriangulated) {
+    constexpr int kVertices = 200000;
+    std::vector<glm::dvec2> corners;
+    for (int i = 0; i < kVertices; ++i) {
+        const double angle = 6.283185307179586 * i / kVertices;
+        corners.emplace_back(std::cos(angle), std::sin(angle));
+    }
+    ParseResult result = parse_obj(obj_face(corners));
+    ASSERT_TRUE(result.ok()) << all_text(result);
+    EXPECT_TRUE(result.diagnostics.empty()) << all_text(result);
+    const sg::TriangleMesh& mesh = only_mesh(*result.scene);
+    EXPECT_EQ(mesh.faces.size(), static_cast<size_t>(kVertices - 2));
+    EXPECT_NEAR(triangle_area(mesh), polygon_area(mesh), 1e-9);
+    EXPECT_NEAR(triangle_area(mesh), 3.14159265, 1e-6);
+}
+
+// A star of 100,000 corners is concave at every other corner: the sweep
+// splits it into monotone pieces, and its triangles cover it exactly once.
+TEST_F(BadFiles, HugeStarFaceIsTriangulated) {
+    constexpr int kVertices = 100000;
+    std::vector<glm::dvec2> corners;
+    for (int i = 0; i < kVertices; ++i) {
+        const double angle = 6.283185307179586 * i / kVertices, radius = i % 2 ? 0.5 : 1.0;
+        corners.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
+    }
+    ParseResult result = parse_obj(obj_face(corners));
+    ASSERT_TRUE(result.ok()) << all_text(result);
+    EXPECT_TRUE(result.diagnostics.empty()) << all_text(result);
+    const sg::TriangleMesh& mesh = only_mesh(*result.scene);
+    EXPECT_EQ(mesh.faces.size(), static_cast<size_t>(kVertices - 2));
+    const double area = polygon_area(mesh);
+    EXPECT_NEAR(area, 0.25 * kVertices * std::sin(6.283185307179586 / kVertices), 1e-5);  // n triangles 1 x 0.5 about 0
+    EXPECT_NEAR(triangle_area(mesh), area, 1e-9 * area);
+}
+
+// A comb: teeth of one unit on a bar, 100,000 corners, half of them concave.
+TEST_F(BadFiles, HugeCombFaceIsTriangulated) {
+    constexpr int kTeeth = 25000;
+    std::vector<glm::dvec2> corners{{0, 0}, {2 * kTeeth - 1, 0}};
+    for (int i = kTeeth - 1; i >= 0; --i) {
+        corners.emplace_back(2 * i + 1, 3);
+        corners.emplace_back(2 * i, 3);
+        if (i > 0) {
+            corners.emplace_back(2 * i, 1);
+            corners.emplace_back(2 * i - 1, 1);
+        }
+    }
+    ParseResult result = parse_obj(obj_face(corners));
+    ASSERT_TRUE(result.ok()) << all_text(result);
+    const sg::TriangleMesh& mesh = only_mesh(*result.scene);
+    EXPECT_EQ(mesh.faces.size(), corners.size() - 2);
+    EXPECT_DOUBLE_EQ(polygon_area(mesh), 4.0 * kTeeth - 1);
+    EXPECT_NEAR(triangle_area(mesh), 4.0 * kTeeth - 1, 1e-6);
+}
+
+// tinyobjloader keeps a face's size modulo 256: lancer counts the vertices
+// of each face line itself (with \r\n line ends, a two-vertex line that
+// tinyobjloader drops, faces before and after).
+TEST_F(BadFiles, FacesOfMoreThan255VerticesAmongOthers) {
+    std::vector<glm::dvec2> corners;
+    for (int i = 0; i < 300; ++i)
+        corners.emplace_back(std::cos(6.283185307179586 * i / 300), std::sin(6.283185307179586 * i / 300));
+    std::string obj = obj_face(corners);
+    obj.insert(obj.rfind("f "), "f 1 2\r\nf 1 2 3\r\n");
+    obj += "f 4 5 6 7\r\n";
+    ParseResult result = parse_obj(obj);
+    ASSERT_TRUE(result.ok()) << all_text(result);
+    EXPECT_EQ(only_mesh(*result.scene).faces.size(), 1u + 298u + 2u);
+}
+
+// Faces beyond a million vertices are still refused before tinyobjloader
+// reads the file, naming the line.
+TEST_F(BadFiles, FaceBeyondTheCapIsRefusedQuickly) {
+    std::string face = "f";
+    face.reserve(6000010);
+    for (int i = 0; i < 1000001; ++i) face += i % 2 ? " 2" : " 3";
+    const std::string message = obj_error(kTriangle + face + "\n");
+    EXPECT_NE(message.find("line 5: a face of 1000001 vertices (lancer takes at most 1000000 per face"),
+              std::string::npos)
+        << message;
+}
+
+// A face whose edges cross has no inside: it becomes a fan, with a warning;
+// one whose corners lie on a line has no triangles.
+TEST_F(BadFiles, FacesThatCrossThemselvesOrHaveNoArea) {
+    ParseResult crossing = parse_obj("v 0 0 0\nv 2 2 0\nv 2 0 0\nv 0 2 0\nv -1 1 0\nf 1 2 3 4 5\nf 1 3 2\n");
+    ASSERT_TRUE(crossing.ok()) << all_text(crossing);
+    EXPECT_EQ(only_mesh(*crossing.scene).faces.size(), 4u);
+    EXPECT_NE(all_text(crossing).find("scene.pov:2:12: warning: OBJ \"model.obj\": 1 face crosses its own edges "
+                                      "(first: face 1); triangulated as a fan from the first corner"),
+              std::string::npos)
+        << all_text(crossing);
+    ParseResult flat = parse_obj("v 0 0 0\nv 1 1 1\nv 2 2 2\nv 3 3 3\nv 0 1 0\nf 1 2 3 4\nf 1 2 5\n");
+    ASSERT_TRUE(flat.ok()) << all_text(flat);
+    EXPECT_EQ(only_mesh(*flat.scene).faces.size(), 1u);
+    EXPECT_NE(all_text(flat).find("1 face has no area (first: face 1; its corners lie on one line) and is left out"),
+              std::string::npos)
+        << all_text(flat);
 }
 
 TEST_F(BadFiles, NegativeIndicesCountFromTheEnd) {
@@ -302,6 +421,39 @@ TEST(ResourceLimits, GrowingStringsStopAtALocatedError) {
         EXPECT_NE(all_text(result).find("strings have grown past 1 MiB"), std::string::npos) << all_text(result);
     }
     EXPECT_TRUE(parse_scene_string("#declare S = concat(\"a\", \"b\");", "fine.pov", options).ok());
+}
+
+// Arrays kept in an array, a union that holds two copies of itself, a
+// recursive macro that builds a tree of unions: each grew memory until
+// std::bad_alloc (or the machine's end). The parse now stops at its memory
+// budget with an error at the loop, the macro call or the array.
+TEST(ResourceLimits, GrowingArraysObjectsAndMacrosStopAtTheMemoryBudget) {
+    ParseOptions options;
+    options.max_memory_bytes = 64 << 20;
+    struct Case {
+        const char* scene;
+        const char* where;
+    };
+    for (const Case& c : {
+             Case{"#declare Keep = array[1000];\n#for (I, 0, 999)\n  #declare Keep[I] = array[100000];\n#end\n",
+                  "grow.pov:"},
+             Case{
+                 "#declare U = sphere { 0, 1 }\n#while (1)\n  #declare U = union { object { U } object { U } }\n#end\n",
+                 "grow.pov:2:1: error: the parse holds"},
+             Case{"#macro Tree(N) #if (N > 0) union { Tree(N - 1) Tree(N - 1) } #else sphere { 0, 1 } #end #end\n"
+                  "object { Tree(40) }\n",
+                  "grow.pov:1:"},
+             Case{"#declare Big = array[5000000];\n", "grow.pov:1:16: error: this needs about"},
+         }) {
+        ParseResult result = parse_scene_string(c.scene, "grow.pov", options);
+        ASSERT_FALSE(result.ok()) << c.scene;
+        EXPECT_NE(all_text(result).find(c.where), std::string::npos) << all_text(result);
+        EXPECT_NE(all_text(result).find("past its memory budget of 64 MiB (--max-memory"), std::string::npos)
+            << all_text(result);
+    }
+    EXPECT_TRUE(parse_scene_string("#declare A = array[1000];\n#declare U = union { sphere { 0, 1 } sphere { x, 1 } }",
+                                   "fine.pov", options)
+                    .ok());
 }
 
 TEST(ResourceLimits, MaxTraceLevelOutOfRange) {

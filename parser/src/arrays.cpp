@@ -42,6 +42,10 @@ Value Evaluator::make_array(const std::vector<int>& sizes, const ArrayInit& init
         data->sizes.assign(sizes.size(), 1);
         count = 1;
     }
+    if (memory_exhausted(at, count * static_cast<long long>(sizeof(std::optional<Value>)))) {
+        data->sizes.assign(sizes.size(), 1);
+        count = 1;
+    }
     data->elements.resize(std::size_t(count));
     if (!init.items.empty()) {
         // Each level of braces lists one dimension, in full.

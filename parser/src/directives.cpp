@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "evaluator.h"
+#include "parse_stack.h"
 
 namespace lancer::parse {
 
@@ -398,6 +399,8 @@ void Evaluator::directive_end(const RawToken& d) {
             error(controls.back().opened_at, "#while loop exceeded " + std::to_string(m_options.max_loop_iterations) +
                                                  " iterations (runaway loop?)");
             abort_parse();
+        } else {
+            memory_exhausted(controls.back().opened_at);
         }
         return;
     }
@@ -407,6 +410,7 @@ void Evaluator::directive_end(const RawToken& d) {
                   "#for loop exceeded " + std::to_string(m_options.max_loop_iterations) + " iterations");
             return abort_parse();
         }
+        if (memory_exhausted(control.opened_at)) return;
         const Value* current = lookup(control.variable);
         double value = (current && current->kind == Value::Kind::Float ? current->v[0] : control.end) + control.step;
         store(control.variable, Value::number(value), false, control.opened_at);
@@ -462,6 +466,13 @@ void Evaluator::expand_macro(const RawToken& name, const Macro& macro) {
                                  " nested calls of '" + macro.name + "'");
         return abort_parse();
     }
+    // The depth limit holds whatever a build's frame sizes (parse_stack.h).
+    if (parse_stack_nearly_full()) {
+        error(name.location, "macro recursion too deep for the parser's stack: " + std::to_string(m_macro_depth) +
+                                 " nested calls of '" + macro.name + "'");
+        return abort_parse();
+    }
+    if (memory_exhausted(name.location)) return;
     const RawToken* next = m_pending.empty() ? peek_raw() : nullptr;
     if (!next || next->kind != RawKind::Punct || next->text != "(") {
         error(name.location, "expected '(' after the macro name '" + macro.name + "'");

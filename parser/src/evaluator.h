@@ -36,6 +36,7 @@
 
 #include "grammar.tab.hpp"
 #include "lancer/parser.h"
+#include "memory_budget.h"
 #include "raw_token.h"
 #include "value.h"
 
@@ -561,7 +562,11 @@ class Evaluator {
     std::unordered_map<std::string, Deprecation> m_deprecated;
     bool m_saw_version = false;
     bool m_saw_assumed_gamma = false;
-    std::size_t m_string_bytes = 0;   // produced by concat() so far (ParseOptions::max_string_bytes)
+    std::size_t m_string_bytes = 0;                     // produced by concat() so far (ParseOptions::max_string_bytes)
+    MemoryBudget m_memory{m_options.max_memory_bytes};  // ParseOptions::max_memory_bytes
+    // Whether the parse has grown past its memory budget, or would with
+    // `more` bytes: then a located error at `at` and the parse stops.
+    bool memory_exhausted(const sg::SourceLocation& at, long long more = 0);
     double m_language_version = 3.7;  // POV-Ray's default without #version
     void settle_version_defaults();
     bool m_saw_camera = false;

@@ -8,6 +8,7 @@
 #include <tiny_obj_loader.h>
 
 #include "evaluator.h"
+#include "polygon_triangulation.h"
 
 namespace lancer::parse {
 
@@ -19,18 +20,23 @@ sg::TriangleMesh& mutable_mesh(ShapeValue& shape) {
     return const_cast<sg::TriangleMesh&>(*std::get<sg::MeshRef>(shape.object.shape));
 }
 
-// Vertices one OBJ face may have: tinyobjloader triangulates a polygon in
-// time that grows with the square of its size (200,000 vertices took 55 s).
-constexpr std::size_t kMaxObjFaceVertices = 256;
+// Vertices one OBJ face may have. Faces are triangulated in O(n log n)
+// (polygon_triangulation.h); a concave face of a million vertices (a star)
+// took 3.4 s and 150 MB on a loaded two-core machine.
+constexpr std::size_t kMaxObjFaceVertices = 1000000;
 
 // The first face line tinyobjloader would misread, as "line N: why", or
 // empty: a face with more than kMaxObjFaceVertices vertices, or an index
-// outside int (tinyobjloader wraps 2^32 + 4 to 4).
-std::string bad_obj_face(const std::string& text) {
+// outside int (tinyobjloader wraps 2^32 + 4 to 4). `sizes` receives the
+// number of vertices of each face line, in order: tinyobjloader keeps a
+// face's size in an unsigned char (a face of 300 vertices reads as 44).
+std::string scan_obj_faces(const std::string& text, std::vector<std::size_t>& sizes) {
     std::size_t line_number = 0;
     for (std::size_t start = 0; start < text.size();) {
-        std::size_t end = text.find('\n', start);
+        // Lines end at \n, \r\n or a lone \r, as tinyobjloader reads them.
+        std::size_t end = text.find_first_of("\r\n", start);
         if (end == std::string::npos) end = text.size();
+        std::size_t next = end + (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n' ? 2 : 1);
         ++line_number;
         std::size_t i = start;
         while (i < end && (text[i] == ' ' || text[i] == '\t')) ++i;
@@ -60,8 +66,9 @@ std::string bad_obj_face(const std::string& text) {
                 return "line " + std::to_string(line_number) + ": a face of " + std::to_string(vertices) +
                        " vertices (lancer takes at most " + std::to_string(kMaxObjFaceVertices) +
                        " per face; split it into smaller polygons)";
+            sizes.push_back(vertices);
         }
-        start = end + 1;
+        start = next;
     }
     return {};
 }
@@ -456,7 +463,8 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         error(where.begin, "OBJ file \"" + name + "\" " + problem);
         return shape;
     }
-    if (const std::string face = bad_obj_face(text); !face.empty()) {
+    std::vector<std::size_t> face_sizes;
+    if (const std::string face = scan_obj_faces(text, face_sizes); !face.empty()) {
         error(where.begin, "OBJ \"" + name + "\", " + face);
         return shape;
     }
@@ -467,8 +475,10 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
     std::vector<tinyobj::material_t> obj_materials;
     std::string obj_warning, obj_error;
     std::istringstream stream(text);
+    // Faces as written: tinyobjloader's triangulation takes time growing with
+    // the square of a face's size; lancer's takes O(n log n).
     bool loaded = tinyobj::LoadObj(&attrib, &obj_shapes, &obj_materials, &obj_warning, &obj_error, &stream, &materials,
-                                   /*triangulate=*/true, /*default_vcols_fallback=*/false);
+                                   /*triangulate=*/false, /*default_vcols_fallback=*/false);
     if (materials.refused) {
         refuse_file(where.begin, "MTL file", materials.refused_name);
         return shape;
@@ -569,40 +579,90 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         mesh->materials.push_back(material);
     }
 
+    // Each face, checked and triangulated: a fan where it is convex, monotone
+    // pieces where it is not; a face that crosses itself becomes a fan and
+    // one without area (corners on one line) is left out, both reported.
+    struct Skipped {
+        size_t count = 0;
+        std::string first;
+    } crossing, flat;
+    auto note = [&](Skipped& skipped, size_t face, const std::string& shape_name) {
+        if (skipped.count++ == 0)
+            skipped.first = "face " + std::to_string(face) + (shape_name.empty() ? "" : " of '" + shape_name + "'");
+    };
+    std::vector<sg::Vec3> corners;
+    // Face sizes from lancer's scan (tinyobjloader's are modulo 256); it
+    // drops faces of fewer than 3 vertices.
+    size_t next_size = 0;
     for (const auto& obj_shape : obj_shapes) {
         const auto& indices = obj_shape.mesh.indices;
-        for (size_t f = 0; f + 2 < indices.size(); f += 3) {
-            sg::TriangleMesh::Face face;
+        size_t offset = 0;
+        for (size_t f = 0; f < obj_shape.mesh.num_face_vertices.size(); ++f) {
+            while (next_size < face_sizes.size() && face_sizes[next_size] < 3) ++next_size;
+            const size_t count = next_size < face_sizes.size() ? face_sizes[next_size++] : 0;
+            if (count < 3 || count % 256 != obj_shape.mesh.num_face_vertices[f] || offset + count > indices.size()) {
+                error(where.begin,
+                      "cannot read OBJ file \"" + name + "\": the vertices of face " + std::to_string(f + 1) +
+                          (obj_shape.name.empty() ? "" : " of '" + obj_shape.name + "'") + " do not match its line");
+                return shape;
+            }
             bool valid = true;
-            for (int i = 0; i < 3; ++i) {
-                const auto& index = indices[f + i];
-                if (index.vertex_index < 0 || static_cast<size_t>(index.vertex_index) >= mesh->positions.size())
-                    valid = false;
-                face.position[i] = index.vertex_index;
-                face.normal[i] =
-                    index.normal_index >= 0 && static_cast<size_t>(index.normal_index) < mesh->normals.size()
-                        ? index.normal_index
-                        : -1;
-                face.uv[i] = index.texcoord_index >= 0 && static_cast<size_t>(index.texcoord_index) < mesh->uvs.size()
-                                 ? index.texcoord_index
-                                 : -1;
+            for (size_t k = 0; k < count; ++k) {
+                const int vertex = indices[offset + k].vertex_index;
+                if (vertex < 0 || static_cast<size_t>(vertex) >= mesh->positions.size()) valid = false;
             }
             if (!valid) {
-                error(where.begin, "OBJ \"" + name + "\": face " + std::to_string(f / 3 + 1) +
+                error(where.begin, "OBJ \"" + name + "\": face " + std::to_string(f + 1) +
                                        (obj_shape.name.empty() ? "" : " of '" + obj_shape.name + "'") +
                                        " refers to a vertex that does not exist");
                 return shape;
             }
-            // All three normals or none, all three uvs or none.
-            if (face.normal[0] < 0 || face.normal[1] < 0 || face.normal[2] < 0)
-                face.normal[0] = face.normal[1] = face.normal[2] = -1;
-            if (face.uv[0] < 0 || face.uv[1] < 0 || face.uv[2] < 0) face.uv[0] = face.uv[1] = face.uv[2] = -1;
-            int material_id = f / 3 < obj_shape.mesh.material_ids.size() ? obj_shape.mesh.material_ids[f / 3] : -1;
-            face.material =
-                material_id >= 0 && static_cast<size_t>(material_id) < mesh->materials.size() ? material_id : -1;
-            mesh->faces.push_back(face);
+            PolygonTriangulation triangulation;
+            if (count == 3) {
+                triangulation.triangles.push_back({0, 1, 2});
+            } else {
+                corners.clear();
+                for (size_t k = 0; k < count; ++k) corners.push_back(mesh->positions[indices[offset + k].vertex_index]);
+                triangulation = triangulate_polygon(corners);
+                if (triangulation.kind == PolygonTriangulation::Kind::NotSimple) note(crossing, f + 1, obj_shape.name);
+                if (triangulation.kind == PolygonTriangulation::Kind::NoArea) note(flat, f + 1, obj_shape.name);
+            }
+            const int material_id = f < obj_shape.mesh.material_ids.size() ? obj_shape.mesh.material_ids[f] : -1;
+            for (const auto& triangle : triangulation.triangles) {
+                sg::TriangleMesh::Face face;
+                for (int i = 0; i < 3; ++i) {
+                    const auto& index = indices[offset + triangle[i]];
+                    face.position[i] = index.vertex_index;
+                    face.normal[i] =
+                        index.normal_index >= 0 && static_cast<size_t>(index.normal_index) < mesh->normals.size()
+                            ? index.normal_index
+                            : -1;
+                    face.uv[i] =
+                        index.texcoord_index >= 0 && static_cast<size_t>(index.texcoord_index) < mesh->uvs.size()
+                            ? index.texcoord_index
+                            : -1;
+                }
+                // All three normals or none, all three uvs or none.
+                if (face.normal[0] < 0 || face.normal[1] < 0 || face.normal[2] < 0)
+                    face.normal[0] = face.normal[1] = face.normal[2] = -1;
+                if (face.uv[0] < 0 || face.uv[1] < 0 || face.uv[2] < 0) face.uv[0] = face.uv[1] = face.uv[2] = -1;
+                face.material =
+                    material_id >= 0 && static_cast<size_t>(material_id) < mesh->materials.size() ? material_id : -1;
+                mesh->faces.push_back(face);
+            }
+            offset += count;
         }
     }
+    if (crossing.count)
+        warning(where.begin, "OBJ \"" + name + "\": " + std::to_string(crossing.count) +
+                                 (crossing.count == 1 ? " face crosses its" : " faces cross their") +
+                                 " own edges (first: " + crossing.first +
+                                 "); triangulated as a fan from the first corner");
+    if (flat.count)
+        warning(where.begin, "OBJ \"" + name + "\": " + std::to_string(flat.count) +
+                                 (flat.count == 1 ? " face has" : " faces have") + " no area (first: " + flat.first +
+                                 "; its corners lie on one line) and " + (flat.count == 1 ? "is" : "are") +
+                                 " left out");
     if (mesh->faces.empty()) {
         error(where.begin, "OBJ file \"" + name + "\" has no faces" +
                                (mesh->positions.empty() ? ""

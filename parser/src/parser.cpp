@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "evaluator.h"
+#include "parse_stack.h"
 
 namespace lancer {
 
@@ -101,14 +102,21 @@ ParseResult parse_scene_file(const std::string& path, const ParseOptions& option
     }
     std::ostringstream text;
     text << in.rdbuf();
-    parse::Evaluator evaluator(options);
-    std::string folder = fs::path(path).parent_path().string();
-    return evaluator.run(text.str(), path, path, folder);
+    ParseResult result;
+    parse::run_on_parse_stack([&] {
+        parse::Evaluator evaluator(options);
+        result = evaluator.run(text.str(), path, path, fs::path(path).parent_path().string());
+    });
+    return result;
 }
 
 ParseResult parse_scene_string(std::string_view text, const std::string& name, const ParseOptions& options) {
-    parse::Evaluator evaluator(options);
-    return evaluator.run(std::string(text), name, "", "");
+    ParseResult result;
+    parse::run_on_parse_stack([&] {
+        parse::Evaluator evaluator(options);
+        result = evaluator.run(std::string(text), name, "", "");
+    });
+    return result;
 }
 
 std::vector<std::string> default_include_path() {

@@ -97,6 +97,12 @@ struct ParseOptions {
     // Bytes all of the scene's concat() calls may produce, together: a
     // string doubled in a loop reached 7 GB before this bound.
     long long max_string_bytes = 64LL << 20;
+    // Memory the parse may add to the process (its resident size beyond
+    // what it was when the parse began): arrays, objects and their copies,
+    // macro frames, strings. Read at every loop iteration and macro call (at
+    // most once a millisecond) and before an array is made; crossing it is a
+    // located error. `--max-memory` on render, check and trade.
+    long long max_memory_bytes = 4LL << 30;
 };
 
 struct ParseResult {
