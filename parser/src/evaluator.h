@@ -332,6 +332,10 @@ class Evaluator {
                             std::vector<int>& indices);
     // Functions (functions.cpp, patterns.cpp).
     Value call_function(const Value& function, const std::vector<Value>& arguments, const SourceRange& where);
+    // ---- splines (splines.cpp)
+    Value make_spline(const Value& base, const std::vector<int>& kinds, const std::vector<Value>& entries,
+                      const sg::SourceLocation& at);
+    Value call_spline(const Value& spline, const Value& time, const SourceRange& where, int kind);
     // ---- trace(), inside(), min_extent(), max_extent() (geometry_queries.cpp)
     Value trace(const Value& object, const SourceRange& wo, const Value& origin, const SourceRange& w1,
                 const Value& direction, const SourceRange& w2, const std::string& normal_name,

@@ -53,7 +53,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        PIGMENT_MAP_ID "pigment_map identifier" NORMAL_MAP_ID "normal_map identifier"
        INTERIOR_ID "interior identifier" CAMERA_ID "camera identifier"
        LIGHT_ID "light_source identifier" TRANSFORM_ID "transform identifier"
-       FUNCTION_LITERAL "function definition" FUNCTION_ID "function identifier"
+       FUNCTION_LITERAL "function definition" FUNCTION_ID "function identifier" SPLINE_ID "spline identifier"
        UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" UNSUPPORTED "unsupported keyword"
 
 /* Keywords: the alias is the spelling; token_stream.cpp (keyword_table) builds its table from these. */
@@ -131,6 +131,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        ISOSURFACE "isosurface" CONTAINED_BY "contained_by" MAX_GRADIENT "max_gradient" EVALUATE "evaluate"
        MAX_TRACE "max_trace" ALL_INTERSECTIONS "all_intersections"
        TRACE "trace" INSIDE "inside" MIN_EXTENT "min_extent" MAX_EXTENT "max_extent"
+       SPLINE "spline" NATURAL_SPLINE "natural_spline"
 
 %nterm <Value> expr arith postfix primary colour colour_base declared_value string_value bare_colour
 %nterm <std::vector<Value>> arith_seq expr_list opt_args vector_items expr_seq macro_args macro_arg_list
@@ -184,6 +185,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::function<void(sg::Isosurface&)>> isosurface_item
 %nterm <Value> isosurface_function
 %nterm <std::string> trace_normal
+%nterm <int> spline_kind
+%nterm <std::vector<int>> spline_kinds
 %nterm <std::function<void(sg::HeightField&)>> height_field_item
 %nterm <Edits<sg::Polynomial>> polynomial_terms
 %nterm <int> colour_channel
@@ -214,7 +217,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 
 %precedence OPT_EMPTY
 /* After an optional argument (poly_wave [exponent]), an identifier is the argument. */
-%precedence UNDECLARED_ID
+%precedence UNDECLARED_ID SPLINE_ID
 /* A leading uv_mapping belongs to the pigment or normal it starts. */
 %precedence UV_MAPPING
 %right "?" ":"
@@ -303,6 +306,9 @@ declared_value
   | "array" begin_value array_sizes end_value array_init { $$ = ev.make_array($3, $5, LOC(@1)); }
   | FUNCTION_OPEN "pattern" "{" pigment_edits "}" "}" { $$ = ev.pattern_function($4, LOC(@1)); }
   | FUNCTION_OPEN pigment "}" { $$ = ev.pigment_function($2, LOC(@1)); }
+  | "spline" "{" spline_kinds arith_seq "}" { $$ = ev.make_spline({}, $3, $4, LOC(@1)); }
+  | "spline" "{" SPLINE_ID spline_kinds "}" { $$ = ev.make_spline($3.value, $4, {}, LOC(@1)); }
+  | "spline" "{" SPLINE_ID spline_kinds arith_seq "}" { $$ = ev.make_spline($3.value, $4, $5, LOC(@1)); }
   | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
   | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
   | normal_map         { $$.kind = Value::Kind::NormalMap; $$.normal_map = $1; }
@@ -1347,8 +1353,24 @@ primary
   | "trace" "(" OBJECT_ID "," expr "," expr "," trace_normal ")"
       { $$ = ev.trace($3.value, @3, $5, @5, $7, @7, $9, @$); }
   | "inside" "(" OBJECT_ID "," expr ")" { $$ = ev.inside($3.value, @3, $5, @5); }
+  | SPLINE_ID "(" expr ")" { $$ = ev.call_spline($1.value, $3, @3, -1); }
+  | SPLINE_ID "(" expr "," spline_kind ")" { $$ = ev.call_spline($1.value, $3, @3, $5); }
   | "min_extent" "(" OBJECT_ID ")" { $$ = ev.extent($3.value, @3, false); }
   | "max_extent" "(" OBJECT_ID ")" { $$ = ev.extent($3.value, @3, true); }
+  ;
+
+/* spline { [Id] [linear_spline | quadratic_spline | cubic_spline | natural_spline]… t, <v>, … } */
+spline_kinds
+  /* spline { S … } copies S: a first entry cannot start with a spline call. */
+  : %empty %prec OPT_EMPTY {}
+  | spline_kinds spline_kind { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+spline_kind
+  : "linear_spline"    { $$ = int(SplineData::Kind::Linear); }
+  | "quadratic_spline" { $$ = int(SplineData::Kind::Quadratic); }
+  | "cubic_spline"     { $$ = int(SplineData::Kind::Cubic); }
+  | "natural_spline"   { $$ = int(SplineData::Kind::Natural); }
   ;
 
 /* trace()'s fourth argument names the vector that receives the normal. */

@@ -62,8 +62,8 @@ const std::unordered_set<std::string>& ignored_blocks() {
 
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
-    static const std::unordered_set<std::string> names = {
-        "parametric", "lemon", "spline", "layered", "tiles", "interior_texture", "dictionary", "material_map"};
+    static const std::unordered_set<std::string> names = {"parametric",       "lemon",      "layered",     "tiles",
+                                                          "interior_texture", "dictionary", "material_map"};
     return names;
 }
 
@@ -433,6 +433,7 @@ Evaluator::Kind Evaluator::token_for_value(const Value& value) {
     case VK::PigmentMap: return Parser::token::TOK_PIGMENT_MAP_ID;
     case VK::NormalMap: return Parser::token::TOK_NORMAL_MAP_ID;
     case VK::Function: return Parser::token::TOK_FUNCTION_ID;
+    case VK::Spline: return Parser::token::TOK_SPLINE_ID;
     default: return Parser::token::TOK_VALUE_ID;
     }
 }

@@ -48,6 +48,7 @@ std::string describe(Value::Kind kind) {
     case Value::Kind::Function: return "a function";
     case Value::Kind::Array: return "an array";
     case Value::Kind::File: return "a file handle";
+    case Value::Kind::Spline: return "a spline";
     }
     return "a value";
 }

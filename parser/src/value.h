@@ -65,6 +65,18 @@ struct CameraSpec {
 struct ArrayData;
 struct UserFile;
 
+// POV's spline { … }: values (up to 5 components) at increasing times.
+struct SplineData {
+    enum class Kind { Linear, Quadratic, Cubic, Natural };  // cubic_spline is POV's Catmull-Rom
+    struct Entry {
+        double t = 0.0;
+        std::array<double, 5> v{};
+    };
+    Kind kind = Kind::Linear;
+    std::vector<Entry> entries;  // sorted by t, no two alike
+    int terms = 2;               // components a call returns: the widest entry, at least 2
+};
+
 struct Value {
     enum class Kind {
         Float,
@@ -85,7 +97,8 @@ struct Value {
         NormalMap,
         Function,
         Array,
-        File
+        File,
+        Spline
     };
     Kind kind = Kind::Float;
     // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
@@ -107,6 +120,7 @@ struct Value {
     sg::FunctionRef function;
     std::shared_ptr<ArrayData> array;  // Array: shared by reference (macro arguments), copied by #declare
     std::shared_ptr<UserFile> file;    // File: a #fopen'd file, shared by every copy of its handle
+    std::shared_ptr<const SplineData> spline;
     sg::Mat4 transform{1.0};
     sg::SourceLocation location;  // where it was written, when a check needs it later
 
