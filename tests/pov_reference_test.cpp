@@ -82,9 +82,9 @@ INSTANTIATE_TEST_SUITE_P(
         "lathes", "text", "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals", "height_fields",
         "patterns_geometric", "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
         "patterns_tilings_more", "normals", "textures", "uv_mapping", "csg_meshes", "images", "object_pattern",
-        "irid_backside", "functions", "isosurfaces", "camera_fisheye", "camera_fisheye_360", "camera_ultra_wide_angle",
-        "camera_omnimax", "camera_panoramic", "camera_cylinder_1", "camera_cylinder_2", "camera_cylinder_3",
-        "camera_cylinder_4", "camera_spherical", "camera_spherical_narrow", "camera_transforms",
+        "irid_backside", "functions", "isosurfaces", "height_field_functions", "camera_fisheye", "camera_fisheye_360",
+        "camera_ultra_wide_angle", "camera_omnimax", "camera_panoramic", "camera_cylinder_1", "camera_cylinder_2",
+        "camera_cylinder_3", "camera_cylinder_4", "camera_spherical", "camera_spherical_narrow", "camera_transforms",
         "camera_orthographic_bare_angle", "camera_normal", "camera_mesh_per_pixel", "camera_mesh_side_by_side",
         "camera_mesh_uv_smooth", "camera_mesh_summed", "camera_mesh_averaged"),
     [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });

@@ -324,18 +324,41 @@ std::function<void(sg::HeightField&)> Evaluator::unsupported_height_field_format
     return [](sg::HeightField&) {};
 }
 
+std::function<void(sg::HeightField&)> Evaluator::height_field_function(const Value& function,
+                                                                       const sg::SourceLocation& at) {
+    if (function.kind != Value::Kind::Function || !function.function) return [](sg::HeightField&) {};
+    if (!function.image_size) {
+        error(at, "height_field: a function needs its image size, as in function 256, 256 { … }");
+        return [](sg::HeightField&) {};
+    }
+    if (const int missing = sg::first_unsupported_internal(*function.function); missing >= 0)
+        error(at, "POV-Ray's internal function " + std::to_string(missing) + " is not supported yet");
+    const auto size = *function.image_size;
+    return [f = function.function, size, at](sg::HeightField& h) {
+        h.function = f;
+        h.function_width = size.first;
+        h.function_height = size.second;
+        h.location = at;
+    };
+}
+
 ShapePtr Evaluator::make_height_field(const Edits<sg::HeightField>& items, const sg::SourceLocation& at) {
     namespace fs = std::filesystem;
     auto shape = new_shape(sg::Object::Kind::HeightField, at);
     sg::HeightField field;
     for (const auto& item : items) item(field);
     if (!field.location.file) field.location = at;
+    if (!check_renderable(&field.water_level, 1, SourceRange{at, at}, "the water level")) field.water_level = 0.0;
+    if (field.function) {
+        if (!field.written.empty()) error(at, "height_field: give an image file or a function, not both");
+        shape->object.shape = std::move(field);
+        return shape;
+    }
     if (field.written.empty()) {
         error(at, "height_field needs an image file, e.g. height_field { png \"mountains.png\" }");
         shape->object.shape = field;
         return shape;
     }
-    if (!check_renderable(&field.water_level, 1, SourceRange{at, at}, "the water level")) field.water_level = 0.0;
     // Found as image_map's files are: beside the scene file, on the
     // include path, then the current folder.
     std::string found;

@@ -205,5 +205,19 @@ TEST(ParserCurvedShapes, PatchObjectsAndEdgeValues) {
     EXPECT_DOUBLE_EQ(std::get<sg::Polynomial>(terms.objects[0].shape).coefficients[0], 1.0);
 }
 
+TEST(ParserCurvedShapes, HeightFieldOfAFunction) {
+    auto scene = parse_ok(R"(
+        height_field { function 64, 48.4 { x * y } smooth water_level 0.1 }
+        height_field { function 3, 2 { pigment { rgb 0.5 } } })");
+    const auto& field = std::get<sg::HeightField>(scene.objects[0].shape);
+    ASSERT_TRUE(field.function);
+    EXPECT_EQ(field.function_width, 64);
+    EXPECT_EQ(field.function_height, 48);  // POV rounds the size
+    EXPECT_TRUE(field.smooth);
+    EXPECT_TRUE(std::get<sg::HeightField>(scene.objects[1].shape).function->pigment);
+    EXPECT_TRUE(contains(first_error("height_field { function 1, 5 { x } }").message, "2..16384"));
+    EXPECT_TRUE(contains(first_error("height_field { function 5 { x } }").message, "W, H"));
+}
+
 }  // namespace
 }  // namespace lancer

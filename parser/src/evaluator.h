@@ -197,6 +197,7 @@ class Evaluator {
     std::function<void(sg::HeightField&)> unsupported_height_field_format(const std::string& keyword,
                                                                           const sg::SourceLocation& at);
     ShapePtr make_height_field(const Edits<sg::HeightField>& items, const sg::SourceLocation& at);
+    std::function<void(sg::HeightField&)> height_field_function(const Value& function, const sg::SourceLocation& at);
     // ---- isosurface (isosurface.cpp)
     std::function<void(sg::Isosurface&)> isosurface_box(const Value& a, const SourceRange& wa, const Value& b,
                                                         const SourceRange& wb);

@@ -396,6 +396,33 @@ class FunctionCompiler {
 std::optional<Evaluator::Symbol> Evaluator::read_function(const RawToken& keyword) {
     auto f = std::make_shared<sg::Function>();
     bool default_parameters = true;
+    // POV's image of a function, `function W, H { … }` (height_field,
+    // image_map): its size comes first.
+    std::optional<std::pair<int, int>> image_size;
+    if (const RawToken* first = peek_raw();
+        first && !(first->kind == RawKind::Punct && (first->text == "(" || first->text == "{"))) {
+        const SourceRange at{keyword.location, keyword.location};
+        const double width = to_float(parse_nested(Parser::token::TOK_START_EXPR, keyword.location, true), at);
+        rewind_lookahead();
+        if (m_aborted || !take_punct(",")) {
+            if (!m_aborted)
+                error(keyword.location, "expected function W, H { … } (an image's size, then its function)");
+            abort_parse();
+            return std::nullopt;
+        }
+        const double height = to_float(parse_nested(Parser::token::TOK_START_EXPR, keyword.location, true), at);
+        rewind_lookahead();
+        if (m_aborted) return std::nullopt;
+        // POV rounds each to the nearest integer; 2 x 2 is the least image a
+        // height field can use, and the size is bounded like image files.
+        const double w = std::floor(width + 0.5), h = std::floor(height + 0.5);
+        if (!(w >= 2.0 && h >= 2.0 && w <= 16384.0 && h <= 16384.0)) {
+            error(keyword.location, "function W, H: the image size must lie in 2..16384 each way");
+            abort_parse();
+            return std::nullopt;
+        }
+        image_size = std::make_pair(int(w), int(h));
+    }
     const RawToken* next = peek_raw();
     if (next && next->kind == RawKind::Punct && next->text == "(") {
         take_raw();
@@ -425,7 +452,9 @@ std::optional<Evaluator::Symbol> Evaluator::read_function(const RawToken& keywor
         // The grammar reads function { pattern { … } } and { pigment { … } }.
         m_block_names.push_back("function");
         ++m_nesting;
-        return make_symbol(Parser::token::TOK_FUNCTION_OPEN, keyword);
+        Value sized;
+        sized.image_size = image_size;
+        return make_symbol(Parser::token::TOK_FUNCTION_OPEN, keyword, std::move(sized));
     }
     FunctionCompiler compiler(*this, *f);
     compiler.m_default_parameters = default_parameters;
@@ -433,7 +462,9 @@ std::optional<Evaluator::Symbol> Evaluator::read_function(const RawToken& keywor
         abort_parse();
         m_suppress_syntax_errors = true;
     }
-    return make_symbol(Parser::token::TOK_FUNCTION_LITERAL, keyword, function_value(f, keyword.location));
+    Value literal = function_value(f, keyword.location);
+    literal.image_size = image_size;
+    return make_symbol(Parser::token::TOK_FUNCTION_LITERAL, keyword, std::move(literal));
 }
 
 Value Evaluator::call_function(const Value& function, const std::vector<Value>& arguments, const SourceRange& where) {

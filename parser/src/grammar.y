@@ -54,7 +54,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        INTERIOR_ID "interior identifier" CAMERA_ID "camera identifier"
        LIGHT_ID "light_source identifier" TRANSFORM_ID "transform identifier"
        FUNCTION_LITERAL "function definition" FUNCTION_ID "function identifier" SPLINE_ID "spline identifier"
-       UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" UNSUPPORTED "unsupported keyword"
+       UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" FUNCTION_OPEN "function {"
+       UNSUPPORTED "unsupported keyword"
 
 /* Keywords: the alias is the spelling; token_stream.cpp (keyword_table) builds its table from these. */
 %token SPHERE "sphere" PLANE "plane" BOX "box" TRIANGLE "triangle" SMOOTH_TRIANGLE "smooth_triangle"
@@ -72,7 +73,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        CHECKER "checker" IMAGE_MAP "image_map" PNG "png" JPEG "jpeg" EXR "exr" HDR "hdr" TGA "tga"
        TIFF "tiff" MAP_TYPE "map_type" INTERPOLATE "interpolate" ONCE "once" ALL "all" GAMMA "gamma"
        IMAGE_PATTERN "image_pattern" USE_ALPHA "use_alpha" IRID "irid" THICKNESS "thickness"
-       IRID_WAVELENGTH "irid_wavelength" FUNCTION_OPEN "function {" ARRAY "array"
+       IRID_WAVELENGTH "irid_wavelength" ARRAY "array"
        QUICK_COLOR "quick_color"
        AMBIENT "ambient" EMISSION "emission" DIFFUSE "diffuse" BRILLIANCE "brilliance"
        SPECULAR "specular" ROUGHNESS "roughness" PHONG "phong" PHONG_SIZE "phong_size"
@@ -624,6 +625,10 @@ height_field_item
   | "premultiplied" expr { bool on = ev.to_float($2, @2, "a boolean") != 0.0;
                            $$ = [on](sg::HeightField& h) { h.premultiplied = on; }; }
   | "smooth"           { $$ = [](sg::HeightField& h) { h.smooth = true; }; }
+  | FUNCTION_LITERAL   { $$ = ev.height_field_function($1.value, LOC(@1)); }
+  | FUNCTION_OPEN pigment "}"
+      { Value f = ev.pigment_function($2, LOC(@1)); f.image_size = $1.value.image_size;
+        $$ = ev.height_field_function(f, LOC(@1)); }
   | "water_level" expr { double w = ev.to_float($2, @2, "a float water level");
                          $$ = [w](sg::HeightField& h) { h.water_level = w; }; }
   ;

@@ -121,6 +121,8 @@ struct Value {
     std::shared_ptr<ArrayData> array;  // Array: shared by reference (macro arguments), copied by #declare
     std::shared_ptr<UserFile> file;    // File: a #fopen'd file, shared by every copy of its handle
     std::shared_ptr<const SplineData> spline;
+    // `function W, H { … }`: the size of the image POV makes of the function.
+    std::optional<std::pair<int, int>> image_size;
     sg::Mat4 transform{1.0};
     sg::SourceLocation location;  // where it was written, when a check needs it later
 

@@ -620,7 +620,11 @@ struct HeightField {
     bool premultiplied = false;
     bool smooth = false;
     double water_level = 0.0;
-    SourceLocation location;  // of the file name
+    SourceLocation location;  // of the file name (or of the function)
+    // POV's `function W, H { … }` instead of a file: the function's values
+    // at x = column / (W - 1), y = row / (H - 1), z = 0 as a 16-bit image.
+    FunctionRef function;
+    int function_width = 0, function_height = 0;
 };
 
 // POV's disc { center, normal, radius [, hole_radius] }.

@@ -4,6 +4,7 @@
 // {...} }) would fill the same grid.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -39,5 +40,9 @@ std::shared_ptr<const Shape> make_height_field_shape(HeightFieldGrid grid, bool 
 // that cannot be read, has no pixels, fewer than 2 x 2, more than 16384 x
 // 16384 (refused before decoding) or is truncated.
 HeightFieldGrid read_height_field_image(const std::string& path, double gamma);
+
+// The grid of a 16-bit image's values (row-major, its top row first), as
+// POV-Ray makes a height field of them: value / 65536, the top row at z = 1.
+HeightFieldGrid grid_from_values(int width, int height, const std::vector<std::uint16_t>& values);
 
 }  // namespace lancer

@@ -66,6 +66,8 @@ std::uint16_t to_height_value(double value) {
     return std::uint16_t(value);
 }
 
+}  // namespace
+
 // Grid row r is image row height - 1 - r: POV puts the image's top at z = 1.
 HeightFieldGrid grid_from_values(int width, int height, const std::vector<std::uint16_t>& values) {
     HeightFieldGrid grid;
@@ -78,6 +80,8 @@ HeightFieldGrid grid_from_values(int width, int height, const std::vector<std::u
                 float(values[std::size_t(height - 1 - row) * width + column]) / 65536.0f;
     return grid;
 }
+
+namespace {
 
 // ---- GIF: the palette indices, LZW-decoded here ----
 

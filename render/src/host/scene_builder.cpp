@@ -1,6 +1,7 @@
 // Walking the scene graph into world-space tables.
 #include "host/scene_builder.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <iostream>
@@ -283,7 +284,13 @@ class Builder {
         } else {
             instance.kind = ShapeKind::Analytic;
             const auto* iso = std::get_if<sg::Isosurface>(&object.shape);
-            instance.shape = iso ? isosurface_shape(*iso, object.location) : analytic_shape(object, world_from_object);
+            const auto* field = std::get_if<sg::HeightField>(&object.shape);
+            if (iso)
+                instance.shape = isosurface_shape(*iso, object.location);
+            else if (field && field->function)
+                instance.shape = function_height_field(*field);
+            else
+                instance.shape = analytic_shape(object, world_from_object);
             DVec3 lower, upper;
             instance.bounded = instance.shape->bounds(lower, upper);
             if (instance.bounded)
@@ -359,6 +366,41 @@ class Builder {
         auto shape = make_isosurface_shape(parameters, records);
         if (!shape) throw SceneError(at, "isosurface: its container or settings are not finite");
         return shape;
+    }
+
+    // POV's `height_field { function W, H { … } }`: the function made into
+    // a 16-bit image as POV makes it (each value clipped to 0..1 and
+    // rounded; a pigment function's colour to 16-bit channels, then its
+    // grey), then read as an image file would be.
+    std::shared_ptr<const Shape> function_height_field(const sg::HeightField& field) {
+        const int width = field.function_width, height = field.function_height;
+        const auto natives = m_data->texture_factory->function_natives(*field.function);
+        const auto encode = [](double v) {
+            const float clipped = std::clamp(float(v), 0.0f, 1.0f);  // NaN: 0
+            return std::uint16_t(std::floor((clipped == clipped ? clipped : 0.0f) * 65535.0f + 0.5f));
+        };
+        std::vector<std::uint16_t> values(std::size_t(width) * height);
+        for (int row = 0; row < height; ++row) {
+            for (int column = 0; column < width; ++column) {
+                const double at[3] = {double(column) / (width - 1), double(row) / (height - 1), 0.0};
+                std::uint16_t& value = values[std::size_t(row) * width + column];
+                if (!field.function->pigment) {
+                    value = encode(sg::evaluate_function(*field.function, at, 3, natives.get()));
+                    continue;
+                }
+                double grey = 0.0;
+                const double weights[3] = {0.297, 0.589, 0.114};
+                for (int channel = 0; channel < 3; ++channel)
+                    grey += weights[channel] *
+                            (encode(sg::evaluate_function(*field.function, at, 3, natives.get(), channel)) / 65535.0);
+                const double scaled = grey * 65535.0;
+                value = scaled >= 65535.0 ? 65535 : scaled > 0.0 ? std::uint16_t(scaled) : 0;
+            }
+        }
+        if (auto shape =
+                make_height_field_shape(grid_from_values(width, height, values), field.smooth, field.water_level))
+            return shape;
+        throw SceneError(field.location, "height_field: its function gives no height field");
     }
 
     static JuliaFractalParameters julia_parameters(const sg::JuliaFractal& julia) {
