@@ -74,7 +74,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        TIFF "tiff" MAP_TYPE "map_type" INTERPOLATE "interpolate" ONCE "once" ALL "all" GAMMA "gamma"
        IMAGE_PATTERN "image_pattern" USE_ALPHA "use_alpha" IRID "irid" THICKNESS "thickness"
        IRID_WAVELENGTH "irid_wavelength" ARRAY "array"
-       QUICK_COLOR "quick_color"
+       QUICK_COLOR "quick_color" QUICK_COLOUR "quick_colour" NO_RADIOSITY "no_radiosity" MM_PER_UNIT "mm_per_unit"
        AMBIENT "ambient" EMISSION "emission" DIFFUSE "diffuse" BRILLIANCE "brilliance"
        SPECULAR "specular" ROUGHNESS "roughness" PHONG "phong" PHONG_SIZE "phong_size"
        METALLIC "metallic" REFLECTION "reflection" FRESNEL "fresnel" FALLOFF "falloff"
@@ -448,6 +448,7 @@ object_mod
   | "double_illuminate" { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "double_illuminate"); }
   | "no_image"         { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_image"); }
   | "no_reflection"    { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_reflection"); }
+  | "no_radiosity"     { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_radiosity"); }
   | "inverse"          { $$ = [](ShapeValue& s) { s.object.inverse = !s.object.inverse; }; }
   | "sturm"            { $$ = [](ShapeValue&) {}; }
   | "hierarchy" opt_bool { $$ = [](ShapeValue&) {}; }
@@ -862,6 +863,9 @@ pigment_mods
   | pigment_mods transform_item { $$ = std::move($1); sg::Mat4 t = $2;
                                   $$.push_back([t](sg::Pigment& p) { transform_pattern(p, t); }); }
   | pigment_mods "quick_color" colour { $$ = std::move($1); ev.ignored(LOC(@2), "quick_color"); }
+  | pigment_mods "quick_colour" colour { $$ = std::move($1); ev.ignored(LOC(@2), "quick_colour"); }
+  | pigment_mods "quick_color" bare_colour { $$ = std::move($1); ev.ignored(LOC(@2), "quick_color"); }
+  | pigment_mods "quick_colour" bare_colour { $$ = std::move($1); ev.ignored(LOC(@2), "quick_colour"); }
   | pigment_mods "uv_mapping" { $$ = std::move($1); $$.push_back(ev.uv_mapping_pigment()); }
   | pigment_mods pattern_modifier { $$ = std::move($1); $$.push_back(ev.pigment_pattern_edit($2, LOC(@2))); }
   | pigment_mods color_map { $$ = std::move($1); $$.push_back(ev.color_map_edit($2, LOC(@2))); }
@@ -1574,6 +1578,7 @@ global_item
   | "ambient_light" colour { ev.scene().global.ambient_light = ev.to_color($2, @2).rgb; }
   | "adc_bailout" expr { ev.scene().global.adc_bailout = ev.to_float($2, @2); }
   | "charset" UNDECLARED_ID { ev.ignored(LOC(@1), "charset"); }
+  | "mm_per_unit" expr { ev.ignored(LOC(@1), "mm_per_unit (subsurface scattering's scale)"); }
   | "number_of_waves" expr { ev.scene().global.number_of_waves = ev.to_int($2, @2); }
   | "noise_generator" expr { ev.scene().global.noise_generator = std::max(1, ev.noise_generator($2, @2)); }
   | "irid_wavelength" colour { ev.scene().global.irid_wavelength = ev.to_color($2, @2).rgb; }

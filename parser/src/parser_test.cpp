@@ -753,3 +753,21 @@ TEST(ParserObjects, InsideVectorAndPatchObjectsInCsg) {
 
 }  // namespace
 }  // namespace lancer
+
+namespace lancer {
+namespace {
+
+TEST(ParserIgnoredForms, QuickColourNoRadiosityAndMmPerUnitWarn) {
+    // Forms from POV-Ray's samples (sunsethf, chess2, subsurface) that change
+    // nothing lancer draws: accepted with a warning each.
+    const ParseResult result = parse_scene_string(
+        "global_settings { mm_per_unit 10 }\n"
+        "sphere { 0, 1 pigment { rgb 1 quick_colour red 0.7 green 0.7 blue 1.0 } no_radiosity }\n"
+        "sphere { 0, 1 pigment { quick_color red 0.95 green 0.62 } }\n",
+        "ignored.pov");
+    ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
+    EXPECT_EQ(test::count_warnings(result), 4);
+}
+
+}  // namespace
+}  // namespace lancer
