@@ -122,8 +122,15 @@ void Evaluator::directive_declare(const RawToken& d, bool local) {
         }
         --m_frames.back()->position;
     }
+    const std::size_t directive_depth = m_frames.size();
     Value value = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
     if (m_aborted) return;
+    // A value that a macro wrote (#local M = Matrix_Trans(…)) may end where
+    // the macro's text does: leave the macro first, so the ';' is looked for
+    // and the name stored where the directive stands, not in the macro's
+    // own scope.
+    while (m_frames.size() > directive_depth && m_pending.empty() && m_frames.back()->position >= m_frames.back()->end)
+        pop_frame();
     bool terminated = take_punct(";");
     if (!terminated && (value.is_numeric() || value.kind == Value::Kind::String)) {
         warning(where, "missing ';' after the value of #" + d.text + " " + name +

@@ -307,9 +307,9 @@ declared_value
   | "array" begin_value array_sizes end_value array_init { $$ = ev.make_array($3, $5, LOC(@1)); }
   | FUNCTION_OPEN "pattern" "{" pigment_edits "}" "}" { $$ = ev.pattern_function($4, LOC(@1)); }
   | FUNCTION_OPEN pigment "}" { $$ = ev.pigment_function($2, LOC(@1)); }
-  | "spline" "{" spline_kinds arith_seq "}" { $$ = ev.make_spline({}, $3, $4, LOC(@1)); }
+  | "spline" "{" spline_kinds arith_seq opt_comma "}" { $$ = ev.make_spline({}, $3, $4, LOC(@1)); }
   | "spline" "{" SPLINE_ID spline_kinds "}" { $$ = ev.make_spline($3.value, $4, {}, LOC(@1)); }
-  | "spline" "{" SPLINE_ID spline_kinds arith_seq "}" { $$ = ev.make_spline($3.value, $4, $5, LOC(@1)); }
+  | "spline" "{" SPLINE_ID spline_kinds arith_seq opt_comma "}" { $$ = ev.make_spline($3.value, $4, $5, LOC(@1)); }
   | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
   | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
   | normal_map         { $$.kind = Value::Kind::NormalMap; $$.normal_map = $1; }
@@ -1422,6 +1422,7 @@ macro_arg_list
 macro_arg
   : colour             { $$ = std::move($1); }
   | FUNCTION_ID        { $$ = std::move($1.value); }
+  | SPLINE_ID          { $$ = std::move($1.value); }
   | OBJECT_ID          { $$ = std::move($1.value); }
   | TEXTURE_ID         { $$ = std::move($1.value); }
   | PIGMENT_ID         { $$ = std::move($1.value); }

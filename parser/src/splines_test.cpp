@@ -89,3 +89,37 @@ TEST(ParserSplines, LocatedErrors) {
 
 }  // namespace
 }  // namespace lancer
+
+namespace lancer {
+namespace {
+
+TEST(ParserSplines, TrailingCommaAndSplinesAsMacroArguments) {
+    // POV's splinefollow.pov: a comma after the last entry, and a spline
+    // handed to transforms.inc's Spline_Trans.
+    auto scene = test::parse_ok(R"(
+        #include "transforms.inc"
+        #declare S = spline { cubic_spline -1, <0,0,0>, 0, <1,0,0>, 1, <2,1,0>, 2, <3,1,1>, 3, <4,0,0>, }
+        sphere { 0, 1 Spline_Trans(S, 0.5, y, 0.1, 0.5) })");
+    ASSERT_EQ(scene.objects.size(), 1u);
+    const sg::Mat4& m = scene.objects[0].parent_from_object;
+    EXPECT_NEAR(m[3][0], 1.5, 0.2);  // placed on the spline between <1,0,0> and <2,1,0>
+}
+
+TEST(ParserDeclare, AValueAMacroEndsIsStoredWhereTheDirectiveStands) {
+    // #local M = Macro(…) inside another macro: the value ends with the
+    // inner macro's text; M belongs to the outer macro (transforms.inc's
+    // Spline_Trans relies on it), with or without the ';'.
+    auto scene = test::parse_ok(R"(
+        #macro Shift(V) transform { translate V } #end
+        #macro Place(V)
+          #local M = Shift(V)
+          #local N = Shift(2 * V);
+          transform { transform M transform N }
+        #end
+        sphere { 0, 1 Place(<1, 0, 0>) })");
+    ASSERT_EQ(scene.objects.size(), 1u);
+    EXPECT_DOUBLE_EQ(scene.objects[0].parent_from_object[3][0], 3.0);
+}
+
+}  // namespace
+}  // namespace lancer
