@@ -170,8 +170,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     constexpr int kWidth = 8, kHeight = 6;
     for (int y = 0; y < kHeight; ++y) {
         for (int x = 0; x < kWidth; ++x) {
-            const lancer::Ray ray = scene->camera().generate_ray(float(x) + 0.5f, float(y) + 0.5f, kWidth, kHeight);
-            // A degenerate camera is not what this target tests.
+            lancer::Ray ray;
+            // A pixel outside the camera's view, or a degenerate camera, is
+            // not what this target tests.
+            if (!scene->camera().generate_ray(float(x) + 0.5f, float(y) + 0.5f, kWidth, kHeight, ray)) continue;
             if (!finite(ray.origin) || !finite(ray.direction)) continue;
             lancer::Hit hit;
             if (!scene->intersect(ray, hit)) continue;
