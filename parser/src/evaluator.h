@@ -510,8 +510,7 @@ class Evaluator {
     void directive_fclose(const RawToken& directive);
     void directive_read(const RawToken& directive);
     void directive_write(const RawToken& directive);
-    std::shared_ptr<UserFile> user_file(const std::string& handle, const sg::SourceLocation& where,
-                                        const std::string& directive);
+    std::shared_ptr<UserFile> user_file_argument(const RawToken& directive, bool reading, std::string& handle);
     void close_user_file(const std::string& handle);
     std::optional<Value> read_user_value(UserFile& file);
     bool at_user_file_end(UserFile& file);

@@ -39,12 +39,25 @@ std::string format_number(double x) {
 
 }  // namespace
 
-std::shared_ptr<UserFile> Evaluator::user_file(const std::string& handle, const sg::SourceLocation& where,
-                                               const std::string& directive) {
+// `#read (F, …` / `#write (F, …`: the opening parenthesis and the handle,
+// which must name a file open the directive's way. Null (reported) if not.
+std::shared_ptr<UserFile> Evaluator::user_file_argument(const RawToken& d, bool reading, std::string& handle) {
+    if (!expect_raw_punct("(", "after #" + d.text)) {
+        abort_parse();
+        return nullptr;
+    }
+    sg::SourceLocation where = d.location;
+    handle = expect_raw_identifier("in #" + d.text, &where);
     const Value* value = handle.empty() ? nullptr : lookup(handle);
     if (!value || value->kind != Value::Kind::File || !value->file || !value->file->open) {
-        error(where, "#" + directive + " needs a file opened with #fopen" +
+        error(where, "#" + d.text + " needs a file opened with #fopen" +
                          (handle.empty() ? std::string() : ", and '" + handle + "' is none"));
+        abort_parse();
+        return nullptr;
+    }
+    if (value->file->reading != reading) {
+        error(where, reading ? "cannot #read from \"" + value->file->name + "\": it was opened to write"
+                             : "cannot #write to \"" + value->file->name + "\": it was opened to read");
         abort_parse();
         return nullptr;
     }
@@ -137,15 +150,9 @@ void Evaluator::close_user_file(const std::string& handle) {
 }
 
 void Evaluator::directive_write(const RawToken& d) {
-    if (!expect_raw_punct("(", "after #write")) return abort_parse();
-    sg::SourceLocation where = d.location;
-    const std::string handle = expect_raw_identifier("in #write", &where);
-    auto file = user_file(handle, where, "write");
+    std::string handle;
+    const auto file = user_file_argument(d, false, handle);
     if (!file) return;
-    if (file->reading) {
-        error(where, "cannot #write to \"" + file->name + "\": it was opened to read");
-        return abort_parse();
-    }
     std::string text;
     while (!m_aborted) {
         if (take_punct(")")) break;
@@ -174,15 +181,9 @@ void Evaluator::directive_write(const RawToken& d) {
 }
 
 void Evaluator::directive_read(const RawToken& d) {
-    if (!expect_raw_punct("(", "after #read")) return abort_parse();
-    sg::SourceLocation where = d.location;
-    const std::string handle = expect_raw_identifier("in #read", &where);
-    auto file = user_file(handle, where, "read");
+    std::string handle;
+    const auto file = user_file_argument(d, true, handle);
     if (!file) return;
-    if (!file->reading) {
-        error(where, "cannot #read from \"" + file->name + "\": it was opened to write");
-        return abort_parse();
-    }
     bool at_end = false;
     while (!m_aborted) {
         if (take_punct(")")) break;

@@ -376,8 +376,8 @@ class Builder {
         const int width = field.function_width, height = field.function_height;
         const auto natives = m_data->texture_factory->function_natives(*field.function);
         const auto encode = [](double v) {
-            const float clipped = std::clamp(float(v), 0.0f, 1.0f);  // NaN: 0
-            return std::uint16_t(std::floor((clipped == clipped ? clipped : 0.0f) * 65535.0f + 0.5f));
+            const float clipped = v == v ? std::clamp(float(v), 0.0f, 1.0f) : 0.0f;  // NaN: 0
+            return std::uint16_t(std::floor(clipped * 65535.0f + 0.5f));
         };
         std::vector<std::uint16_t> values(std::size_t(width) * height);
         for (int row = 0; row < height; ++row) {
