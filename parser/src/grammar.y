@@ -1019,7 +1019,9 @@ color_map_entries
 
 colour_seq
   : colour             { $$.push_back($1); }
+  | bare_colour        { $$.push_back($1); }
   | colour_seq opt_comma colour { $$ = std::move($1); $$.push_back($3); }
+  | colour_seq "," bare_colour { $$ = std::move($1); $$.push_back($3); }
   ;
 
 pigment_map

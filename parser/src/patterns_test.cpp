@@ -53,6 +53,20 @@ TEST(ParserPatterns, ColorMapBothFormsAndDefaults) {
     EXPECT_EQ(granite.color_map->back().color.rgb, sg::Vec3(1.0));
 }
 
+// POV reads a map entry's colour without the colour keyword too
+// ([0 blue 0.4], whiltile.pov), and the old two-colour form with one.
+TEST(ParserPatterns, ColorMapEntryTakesABareColour) {
+    auto scene = parse_ok(
+        "plane { y, 0 pigment { gradient x color_map { [0 blue 0.4] [0.2 green 0.3 red 0.1] [0.5 0.8 rgb 1, red 0.5] } "
+        "} }");
+    const sg::Pigment& p = material_of(scene, 0).pigment;
+    ASSERT_TRUE(p.color_map);
+    ASSERT_EQ(p.color_map->size(), 4u);
+    EXPECT_EQ((*p.color_map)[0].color.rgb, sg::Vec3(0.0, 0.0, 0.4));
+    EXPECT_EQ((*p.color_map)[1].color.rgb, sg::Vec3(0.1, 0.3, 0.0));
+    EXPECT_EQ((*p.color_map)[3].color.rgb, sg::Vec3(0.5, 0.0, 0.0));
+}
+
 TEST(ParserPatterns, DeclaredMapsAndNormalsReusable) {
     auto scene = parse_ok(
         "#declare M = color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] }\n"
