@@ -81,7 +81,7 @@ INSTANTIATE_TEST_SUITE_P(
         "quadric_family", "csg_solids", "csg_glass", "polygons_polynomials", "superellipsoids", "blobs", "prisms",
         "lathes", "text", "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals", "height_fields",
         "patterns_geometric", "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
-        "patterns_tilings_more", "normals", "textures", "uv_mapping", "csg_meshes", "images", "object_pattern",
+        "patterns_tilings_more", "normals", "textures", "tiles", "uv_mapping", "csg_meshes", "images", "object_pattern",
         "irid_backside", "functions", "isosurfaces", "height_field_functions", "camera_fisheye", "camera_fisheye_360",
         "camera_ultra_wide_angle", "camera_omnimax", "camera_panoramic", "camera_cylinder_1", "camera_cylinder_2",
         "camera_cylinder_3", "camera_cylinder_4", "camera_spherical", "camera_spherical_narrow", "camera_transforms",

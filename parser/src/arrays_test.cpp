@@ -32,6 +32,20 @@ TEST(ParserArrays, InitializersIndicesAndSizes) {
               "51");
 }
 
+// POV reads an initialiser's commas as optional (lemon.inc, tiling.pov,
+// allnormals.pov); `<a> <b>` are two items, a comparison needs ( ).
+// povray 3.7 prints the same "-8b0.513" for this scene.
+TEST(ParserArrays, InitializerCommasAreOptional) {
+    EXPECT_EQ(debug_output("#declare V = array[4] { <1, 2>, <3, 4>\n <5, 6> <7, -8> }\n"
+                           "#declare S = array[3] { \"a\" \"b\", \"c\" }\n"
+                           "#declare C = array[3] { rgb 1 red 0.5, rgb 0.5 rgb (1 < 2) }\n"
+                           "#declare P = pigment { rgb 1 }\n"
+                           "#declare Q = array[3] { P P, P }\n"
+                           "#debug concat(str(V[3].v, 0, 0), S[1], str(C[0].red, 0, 1), str(C[2].green, 0, 0), "
+                           "str(dimension_size(Q, 1), 0, 0))"),
+              "-8b0.513");
+}
+
 TEST(ParserArrays, ElementsOfAnyKindStandWhereTheirKindMay) {
     auto scene = parse_ok(
         "#declare O = array[2]\n"  // POV needs no ';' after array[N]

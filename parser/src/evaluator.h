@@ -268,6 +268,7 @@ class Evaluator {
     using PatternEdit = std::function<void(sg::Pattern&)>;
     using PigmentEdit = std::function<void(sg::Pigment&)>;
     PatternEdit pattern_kind(sg::Pattern::Kind kind);
+    void warn_if_layered_entry(const sg::MaterialRef& texture, const sg::SourceLocation& at);
     PatternEdit gradient_pattern(const Value& v, const SourceRange& where);
     PatternEdit spiral_pattern(sg::Pattern::Kind kind, const Value& arms, const SourceRange& where);
     PatternEdit tiling_pattern(const Value& v, const SourceRange& where);

@@ -70,7 +70,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        COLOR "color" COLOUR "colour" RGB "rgb" RGBF "rgbf" RGBT "rgbt" RGBFT "rgbft"
        SRGB "srgb" SRGBF "srgbf" SRGBT "srgbt" SRGBFT "srgbft"
        RED "red" GREEN "green" BLUE "blue" FILTER "filter" TRANSMIT "transmit" GRAY "gray" GREY "grey"
-       CHECKER "checker" IMAGE_MAP "image_map" PNG "png" JPEG "jpeg" EXR "exr" HDR "hdr" TGA "tga"
+       CHECKER "checker" TILES "tiles" TILE2 "tile2" IMAGE_MAP "image_map" PNG "png" JPEG "jpeg" EXR "exr" HDR "hdr" TGA "tga"
        TIFF "tiff" MAP_TYPE "map_type" INTERPOLATE "interpolate" ONCE "once" ALL "all" GAMMA "gamma"
        IMAGE_PATTERN "image_pattern" USE_ALPHA "use_alpha" IRID "irid" THICKNESS "thickness"
        IRID_WAVELENGTH "irid_wavelength" ARRAY "array"
@@ -134,11 +134,11 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        TRACE "trace" INSIDE "inside" MIN_EXTENT "min_extent" MAX_EXTENT "max_extent"
        SPLINE "spline" NATURAL_SPLINE "natural_spline"
 
-%nterm <Value> expr arith postfix primary colour colour_base declared_value string_value bare_colour
-%nterm <std::vector<Value>> arith_seq expr_list opt_args vector_items expr_seq macro_args macro_arg_list
+%nterm <Value> declared_non_scalar declared_identifier array_scalar expr arith postfix primary colour colour_base declared_value string_value bare_colour
+%nterm <std::vector<Value>> arith_seq mesh2_items expr_list opt_args vector_items macro_args macro_arg_list
 %nterm <Value> macro_arg vector_item
 %nterm <std::vector<int>> array_sizes
-%nterm <ArrayInit> array_init array_item
+%nterm <ArrayInit> array_init array_item array_scalar_item
 %nterm <std::vector<ArrayInit>> array_items
 %nterm <std::string> component param_name
 %nterm <ShapePtr> object object_ref
@@ -255,14 +255,34 @@ array_init
   : "{" array_items opt_comma "}" { $$.items = std::move($2); $$.location = LOC(@1); }
   ;
 
+/* POV reads exactly the declared number of items, each comma optional
+ * (`Red, White Green`, `"Average""Boxed"`, `<1, 2> <3, 4>`), each value a
+ * bare float expression as POV's Parse_RValue reads it: compare inside
+ * ( ). Objects, textures and arrays still need their comma: a texture
+ * after a texture is its next layer. */
 array_items
   : array_item         { $$.push_back(std::move($1)); }
   | array_items "," array_item { $$ = std::move($1); $$.push_back(std::move($3)); }
+  | array_items array_scalar_item { $$ = std::move($1); $$.push_back(std::move($2)); }
+  | array_items declared_identifier { $$ = std::move($1); ArrayInit item; item.value = std::move($2); item.location = LOC(@2); $$.push_back(std::move(item)); }
   ;
 
 array_item
-  : declared_value     { $$.value = std::move($1); $$.location = LOC(@1); }
+  : array_scalar_item  { $$ = std::move($1); }
+  | declared_non_scalar { $$.value = std::move($1); $$.location = LOC(@1); }
   | array_init         { $$ = std::move($1); }
+  ;
+
+array_scalar_item
+  : begin_value array_scalar end_value { $$.value = std::move($2); $$.location = LOC(@2); }
+  ;
+
+array_scalar
+  : arith %prec OPT_EMPTY { $$ = std::move($1); }
+  | colour_keyword arith %prec OPT_EMPTY { $$ = ev.colour_from($2, @2); }
+  | colour_keyword colour_channel arith %prec OPT_EMPTY
+      { $$ = ev.colour_component(Value::color(sg::Color{}), @1, $2, $3, @3); }
+  | array_scalar colour_channel arith %prec OPT_EMPTY { $$ = ev.colour_component($1, @1, $2, $3, @3); }
   ;
 
 string_value
@@ -290,7 +310,12 @@ scene_item
 
 declared_value
   : begin_value colour end_value { $$ = std::move($2); }
-  | object             { $$ = ev.object_value($1); }
+  | declared_non_scalar { $$ = std::move($1); }
+  ;
+
+/* Everything a declaration holds but a float, vector, colour or string. */
+declared_non_scalar
+  : object             { $$ = ev.object_value($1); }
   | texture_layers end_value { $$.kind = Value::Kind::Texture; $$.texture = $1; }
   | pigment            { $$.kind = Value::Kind::Pigment; $$.pigment = $1; }
   | finish             { $$.kind = Value::Kind::Finish; $$.finish = $1; }
@@ -313,7 +338,12 @@ declared_value
   | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
   | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
   | normal_map         { $$.kind = Value::Kind::NormalMap; $$.normal_map = $1; }
-  | NORMAL_ID          { $$ = std::move($1.value); }
+  | declared_identifier { $$ = std::move($1); }
+  ;
+
+/* A declared non-scalar, one token: in an array it needs no comma. */
+declared_identifier
+  : NORMAL_ID          { $$ = std::move($1.value); }
   | COLOR_MAP_ID       { $$ = std::move($1.value); }
   | PIGMENT_MAP_ID     { $$ = std::move($1.value); }
   | NORMAL_MAP_ID      { $$ = std::move($1.value); }
@@ -375,7 +405,7 @@ object
       { $$ = ev.make_superellipsoid($3, @3, LOC(@1)); ev.apply($$, $4); }
   | "polygon" "{" arith opt_comma arith_seq opt_comma object_mods "}"
       { $$ = ev.make_polygon($3, @3, $5, @5, LOC(@1)); ev.apply($$, $7); }
-  | "poly" "{" expr "," "<" vector_items ">" object_mods "}"
+  | "poly" "{" arith opt_comma "<" vector_items ">" object_mods "}"
       { $$ = ev.make_polynomial(sg::Object::Kind::Poly, $3, @3, $6, @6, LOC(@1)); ev.apply($$, $8); }
   | "cubic" "{" "<" vector_items ">" object_mods "}"
       { $$ = ev.make_polynomial(sg::Object::Kind::Cubic, Value::number(3), @1, $4, @4, LOC(@1)); ev.apply($$, $6); }
@@ -684,14 +714,21 @@ mesh2_sections
   ;
 
 mesh2_section
-  : "vertex_vectors" "{" expr expr_seq opt_comma "}" { $$ = ev.mesh2_vectors("vertex_vectors", $3, @3, $4, @4, LOC(@1)); }
-  | "normal_vectors" "{" expr expr_seq opt_comma "}" { $$ = ev.mesh2_vectors("normal_vectors", $3, @3, $4, @4, LOC(@1)); }
-  | "uv_vectors" "{" expr expr_seq opt_comma "}"     { $$ = ev.mesh2_vectors("uv_vectors", $3, @3, $4, @4, LOC(@1)); }
-  | "face_indices" "{" expr expr_seq opt_comma "}"   { $$ = ev.mesh2_indices("face_indices", $3, @3, $4, @4, LOC(@1)); }
-  | "normal_indices" "{" expr expr_seq opt_comma "}" { $$ = ev.mesh2_indices("normal_indices", $3, @3, $4, @4, LOC(@1)); }
-  | "uv_indices" "{" expr expr_seq opt_comma "}"     { $$ = ev.mesh2_indices("uv_indices", $3, @3, $4, @4, LOC(@1)); }
+  : "vertex_vectors" "{" arith mesh2_items "}" { $$ = ev.mesh2_vectors("vertex_vectors", $3, @3, $4, @4, LOC(@1)); }
+  | "normal_vectors" "{" arith mesh2_items "}" { $$ = ev.mesh2_vectors("normal_vectors", $3, @3, $4, @4, LOC(@1)); }
+  | "uv_vectors" "{" arith mesh2_items "}"     { $$ = ev.mesh2_vectors("uv_vectors", $3, @3, $4, @4, LOC(@1)); }
+  | "face_indices" "{" arith mesh2_items "}"   { $$ = ev.mesh2_indices("face_indices", $3, @3, $4, @4, LOC(@1)); }
+  | "normal_indices" "{" arith mesh2_items "}" { $$ = ev.mesh2_indices("normal_indices", $3, @3, $4, @4, LOC(@1)); }
+  | "uv_indices" "{" arith mesh2_items "}"     { $$ = ev.mesh2_indices("uv_indices", $3, @3, $4, @4, LOC(@1)); }
   | "texture_list" "{" expr opt_comma texture_list "}" { $$ = ev.mesh2_textures($3, @3, $5, LOC(@1)); }
   | "inside_vector" expr { auto v = ev.inside_vector($2, @2); $$ = [v](sg::TriangleMesh& m) { m.inside_vector = v; }; }
+  ;
+
+/* A mesh2 section's items after its count, each comma optional: POV reads
+ * the count as a bare float, so `14 <-1, -1, -1>` is a count and a point. */
+mesh2_items
+  : opt_comma          {}
+  | opt_comma arith_seq opt_comma { $$ = std::move($2); }
   ;
 
 /* Separated by optional commas, as POV reads a patch's points. */
@@ -700,11 +737,6 @@ arith_seq
   | arith_seq opt_comma arith %prec OPT_EMPTY { $$ = std::move($1); ev.remember_location($3, @3); $$.push_back($3); }
   ;
 
-/* "," separated, each item located for index errors. */
-expr_seq
-  : %empty             {}
-  | expr_seq "," expr  { $$ = std::move($1); $3.boolean_literal = false; ev.remember_location($3, @3); $$.push_back($3); }
-  ;
 
 /* ------------------------------------------------------------- transforms */
 
@@ -773,6 +805,10 @@ texture_items
   | texture_items pattern_modifier { $$ = std::move($1); auto e = $2;
                                $$.push_back([e](sg::Material& m) { if (m.pattern) e(*m.pattern); }); }
   | texture_items "uv_mapping" { $$ = std::move($1); $$.push_back([](sg::Material& m) { m.uv_mapping = true; }); }
+  /* POV's old form of a checker of textures, each side layered; povray
+   * puts the first where checker puts its second (measured). */
+  | texture_items "tiles" "{" texture_layers layer_gap "tile2" texture_layers layer_gap "}"
+      { $$ = std::move($1); $$.push_back(ev.texture_pattern(ev.pattern_kind(sg::Pattern::Kind::Checker), {$7, $4}, LOC(@2))); }
   | texture_items "texture_map" "{" texture_map_entries "}" { $$ = std::move($1); $$.push_back(ev.texture_map_edit($4, LOC(@2))); }
   | texture_items transform_item { $$ = std::move($1); sg::Mat4 t = $2;
                                $$.push_back([t](sg::Material& m) { transform_material(m, t); }); }
@@ -1358,6 +1394,7 @@ primary
   | UNDECLARED_ID      { ev.unknown_identifier($1.text, LOC(@1), "a value"); $$ = Value::number(0.0); }
   | "(" expr ")"       { $$ = std::move($2); $$.boolean_literal = false; }
   | "<" vector_items ">" { $$ = ev.make_vector($2, @$); }
+  | "<" vector_items "," ">" { $$ = ev.make_vector($2, @$); }  /* POV's Parse_Comma after each */
   | BUILTIN "(" opt_args ")" { $$ = ev.call_builtin($1.text, $3, @$); }
   | FUNCTION_ID "(" opt_args ")" { $$ = ev.call_function($1.value, $3, @$); }
   | "trace" "(" OBJECT_ID "," expr "," expr ")" { $$ = ev.trace($3.value, @3, $5, @5, $7, @7, {}, @$); }

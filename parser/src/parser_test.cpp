@@ -103,6 +103,26 @@ TEST(ParserObjects, Mesh2WithNormalsAndUvs) {
     EXPECT_EQ(mesh->materials.size(), 2u);
 }
 
+// POV reads a section's count as a bare float and its commas as optional:
+// `14 <-1, -1, -1>` is a count and a point, not a comparison (mesh2.pov);
+// poly's order needs no comma either (primitiv.pov).
+TEST(ParserObjects, Mesh2AndPolyCommasAreOptional) {
+    auto scene = parse_ok(R"(mesh2 {
+        vertex_vectors { 3
+          <-1, -1, 0> <1, -1, 0>, <0,
+          1, 0> }
+        face_indices { 1 <0, 1, 2> }
+    }
+    poly { 2 <1, 0, 0, 0, 1, 0, 0, 1, 0, -1> })");
+    ASSERT_EQ(scene.objects.size(), 2u);
+    auto mesh = std::get<sg::MeshRef>(scene.objects[0].shape);
+    ASSERT_EQ(mesh->positions.size(), 3u);
+    EXPECT_EQ(mesh->positions[0].x, -1.0);
+    EXPECT_EQ(mesh->positions[2].y, 1.0);
+    ASSERT_EQ(mesh->faces.size(), 1u);
+    EXPECT_EQ(mesh->faces[0].position[2], 2);
+}
+
 TEST(ParserObjects, Mesh2NormalsPairWithVerticesWithoutIndices) {
     auto scene = parse_ok(
         "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }"
@@ -326,8 +346,10 @@ TEST(ParserMaterials, ColourForms) {
         sphere { 0, 1 pigment { B } }
         sphere { 0, 1 pigment { C } }
         sphere { 0, 1 pigment { color D filter 0.3 } }
-        sphere { 0, 1 pigment { Gray50 } })");
+        sphere { 0, 1 pigment { Gray50 } }
+        sphere { 0, 1 pigment { color rgb <0.2, 0.1, 0.5,> } })");  // POV allows the last comma (float4.pov)
     expect_vec(scene.objects[0].material->pigment.color.rgb, {1, 0.5, 0});
+    expect_vec(scene.objects[5].material->pigment.color.rgb, {0.2, 0.1, 0.5});
     EXPECT_DOUBLE_EQ(scene.objects[1].material->pigment.color.transmit, 0.25);
     EXPECT_DOUBLE_EQ(scene.objects[1].material->pigment.color.filter, 0.0);
     EXPECT_NEAR(scene.objects[2].material->pigment.color.rgb.x, 0.21404, 1e-4);  // sRGB decoded

@@ -934,10 +934,20 @@ std::shared_ptr<sg::Material> Evaluator::layer_texture(std::shared_ptr<sg::Mater
     return below;
 }
 
+// The render flattens a patterned texture into one pigment, which has no
+// place for a layered entry's upper layers: say so rather than drop them.
+void Evaluator::warn_if_layered_entry(const sg::MaterialRef& texture, const sg::SourceLocation& at) {
+    if (texture && !texture->layers_above.empty())
+        warning(at,
+                "a layered texture inside a texture pattern shows only its bottom layer in lancer (POV-Ray "
+                "shows them all)");
+}
+
 std::function<void(sg::Material&)> Evaluator::texture_pattern(const PatternEdit& pattern,
                                                               const std::vector<std::shared_ptr<sg::Material>>& blocks,
                                                               const sg::SourceLocation& at) {
     std::vector<sg::MaterialRef> textures(blocks.begin(), blocks.end());
+    for (const auto& texture : textures) warn_if_layered_entry(texture, at);
     return [this, pattern, textures, at](sg::Material& m) {
         m.pattern = sg::Pattern{};
         pattern(*m.pattern);
@@ -973,6 +983,7 @@ std::function<void(sg::Material&)> Evaluator::average_texture(const sg::SourceLo
 
 std::function<void(sg::Material&)> Evaluator::texture_map_edit(const std::vector<sg::TextureMapEntry>& entries,
                                                                const sg::SourceLocation& at) {
+    for (const auto& entry : entries) warn_if_layered_entry(entry.texture, at);
     return [this, entries, at](sg::Material& m) {
         if (!m.pattern) {
             error(at, "texture_map needs a pattern before it (texture { gradient x texture_map { ... } })");

@@ -308,6 +308,29 @@ TEST(ParserPatterns, AveragePigmentEntriesMayLeaveOutTheirWeight) {
         std::string::npos);
 }
 
+// POV's old tiles { … tile2 … } is a checker of two textures, each side
+// layered (chess2.pov, wineglass.pov).
+TEST(ParserPatterns, TilesIsACheckerOfLayeredTextures) {
+    auto scene = parse_ok(
+        "box { 0, 1 texture { tiles { texture { pigment { rgb x } } texture { pigment { rgbt 1 } }\n"
+        "  tile2 texture { pigment { rgb y } } } scale 2 } }");
+    const sg::Material& m = material_of(scene, 0);
+    ASSERT_TRUE(m.pattern);
+    EXPECT_EQ(m.pattern->kind, sg::Pattern::Kind::Checker);
+    ASSERT_EQ(m.block_textures.size(), 2u);
+    // povray shows tile2 where checker shows its first texture.
+    EXPECT_EQ(m.block_textures[1]->layers_above.size(), 1u);
+    EXPECT_EQ(m.block_textures[0]->pigment.color.rgb, sg::Vec3(0.0, 1.0, 0.0));
+    EXPECT_NE(
+        test::all_diagnostics(parse_scene_string("box { 0, 1 texture { tiles { texture { pigment { rgb x } } texture { "
+                                                 "pigment { rgbt 1 } } tile2 texture { pigment { rgb y } } } } }",
+                                                 "t.pov"))
+            .find("shows only its bottom layer"),
+        std::string::npos);
+    EXPECT_NE(first_error("box { 0, 1 texture { tiles { texture { pigment { rgb x } } } } }").message.find("tile2"),
+              std::string::npos);
+}
+
 TEST(ParserPatterns, BlockPatternNormalsOnePerBlock) {
     auto scene = parse_ok(
         "box { 0, 1 normal { checker normal { marble turbulence 0.5 } normal { radial sine_wave } } }\n"
