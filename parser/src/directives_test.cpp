@@ -16,6 +16,14 @@ int sphere_count(const sg::SceneGraph& scene) {
     return summarize_scene(scene).objects_by_kind["sphere"];
 }
 
+// povray skips a '#' that no name follows (language/image_size.pov ends a
+// look_at with one); '#' before a word that is no directive stays an error.
+TEST(ParserDirectives, LoneHashIsSkipped) {
+    auto scene = parse_ok("camera { location -5 * z look_at 0 # }\nsphere { 0, 1 # }");
+    EXPECT_EQ(scene.objects.size(), 1u);
+    EXPECT_NE(test::first_error("#sphere { 0, 1 }").message.find("unknown directive"), std::string::npos);
+}
+
 TEST(ParserDirectives, WhileLoopMakesObjects) {
     auto scene = parse_ok("#declare I = 0;\n#while (I < 10)\n  sphere { <I, 0, 0>, 0.1 }\n  #declare I = I + 1;\n#end");
     ASSERT_EQ(scene.objects.size(), 10u);
