@@ -24,6 +24,18 @@ TEST(ParserDirectives, LoneHashIsSkipped) {
     EXPECT_NE(test::first_error("#sphere { 0, 1 }").message.find("unknown directive"), std::string::npos);
 }
 
+// POV's comma after a macro argument is optional; lancer drops it after an
+// object, where nothing else can continue (incdemo/shapes.pov).
+TEST(ParserDirectives, MacroArgumentAfterAnObjectNeedsNoComma) {
+    auto scene = parse_ok(
+        "#macro Place(O, V, S) object { O translate V scale S } #end\n"
+        "Place(sphere { 0, 1 } -y, 2)\n"
+        "Place(box { 0, 1 } <1, 2, 3>, 2)");
+    ASSERT_EQ(scene.objects.size(), 2u);
+    const sg::Vec3 centre = sg::Vec3(scene.objects[0].parent_from_object * glm::dvec4(0, 0, 0, 1));
+    EXPECT_EQ(centre, sg::Vec3(0, -2, 0));
+}
+
 TEST(ParserDirectives, WhileLoopMakesObjects) {
     auto scene = parse_ok("#declare I = 0;\n#while (I < 10)\n  sphere { <I, 0, 0>, 0.1 }\n  #declare I = I + 1;\n#end");
     ASSERT_EQ(scene.objects.size(), 10u);

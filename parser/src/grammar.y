@@ -135,7 +135,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        SPLINE "spline" NATURAL_SPLINE "natural_spline"
 
 %nterm <Value> declared_non_scalar declared_identifier array_scalar expr arith postfix primary colour colour_base declared_value string_value bare_colour
-%nterm <std::vector<Value>> arith_seq mesh2_items expr_list opt_args vector_items macro_args macro_arg_list
+%nterm <std::vector<Value>> arith_seq mesh2_items expr_list opt_args vector_items macro_args macro_arg_list macro_arg_list_plain macro_arg_list_object
 %nterm <Value> macro_arg vector_item
 %nterm <std::vector<int>> array_sizes
 %nterm <ArrayInit> array_init array_item array_scalar_item
@@ -1453,9 +1453,24 @@ macro_args
   | macro_arg_list     { $$ = std::move($1); }
   ;
 
+/* POV reads a comma after each argument as optional; lancer drops it
+ * only after an object, where it is unambiguous (shapes.pov:
+ * `Align_Object(Center_Object(…) -y, <0, 0, 0>)`). */
 macro_arg_list
+  : macro_arg_list_plain { $$ = std::move($1); }
+  | macro_arg_list_object { $$ = std::move($1); }
+  ;
+
+macro_arg_list_plain
   : macro_arg          { $$.push_back($1); }
   | macro_arg_list "," macro_arg { $$ = std::move($1); $$.push_back($3); }
+  | macro_arg_list_object macro_arg { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+macro_arg_list_object
+  : object             { $$.push_back(ev.object_value($1)); }
+  | macro_arg_list "," object { $$ = std::move($1); $$.push_back(ev.object_value($3)); }
+  | macro_arg_list_object object { $$ = std::move($1); $$.push_back(ev.object_value($2)); }
   ;
 
 macro_arg
@@ -1474,7 +1489,6 @@ macro_arg
   | COLOR_MAP_ID       { $$ = std::move($1.value); }
   | PIGMENT_MAP_ID     { $$ = std::move($1.value); }
   | NORMAL_MAP_ID      { $$ = std::move($1.value); }
-  | object             { $$ = ev.object_value($1); }
   | texture            { $$.kind = Value::Kind::Texture; $$.texture = $1; }
   | pigment            { $$.kind = Value::Kind::Pigment; $$.pigment = $1; }
   | finish             { $$.kind = Value::Kind::Finish; $$.finish = $1; }
