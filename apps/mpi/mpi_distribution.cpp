@@ -386,7 +386,9 @@ class MpiDistribution final : public Distribution {
         // Rank 0 is ready from the start; the others once they ask.
         std::vector<bool> ready(std::size_t(m_processes), false), idle(std::size_t(m_processes), false);
         ready[0] = idle[0] = true;
-        const auto merge = [&](const ResultHeader& result, const std::vector<Accumulator>& pixels) {
+        std::vector<int> tiles_by_rank(std::size_t(m_processes), 0);
+        const auto merge = [&](const ResultHeader& result, const std::vector<Accumulator>& pixels, int from) {
+            ++tiles_by_rank[std::size_t(from)];
             const CropWindow tile = schedule.tile_window(result.item);
             film.restore_region(tile.x0, tile.y0, tile.x1, tile.y1, pixels.data());
             schedule.completed(result.item, result.samples, result.least);
@@ -461,7 +463,7 @@ class MpiDistribution final : public Distribution {
                 }
                 if (out_of_time && schedule.outstanding() == 0) break;
                 if (!idle[0] && local.take_finished()) {
-                    merge(local_result, local_pixels);
+                    merge(local_result, local_pixels, 0);
                     idle[0] = true;
                     acted = true;
                 }
@@ -473,7 +475,7 @@ class MpiDistribution final : public Distribution {
                     bytes_exchanged += bytes.size();
                     std::vector<Accumulator> pixels;
                     const ResultHeader result = unpack<ResultHeader>(bytes, pixels);
-                    if (result.kind == ResultKind::Tile) merge(result, pixels);
+                    if (result.kind == ResultKind::Tile) merge(result, pixels, probed.MPI_SOURCE);
                     ready[std::size_t(probed.MPI_SOURCE)] = idle[std::size_t(probed.MPI_SOURCE)] = true;
                     acted = true;
                 }
@@ -523,9 +525,14 @@ class MpiDistribution final : public Distribution {
         stats.interrupted = interrupted;
         stats.rays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds : 0.0;
         summarise_samples(film, window, integrator, stats);
-        if (options.progress != ProgressMode::Quiet && !interrupted)
-            std::fprintf(stderr, "lancer: %d processes rendered %d tiles in %d rounds; %.2f MB exchanged\n",
-                         m_processes, schedule.tiles(), rounds, double(bytes_exchanged) / 1e6);
+        if (options.progress != ProgressMode::Quiet && !interrupted) {
+            std::string shares;
+            for (int count : tiles_by_rank) shares += (shares.empty() ? "" : " ") + std::to_string(count);
+            std::fprintf(stderr,
+                         "lancer: %d processes rendered %d tiles in %d rounds (tiles by process: %s); %.2f MB "
+                         "exchanged\n",
+                         m_processes, schedule.tiles(), rounds, shares.c_str(), double(bytes_exchanged) / 1e6);
+        }
         return stats;
     }
 
