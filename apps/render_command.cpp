@@ -436,10 +436,13 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
         Film film(options.width, options.height);
         // A render killed before its first checkpoint has nothing to resume:
         // it starts over, so `--resume` after a kill at any moment works.
-        if (arguments.resume && !fs::exists(checkpoint_path)) {
+        // Only the process that writes the files resumes: the others' film
+        // is scratch, and rank 0 may be replacing the checkpoint already.
+        const bool resume = arguments.resume && writes_files;
+        if (resume && !fs::exists(checkpoint_path)) {
             std::fprintf(stderr, "lancer: note: no checkpoint '%s' yet; rendering from the start\n",
                          checkpoint_path.c_str());
-        } else if (arguments.resume) {
+        } else if (resume) {
             try {
                 read_checkpoint(checkpoint_path, identity, film);
             } catch (const CheckpointError& error) {

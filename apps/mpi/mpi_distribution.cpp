@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -102,10 +103,9 @@ std::vector<char> receive(const MPI_Status& probed, int tag) {
     return bytes;
 }
 
-std::vector<char> receive_blocking(int source, int tag, int* from = nullptr) {
+std::vector<char> receive_blocking(int source, int tag) {
     MPI_Status status;
     MPI_Probe(source, tag, MPI_COMM_WORLD, &status);
-    if (from) *from = status.MPI_SOURCE;
     return receive(status, tag);
 }
 
@@ -143,17 +143,18 @@ std::uint32_t least_taken(const std::vector<Accumulator>& pixels) {
     return pixels.empty() ? 0 : least;
 }
 
-// Renders tiles for one process: its own film (only the tile being
-// rendered is meaningful), the user's options narrowed to the tile.
+// Renders tiles for one process into a scratch film of the image's size
+// (only the tile being rendered is meaningful), with the user's options
+// narrowed to the tile.
 class TileRenderer {
   public:
     TileRenderer(const RenderScene& prepared, Integrator& integrator, const RenderOptions& options, StillMode mode,
-                 int width, int height, const std::atomic<bool>* cancel)
+                 Film& scratch, const std::atomic<bool>* cancel)
         : m_scene(prepared),
           m_integrator(integrator),
           m_options(options),
           m_mode(mode),
-          m_film(width, height),
+          m_film(scratch),
           m_cancel(cancel) {}
 
     // Brings the tile to the unit's target from `state` (empty: no samples
@@ -209,7 +210,7 @@ class TileRenderer {
     Integrator& m_integrator;
     const RenderOptions m_options;
     const StillMode m_mode;
-    Film m_film;
+    Film& m_film;
     const std::atomic<bool>* m_cancel;
     std::vector<Accumulator> m_empty;
 };
@@ -345,7 +346,8 @@ class MpiDistribution final : public Distribution {
     RenderStats serve_tiles(const RenderScene& counted, Integrator& integrator, const RenderOptions& options,
                             StillMode mode, Film& film) {
         const auto started = Clock::now();
-        TileRenderer renderer(counted, integrator, options, mode, film.width(), film.height(), nullptr);
+        // The film render_still was given is this process's scratch.
+        TileRenderer renderer(counted, integrator, options, mode, film, nullptr);
         send(pack(ResultHeader{}), 0, kTagResult);
         RenderStats stats;
         std::vector<Accumulator> state, pixels;
@@ -375,7 +377,8 @@ class MpiDistribution final : public Distribution {
         JobProgress progress(options.progress != ProgressMode::Quiet);
 
         // Rank 0's own share, rendered on the local worker's thread.
-        TileRenderer renderer(counted, integrator, options, mode, film.width(), film.height(), options.cancel);
+        Film scratch(film.width(), film.height());
+        TileRenderer renderer(counted, integrator, options, mode, scratch, options.cancel);
         WorkHeader local_unit;
         std::vector<Accumulator> local_state, local_pixels;
         ResultHeader local_result;
@@ -502,20 +505,8 @@ class MpiDistribution final : public Distribution {
         }
         if (!interrupted) progress.report(1.0, "rendering");
         progress.finish();
-        if (!interrupted) {
-            // Every rank is told to stop once it has asked for work (a slow
-            // parse may ask only now), so no message is left unread.
-            for (int r = 1; r < m_processes; ++r) {
-                while (!ready[std::size_t(r)]) {
-                    std::vector<Accumulator> none;
-                    int source = 0;
-                    const std::vector<char> bytes = receive_blocking(MPI_ANY_SOURCE, kTagResult, &source);
-                    unpack<ResultHeader>(bytes, none);
-                    ready[std::size_t(source)] = true;
-                }
-                send(pack(WorkHeader{}), r, kTagWork);
-            }
-        } else {
+        if (!interrupted) interrupted = !release_workers(ready, options.cancel);
+        if (interrupted) {
             // Rank 0 does not wait for tiles in flight: a rank that died
             // would keep it waiting for ever. Its own tile stops at once.
             while (!idle[0] && !local.take_finished()) std::this_thread::sleep_for(kPollInterval);
@@ -638,17 +629,31 @@ class MpiDistribution final : public Distribution {
             if (!acted) std::this_thread::sleep_for(kPollInterval);
         }
         if (failure != 0) return failure;
-        if (cancel && cancel->load()) return 128 + 15;
+        if (cancel && cancel->load()) return 128 + SIGTERM;
+        return release_workers(ready, cancel) ? 0 : 128 + SIGTERM;
+    }
+
+    // Tells every other rank to stop once it has asked for work (a slow
+    // parse may ask only now), so no message is left unread. False if
+    // `cancel` came first: a rank that died never asks.
+    bool release_workers(std::vector<bool>& ready, const std::atomic<bool>* cancel) {
         for (int r = 1; r < m_processes; ++r) {
             while (!ready[std::size_t(r)]) {
+                if (cancel && cancel->load()) return false;
+                int waiting = 0;
+                MPI_Status probed;
+                MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &waiting, &probed);
+                if (!waiting) {
+                    std::this_thread::sleep_for(kPollInterval);
+                    continue;
+                }
                 std::vector<Accumulator> none;
-                int source = 0;
-                unpack<ResultHeader>(receive_blocking(MPI_ANY_SOURCE, kTagResult, &source), none);
-                ready[std::size_t(source)] = true;
+                unpack<ResultHeader>(receive(probed, kTagResult), none);
+                ready[std::size_t(probed.MPI_SOURCE)] = true;
             }
             send(pack(WorkHeader{}), r, kTagWork);
         }
-        return 0;
+        return true;
     }
 
     int m_rank, m_processes;
