@@ -31,7 +31,7 @@ CropWindow TileSchedule::tile_window(int tile) const {
     return {x0, y0, std::min(x0 + m_tile_size, m_window.x1), std::min(y0 + m_tile_size, m_window.y1)};
 }
 
-void TileSchedule::begin_round(std::uint32_t target, bool skip_reached) {
+void TileSchedule::begin_round(std::uint32_t target) {
     m_target = target;
     m_round.clear();
     m_cursor = 0;
@@ -39,7 +39,7 @@ void TileSchedule::begin_round(std::uint32_t target, bool skip_reached) {
     m_completed = 0;
     for (int tile = 0; tile < tiles(); ++tile) {
         const TileState& state = m_tiles[std::size_t(tile)];
-        if (state.finished || (skip_reached && state.least >= target)) continue;
+        if (state.finished || state.least >= target) continue;
         m_round.push_back(tile);
     }
 }
@@ -50,10 +50,11 @@ std::optional<TileUnit> TileSchedule::next() {
     return TileUnit{m_round[m_cursor++], m_target};
 }
 
-void TileSchedule::completed(int tile, std::uint64_t samples_added, std::uint32_t least_samples) {
+void TileSchedule::completed(int tile, std::uint64_t samples_added, std::uint32_t least_samples,
+                             std::uint32_t most_samples) {
     TileState& state = m_tiles.at(std::size_t(tile));
     state.least = least_samples;
-    if (samples_added == 0) state.finished = true;
+    if (samples_added == 0 && most_samples < m_target) state.finished = true;
     if (m_outstanding > 0) --m_outstanding;
     ++m_completed;
 }

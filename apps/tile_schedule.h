@@ -39,16 +39,15 @@ class TileSchedule {
     int tiles() const { return int(m_tiles.size()); }
     CropWindow tile_window(int tile) const;
 
-    // Starts a round to `target` samples per pixel. A tile takes part if it
-    // is not finished and, when `skip_reached`, its least-sampled pixel is
-    // under the target (with a noise target a pixel may stop early, so a
-    // tile is asked again until it adds nothing).
-    void begin_round(std::uint32_t target, bool skip_reached);
+    // Starts a round to `target` samples per pixel: every tile that is not
+    // finished and has a pixel under the target takes part.
+    void begin_round(std::uint32_t target);
     // The next tile of this round, or none (all handed out).
     std::optional<TileUnit> next();
-    // A unit's result: samples it added and the least count of its pixels.
-    // A tile that added nothing is finished.
-    void completed(int tile, std::uint64_t samples_added, std::uint32_t least_samples);
+    // A unit's result: samples it added, the least and most counts of its
+    // pixels. A tile that added nothing although every pixel had room under
+    // the target is finished (with a noise target, every pixel stopped).
+    void completed(int tile, std::uint64_t samples_added, std::uint32_t least_samples, std::uint32_t most_samples);
     // Tiles of this round handed out and not yet completed.
     int outstanding() const { return m_outstanding; }
     // Every tile of the round handed out and completed.

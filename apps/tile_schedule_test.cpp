@@ -32,7 +32,7 @@ TEST(TileSchedule, TileSizeShrinksUntilEveryProcessHasEnoughTiles) {
 
 TEST(TileSchedule, AFixedRoundHandsOutEachTileOnceThenWaits) {
     TileSchedule schedule({0, 0, 40, 40}, 16);  // 3 x 3
-    schedule.begin_round(16, true);
+    schedule.begin_round(16);
     std::set<int> seen;
     while (auto unit = schedule.next()) {
         EXPECT_EQ(unit->target, 16u);
@@ -41,25 +41,31 @@ TEST(TileSchedule, AFixedRoundHandsOutEachTileOnceThenWaits) {
     EXPECT_EQ(seen.size(), 9u);
     EXPECT_EQ(schedule.outstanding(), 9);
     EXPECT_FALSE(schedule.round_complete());
-    for (int tile : seen) schedule.completed(tile, 100, 16);
+    for (int tile : seen) schedule.completed(tile, 100, 16, 16);
     EXPECT_TRUE(schedule.round_complete());
     EXPECT_DOUBLE_EQ(schedule.round_fraction_done(), 1.0);
 }
 
 TEST(TileSchedule, ARoundSkipsTilesAtTheTargetAndTilesThatAddedNothing) {
-    TileSchedule schedule({0, 0, 32, 16}, 16);  // 2 tiles
-    schedule.begin_round(4, true);
-    schedule.completed(schedule.next()->tile, 64, 4);  // reached 4
-    schedule.completed(schedule.next()->tile, 32, 2);  // stopped at 2 (deadline)
-    schedule.begin_round(4, true);
+    TileSchedule schedule({0, 0, 48, 16}, 16);  // 3 tiles
+    schedule.begin_round(4);
+    schedule.completed(schedule.next()->tile, 64, 4, 4);  // reached 4
+    schedule.completed(schedule.next()->tile, 32, 2, 4);  // stopped at 2 (deadline)
+    schedule.completed(schedule.next()->tile, 16, 1, 4);
+    schedule.begin_round(4);
     auto unit = schedule.next();
     ASSERT_TRUE(unit);
     EXPECT_EQ(unit->tile, 1);
+    schedule.completed(1, 0, 2, 2);  // room everywhere, added nothing: finished
+    unit = schedule.next();
+    ASSERT_TRUE(unit);
+    EXPECT_EQ(unit->tile, 2);
+    schedule.completed(2, 0, 1, 4);  // added nothing, but a pixel had no room
     EXPECT_FALSE(schedule.next());
-    schedule.completed(1, 0, 2);  // added nothing: finished
-    EXPECT_EQ(schedule.unfinished(), 1);
-    schedule.begin_round(8, false);  // a noise target asks every unfinished tile
+    EXPECT_EQ(schedule.unfinished(), 2);
+    schedule.begin_round(8);
     EXPECT_EQ(schedule.next()->tile, 0);
+    EXPECT_EQ(schedule.next()->tile, 2);
     EXPECT_FALSE(schedule.next());
 }
 

@@ -58,8 +58,8 @@ struct WorkHeader {
 struct ResultHeader {
     ResultKind kind = ResultKind::Ready;
     std::int32_t item = 0;
-    std::int32_t status = 0;  // a frame's exit status
-    std::uint32_t least = 0;  // least samples of the tile's pixels
+    std::int32_t status = 0;            // a frame's exit status
+    std::uint32_t least = 0, most = 0;  // least and most samples of the tile's pixels
     std::uint64_t samples = 0, nonfinite = 0, rays = 0;
 };
 
@@ -143,6 +143,12 @@ std::uint32_t least_taken(const std::vector<Accumulator>& pixels) {
     return pixels.empty() ? 0 : least;
 }
 
+std::uint32_t most_taken(const std::vector<Accumulator>& pixels) {
+    std::uint32_t most = 0;
+    for (const Accumulator& p : pixels) most = std::max(most, p.count + p.nonfinite);
+    return most;
+}
+
 // Renders tiles for one process into a scratch film of the image's size
 // (only the tile being rendered is meaningful), with the user's options
 // narrowed to the tile.
@@ -199,6 +205,7 @@ class TileRenderer {
         result.kind = ResultKind::Tile;
         result.item = unit.item;
         result.least = least_taken(pixels);
+        result.most = most_taken(pixels);
         result.samples = stats.samples;
         result.nonfinite = stats.nonfinite_samples;
         result.rays = stats.rays;
@@ -394,7 +401,7 @@ class MpiDistribution final : public Distribution {
             ++tiles_by_rank[std::size_t(from)];
             const CropWindow tile = schedule.tile_window(result.item);
             film.restore_region(tile.x0, tile.y0, tile.x1, tile.y1, pixels.data());
-            schedule.completed(result.item, result.samples, result.least);
+            schedule.completed(result.item, result.samples, result.least, result.most);
             stats.samples += result.samples;
             stats.rays += result.rays;
             stats.nonfinite_samples += result.nonfinite;
@@ -434,7 +441,7 @@ class MpiDistribution final : public Distribution {
         int rounds = 0;
         bool more_rounds = !interrupted && window_pixels > 0;
         while (more_rounds) {
-            schedule.begin_round(target, mode != StillMode::Adaptive);
+            schedule.begin_round(target);
             const auto round_start = Clock::now();
             const std::uint64_t samples_before = stats.samples;
             ++rounds;
