@@ -1,6 +1,7 @@
 // join_distributed_job without MPI in the build, and how every build tells
-// whether mpirun started it: Open MPI's launcher sets OMPI_COMM_WORLD_SIZE
-// (PMIx and other launchers their own), so a plain run never touches MPI.
+// whether a launcher started it: Open MPI's mpirun sets
+// OMPI_COMM_WORLD_SIZE, PMI launchers (MPICH's mpiexec, Slurm's srun)
+// PMI_SIZE, so a plain run never touches MPI.
 #include "distribution.h"
 
 #include <cstdlib>
@@ -14,7 +15,7 @@ std::unique_ptr<Distribution> join_mpi_job(std::string& problem);  // apps/mpi/m
 namespace {
 
 int launcher_world_size() {
-    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_SIZE", "PMI_SIZE"}) {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
         if (const char* value = std::getenv(name)) return std::atoi(value);
     }
     return 0;

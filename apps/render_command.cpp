@@ -8,7 +8,8 @@
 // runs before the render starts, and the image is written atomically at the
 // end, so an error never leaves a file behind (nor a long render wasted).
 // SIGINT and SIGTERM end the render early and write the image so far (see
-// docs/rendering.md).
+// docs/rendering.md). Under mpirun every process runs this command and the
+// job is shared among them (distribution.h, docs/distributed.md).
 #include <unistd.h>
 
 #include <algorithm>
