@@ -8,7 +8,8 @@
 // runs before the render starts, and the image is written atomically at the
 // end, so an error never leaves a file behind (nor a long render wasted).
 // SIGINT and SIGTERM end the render early and write the image so far (see
-// docs/rendering.md).
+// docs/rendering.md). Under mpirun every process runs this command and the
+// job is shared among them (distribution.h, docs/distributed.md).
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,6 +22,7 @@
 #include <functional>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -28,6 +30,7 @@
 #include "animation.h"
 #include "cli_output.h"
 #include "commands.h"
+#include "distribution.h"
 #include "lancer/host/checkpoint.h"
 #include "lancer/host/counting_scene.h"
 #include "lancer/host/image_io.h"
@@ -134,6 +137,10 @@ struct FrameJob {
     std::string output;
     std::string stats;
     bool animated = false;
+    // One of several processes mpirun started (docs/distributed.md): an
+    // interrupted render writes no image (a rank that died ends the job, and
+    // only a whole image may be left), and signal handlers are the caller's.
+    bool distributed = false;
 };
 
 // "x0,y0,x1,y1" as four integers, nothing else.
@@ -356,8 +363,12 @@ RenderReport make_report(const RenderArguments& arguments, const std::string& ou
 }
 
 // Parses, builds, renders and writes one image (a still or a frame);
-// `seconds_so_far` is what the --time budget has spent.
-int render_frame(const RenderArguments& arguments, const FrameJob& job, const std::function<double()>& seconds_so_far) {
+// `seconds_so_far` is what the --time budget has spent. With `shared_still`
+// every process of the job runs this and renders a share of the still; rank
+// 0 writes the files.
+int render_frame(const RenderArguments& arguments, const FrameJob& job, const std::function<double()>& seconds_so_far,
+                 Distribution* shared_still = nullptr) {
+    const bool writes_files = !shared_still || shared_still->coordinates();
     // Parse once; the command line's size is what POV's image_width/height read.
     SceneRequest request;
     request.path = arguments.scene;
@@ -388,13 +399,14 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
         std::vector<OutputFile> outputs{{"the image (-o)", output}, {"the checkpoint", checkpoint_path_for(output)}};
         if (!job.stats.empty()) outputs.push_back({"--stats", job.stats});
         const std::string refused = check_output_files(outputs, inputs);
-        if (!refused.empty()) {
+        if (!refused.empty() && writes_files) {
             print_error(refused);
             return kExitBadInput;
         }
         // What an earlier render killed mid-write (no handler runs on
         // SIGKILL) left beside these files.
-        for (const OutputFile& file : outputs) remove_stale_temporaries(file.path);
+        if (writes_files)
+            for (const OutputFile& file : outputs) remove_stale_temporaries(file.path);
     }
 
     // The integrator and its parameters (the scene's only for the scene's
@@ -425,10 +437,13 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
         Film film(options.width, options.height);
         // A render killed before its first checkpoint has nothing to resume:
         // it starts over, so `--resume` after a kill at any moment works.
-        if (arguments.resume && !fs::exists(checkpoint_path)) {
+        // Only the process that writes the files resumes: the others' film
+        // is scratch, and rank 0 may be replacing the checkpoint already.
+        const bool resume = arguments.resume && writes_files;
+        if (resume && !fs::exists(checkpoint_path)) {
             std::fprintf(stderr, "lancer: note: no checkpoint '%s' yet; rendering from the start\n",
                          checkpoint_path.c_str());
-        } else if (arguments.resume) {
+        } else if (resume) {
             try {
                 read_checkpoint(checkpoint_path, identity, film);
             } catch (const CheckpointError& error) {
@@ -449,10 +464,42 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
             options.time_budget_seconds = std::max(arguments.time_budget - seconds_so_far() - reserve, 1e-3);
         }
 
-        InterruptHandlers handlers;
+        std::optional<InterruptHandlers> handlers;
+        if (!job.distributed || (shared_still && shared_still->coordinates())) handlers.emplace();
         options.cancel = &g_interrupt_requested;
-        const RenderStats stats = render_job(*scene.scene, *integrator, options, film);
+        RenderStats stats;
+        if (shared_still) {
+            // Rank 0 checkpoints the combined film as tiles come back.
+            auto last_checkpoint = std::chrono::steady_clock::now();
+            const auto on_tile = [&](const Film& state) {
+                const auto now = std::chrono::steady_clock::now();
+                if (!checkpointing ||
+                    std::chrono::duration<double>(now - last_checkpoint).count() < arguments.checkpoint_interval)
+                    return;
+                write_checkpoint(checkpoint_path, identity, state);
+                last_checkpoint = now;
+            };
+            options.on_checkpoint = nullptr;
+            stats = shared_still->render_still(*scene.scene, *integrator, options, film, on_tile);
+            if (!shared_still->coordinates()) return 0;
+        } else {
+            stats = render_job(*scene.scene, *integrator, options, film);
+        }
         const int signal_number = g_interrupt_signal.load();
+        if (stats.interrupted && job.distributed) {
+            // Said first: mpirun kills what is still running soon after.
+            const char* name = signal_number == SIGINT ? "SIGINT" : "SIGTERM";
+            std::fprintf(
+                stderr,
+                "lancer: error: the job was stopped by %s (mpirun stops every process when one fails or is "
+                "interrupted); %s not written%s%s%s\n",
+                name, output.c_str(), checkpointing || arguments.resume ? "; progress saved in " : "",
+                checkpointing || arguments.resume ? checkpoint_path.c_str() : "",
+                checkpointing || arguments.resume ? ": continue with --resume, with any number of processes" : "");
+            std::fflush(stderr);
+            if (checkpointing || arguments.resume) write_checkpoint(checkpoint_path, identity, film);
+            return 128 + (signal_number > 0 ? signal_number : SIGTERM);
+        }
 
         // Report and write: image (with per-pixel sample counts in EXR when
         // they vary), stats, and on interruption a checkpoint to resume.
@@ -495,7 +542,40 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
     return 0;
 }
 
-int run_render(const RenderArguments& arguments) {
+// An animation over the processes of an mpirun job: rank 0 hands out the
+// frames still to make, each process renders its frames whole and writes
+// them, and only rank 0 reports (a line per frame).
+int render_frames_distributed(const RenderArguments& arguments, const AnimationRange& range, const std::string& output,
+                              const std::string& stats, Distribution& distribution) {
+    std::vector<int> frames;
+    const auto job_for = [&](int frame) {
+        return FrameJob{range.frame(frame), frame_file_name(output, frame, range.final_frame),
+                        stats.empty() ? std::string() : frame_file_name(stats, frame, range.final_frame), true, true};
+    };
+    for (int frame = range.initial_frame; frame <= range.final_frame; ++frame) {
+        const FrameJob job = job_for(frame);
+        if (arguments.resume && fs::exists(job.output) && !fs::exists(checkpoint_path_for(job.output))) continue;
+        frames.push_back(frame);
+    }
+    RenderArguments quiet = arguments;
+    quiet.quiet = true;
+    std::optional<InterruptHandlers> handlers;
+    if (distribution.coordinates()) handlers.emplace();
+    return distribution.render_frames(
+        frames,
+        [&](int frame) {
+            const auto started = std::chrono::steady_clock::now();
+            const auto seconds_so_far = [&] {
+                return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+            };
+            return render_frame(quiet, job_for(frame), seconds_so_far);
+        },
+        &g_interrupt_requested);
+}
+
+// `lancer render` in one process, or in every process of an mpirun job
+// (`distribution` not null): a still shared among them, frames handed out.
+int render_command(const RenderArguments& arguments, Distribution* distribution) {
     if (const int status = check_arguments(arguments)) return status;
     const std::string output =
         arguments.output_option->count() ? arguments.output : fs::path(arguments.scene).stem().string() + ".png";
@@ -510,7 +590,8 @@ int run_render(const RenderArguments& arguments) {
         const auto seconds_so_far = [&] {
             return age_at_start + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         };
-        return render_frame(arguments, FrameJob{AnimationFrame{}, output, stats, false}, seconds_so_far);
+        return render_frame(arguments, FrameJob{AnimationFrame{}, output, stats, false, distribution != nullptr},
+                            seconds_so_far, distribution);
     }
     std::string problem;
     std::optional<AnimationRange> range = parse_frame_range(arguments.frames, problem);
@@ -519,6 +600,7 @@ int run_render(const RenderArguments& arguments) {
         print_error(problem);
         return kExitUsage;
     }
+    if (distribution) return render_frames_distributed(arguments, *range, output, stats, *distribution);
     for (int frame = range->initial_frame; frame <= range->final_frame; ++frame) {
         FrameJob job{range->frame(frame), frame_file_name(output, frame, range->final_frame),
                      stats.empty() ? std::string() : frame_file_name(stats, frame, range->final_frame), true};
@@ -538,6 +620,20 @@ int run_render(const RenderArguments& arguments) {
         if (const int status = render_frame(arguments, job, seconds_so_far)) return status;
     }
     return 0;
+}
+
+int run_render(const RenderArguments& arguments) {
+    std::string problem;
+    const std::unique_ptr<Distribution> distribution = join_distributed_job(problem);
+    if (!problem.empty()) {
+        print_error(problem);
+        return kExitUsage;
+    }
+    const int status = render_command(arguments, distribution.get());
+    // A process that fails ends the whole job: the others may be waiting
+    // for it.
+    if (distribution && status != 0) distribution->abort(status);
+    return status;
 }
 
 }  // namespace

@@ -12,6 +12,8 @@ packages=(
   libtinyobjloader-dev libcli11-dev libfreetype-dev fonts-povray
   povray-includes
   libgtest-dev libgmock-dev libbenchmark-dev
+  # Optional: rendering over several processes (docs/distributed.md).
+  libopenmpi-dev openmpi-bin
 )
 
 sudo_cmd=()

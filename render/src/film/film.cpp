@@ -49,4 +49,23 @@ void Film::restore(std::vector<Accumulator> accumulators) {
                               std::memory_order_relaxed);
 }
 
+void Film::restore_region(int x0, int y0, int x1, int y1, const Accumulator* pixels) {
+    if (x0 < 0 || y0 < 0 || x1 > m_width || y1 > m_height || x0 > x1 || y0 > y1)
+        throw std::invalid_argument("film restore_region: rectangle outside the film");
+    std::int64_t nonfinite_change = 0;
+    bool any = false;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x, ++pixels) {
+            const std::size_t i = std::size_t(y) * m_width + x;
+            nonfinite_change += std::int64_t(pixels->nonfinite) - std::int64_t(m_pixels[i].nonfinite);
+            m_pixels[i] = *pixels;
+            m_taken[i] = pixels->count + pixels->nonfinite;
+            any = any || m_taken[i] > 0;
+        }
+    m_nonfinite_total.value.fetch_add(std::uint64_t(nonfinite_change), std::memory_order_relaxed);
+    // Stays true once set: a film that held samples is swept when planned,
+    // which is right (if slower) for one that holds none any more.
+    if (any) m_has_samples.value.store(true, std::memory_order_relaxed);
+}
+
 }  // namespace lancer

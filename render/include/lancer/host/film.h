@@ -76,6 +76,10 @@ class Film {
     // Replaces every pixel's totals; throws std::invalid_argument unless
     // there are width x height of them.
     void restore(std::vector<Accumulator> accumulators);
+    // Replaces the totals of the pixels x0 <= x < x1, y0 <= y < y1 with
+    // `pixels` (row-major over that rectangle) and leaves the others: a
+    // render spread over processes moves one tile's state at a time.
+    void restore_region(int x0, int y0, int x1, int y1, const Accumulator* pixels);
 
   private:
     const Accumulator& at(int x, int y) const { return m_pixels[std::size_t(y) * m_width + x]; }
