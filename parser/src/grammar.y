@@ -706,6 +706,7 @@ texture_list
 texture_seq
   : %empty             {}
   | texture_seq texture { $$ = std::move($1); $$.push_back($2); }
+  | texture_seq "," texture { $$ = std::move($1); $$.push_back($3); }  /* object_pattern.pov */
   ;
 
 mesh2_sections

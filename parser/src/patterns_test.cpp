@@ -380,7 +380,8 @@ TEST(ParserPatterns, ObjectPatternIsAListOfTwo) {
         "plane { z, 0 pigment { object { S rgb x, rgb y } } }\n"
         "plane { z, 0 pigment { object { box { -1, 1 } } } }\n"
         "plane { z, 0 texture { object { S texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } } } }\n"
-        "plane { z, 0 normal { object { S normal { bumps } } } }");
+        "plane { z, 0 normal { object { S normal { bumps } } } }\n"
+        "plane { z, 0 texture { object { S texture { pigment { rgb 1 } }, texture { pigment { rgb 0 } } } } }");
     const sg::Pigment& colours = material_of(scene, 0).pigment;
     EXPECT_EQ(colours.pattern.kind, sg::Pattern::Kind::Object);
     ASSERT_TRUE(colours.pattern.object);
@@ -392,6 +393,7 @@ TEST(ParserPatterns, ObjectPatternIsAListOfTwo) {
     EXPECT_EQ(material_of(scene, 2).block_textures.size(), 2u);
     ASSERT_TRUE(material_of(scene, 3).normal);
     EXPECT_EQ(material_of(scene, 3).normal->block_normals.size(), 2u);
+    EXPECT_EQ(material_of(scene, 4).block_textures.size(), 2u);  // a comma between (object_pattern.pov)
     EXPECT_NE(first_error("plane { z, 0 pigment { object { sphere { 0, 1 } rgb 0, rgb 1, rgb 2 } } }")
                   .message.find("object takes at most 2"),
               std::string::npos);
