@@ -36,6 +36,20 @@ TEST(ParserDirectives, MacroArgumentAfterAnObjectNeedsNoComma) {
     EXPECT_EQ(centre, sg::Vec3(0, -2, 0));
 }
 
+// A macro named right after a declared block waits until the block is
+// declared, as POV reads it (incdemo/screen.pov passes the texture it has
+// just declared).
+TEST(ParserDirectives, MacroAfterADeclaredBlockSeesIt) {
+    auto scene = parse_ok(
+        "#macro M(T) sphere { 0, 1 texture { T } } #end\n"
+        "#declare T = texture { pigment { rgb x } }\n"
+        "M(T)\n"
+        "#declare O = union { sphere { 0, 1 } }\n"
+        "M(texture { pigment { rgb y } })");
+    ASSERT_EQ(scene.objects.size(), 2u);
+    EXPECT_EQ(scene.objects[0].material->pigment.color.rgb, sg::Vec3(1, 0, 0));
+}
+
 TEST(ParserDirectives, WhileLoopMakesObjects) {
     auto scene = parse_ok("#declare I = 0;\n#while (I < 10)\n  sphere { <I, 0, 0>, 0.1 }\n  #declare I = I + 1;\n#end");
     ASSERT_EQ(scene.objects.size(), 10u);

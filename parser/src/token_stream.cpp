@@ -206,7 +206,9 @@ Evaluator::Symbol Evaluator::next_token() {
 // macro (its Ok_To_Declare): `#declare C = "" M(C)` declares C, then calls
 // M. Here the lookahead that ends a declared value is read while its
 // barrier holds; a macro name right after a complete operand at the
-// value's own nesting waits, like a directive, until the value is stored.
+// value's own nesting waits, like a directive, until the value is stored;
+// so does one after the '}' that closes a declared block (screen.pov:
+// `#declare T = texture { … }` then `Screen_Plane(T, …)`).
 bool Evaluator::macro_waits_for_value_end() const {
     if (!directives_blocked() || m_nesting != m_barrier_nesting) return false;
     using T = Parser::symbol_kind;
@@ -216,6 +218,7 @@ bool Evaluator::macro_waits_for_value_end() const {
     case T::S_CONSTANT:
     case T::S_VALUE_ID:
     case T::S_RPAREN:
+    case T::S_RBRACE:
     case T::S_RBRACKET: return true;
     default: return false;
     }
