@@ -6,8 +6,10 @@
 #include "lancer/internal_functions.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "lancer/function.h"
 
@@ -34,10 +36,12 @@ constexpr double kMaxRepetitions = 1000.0;
 
 // An internal function's inputs: the point and its parameters, 0 where the
 // caller passed fewer.
+constexpr int kArgumentSlots = 13;
 struct Arguments {
-    double x = 0.0, y = 0.0, z = 0.0;
-    double p[10] = {};
+    double x, y, z;
+    double p[kArgumentSlots - 3];
 };
+static_assert(sizeof(Arguments) == kArgumentSlots * sizeof(double));
 
 // POV's C cast of a parameter to int, made safe where C's is undefined
 // (out of range: 0, which is what x86 gives once masked with & 3).
@@ -120,7 +124,7 @@ double cross_section(double u, double v, double shape, double exponent_of_sum) {
     return std::pow(std::pow(std::fabs(u), exponent) + std::pow(std::fabs(v), exponent), exponent_of_sum);
 }
 
-double algebraic_cylinder(int number, const Arguments& a) {
+[[gnu::always_inline]] inline double algebraic_cylinder(int number, const Arguments& a) {
     const CurvePoint c = curve_point(a, a.p[2], a.p[3], a.p[4]);
     const double x = c.x, y = c.y, x2 = c.x2, y2 = c.y2;
     switch (number) {
@@ -230,7 +234,7 @@ double helix2(const Arguments& a) {
 
 // f_hex_x (27) and f_hex_y (28): distances in a hexagonal tiling of the
 // x-y plane, cells √3 wide and 3 high.
-double hexagonal(int number, const Arguments& a) {
+[[gnu::always_inline]] inline double hexagonal(int number, const Arguments& a) {
     double u = std::fabs(std::fmod(std::fabs(a.x), kSqrt3) - kSqrt3 / 2);
     double v = std::fabs(std::fmod(std::fabs(a.y), 3.0) - 1.5);
     const double other_u = kSqrt3 / 2 - u, other_v = 1.5 - v;
@@ -391,7 +395,7 @@ double rounded_box(const Arguments& a) {
 
 // The algebraic surfaces: a polynomial of the point, through field() with
 // p0 the field strength.
-double algebraic_surface(int number, const Arguments& a) {
+[[gnu::always_inline]] inline double algebraic_surface(int number, const Arguments& a) {
     const double* p = a.p;
     const double x = a.x, y = a.y, z = a.z, x2 = x * x, y2 = y * y, z2 = z * z, s = x2 + y2 + z2;
     switch (number) {
@@ -474,7 +478,7 @@ double algebraic_surface(int number, const Arguments& a) {
 
 // The `_2d` curves: a polynomial of the point in the curve's plane (see
 // curve_point), through field() with p0 the field strength.
-double plane_curve(int number, const Arguments& a) {
+[[gnu::always_inline]] inline double plane_curve(int number, const Arguments& a) {
     const double* p = a.p;
     switch (number) {
     case 15: {  // f_devils_curve_2d
@@ -509,25 +513,10 @@ double plane_curve(int number, const Arguments& a) {
     }
 }
 
-}  // namespace
-
-bool internal_function_supported(int number) {
-    return number >= 0 && number <= kLastInternalFunction && number != 77;
-}
-
-int internal_function_parameter_count(int number) {
-    return internal_function_supported(number) ? kParameterCounts[number] : -1;
-}
-
-double internal_function(int number, const double* arguments, int count, const FunctionNatives* natives) {
-    if (!internal_function_supported(number))
-        throw FunctionError("POV-Ray's internal function " + std::to_string(number) + " does not exist");
-    Arguments a;
-    if (count > 0) a.x = arguments[0];
-    if (count > 1) a.y = arguments[1];
-    if (count > 2) a.z = arguments[2];
-    const int used = std::min(count, 3 + kParameterCounts[number]);
-    for (int i = 3; i < used; ++i) a.p[i - 3] = arguments[i];
+// The value of function `number` (a supported one). Inlined into each of
+// the bodies below with its number fixed, so each is its own small
+// function and the switch folds away.
+[[gnu::always_inline]] inline double evaluate(int number, const Arguments& a, const FunctionNatives* natives) {
     const double* p = a.p;
     const double x = a.x, y = a.y, z = a.z;
     switch (number) {
@@ -608,6 +597,41 @@ double internal_function(int number, const double* arguments, int count, const F
     case 78: return noise(natives, glm::dvec3(x, y, z), noise_generator(p[0]));
     default: return algebraic_surface(number, a);
     }
+}
+
+using Body = double (*)(const Arguments&, const FunctionNatives*);
+
+template <int Number>
+double body(const Arguments& a, const FunctionNatives* natives) {
+    return evaluate(Number, a, natives);
+}
+
+// One entry per number 0 .. kLastInternalFunction (77's is never called).
+template <int... Numbers>
+constexpr std::array<Body, sizeof...(Numbers)> make_bodies(std::integer_sequence<int, Numbers...>) {
+    return {body<Numbers>...};
+}
+constexpr auto kBodies = make_bodies(std::make_integer_sequence<int, kLastInternalFunction + 1>());
+
+}  // namespace
+
+int internal_function_parameter_count(int number) {
+    return internal_function_supported(number) ? kParameterCounts[number] : -1;
+}
+
+double internal_function(int number, const double* arguments, int count, const FunctionNatives* natives) {
+    if (!internal_function_supported(number))
+        throw FunctionError("POV-Ray 3.7 has no internal function " + std::to_string(number));
+    // Filled element by element, in place: zeroing the struct first costs a
+    // `rep stos`, and copying a filled array into it a stalled store
+    // forwarding, each measured as much as f_torus itself.
+    const int used = std::min(count, 3 + kParameterCounts[number]);
+    Arguments a;
+    a.x = used > 0 ? arguments[0] : 0.0;
+    a.y = used > 1 ? arguments[1] : 0.0;
+    a.z = used > 2 ? arguments[2] : 0.0;
+    for (int i = 0; i < kArgumentSlots - 3; ++i) a.p[i] = 3 + i < used ? arguments[3 + i] : 0.0;
+    return kBodies[number](a, natives);
 }
 
 }  // namespace lancer::sg

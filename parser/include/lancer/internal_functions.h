@@ -3,7 +3,7 @@
 // f_noise3d = 76, f_noise_generator = 78). Each follows POV-Ray 3.7's
 // definition (source/backend/vm/fnintern.cpp), quirks included, so that an
 // isosurface built on them is POV's shape. They run per isosurface step:
-// no allocation, one switch.
+// no allocation, one small function per number found in a table.
 #pragma once
 
 namespace lancer::sg {
@@ -16,7 +16,9 @@ constexpr int kLastInternalFunction = 78;
 // Whether lancer evaluates POV's internal function `number`: every one
 // functions.inc declares; not 77 (POV's own body of `function { pattern
 // { … } }`, which lancer keeps as Function::pattern) nor any other number.
-bool internal_function_supported(int number);
+constexpr bool internal_function_supported(int number) {
+    return number >= 0 && number <= kLastInternalFunction && number != 77;
+}
 
 // The number of parameters after x, y, z that POV's internal function
 // `number` takes (f_helix1: 7), or -1 for a number it lacks.
