@@ -332,7 +332,7 @@ std::function<void(sg::HeightField&)> Evaluator::height_field_function(const Val
         return [](sg::HeightField&) {};
     }
     if (const int missing = sg::first_unsupported_internal(*function.function); missing >= 0)
-        error(at, "POV-Ray's internal function " + std::to_string(missing) + " is not supported yet");
+        error(at, "POV-Ray 3.7 has no internal function " + std::to_string(missing));
     const auto size = *function.image_size;
     return [f = function.function, size, at](sg::HeightField& h) {
         h.function = f;

@@ -513,7 +513,7 @@ Evaluator::PatternEdit Evaluator::function_pattern(const Value& function, const 
     sg::FunctionRef f = function.function;
     if (f)
         if (const int missing = sg::first_unsupported_internal(*f); missing >= 0)
-            error(at, "POV-Ray's internal function " + std::to_string(missing) + " is not supported yet");
+            error(at, "POV-Ray 3.7 has no internal function " + std::to_string(missing));
     return [f](sg::Pattern& p) {
         p.kind = sg::Pattern::Kind::Function;
         p.function = f;

@@ -98,11 +98,12 @@ TEST(ParserFunctions, BadBodiesAreLocatedErrors) {
     EXPECT_NE(first_error("#declare F = function { x").message.find("not closed"), std::string::npos);
     EXPECT_NE(first_error("#declare V = <1, 2, 3>;\n#declare F = function { V }").message.find("a 3-component vector"),
               std::string::npos);
-    // An internal function lancer lacks is an error where it is used, not
-    // where functions.inc declares it.
-    EXPECT_NE(first_error("#include \"functions.inc\"\nplane { z, 0 pigment { function { f_heart(x, y, z, 1) } } }")
-                  .message.find("internal function 23"),
-              std::string::npos);
+    // An internal function POV-Ray lacks is an error where it is used, not
+    // where it is declared.
+    const Diagnostic missing =
+        first_error("#declare F = function { internal(79) }\nplane { z, 0 pigment { function { F(x, y, z) } } }");
+    EXPECT_NE(missing.message.find("no internal function 79"), std::string::npos) << missing.message;
+    EXPECT_EQ(missing.location.line, 2);
 }
 
 }  // namespace

@@ -104,7 +104,7 @@ ShapePtr Evaluator::make_isosurface(const Value& function, const SourceRange& wh
     } else {
         iso.function = function.function;
         if (const int missing = sg::first_unsupported_internal(*iso.function); missing >= 0)
-            error(where.begin, "POV-Ray's internal function " + std::to_string(missing) + " is not supported yet");
+            error(where.begin, "POV-Ray 3.7 has no internal function " + std::to_string(missing));
     }
     for (const auto& item : items) item(iso);
     shape->object.shape = iso;

@@ -100,8 +100,8 @@ TEST(ParserIsosurface, LocatedErrors) {
     EXPECT_EQ(radius.location.column, 56);
     const Diagnostic colour = first_error("isosurface { function { pigment { rgb 1 } } }");
     EXPECT_FALSE(colour.message.empty());
-    const Diagnostic internal = first_error("isosurface { function { internal(59) } }");
-    EXPECT_TRUE(contains(internal.message, "internal function 59")) << internal.message;
+    const Diagnostic internal = first_error("isosurface { function { internal(77) } }");
+    EXPECT_TRUE(contains(internal.message, "no internal function 77")) << internal.message;
     const Diagnostic huge = first_error("isosurface { function { x } threshold 1e300 }");
     EXPECT_EQ(huge.location.column, 39);
 }

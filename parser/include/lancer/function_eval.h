@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "lancer/internal_functions.h"
+
 namespace lancer::sg {
 
 namespace function_detail {
@@ -49,63 +51,12 @@ inline double math2(int code, double a, double b) {
     return 0.0;
 }
 
-// POV's internal functions lancer has (functions.inc names them), from
-// POV-Ray's documented definitions. a: x, y, z, then the extra parameters.
-inline double internal_function(int number, const double* a, int count, const FunctionNatives* natives) {
-    auto p = [&](int i) { return 3 + i < count ? a[3 + i] : 0.0; };
-    const double x = count > 0 ? a[0] : 0.0, y = count > 1 ? a[1] : 0.0, z = count > 2 ? a[2] : 0.0;
-    switch (number) {
-    case 17: return std::sqrt(x * x * p(0) * p(0) + y * y * p(1) * p(1) + z * z * p(2) * p(2));  // f_ellipsoid
-    case 47: return std::atan2(std::sqrt(x * x + z * z), y);                                     // f_ph
-    case 57: return std::sqrt(x * x + y * y + z * z);                                            // f_r
-    case 60: {  // f_rounded_box: radius p0, half sizes p1..p3
-        const double r = p(0);
-        const double ex = std::max({0.0, x - (p(1) - r), (r - p(1)) - x});
-        const double ey = std::max({0.0, y - (p(2) - r), (r - p(2)) - y});
-        const double ez = std::max({0.0, z - (p(3) - r), (r - p(3)) - z});
-        return std::sqrt(ex * ex + ey * ey + ez * ez) - r - 1e-6;
-    }
-    case 61: return std::sqrt(x * x + y * y + z * z) - p(0);  // f_sphere
-    case 68: {                                                // f_superellipsoid: e p0, n p1
-        const double e = p(0), n = p(1);
-        const double xy = std::pow(std::pow(std::fabs(x), 2.0 / e) + std::pow(std::fabs(y), 2.0 / e), e / n);
-        return 1.0 - std::pow(xy + std::pow(std::fabs(z), 2.0 / n), n * 0.5);
-    }
-    case 69: return std::atan2(x, z);  // f_th
-    case 70: {                         // f_torus: major p0, minor p1
-        const double ring = std::sqrt(x * x + z * z) - p(0);
-        return std::sqrt(ring * ring + y * y) - p(1);
-    }
-    case 76:  // f_noise3d: the scene's noise generator
-    case 78:  // f_noise_generator: the generator p0
-        if (!natives) throw FunctionError("f_noise3d needs the renderer's noise");
-        return natives->noise(glm::dvec3(x, y, z), number == 76 ? 0 : (int(p(0)) & 3));
-    }
-    throw FunctionError("POV-Ray's internal function " + std::to_string(number) + " is not supported yet");
-}
-
-inline bool internal_function_supported(int number) {
-    switch (number) {
-    case 17:
-    case 47:
-    case 57:
-    case 60:
-    case 61:
-    case 68:
-    case 69:
-    case 70:
-    case 76:
-    case 78: return true;
-    default: return false;
-    }
-}
-
 }  // namespace function_detail
 
-// The first internal function lancer lacks that f or anything it calls
+// The first internal function lancer lacks (a number POV has no function for) that f or anything it calls
 // needs; -1 when there is none.
 inline int first_unsupported_internal(const Function& f) {
-    if (f.internal >= 0 && !function_detail::internal_function_supported(f.internal)) return f.internal;
+    if (f.internal >= 0 && !internal_function_supported(f.internal)) return f.internal;
     for (const auto& callee : f.callees)
         if (int missing = first_unsupported_internal(*callee); missing >= 0) return missing;
     return -1;
@@ -114,7 +65,7 @@ inline int first_unsupported_internal(const Function& f) {
 inline double evaluate_function(const Function& f, const double* arguments, int count, const FunctionNatives* natives,
                                 int channel) {
     using Op = Function::Op;
-    if (f.internal >= 0) return function_detail::internal_function(f.internal, arguments, count, natives);
+    if (f.internal >= 0) return internal_function(f.internal, arguments, count, natives);
     auto argument = [&](int i) { return i < count ? arguments[i] : 0.0; };
     if (f.pattern) {
         if (!natives) throw FunctionError("a pattern function needs the renderer");

@@ -13,9 +13,9 @@ RenderFunctionNatives::~RenderFunctionNatives() = default;
 
 void RenderFunctionNatives::gather(const sg::Function& f, const MaterialBuild& build) {
     // Refused here, before any thread runs it.
-    if (f.internal >= 0 && !sg::function_detail::internal_function_supported(f.internal))
-        throw sg::FunctionError("POV-Ray's internal function " + std::to_string(f.internal) +
-                                (f.name.empty() ? std::string() : " (" + f.name + ")") + " is not supported yet");
+    if (f.internal >= 0 && !sg::internal_function_supported(f.internal))
+        throw sg::FunctionError("POV-Ray 3.7 has no internal function " + std::to_string(f.internal) +
+                                (f.name.empty() ? std::string() : " (" + f.name + ")"));
     if (f.pattern && !m_patterns.count(f.pattern.get()))
         m_patterns.emplace(f.pattern.get(), std::make_unique<CompiledPattern>(compile_pattern(*f.pattern, build)));
     if (f.pigment && !m_pigments.count(f.pigment.get()))
