@@ -12,10 +12,11 @@ light_source { <2, 6, -2> color rgb 1.2 spotlight point_at <0, 0, 0> radius 15 f
 background { rgb <0.02, 0.02, 0.05> }
 media { scattering { 1, 0.02 } }
 plane { y, 0 pigment { rgb 0.6 } }
-sphere { <-1.5, 1.2, 0>, 1
+sphere { 0, 1
   pigment { rgbt 1 } finish { ambient 0 diffuse 0 }
   interior { media { emission <1.2, 0.6, 0.2> density { spherical color_map { [0 rgb 0] [1 rgb 1] } } } }
   hollow
+  translate <-1.5, 1.2, 0>  // after the interior: the density moves with the ball
 }
 sphere { <1.4, 1, 0>, 1
   pigment { rgbf <1, 1, 1, 0.9> } finish { ambient 0 diffuse 0 phong 0.5 }

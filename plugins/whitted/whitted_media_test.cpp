@@ -66,11 +66,12 @@ TEST(WhittedMedia, InteriorMediaNeedHollowAsInPovRay) {
 }
 
 TEST(WhittedMedia, AtmosphereFillsTheOpenButNotSolidObjects) {
-    // Scene-level media between the camera and a white wall 4 away.
+    // Scene-level media between the camera and a white wall 4 away (its
+    // normal towards the camera: the camera is outside the plane's solid).
     const std::string open =
         "camera { location <0, 0, -5> look_at <0, 0, 0> }\n"
         "media { absorption 0.25 }\n"
-        "plane { z, -1 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }\n";
+        "plane { -z, 1 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }\n";
     expect_colour(whitted_radiance(open), Color(std::exp(-1.0f)), 1e-5f);
     // A solid transmitting box 1 thick on the way: no atmosphere inside it.
     const std::string with_box =

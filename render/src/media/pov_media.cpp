@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "lancer/shading/local_shading.h"
 #include "lancer/shading/shadow_rays.h"
@@ -61,6 +62,55 @@ float colour_distance(const Color& a, const Color& b) {
     return d.r + d.g + d.b;
 }
 
+// Where along the segment a light can reach: all of it for a point light,
+// the part inside a spotlight's falloff cone (POV's
+// ComputeSpotLightInterval), none when the cone misses it.
+struct LightRange {
+    const Light* light = nullptr;
+    float s0 = 0.0f;
+    float s1 = 0.0f;
+};
+
+bool inside_cone(const PointLightParameters& spot, const Vec3& p) {
+    const Vec3 v = p - spot.position;
+    const float along = glm::dot(v, spot.spot_axis);
+    return along > 0.0f && along >= spot.spot_cos_falloff * glm::length(v);
+}
+
+// The range of [0, length] inside a spotlight's cone: the cone (narrower
+// than a half space) is convex, so the range is one interval, found
+// between the roots of the cone's quadratic along the ray.
+bool spot_range(const PointLightParameters& spot, const Vec3& origin, const Vec3& direction, float length, float& s0,
+                float& s1) {
+    const Vec3 w = origin - spot.position;
+    const float c2 = spot.spot_cos_falloff * spot.spot_cos_falloff;
+    const float da = glm::dot(direction, spot.spot_axis), wa = glm::dot(w, spot.spot_axis);
+    const float a = da * da - c2 * glm::dot(direction, direction);
+    const float b = 2.0f * (da * wa - c2 * glm::dot(direction, w));
+    const float c = wa * wa - c2 * glm::dot(w, w);
+    float cuts[4] = {0.0f, length, 0.0f, 0.0f};
+    int count = 2;
+    const float disc = b * b - 4.0f * a * c;
+    if (std::fabs(a) > 1e-12f && disc >= 0.0f) {
+        const float root = std::sqrt(disc);
+        for (const float t : {(-b - root) / (2.0f * a), (-b + root) / (2.0f * a)})
+            if (t > 0.0f && t < length) cuts[count++] = t;
+    } else if (std::fabs(a) <= 1e-12f && std::fabs(b) > 1e-12f) {
+        const float t = -c / b;
+        if (t > 0.0f && t < length) cuts[count++] = t;
+    }
+    std::sort(cuts, cuts + count);
+    bool found = false;
+    for (int i = 0; i + 1 < count; ++i) {
+        if (!(cuts[i + 1] > cuts[i])) continue;
+        if (!inside_cone(spot, origin + (0.5f * (cuts[i] + cuts[i + 1])) * direction)) continue;
+        if (!found) s0 = cuts[i];
+        s1 = cuts[i + 1];
+        found = true;
+    }
+    return found;
+}
+
 // One sample's values: what it adds (already times the interval length)
 // and its optical depth over the interval.
 struct MediaSample {
@@ -71,23 +121,32 @@ struct MediaSample {
 class SegmentSampler {
   public:
     SegmentSampler(const RenderScene* scene, const MediumRegion& region, const Vec3& origin, const Vec3& direction,
-                   Sampler* sampler)
-        : m_scene(scene), m_region(region), m_origin(origin), m_direction(direction), m_sampler(sampler) {
+                   Sampler* sampler, std::vector<LightRange> lights = {})
+        : m_scene(scene),
+          m_region(region),
+          m_origin(origin),
+          m_direction(direction),
+          m_sampler(sampler),
+          m_lights(std::move(lights)) {
         const MediumSampling& s = region.medium->sampling();
         m_jitter = s.jitter;
         m_aa_threshold = s.aa_threshold;
         m_aa_level = s.aa_level;
     }
 
+    // Whether the interval being sampled is lit (POV skips lights elsewhere).
+    void set_lit(bool lit) { m_lit = lit; }
+
     // The sample at fraction f of the interval [s0, s0 + ds].
     MediaSample sample(float s0, float ds, float f) const {
-        const Vec3 p = m_origin + (s0 + f * ds) * m_direction;
+        const float s = s0 + f * ds;
+        const Vec3 p = m_origin + s * m_direction;
         const MediumPoint c = m_region.medium->at(p, m_region.space);
         MediaSample result;
         result.depth = c.extinction * ds;
         if (m_scene == nullptr) return result;  // a shadow ray: extinction only
         Color added = c.emission;
-        if (!is_black(c.scattering)) added += c.scattering * light_at(p);
+        if (!is_black(c.scattering) && m_lit) added += c.scattering * light_at(p, s);
         result.radiance = added * ds;
         return result;
     }
@@ -132,12 +191,13 @@ class SegmentSampler {
   private:
     // POV's light at a medium sample: each light's colour (POV's units)
     // behind its shadow ray, weighted by the media's k towards the ray.
-    Color light_at(const Vec3& p) const {
+    Color light_at(const Vec3& p, float s) const {
         Hit at;
         at.position = p;
         Color sum(0.0f);
-        for (const Light* light : m_scene->lights()) {
-            if (!light->lights_media()) continue;
+        for (const LightRange& range : m_lights) {
+            if (s < range.s0 || s > range.s1) continue;
+            const Light* light = range.light;
             const Light& stand_in = simple_model_light(*light);
             const LightSample incident = stand_in.sample(p, Vec2(0.5f));
             if (!(incident.pdf > 0.0f) || is_black(incident.radiance)) continue;
@@ -154,6 +214,8 @@ class SegmentSampler {
     Vec3 m_origin;
     Vec3 m_direction;
     Sampler* m_sampler;
+    std::vector<LightRange> m_lights;
+    bool m_lit = false;
     float m_jitter = 0.0f;
     float m_aa_threshold = 0.1f;
     int m_aa_level = 3;
@@ -166,15 +228,81 @@ struct SegmentResult {
     Color depth{0.0f};
 };
 
-SegmentResult sample_segment(const SegmentSampler& sampler, const MediumSampling& settings, bool lit, bool homogeneous,
-                             float length) {
-    const int intervals = (!lit && homogeneous) ? 1 : std::max(1, settings.intervals);
-    const float ds = length / float(intervals);
+// A stretch of the segment, lit by some light or by none.
+struct LitInterval {
+    float s0, s1;
+    bool lit;
+};
+
+// POV's lit intervals (ComputeMediaLightInterval): the lights' ranges,
+// their starts and ends sorted apart, merged where they overlap, with the
+// unlit gaps between.
+std::vector<LitInterval> lit_intervals(const std::vector<LightRange>& lights, float length) {
+    if (lights.empty()) return {LitInterval{0.0f, length, false}};
+    std::vector<float> starts, ends;
+    for (const LightRange& r : lights) {
+        starts.push_back(r.s0);
+        ends.push_back(r.s1);
+    }
+    std::sort(starts.begin(), starts.end());
+    std::sort(ends.begin(), ends.end());
+    std::vector<LitInterval> list;
+    if (starts[0] > 0.0f) list.push_back({0.0f, starts[0], false});
+    list.push_back({starts[0], ends[0], true});
+    for (std::size_t i = 1; i < lights.size(); ++i) {
+        if (starts[i] > list.back().s1) {
+            list.push_back({list.back().s1, starts[i], false});
+            list.push_back({starts[i], ends[i], true});
+        } else if (ends[i] > list.back().s1) {
+            list.back().s1 = ends[i];
+        }
+    }
+    if (list.back().s1 < length) list.push_back({list.back().s1, length, false});
+    return list;
+}
+
+// POV's sampling intervals (ComputeMediaSampleInterval): one when nothing
+// lights a homogeneous medium; else `intervals` spread evenly over one
+// lit interval, or shared among several by `ratio` (lit ones ratio, unlit
+// ones 1 - ratio), each at least one.
+std::vector<LitInterval> sampling_intervals(const std::vector<LitInterval>& lit, const MediumSampling& settings,
+                                            bool homogeneous) {
+    std::vector<LitInterval> out;
+    const std::size_t intervals = std::max<std::size_t>(std::size_t(std::max(1, settings.intervals)), lit.size());
+    if (lit.size() == 1) {
+        const std::size_t n = (!lit[0].lit && homogeneous) ? 1 : intervals;
+        const float delta = (lit[0].s1 - lit[0].s0) / float(n);
+        for (std::size_t i = 0; i < n; ++i)
+            out.push_back({lit[0].s0 + delta * float(i), lit[0].s0 + delta * float(i + 1), lit[0].lit});
+        return out;
+    }
+    double sum = 0.0;
+    for (const LitInterval& l : lit) sum += l.lit ? settings.ratio : 1.0 - settings.ratio;
+    std::size_t remaining = intervals;
+    for (std::size_t i = 0; i < lit.size(); ++i) {
+        const double weight = lit[i].lit ? settings.ratio : 1.0 - settings.ratio;
+        std::size_t n = std::size_t(weight / sum * double(intervals)) + 1;
+        const std::size_t most = remaining - lit.size() + i + 1;
+        if (n > most) n = most;
+        const float delta = (lit[i].s1 - lit[i].s0) / float(n);
+        for (std::size_t j = 0; j < n; ++j)
+            out.push_back({lit[i].s0 + delta * float(j), lit[i].s0 + delta * float(j + 1), lit[i].lit});
+        remaining -= n;
+    }
+    return out;
+}
+
+SegmentResult sample_segment(SegmentSampler& sampler, const MediumSampling& settings,
+                             const std::vector<LightRange>& lights, bool homogeneous, float length) {
+    const std::vector<LitInterval> intervals = sampling_intervals(lit_intervals(lights, length), settings, homogeneous);
     const int count = std::max(2, settings.samples_min / 2 + 1);
     const float step = 1.0f / float(count + 1);  // POV's spacing (see the file comment)
     SegmentResult total;
-    for (int i = 0; i < intervals; ++i) {
-        const float s0 = float(i) * ds;
+    for (const LitInterval& interval : intervals) {
+        const float s0 = interval.s0;
+        const float ds = interval.s1 - interval.s0;
+        if (!(ds > 0.0f)) continue;
+        sampler.set_lit(interval.lit);
         Color interval_added(0.0f), interval_depth(0.0f);
         MediaSample previous = sampler.sample(s0, ds, step * sampler.jitter());
         float f = step;
@@ -197,10 +325,19 @@ Color pov_media_radiance(const RenderScene& scene, const MediumRegion& region, c
                          const Vec3& direction, float length, const Color& behind, Sampler& sampler) {
     if (!region || !(length > 0.0f)) return behind;
     const Medium& medium = *region.medium;
-    const SegmentSampler segment(&scene, region, origin, direction, &sampler);
-    const bool lit = std::any_of(scene.lights().begin(), scene.lights().end(),
-                                 [](const Light* light) { return light->lights_media(); });
-    const SegmentResult result = sample_segment(segment, medium.sampling(), lit, medium.homogeneous(), length);
+    // Where each light that lights media reaches along the segment.
+    std::vector<LightRange> lights;
+    for (const Light* light : scene.lights()) {
+        if (!light->lights_media()) continue;
+        LightRange range{light, 0.0f, length};
+        const PointLightParameters* point = simple_model_light(*light).parameters<PointLightParameters>();
+        if (point && point->spot_axis != Vec3(0.0f) &&
+            !spot_range(*point, origin, direction, length, range.s0, range.s1))
+            continue;
+        lights.push_back(range);
+    }
+    SegmentSampler segment(&scene, region, origin, direction, &sampler, lights);
+    const SegmentResult result = sample_segment(segment, medium.sampling(), lights, medium.homogeneous(), length);
     return behind * glm::exp(-result.depth) + result.added;
 }
 
@@ -209,8 +346,8 @@ Color pov_media_optical_depth(const MediumRegion& region, const Vec3& origin, co
     const Medium& medium = *region.medium;
     // POV samples constant media on a shadow ray the regular way: exact.
     if (medium.homogeneous()) return medium.constant().extinction * length;
-    const SegmentSampler segment(nullptr, region, origin, direction, nullptr);
-    return sample_segment(segment, medium.sampling(), false, false, length).depth;
+    SegmentSampler segment(nullptr, region, origin, direction, nullptr);
+    return sample_segment(segment, medium.sampling(), {}, false, length).depth;
 }
 
 }  // namespace lancer
