@@ -1678,6 +1678,12 @@ param_name
   | "gamma"            { $$ = "gamma"; }
   | "max_trace_level"  { $$ = "max_trace_level"; }
   | "adc_bailout"      { $$ = "adc_bailout"; }
+  /* media's words, common as settings' names */
+  | "samples"          { $$ = "samples"; }
+  | "method"           { $$ = "method"; }
+  | "ratio"            { $$ = "ratio"; }
+  | "intervals"        { $$ = "intervals"; }
+  | "density"          { $$ = "density"; }
   ;
 
 %%
