@@ -44,6 +44,10 @@ namespace lancer::parse {
 
 // Pattern and light transforms, shared by grammar actions and objects.cpp.
 void transform_pattern(sg::Pigment& pigment, const sg::Mat4& world_from_local);
+// POV's hollow: on a CSG or union, every part is hollow too (Set_CSG_Children_Flag).
+void set_hollow(sg::Object& object, bool hollow);
+// A transform written in a media block: moves the densities given before it (POV's Transform_Density).
+void transform_densities(sg::Media& media, const sg::Mat4& world_from_local);
 void transform_normal(sg::Normal& normal, const sg::Mat4& world_from_local);
 void transform_material(sg::Material& material, const sg::Mat4& world_from_local);
 // Re-expresses every pattern of a material (pigments, normals, nested
@@ -259,6 +263,19 @@ class Evaluator {
     std::shared_ptr<sg::Pigment> build_pigment(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);
     std::shared_ptr<sg::Finish> build_finish(const Edits<sg::Finish>& edits, const sg::SourceLocation& at);
     std::shared_ptr<sg::Interior> build_interior(const Edits<sg::Interior>& edits, const sg::SourceLocation& at);
+
+    // ---- media (media.cpp)
+    std::shared_ptr<sg::Media> build_media(const Edits<sg::Media>& edits, const sg::SourceLocation& at);
+    // A density is a pigment whose pattern without a map reads as grey, its value.
+    std::shared_ptr<sg::Pigment> build_density(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);
+    std::function<void(sg::Media&)> media_scattering(const Value& type, const SourceRange& type_at, const Value& colour,
+                                                     const SourceRange& colour_at, const Edits<sg::Media>& options);
+    std::function<void(sg::Media&)> media_integer(const std::string& name, const Value& v, const SourceRange& where,
+                                                  int lowest, int highest);
+    std::function<void(sg::Media&)> media_real(const std::string& name, const Value& v, const SourceRange& where,
+                                               double lowest, double highest);
+    std::function<void(sg::Media&)> media_samples(const Value& min, const SourceRange& min_at, const Value& max,
+                                                  const SourceRange& max_at);
     void finish_image_map(sg::ImageMap& image, const sg::SourceLocation& at);
     sg::MapType map_type(const Value& v, const SourceRange& where);
     std::function<void(sg::Finish&)> finish_scalar(const std::string& name, bool albedo, const Value& v,

@@ -53,7 +53,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        PIGMENT_MAP_ID "pigment_map identifier" NORMAL_MAP_ID "normal_map identifier"
        INTERIOR_ID "interior identifier" CAMERA_ID "camera identifier"
        LIGHT_ID "light_source identifier" TRANSFORM_ID "transform identifier"
-       FUNCTION_LITERAL "function definition" FUNCTION_ID "function identifier" SPLINE_ID "spline identifier"
+       FUNCTION_LITERAL "function definition" FUNCTION_ID "function identifier" SPLINE_ID "spline identifier" MEDIA_ID "media identifier"
        UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" FUNCTION_OPEN "function {"
        UNSUPPORTED "unsupported keyword"
 
@@ -133,6 +133,9 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        MAX_TRACE "max_trace" ALL_INTERSECTIONS "all_intersections"
        TRACE "trace" INSIDE "inside" MIN_EXTENT "min_extent" MAX_EXTENT "max_extent"
        SPLINE "spline" NATURAL_SPLINE "natural_spline"
+       MEDIA "media" ABSORPTION "absorption" SCATTERING "scattering" ECCENTRICITY "eccentricity"
+       EXTINCTION "extinction" DENSITY "density" METHOD "method" INTERVALS "intervals" SAMPLES "samples"
+       RATIO "ratio" AA_LEVEL "aa_level" AA_THRESHOLD "aa_threshold" COLLECT "collect" DENSITY_MAP "density_map"
 
 %nterm <Value> declared_non_scalar declared_identifier array_scalar expr arith postfix primary colour colour_base declared_value string_value bare_colour
 %nterm <std::vector<Value>> arith_seq mesh2_items expr_list opt_args vector_items macro_args macro_arg_list macro_arg_list_plain macro_arg_list_object
@@ -157,6 +160,9 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::function<void(sg::Finish&)>> finish_item reflection_item
 %nterm <std::shared_ptr<sg::Interior>> interior
 %nterm <Edits<sg::Interior>> interior_items
+%nterm <std::shared_ptr<sg::Media>> media
+%nterm <Edits<sg::Media>> media_items scattering_items
+%nterm <std::function<void(sg::Media&)>> media_item
 %nterm <sg::Light> light
 %nterm <Edits<sg::Light>> light_items
 %nterm <std::function<void(sg::Light&)>> light_item
@@ -202,7 +208,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <sg::ColorMapRef> color_map color_map_body
 %nterm <std::vector<std::pair<Value, std::vector<Value>>>> color_map_entries
 %nterm <std::vector<Value>> colour_seq
-%nterm <std::shared_ptr<std::vector<sg::PigmentMapEntry>>> pigment_map pigment_map_entries
+%nterm <std::shared_ptr<std::vector<sg::PigmentMapEntry>>> pigment_map pigment_map_entries density_map_entries
 %nterm <std::shared_ptr<sg::Pigment>> pigment_body
 %nterm <sg::NormalRef> normal normal_body
 %nterm <std::vector<sg::NormalRef>> block_normals
@@ -303,6 +309,7 @@ scene_item
   | light              { ev.add_light($1, sg::Mat4(1.0)); }
   | camera             { ev.set_camera($1); }
   | "background" "{" colour "}"   { ev.scene().background = ev.to_color($3, @3).rgb; }
+  | media              { ev.scene().atmosphere.push_back(*$1); }
   | "global_settings" "{" global_items "}"
   | "render_settings" "{" render_items "}" { ev.scene().render.location = LOC(@1); }
   | ";"                { ev.warning(LOC(@1), "stray ';' ignored"); }
@@ -320,6 +327,8 @@ declared_non_scalar
   | pigment            { $$.kind = Value::Kind::Pigment; $$.pigment = $1; }
   | finish             { $$.kind = Value::Kind::Finish; $$.finish = $1; }
   | interior           { $$.kind = Value::Kind::Interior; $$.interior = $1; }
+  | media              { $$.kind = Value::Kind::Media; $$.media = $1; }
+  | "density" "{" pigment_edits "}" { $$.kind = Value::Kind::Pigment; $$.pigment = ev.build_density($3, LOC(@1)); }
   | material           { $$.kind = Value::Kind::Texture; $$.texture = $1; }
   | camera             { $$.kind = Value::Kind::Camera; $$.camera = std::make_shared<CameraSpec>($1); }
   | light              { $$.kind = Value::Kind::Light; $$.light = std::make_shared<sg::Light>($1); }
@@ -473,8 +482,7 @@ object_mod
   | interior           { $$ = ev.interior_edit($1); }
   | material           { $$ = ev.material_edit($1); }
   | "no_shadow"        { $$ = [](ShapeValue& s) { s.object.no_shadow = true; }; }
-  | "hollow" opt_bool  { bool on = $2; $$ = [on](ShapeValue& s) { s.object.hollow = on; };
-                         ev.warning(LOC(@1), "hollow is recorded but has no effect (lancer has no media)"); }
+  | "hollow" opt_bool  { bool on = $2; $$ = [on](ShapeValue& s) { set_hollow(s.object, on); }; }
   | "double_illuminate" { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "double_illuminate"); }
   | "no_image"         { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_image"); }
   | "no_reflection"    { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_reflection"); }
@@ -1064,6 +1072,17 @@ colour_seq
 pigment_map
   : "pigment_map" "{" PIGMENT_MAP_ID "}" { $$ = std::make_shared<std::vector<sg::PigmentMapEntry>>(*$3.value.pigment_map); }
   | "pigment_map" "{" pigment_map_entries "}" { $$ = $3; }
+  /* A density's map of densities (POV's density_map): a pigment_map of them. */
+  | "density_map" "{" density_map_entries "}" { $$ = $3; }
+  ;
+
+density_map_entries
+  : %empty             { $$ = std::make_shared<std::vector<sg::PigmentMapEntry>>(); }
+  | density_map_entries "[" arith opt_comma "density" "{" pigment_edits "}" "]"
+      { $$ = $1; $$->push_back(sg::PigmentMapEntry{ev.to_float($3, @3, "a map value"), ev.build_density($7, LOC(@5))}); }
+  /* A declared density (#declare D = density { … }) as the entry. */
+  | density_map_entries "[" arith opt_comma PIGMENT_ID "]"
+      { $$ = $1; $$->push_back(sg::PigmentMapEntry{ev.to_float($3, @3, "a map value"), $5.value.pigment}); }
   ;
 
 pigment_map_entries
@@ -1298,6 +1317,51 @@ interior_items
                                          $$.push_back([c](sg::Interior& i) { i.fade_color = c; }); }
   | interior_items "fade_colour" colour { $$ = std::move($1); sg::Vec3 c = ev.to_color($3, @3).rgb;
                                           $$.push_back([c](sg::Interior& i) { i.fade_color = c; }); }
+  | interior_items media { $$ = std::move($1); sg::Media m = *$2;
+                           $$.push_back([m](sg::Interior& i) { i.media.push_back(m); }); }
+  ;
+
+/* ------------------------------------------------------------------- media */
+
+/* POV's media block (scene_media.h); a declared media first, then edits. */
+media
+  : "media" "{" media_items "}" { $$ = ev.build_media($3, LOC(@1)); }
+  ;
+
+media_items
+  : %empty             {}
+  | media_items MEDIA_ID { $$ = std::move($1); auto m = $2.value.media;
+                           $$.push_back([m](sg::Media& target) { target = *m; }); }
+  | media_items media_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+media_item
+  : "emission" colour  { sg::Vec3 c = ev.to_color($2, @2).rgb; $$ = [c](sg::Media& m) { m.emission = c; }; }
+  | "absorption" colour { sg::Vec3 c = ev.to_color($2, @2).rgb; $$ = [c](sg::Media& m) { m.absorption = c; }; }
+  | "scattering" "{" expr "," colour scattering_items "}" { $$ = ev.media_scattering($3, @3, $5, @5, $6); }
+  | "density" "{" pigment_edits "}" { auto d = ev.build_density($3, LOC(@1));
+                                      $$ = [d](sg::Media& m) { m.densities.push_back(d); }; }
+  | "method" expr      { $$ = ev.media_integer("method", $2, @2, 1, 3); }
+  | "intervals" expr   { $$ = ev.media_integer("intervals", $2, @2, 1, 1 << 20); }
+  | "samples" expr     { $$ = ev.media_samples($2, @2, $2, @2); }
+  | "samples" expr "," expr { $$ = ev.media_samples($2, @2, $4, @4); }
+  | "confidence" expr  { $$ = ev.media_real("confidence", $2, @2, 0.0, 1.0); }
+  | "variance" expr    { $$ = ev.media_real("variance", $2, @2, 0.0, 1e30); }
+  | "ratio" expr       { $$ = ev.media_real("ratio", $2, @2, 0.0, 1.0); }
+  | "aa_level" expr    { $$ = ev.media_integer("aa_level", $2, @2, 1, 16); }
+  | "aa_threshold" expr { $$ = ev.media_real("aa_threshold", $2, @2, 0.0, 1e30); }
+  | "jitter" expr      { $$ = ev.media_real("jitter", $2, @2, 0.0, 1e30); }
+  | "collect" opt_bool { $$ = [](sg::Media&) {}; ev.ignored(LOC(@1), "collect (photons)"); }
+  | transform_item     { sg::Mat4 t = $1; $$ = [t](sg::Media& m) { transform_densities(m, t); }; }
+  ;
+
+/* After scattering's type and colour: eccentricity (type 5) and extinction. */
+scattering_items
+  : %empty             {}
+  | scattering_items "eccentricity" expr { $$ = std::move($1); double g = ev.to_float($3, @3, "an eccentricity");
+                                           $$.push_back([g](sg::Media& m) { m.eccentricity = g; }); }
+  | scattering_items "extinction" expr { $$ = std::move($1); double e = ev.to_float($3, @3, "an extinction");
+                                         $$.push_back([e](sg::Media& m) { m.extinction = e; }); }
   ;
 
 /* ----------------------------------------------------------------- colours */
@@ -1537,8 +1601,8 @@ light_item
   | "fade_power" expr  { double p = ev.to_float($2, @2); $$ = [p](sg::Light& l) { l.fade_power = p; }; }
   | "shadowless"       { $$ = [](sg::Light& l) { l.shadowless = true; }; }
   | "area_illumination" opt_bool { bool on = $2; $$ = [on](sg::Light& l) { l.area_illumination = on; }; }
-  | "media_interaction" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "media_interaction"); }
-  | "media_attenuation" opt_bool { $$ = [](sg::Light&) {}; ev.ignored(LOC(@1), "media_attenuation"); }
+  | "media_interaction" opt_bool { bool on = $2; $$ = [on](sg::Light& l) { l.media_interaction = on; }; }
+  | "media_attenuation" opt_bool { bool on = $2; $$ = [on](sg::Light& l) { l.media_attenuation = on; }; }
   | "looks_like" "{" object_ref object_mods "}" { $$ = ev.looks_like($3, $4); }
   | "projected_through" "{" object_ref object_mods "}" { $$ = ev.projected_through($3, $4); }
   | "spotlight"        { $$ = [](sg::Light& l) { l.spotlight = true; l.cylinder = false; l.spot_radius = 30.0; l.spot_falloff = 45.0; l.tightness = 0.0; }; }
@@ -1668,6 +1732,12 @@ param_name
   | "gamma"            { $$ = "gamma"; }
   | "max_trace_level"  { $$ = "max_trace_level"; }
   | "adc_bailout"      { $$ = "adc_bailout"; }
+  /* media's words, common as settings' names */
+  | "samples"          { $$ = "samples"; }
+  | "method"           { $$ = "method"; }
+  | "ratio"            { $$ = "ratio"; }
+  | "intervals"        { $$ = "intervals"; }
+  | "density"          { $$ = "density"; }
   ;
 
 %%

@@ -22,7 +22,10 @@ using MaterialPtr = std::shared_ptr<const sg::Material>;
 
 // Re-expresses a material given in the parent's space in a child's space.
 MaterialPtr in_child_space(const MaterialPtr& material, const sg::Mat4& parent_from_child) {
-    if (material->pigment.kind == sg::Pigment::Kind::Solid && !material->normal) return material;  // nothing to move
+    const bool has_densities = std::any_of(material->interior.media.begin(), material->interior.media.end(),
+                                           [](const sg::Media& m) { return !m.densities.empty(); });
+    if (material->pigment.kind == sg::Pigment::Kind::Solid && !material->normal && !has_densities)
+        return material;  // nothing to move
     auto moved = std::make_shared<sg::Material>(*material);
     move_patterns(*moved, parent_from_child);
     return moved;

@@ -158,6 +158,14 @@ void transform_pattern(sg::Pigment& pigment, const sg::Mat4& world_from_local) {
     move_pigment(pigment, glm::inverse(world_from_local));
 }
 
+void transform_densities(sg::Media& media, const sg::Mat4& world_from_local) {
+    for (auto& density : media.densities) {
+        auto moved = std::make_shared<sg::Pigment>(*density);
+        transform_pattern(*moved, world_from_local);
+        density = moved;
+    }
+}
+
 void transform_normal(sg::Normal& normal, const sg::Mat4& world_from_local) {
     move_normal(normal, glm::inverse(world_from_local));
 }
@@ -168,6 +176,13 @@ void transform_material(sg::Material& material, const sg::Mat4& world_from_local
 
 void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer, bool object_move) {
     move_pigment(material.pigment, inner_from_outer, object_move);
+    // Interior media's densities move with the object, as its pigment does.
+    for (sg::Media& media : material.interior.media)
+        for (auto& density : media.densities) {
+            auto moved = std::make_shared<sg::Pigment>(*density);
+            move_pigment(*moved, inner_from_outer, object_move);
+            density = moved;
+        }
     material.normal = moved_normal(material.normal, inner_from_outer, object_move);
     // A patterned texture's entries live in its pattern space: only the
     // pattern moves. Layers are whole textures of their own: each moves.
@@ -703,6 +718,19 @@ std::shared_ptr<sg::Pigment> Evaluator::build_pigment(const Edits<sg::Pigment>& 
     for (const auto& edit : edits) edit(*pigment);
     settle_pigment(*pigment, at);
     return pigment;
+}
+
+// POV's density: a pattern without a map reads as its value in grey (the
+// pigment defaults of bozo, wood … do not apply), densities being factors.
+std::shared_ptr<sg::Pigment> Evaluator::build_density(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at) {
+    auto density = std::make_shared<sg::Pigment>();
+    density->color = sg::Color{sg::Vec3(1.0)};  // an empty density is 1: it changes nothing
+    for (const auto& edit : edits) edit(*density);
+    if (density->kind == sg::Pigment::Kind::Patterned && !is_block_pattern(density->pattern.kind) &&
+        !density->color_map && density->pigment_map.empty())
+        density->color_map = default_color_map(PatternKind::Gradient);
+    settle_pigment(*density, at);
+    return density;
 }
 
 void Evaluator::settle_pigment(sg::Pigment& settled, const sg::SourceLocation& at) {

@@ -98,7 +98,8 @@ struct Value {
         Function,
         Array,
         File,
-        Spline
+        Spline,
+        Media
     };
     Kind kind = Kind::Float;
     // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
@@ -111,6 +112,7 @@ struct Value {
     std::shared_ptr<const sg::Pigment> pigment;
     std::shared_ptr<const sg::Finish> finish;
     std::shared_ptr<const sg::Interior> interior;
+    std::shared_ptr<const sg::Media> media;
     std::shared_ptr<const CameraSpec> camera;
     std::shared_ptr<const sg::Light> light;
     sg::NormalRef normal;

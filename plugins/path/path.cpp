@@ -41,6 +41,7 @@
 
 #include <lancer/integrator.h>
 #include <lancer/shading/bsdf_sampling.h>
+#include <lancer/shading/volume_tracking.h>
 
 namespace {
 
@@ -120,12 +121,48 @@ class PathIntegrator final : public Integrator {
         bool delta_bounce = true;   // the camera counts as a delta event
         float previous_pdf = 0.0f;  // solid-angle density of the last BSDF sample
         Vec3 previous_point(0.0f);
+        InteriorStack inside;  // objects the path is in (media only)
 
         for (int depth = 0;; ++depth) {
             Hit hit;
             // The host traced the camera ray; the path traces the rest.
             const bool found = depth == 0 ? camera_hit != nullptr : scene.intersect(ray, hit);
             if (depth == 0 && found) hit = *camera_hit;
+            // Participating media on the stretch to the hit (a scene
+            // without media skips this): emission, attenuation, and
+            // perhaps a scattering that continues the path from inside.
+            if (scene.has_media()) {
+                const SegmentMedia media = media_before(scene, ray, found ? &hit : nullptr, inside);
+                if (!media.empty()) {
+                    const float length = found ? hit.t : kMediaEscapeDistance;
+                    const MediumInteraction event = track_segment(media, ray.origin, ray.direction, length, sampler);
+                    radiance += throughput * event.emitted;
+                    throughput *= event.weight;
+                    if (is_black(throughput)) break;
+                    if (event.scattered) {
+                        if (depth >= max_depth) break;
+                        const float u_light = sampler.next_1d();
+                        const Vec2 u_light_point = sampler.next_2d();
+                        radiance += throughput *
+                                    medium_direct_light(scene, event, ray.direction, u_light, u_light_point, sampler);
+                        const float u_choice = sampler.next_1d();
+                        const Vec2 u_direction = sampler.next_2d();
+                        const float u_roulette = sampler.next_1d();
+                        // The phase is sampled exactly: its weight is 1.
+                        const Vec3 wi = event.medium->sample_phase(ray.direction, u_choice, u_direction);
+                        delta_bounce = false;
+                        previous_pdf = event.medium->phase_pdf(glm::dot(ray.direction, wi));
+                        previous_point = event.point;
+                        ray = Ray{event.point, wi};
+                        if (depth + 1 >= m_settings.rr_depth) {
+                            const float survive = std::min(1.0f, max_component(throughput) / radiance_scale);
+                            if (!(survive > 0.0f) || u_roulette >= survive) break;
+                            throughput /= survive;
+                        }
+                        continue;
+                    }
+                }
+            }
             if (!found) {
                 radiance += throughput * scene.background(ray);
                 break;
@@ -180,9 +217,17 @@ class PathIntegrator final : public Integrator {
             if (!scattered.valid()) break;
             throughput *= scattered.weight;
             radiance_scale *= transmission_scale(hit, wo, scattered, material);
-            delta_bounce = scattered.is_delta;
-            previous_pdf = scattered.pdf;
-            previous_point = hit.position;
+            // With media, light is connected through index-matched surfaces
+            // (shadow_transmittance): a ray passing one straight keeps the
+            // sampling record of the vertex before it, for MIS.
+            const bool passes_straight = scene.has_media() && scattered.is_transmission && scattered.is_delta &&
+                                         std::abs(material.parameters().ior - 1.0f) < 1e-6f;
+            if (scene.has_media() && scattered.is_transmission) inside = inside.crossed(hit, hit.is_front_face(wo));
+            if (!passes_straight) {
+                delta_bounce = scattered.is_delta;
+                previous_pdf = scattered.pdf;
+                previous_point = hit.position;
+            }
             ray = hit.spawn_ray(scattered.wi);
 
             // Russian roulette on the throughput without the interface
@@ -227,12 +272,51 @@ class PathIntegrator final : public Integrator {
     // lobes of `bsdf`, MIS-weighted against BSDF sampling.
     Color direct_light(const RenderScene& scene, const Hit& hit, const Bsdf& bsdf, float u_light, const Vec2& u_point,
                        Sampler& sampler) const {
+        return for_chosen_lights(scene, u_light, u_point, sampler,
+                                 [&](const Light& light, float selection, const Vec2& u) {
+                                     return light_contribution(scene, hit, bsdf, light, selection, u, sampler);
+                                 });
+    }
+
+    // Light scattered towards -direction at a medium point, MIS-weighted
+    // against phase sampling; through media and index-matched surfaces.
+    Color medium_direct_light(const RenderScene& scene, const MediumInteraction& at, const Vec3& direction,
+                              float u_light, const Vec2& u_point, Sampler& sampler) const {
+        return for_chosen_lights(
+            scene, u_light, u_point, sampler, [&](const Light& light, float selection, const Vec2& u) {
+                const bool delta = light.is_delta();
+                if (!delta && m_settings.strategy == Strategy::Bsdf) return Color(0.0f);
+                if (!light.lights_media()) return Color(0.0f);  // POV's media_interaction off
+                const LightSample incident = light.sample(at.point, u);
+                if (!(incident.pdf > 0.0f) || is_black(incident.radiance)) return Color(0.0f);
+                const float phase = at.medium->phase_pdf(glm::dot(direction, incident.wi));
+                if (!(phase > 0.0f)) return Color(0.0f);
+                Color visible(1.0f);
+                if (light.casts_shadows()) {
+                    Hit from;
+                    from.position = at.point;
+                    visible = shadow_transmittance(scene, from.spawn_ray_to(incident.point), &light, sampler);
+                    if (is_black(visible)) return Color(0.0f);
+                }
+                const float light_pdf = selection * incident.pdf;
+                float weight = 1.0f;
+                if (!incident.is_delta && m_settings.strategy == Strategy::Mis)
+                    weight = power_heuristic(light_pdf, phase);
+                return phase * incident.radiance * visible * (weight / light_pdf);
+            });
+    }
+
+    // Sums contribution(light, selection probability, u) over the lights
+    // NEE picks: one by the selection distribution, or every one.
+    template <class Contribution>
+    Color for_chosen_lights(const RenderScene& scene, float u_light, const Vec2& u_point, Sampler& sampler,
+                            const Contribution& contribution) const {
         const std::vector<const Light*>& lights = scene.lights();
         if (lights.empty()) return Color(0.0f);
         if (m_settings.light_selection == LightSelection::All) {
             Color sum(0.0f);
             for (std::size_t i = 0; i < lights.size(); ++i)
-                sum += light_contribution(scene, hit, bsdf, *lights[i], 1.0f, i == 0 ? u_point : sampler.next_2d());
+                sum += contribution(*lights[i], 1.0f, i == 0 ? u_point : sampler.next_2d());
             return sum;
         }
         // One light, chosen by the selection distribution.
@@ -248,23 +332,33 @@ class PathIntegrator final : public Integrator {
             probability = 1.0f / float(lights.size());
         }
         if (!(probability > 0.0f)) return Color(0.0f);
-        return light_contribution(scene, hit, bsdf, *lights[index], probability, u_point);
+        return contribution(*lights[index], probability, u_point);
     }
 
     Color light_contribution(const RenderScene& scene, const Hit& hit, const Bsdf& bsdf, const Light& light,
-                             float selection, const Vec2& u) const {
+                             float selection, const Vec2& u, Sampler& sampler) const {
         const bool delta = light.is_delta();
         if (!delta && m_settings.strategy == Strategy::Bsdf) return Color(0.0f);
         const LightSample incident = light.sample(hit.position, u);
         if (!(incident.pdf > 0.0f) || is_black(incident.radiance)) return Color(0.0f);
         const Color f = bsdf.eval(incident.wi);
         if (is_black(f)) return Color(0.0f);
-        if (light.casts_shadows() && scene.occluded(hit.spawn_ray_to(incident.point))) return Color(0.0f);
+        Color visible(1.0f);
+        if (light.casts_shadows()) {
+            // With media, the light comes through them (and through
+            // index-matched surfaces); without, any surface blocks it.
+            const Ray shadow = hit.spawn_ray_to(incident.point);
+            if (scene.has_media())
+                visible = shadow_transmittance(scene, shadow, &light, sampler);
+            else if (scene.occluded(shadow))
+                return Color(0.0f);
+            if (is_black(visible)) return Color(0.0f);
+        }
         const float light_pdf = selection * incident.pdf;
         float weight = 1.0f;
         if (!incident.is_delta && m_settings.strategy == Strategy::Mis)
             weight = power_heuristic(light_pdf, bsdf.pdf(incident.wi));
-        return f * incident.radiance * (weight / light_pdf);
+        return f * incident.radiance * visible * (weight / light_pdf);
     }
 
     PathSettings m_settings;

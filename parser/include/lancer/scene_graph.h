@@ -40,6 +40,12 @@ struct Color {
     double transmit = 0.0;  // fraction of light passing through untinted
 };
 
+}  // namespace lancer::sg
+
+#include "lancer/scene_media.h"
+
+namespace lancer::sg {
+
 // ---------------------------------------------------------------- textures
 
 enum class ImageFormat { Png, Jpeg, Exr, Hdr, Tga, Tiff, Unknown };
@@ -366,6 +372,9 @@ struct Interior {
     double fade_distance = 0.0;
     double fade_power = 0.0;
     Vec3 fade_color{0.0};
+    // POV's media in the interior; seen only when the object is `hollow`,
+    // as in POV-Ray (scene_media.h).
+    std::vector<Media> media;
     SourceLocation location;
 };
 
@@ -755,7 +764,9 @@ struct Light {
     double fade_distance = 0.0;
     double fade_power = 0.0;
     bool parallel = false;
-    bool shadowless = false;  // POV's shadowless: lights what faces it, through anything
+    bool shadowless = false;         // POV's shadowless: lights what faces it, through anything
+    bool media_interaction = true;   // participating media scatter this light
+    bool media_attenuation = false;  // the atmosphere dims it on its way to surfaces (classic integrators)
     // POV's spotlight: a point light whose light narrows to a cone about
     // point_at. Angles in degrees from the axis (POV's defaults); tightness
     // raises the cone's cosine to a power.
@@ -895,6 +906,7 @@ struct SceneGraph {
     std::vector<Light> lights;
     std::vector<Object> objects;
     Vec3 background{0.0};
+    std::vector<Media> atmosphere;  // scene-level media: fill the open, hollow objects included
     GlobalSettings global;
     RenderSettings render;
     std::string main_file;  // the scene file's path

@@ -53,6 +53,16 @@ class Light {
     // them and no shadow ray is cast towards them.
     bool casts_shadows() const { return m_casts_shadows; }
     void set_casts_shadows(bool casts) { m_casts_shadows = casts; }
+    // POV's media_interaction (on by default): whether participating media
+    // scatter this light. POV's media_attenuation (off by default): whether
+    // the classic integrators dim it by the atmosphere on its way to a
+    // surface (`path` always does, physically).
+    bool lights_media() const { return m_lights_media; }
+    bool dimmed_by_atmosphere() const { return m_dimmed_by_atmosphere; }
+    void set_media_interaction(bool lights_media, bool dimmed_by_atmosphere) {
+        m_lights_media = lights_media;
+        m_dimmed_by_atmosphere = dimmed_by_atmosphere;
+    }
 
     // The point or directional light that stands in for this one in the
     // seed's simple local model (raycast, shadow, gather). Point and
@@ -80,6 +90,8 @@ class Light {
 
   private:
     bool m_casts_shadows = true;
+    bool m_lights_media = true;
+    bool m_dimmed_by_atmosphere = false;
 };
 
 // How a point light's radiance changes with distance when it has no fade.

@@ -31,6 +31,8 @@
 
 namespace lancer {
 
+class Medium;
+
 // Everything a material needs to know about one hit, with the pigment
 // already looked up.
 struct SurfaceSample {
@@ -91,6 +93,11 @@ struct MaterialParameters {
     float fade_distance = 0.0f;
     float fade_power = 0.0f;
     Color fade_color{0.0f};
+    // POV's `hollow` on the object (the atmosphere fills it) and its
+    // interior's media, kept only for a hollow object as POV shows them
+    // (lancer/medium.h); null: none.
+    bool hollow = false;
+    const Medium* medium = nullptr;
 };
 
 // The share of light a highlight of peak 1 reflects at normal incidence

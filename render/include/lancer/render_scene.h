@@ -12,6 +12,7 @@
 #include "lancer/hit.h"
 #include "lancer/light.h"
 #include "lancer/material.h"
+#include "lancer/medium.h"
 
 namespace lancer {
 
@@ -59,6 +60,12 @@ class RenderScene {
     virtual Color background(const Ray& ray) const = 0;
     virtual const SceneOptions& options() const = 0;
     virtual Bounds bounds() const = 0;  // of all finite geometry
+
+    // Participating media (lancer/medium.h): whether any object's interior
+    // or the scene has media (false: no integrator looks for them), and the
+    // scene-level medium, the atmosphere (empty region: none).
+    virtual bool has_media() const { return false; }
+    virtual MediumRegion atmosphere() const { return {}; }
 };
 
 }  // namespace lancer

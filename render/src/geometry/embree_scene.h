@@ -118,6 +118,8 @@ class EmbreeScene final : public RenderScene {
     Color background(const Ray&) const override { return m_data->background; }
     const SceneOptions& options() const override { return m_data->options; }
     Bounds bounds() const override { return m_data->bounds; }
+    bool has_media() const override { return m_data->has_media; }
+    MediumRegion atmosphere() const override { return m_data->atmosphere; }
     // The tables the scene was built from (for the host's own reports).
     const SceneData& data() const { return *m_data; }
 

@@ -79,6 +79,10 @@ struct SceneData {
     std::vector<std::unique_ptr<NormalPerturbation>> normals;  // a scene without normal { } pays nothing
     bool has_normal_perturbation = false;
     std::vector<std::unique_ptr<Material>> materials;
+    // Participating media: interiors' (of hollow objects) and the atmosphere's.
+    std::vector<std::unique_ptr<Medium>> media;
+    MediumRegion atmosphere;
+    bool has_media = false;
     std::vector<std::unique_ptr<Light>> owned_lights;
     std::vector<const Light*> lights;
     std::vector<const Light*> local_lights;

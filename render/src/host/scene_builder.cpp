@@ -53,6 +53,27 @@ MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment, 
     return p;
 }
 
+// Per channel, the largest value a density pigment takes: a colour map
+// clamps its index, so its entries bound it; 1 for an image (and anything
+// whose values lancer cannot bound: `path` then clamps, docs/integrators.md).
+Color density_bound(const sg::Pigment& p) {
+    Color bound(0.0f);
+    switch (p.kind) {
+    case sg::Pigment::Kind::Solid: return glm::max(Color(p.color.rgb), Color(0.0f));
+    case sg::Pigment::Kind::Image: return Color(1.0f);
+    case sg::Pigment::Kind::Patterned:
+    case sg::Pigment::Kind::Average:
+        if (p.color_map)
+            for (const auto& entry : *p.color_map) bound = glm::max(bound, Color(entry.color.rgb));
+        for (const auto& entry : p.pigment_map)
+            if (entry.pigment) bound = glm::max(bound, density_bound(*entry.pigment));
+        for (const auto& block : p.block_pigments)
+            if (block) bound = glm::max(bound, density_bound(*block));
+        return bound;
+    }
+    return Color(1.0f);
+}
+
 void expand(Bounds& b, const Vec3& lower, const Vec3& upper) {
     b.lower = glm::min(b.lower, lower);
     b.upper = glm::max(b.upper, upper);
@@ -98,6 +119,7 @@ class Builder {
         compute_bounds();
         add_sg_lights();
         take_mesh_hit_data();
+        build_atmosphere();
         if (inside_of_first && !m_graph.objects.empty()) *inside_of_first = inside_test(m_graph.objects.front());
         // The maker refers to this builder, which ends here.
         m_data->texture_factory->set_inside_tests(nullptr);
@@ -146,16 +168,18 @@ class Builder {
         return m_default_material;
     }
 
-    const Material* material_for(const sg::MaterialRef& ref) {
+    // One material per written material and hollow flag: POV's `hollow` is
+    // the object's, but what a ray inside sees (media) depends on it.
+    const Material* material_for(const sg::MaterialRef& ref, bool hollow = false) {
         if (!ref) return default_material();
-        auto found = m_materials.find(ref.get());
+        auto found = m_materials.find({ref.get(), hollow});
         if (found != m_materials.end()) return found->second;
-        const Material* material = make_material(*ref);
-        m_materials[ref.get()] = material;
+        const Material* material = make_material(*ref, hollow);
+        m_materials[{ref.get(), hollow}] = material;
         return material;
     }
 
-    const Material* make_material(const sg::Material& written) {
+    const Material* make_material(const sg::Material& written, bool hollow = false) {
         sg::Material source = flatten_patterned_texture(written);
         sg::NormalRef surface_normal = source.normal;
         if (written.layers_above.empty()) {
@@ -185,8 +209,59 @@ class Builder {
         MaterialParameters parameters = to_parameters(source, m_data->textures.back().get(), normal);
         parameters.irid_wavelengths = Color(m_graph.global.irid_wavelength);
         parameters.noise_generator = m_graph.global.noise_generator;
+        parameters.hollow = hollow;
+        // POV shows an interior's media only inside a hollow object.
+        if (hollow && !source.interior.media.empty()) parameters.medium = make_medium(source.interior.media);
         m_data->materials.push_back(std::make_unique<Material>(parameters));
         return m_data->materials.back().get();
+    }
+
+    // Media (lancer/medium.h) from the scene graph's: densities become
+    // textures, evaluated in the space the caller's region names.
+    const Medium* make_medium(const std::vector<sg::Media>& written) {
+        std::vector<MediumComponent> components;
+        MediumSampling sampling;
+        int most_intervals = 0;
+        sampling.aa_threshold = kInfinity;
+        for (const sg::Media& m : written) {
+            MediumComponent c;
+            c.emission = Color(m.emission);
+            c.absorption = Color(m.absorption);
+            c.scattering = Color(m.scattering);
+            c.extinction = c.absorption + float(m.extinction) * c.scattering;
+            c.phase = static_cast<PhaseType>(static_cast<int>(m.scattering_type));
+            c.eccentricity = float(m.eccentricity);
+            for (const auto& density : m.densities) {
+                m_data->textures.push_back(m_data->texture_factory->make(*density));
+                c.densities.push_back(m_data->textures.back().get());
+                c.density_bound *= density_bound(*density);
+            }
+            components.push_back(c);
+            // POV: the settings of the media with the most intervals, the
+            // smallest aa_threshold of all.
+            if (m.intervals > most_intervals) {
+                most_intervals = m.intervals;
+                sampling.method = m.method;
+                sampling.intervals = m.intervals;
+                sampling.samples_min = m.samples_min;
+                sampling.samples_max = m.samples_max;
+                sampling.aa_level = m.aa_level;
+                sampling.jitter = float(m.jitter);
+                sampling.ratio = float(m.ratio);
+            }
+            sampling.aa_threshold = std::min(sampling.aa_threshold, float(m.aa_threshold));
+        }
+        m_data->media.push_back(std::make_unique<Medium>(std::move(components), sampling));
+        m_data->has_media = true;
+        return m_data->media.back().get();
+    }
+
+    // The scene's media, in world space: a texture space of their own, after every object's.
+    void build_atmosphere() {
+        if (m_graph.atmosphere.empty()) return;
+        const auto space = std::uint32_t(m_data->texture_spaces.size());
+        m_data->texture_spaces.push_back(DMat4(1.0));
+        m_data->atmosphere = MediumRegion{make_medium(m_graph.atmosphere), space};
     }
 
     const MeshData* mesh_data(const sg::MeshRef& ref, const sg::SourceLocation& location) {
@@ -245,7 +320,9 @@ class Builder {
                 continue;
             }
             Instance instance;
-            if (!make_leaf(object, world_from_object, material_for(material), object_no_shadow, instance)) continue;
+            if (!make_leaf(object, world_from_object, material_for(material, object.hollow), object_no_shadow,
+                           instance))
+                continue;
             push_instance(std::move(instance), glm::inverse(owner));
         }
     }
@@ -616,9 +693,10 @@ class Builder {
             Instance instance;
             if (const auto* mesh = std::get_if<sg::MeshRef>(&object.shape)) {
                 if (!*mesh) throw SceneError(object.location, "a mesh in CSG has no triangles");
-                make_mesh_leaf(object, **mesh, world_from_object, material_for(material), object_no_shadow, instance);
+                make_mesh_leaf(object, **mesh, world_from_object, material_for(material, object.hollow),
+                               object_no_shadow, instance);
             } else {
-                make_leaf(object, world_from_object, material_for(material), object_no_shadow, instance);
+                make_leaf(object, world_from_object, material_for(material, object.hollow), object_no_shadow, instance);
             }
             if (!instance.shape) {
                 switch (instance.kind) {
@@ -791,13 +869,15 @@ class Builder {
     }
 
     void add_light(std::unique_ptr<Light> light, bool casts_shadows = true,
-                   const std::shared_ptr<const sg::Object>& projected_through = nullptr) {
+                   const std::shared_ptr<const sg::Object>& projected_through = nullptr,
+                   const sg::Light* source = nullptr) {
         light->set_casts_shadows(casts_shadows);
         if (projected_through) {
             sg::SceneGraph projector;
             projector.objects.push_back(*projected_through);
             light = std::make_unique<ProjectedLight>(std::move(light), compile_scene(std::move(projector)));
         }
+        if (source) light->set_media_interaction(source->media_interaction, source->media_attenuation);
         m_data->lights.push_back(light.get());
         m_data->local_lights.push_back(&light->proxy());
         m_data->owned_lights.push_back(std::move(light));
@@ -832,7 +912,7 @@ class Builder {
                     light.tightness = float(source.tightness);
                 }
                 add_light(std::make_unique<DirectionalLight>(light, radius), !source.shadowless,
-                          source.projected_through);
+                          source.projected_through, &source);
                 continue;
             }
             const bool degenerate_rectangle = source.kind == sg::Light::Kind::AreaRectangle &&
@@ -866,10 +946,10 @@ class Builder {
                     area.orient = source.orient;
                     area.area_illumination = source.area_illumination;
                     add_light(std::make_unique<PovAreaLight>(area, radius), !source.shadowless,
-                              source.projected_through);
+                              source.projected_through, &source);
                 } else {
-                    add_light(std::make_unique<PointLight>(light, radius), !source.shadowless,
-                              source.projected_through);
+                    add_light(std::make_unique<PointLight>(light, radius), !source.shadowless, source.projected_through,
+                              &source);
                 }
             } else if (degenerate_rectangle || degenerate_sphere) {
                 // A physical lamp without size: the physical point it shrank to.
@@ -907,7 +987,7 @@ class Builder {
     std::map<std::tuple<const sg::Function*, const std::string*, int, int>, std::shared_ptr<IsosurfaceGradientRecord>>
         m_isosurface_records;
     std::map<const sg::TriangleMesh*, const MeshData*> m_meshes;
-    std::map<const sg::Material*, const Material*> m_materials;
+    std::map<std::pair<const sg::Material*, bool>, const Material*> m_materials;
     const Material* m_default_material = nullptr;
 };
 

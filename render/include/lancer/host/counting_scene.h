@@ -39,6 +39,8 @@ class CountingScene final : public RenderScene {
     Color background(const Ray& ray) const override { return m_inner.background(ray); }
     const SceneOptions& options() const override { return m_inner.options(); }
     Bounds bounds() const override { return m_inner.bounds(); }
+    bool has_media() const override { return m_inner.has_media(); }
+    MediumRegion atmosphere() const override { return m_inner.atmosphere(); }
 
     // Queries so far, over every thread. Exact once the threads are idle.
     std::uint64_t rays() const;

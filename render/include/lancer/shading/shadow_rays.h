@@ -12,8 +12,29 @@
 #include "lancer/area_light_grid.h"
 #include "lancer/render_scene.h"
 #include "lancer/shading/point_hash.h"
+#include "lancer/shading/pov_media.h"
 
 namespace lancer {
+
+// exp(-optical depth) of the interior media along `ray` up to `blocker`
+// when the segment ran inside a hollow object with media; else 1.
+inline Color interior_media_transmittance(const Ray& ray, const Hit& blocker) {
+    if (blocker.is_front_face(-ray.direction)) return Color(1.0f);
+    const MaterialParameters& inside = blocker.material->parameters();
+    if (!inside.hollow || inside.medium == nullptr) return Color(1.0f);
+    const float scale = glm::length(ray.direction);
+    const MediumRegion region{inside.medium, blocker.object_id};
+    return glm::exp(-pov_media_optical_depth(region, ray.origin, ray.direction / scale, blocker.t * scale));
+}
+
+// exp(-optical depth) of the atmosphere over the whole of a shadow ray.
+inline Color atmosphere_transmittance(const RenderScene& scene, const Ray& ray) {
+    const MediumRegion atmosphere = scene.atmosphere();
+    if (!atmosphere) return Color(1.0f);
+    const float scale = glm::length(ray.direction);
+    const float length = std::isfinite(ray.t_max) ? ray.t_max * scale : kMediaEscapeDistance;
+    return glm::exp(-pov_media_optical_depth(atmosphere, ray.origin, ray.direction / scale, length));
+}
 
 // How much light leaving `target` reaches the hit: 1 when nothing lies
 // between, 0 behind an opaque shadow caster. Transparent surfaces on the way
@@ -24,12 +45,16 @@ namespace lancer {
 inline Color transmittance_to(const RenderScene& scene, const Hit& from, const Vec3& target,
                               const Light* own_light = nullptr) {
     Ray ray = from.spawn_ray_to(target);
-    if (!scene.occluded(ray)) return Color(1.0f);  // the common case: one cheap query
+    // POV's media_attenuation: the atmosphere dims the light on its way.
+    Color dimmed(1.0f);
+    if (own_light != nullptr && own_light->dimmed_by_atmosphere() && scene.has_media())
+        dimmed = atmosphere_transmittance(scene, ray);
+    if (!scene.occluded(ray)) return dimmed;  // the common case: one cheap query
 
     // Walk the surfaces in between, nearest first. The bound only guards
     // against pathological stacks of coplanar transparent faces.
     constexpr int kMaxSurfacesCrossed = 64;
-    Color throughput(1.0f);
+    Color throughput = dimmed;
     for (int crossed = 0; crossed < kMaxSurfacesCrossed; ++crossed) {
         Hit blocker;
         if (!scene.intersect(ray, blocker)) return throughput;
@@ -42,6 +67,10 @@ inline Color transmittance_to(const RenderScene& scene, const Hit& from, const V
             throughput *= transparency * material.transmission_tint(surface);
             if (lancer::is_black(throughput)) return throughput;
         }
+        // The stretch just crossed ran inside this object: its media dim the
+        // light, as POV's shadow rays see interior media (not the
+        // atmosphere: POV's media_attenuation is off by default).
+        if (scene.has_media()) throughput *= interior_media_transmittance(ray, blocker);
         ray = blocker.spawn_ray_to(target);
     }
     return Color(0.0f);

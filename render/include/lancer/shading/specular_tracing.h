@@ -28,6 +28,7 @@
 
 #include "lancer/sampler.h"
 #include "lancer/shading/local_shading.h"
+#include "lancer/shading/pov_media.h"
 
 namespace lancer {
 
@@ -89,20 +90,20 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
 }
 
 // Radiance along `ray` at recursion `level` (1 for a camera ray) with path
-// weight `weight`. `local_term(at, diffuse_scale, sampler)` returns the
-// hit's diffuse (ambient included) and glossy radiance; it may skip the
-// diffuse work when diffuse_scale is black. A ray past max_depth or under
-// min_weight is not traced and counts black, as in POV-Ray.
+// weight `weight`, inside the objects `inside` (media, pov_media.h). `local_term(at, diffuse_scale, sampler)` returns
+// the hit's diffuse (ambient included) and glossy radiance; it may skip the diffuse work when diffuse_scale is black. A
+// ray past max_depth or under min_weight is not traced and counts black, as in POV-Ray.
 template <class LocalTerm>
 Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
-                     const LocalTerm& local_term, int level = 1, float weight = 1.0f);
+                     const LocalTerm& local_term, int level = 1, float weight = 1.0f, const InteriorStack& inside = {});
 
 // trace_specular() for a ray whose nearest hit is known (null: it escaped),
 // such as a camera ray the host traced.
 template <class LocalTerm>
 Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler& sampler,
-                     const SpecularOptions& options, const LocalTerm& local_term, int level = 1, float weight = 1.0f) {
-    if (found == nullptr) return scene.background(ray);
+                     const SpecularOptions& options, const LocalTerm& local_term, int level = 1, float weight = 1.0f,
+                     const InteriorStack& inside = {}) {
+    if (found == nullptr) return seen_through_media(scene, ray, nullptr, scene.background(ray), sampler, inside);
     const Hit& hit = *found;
     const ShadingContext at = make_shading_context(hit, ray);
     const SpecularSplit split = split_specular(at, options, hit.t * glm::length(ray.direction));
@@ -110,27 +111,29 @@ Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene,
     const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
     Color radiance = surface_emission(at) + split.diffuse_scale * local.diffuse + local.glossy;
 
-    const auto follow = [&](const Color& path_weight, const Vec3& direction, float exponent) {
+    const auto follow = [&](const Color& path_weight, const Vec3& direction, float exponent, bool transmitted) {
         if (is_black(path_weight)) return;
         const float next_weight = weight * max_component(path_weight);
         if (level + 1 > options.max_depth || next_weight < options.min_weight) return;
-        Color seen =
-            trace_specular(hit.spawn_ray(direction), scene, sampler, options, local_term, level + 1, next_weight);
+        // A transmitted ray enters or leaves the object (media see it).
+        const bool crosses = transmitted && scene.has_media();
+        Color seen = trace_specular(hit.spawn_ray(direction), scene, sampler, options, local_term, level + 1,
+                                    next_weight, crosses ? inside.crossed(hit, at.entering) : inside);
         // POV's reflection exponent raises the reflected colour to a power.
         if (exponent != 1.0f) seen = glm::pow(glm::max(seen, Color(0.0f)), Color(exponent));
         radiance += path_weight * seen;
     };
-    follow(split.reflection, split.reflected, at.material.parameters().reflection_exponent);
-    follow(split.transmission, split.refracted, 1.0f);
-    return radiance;
+    follow(split.reflection, split.reflected, at.material.parameters().reflection_exponent, false);
+    follow(split.transmission, split.refracted, 1.0f, true);
+    return seen_through_media(scene, ray, found, radiance, sampler, inside);
 }
 
 template <class LocalTerm>
 Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
-                     const LocalTerm& local_term, int level, float weight) {
+                     const LocalTerm& local_term, int level, float weight, const InteriorStack& inside) {
     Hit hit;
     const bool found = scene.intersect(ray, hit);
-    return shade_specular(ray, found ? &hit : nullptr, scene, sampler, options, local_term, level, weight);
+    return shade_specular(ray, found ? &hit : nullptr, scene, sampler, options, local_term, level, weight, inside);
 }
 
 }  // namespace lancer

@@ -1,0 +1,39 @@
+// Scenes with participating media for the whitted and path tests: scene
+// text compiled as the command line compiles it. Test-only.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "lancer/host/scene_compiler.h"
+#include "lancer/parser.h"
+
+#include "seed_integrators_test.h"
+
+namespace lancer::media_test {
+
+inline std::unique_ptr<RenderScene> scene_from(const std::string& text) {
+    ParseResult parsed = parse_scene_string(text);
+    for (const auto& d : parsed.diagnostics) ADD_FAILURE() << format_diagnostic(d);
+    if (!parsed.ok()) return nullptr;
+    return compile_scene(std::move(*parsed.scene));
+}
+
+// A slab 1 thick (z in [0, 1]) of a hollow, fully transmitting box whose
+// interior holds `media`, seen along +z from z = -5 against `background`;
+// `extra` adds lights or settings.
+inline std::string slab(const std::string& media, double background, const std::string& extra = "") {
+    return "camera { location <0, 0, -5> look_at <0, 0, 0> }\n"
+           "background { rgb " +
+           std::to_string(background) +
+           " }\n"
+           "box { <-3, -3, 0>, <3, 3, 1> pigment { rgbt 1 } finish { ambient 0 diffuse 0 } hollow\n"
+           "      interior { media { " +
+           media + " } } }\n" + extra;
+}
+
+inline const Ray kAlongZ = seed_test::ray_towards({0.0f, 0.0f, -5.0f}, {0.0f, 0.0f, 0.0f});
+
+}  // namespace lancer::media_test

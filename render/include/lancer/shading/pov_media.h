@@ -1,0 +1,97 @@
+// POV-Ray's media along one ray segment, as the classic integrators (whitted,
+// gather) see them: POV 3.7's sampling (media.cpp, method 3 by default)
+// of emission, extinction and light scattered from the scene's lights,
+// with POV's unnormalised phase weights (lancer/medium.h).
+//
+// Which media a segment crosses (POV's rule: an interior's media show only
+// inside a `hollow` object; the atmosphere fills the open and hollow
+// objects): media_before(). A scene without media never gets here
+// (RenderScene::has_media()).
+#pragma once
+
+#include <array>
+
+#include "lancer/medium.h"
+#include "lancer/render_scene.h"
+#include "lancer/sampler.h"
+
+namespace lancer {
+
+// The objects a ray is inside, innermost last, as POV's ray keeps its list
+// of interiors: an integrator pushes the object a transmitted ray enters
+// and removes the one it leaves. Small and fixed: deeper nesting than
+// kDepth keeps the outermost kDepth objects.
+struct InteriorStack {
+    struct Entry {
+        const Material* material = nullptr;
+        std::uint32_t object_id = 0;
+    };
+    static constexpr int kDepth = 8;
+    std::array<Entry, kDepth> entries{};
+    int size = 0;
+
+    // After a ray is transmitted through `hit`, entering or leaving its object.
+    InteriorStack crossed(const Hit& hit, bool entering) const {
+        InteriorStack next = *this;
+        if (entering) {
+            if (next.size < kDepth) next.entries[std::size_t(next.size++)] = Entry{hit.material, hit.object_id};
+            return next;
+        }
+        for (int i = next.size - 1; i >= 0; --i)
+            if (next.entries[std::size_t(i)].object_id == hit.object_id) {
+                for (int j = i; j + 1 < next.size; ++j) next.entries[std::size_t(j)] = next.entries[std::size_t(j + 1)];
+                --next.size;
+                break;
+            }
+        return next;
+    }
+};
+
+// The media of the segment a ray ran to reach `hit` (null: it escaped).
+// With objects in `inside`: the media of each (hollow ones only, as POV
+// shows them; the innermost two at most), and the atmosphere if every one
+// is hollow. With none: the interior medium of the object whose back face
+// ends the segment (a ray that started inside, such as a camera in an
+// object), and the atmosphere unless that object is solid.
+struct SegmentMedia {
+    MediumRegion interior;
+    MediumRegion outer_interior;  // a second, enclosing interior with media
+    MediumRegion open;
+    bool empty() const { return !interior && !outer_interior && !open; }
+};
+SegmentMedia media_before(const RenderScene& scene, const Ray& ray, const Hit* hit, const InteriorStack& inside = {});
+
+// POV's distance for a ray that escapes (its BOUND_HUGE).
+inline constexpr float kMediaEscapeDistance = 2.0e10f;
+
+// POV's media on the segment from `origin` along unit `direction` over
+// `length`: `behind` (the radiance arriving from the far end) attenuated,
+// plus what the medium emits and scatters towards the origin. Light
+// reaching a sample is each light of the simple model (as whitted's
+// surfaces see them) behind a shadow ray (transmittance_to).
+Color pov_media_radiance(const RenderScene& scene, const MediumRegion& region, const Vec3& origin,
+                         const Vec3& direction, float length, const Color& behind, Sampler& sampler);
+// The optical depth of the segment (extinction integrated), per channel,
+// as POV estimates it for a shadow ray.
+Color pov_media_optical_depth(const MediumRegion& region, const Vec3& origin, const Vec3& direction, float length);
+
+// What an integrator calls with the radiance it found along `ray` (hit null:
+// the background): the radiance after the segment's media. Free when the
+// scene has none.
+inline Color seen_through_media(const RenderScene& scene, const Ray& ray, const Hit* hit, const Color& radiance,
+                                Sampler& sampler, const InteriorStack& inside) {
+    if (!scene.has_media()) return radiance;
+    const SegmentMedia media = media_before(scene, ray, hit, inside);
+    if (media.empty()) return radiance;
+    const float scale = glm::length(ray.direction);
+    const Vec3 direction = ray.direction / scale;
+    const float length = hit ? hit->t * scale : kMediaEscapeDistance;
+    Color seen = radiance;
+    if (media.interior) seen = pov_media_radiance(scene, media.interior, ray.origin, direction, length, seen, sampler);
+    if (media.outer_interior)
+        seen = pov_media_radiance(scene, media.outer_interior, ray.origin, direction, length, seen, sampler);
+    if (media.open) seen = pov_media_radiance(scene, media.open, ray.origin, direction, length, seen, sampler);
+    return seen;
+}
+
+}  // namespace lancer
