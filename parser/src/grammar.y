@@ -746,7 +746,6 @@ arith_seq
   | arith_seq opt_comma arith %prec OPT_EMPTY { $$ = std::move($1); ev.remember_location($3, @3); $$.push_back($3); }
   ;
 
-
 /* ------------------------------------------------------------- transforms */
 
 transform_item
