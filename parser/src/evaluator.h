@@ -266,6 +266,7 @@ class Evaluator {
 
     // ---- media (media.cpp)
     std::shared_ptr<sg::Media> build_media(const Edits<sg::Media>& edits, const sg::SourceLocation& at);
+    std::shared_ptr<sg::SkySphere> build_sky_sphere(const Edits<sg::SkySphere>& edits, const sg::SourceLocation& at);
     // A density is a pigment whose pattern without a map reads as grey, its value.
     std::shared_ptr<sg::Pigment> build_density(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);
     std::function<void(sg::Media&)> media_scattering(const Value& type, const SourceRange& type_at, const Value& colour,

@@ -54,6 +54,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        INTERIOR_ID "interior identifier" CAMERA_ID "camera identifier"
        LIGHT_ID "light_source identifier" TRANSFORM_ID "transform identifier"
        FUNCTION_LITERAL "function definition" FUNCTION_ID "function identifier" SPLINE_ID "spline identifier" MEDIA_ID "media identifier"
+       SKY_SPHERE_ID "sky_sphere identifier"
        UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" FUNCTION_OPEN "function {"
        UNSUPPORTED "unsupported keyword"
 
@@ -62,6 +63,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        MESH "mesh" MESH2 "mesh2" UNION "union" MERGE "merge" DIFFERENCE "difference"
        INTERSECTION "intersection" OBJECT "object" OBJ_MESH "obj_mesh"
        LIGHT_SOURCE "light_source" CAMERA "camera" MESH_CAMERA "mesh_camera" BACKGROUND "background"
+       SKY_SPHERE "sky_sphere"
        GLOBAL_SETTINGS "global_settings" RENDER_SETTINGS "render_settings"
        TRANSLATE "translate" ROTATE "rotate" SCALE "scale" MATRIX "matrix" TRANSFORM "transform"
        INVERSE "inverse" TEXTURE "texture" PIGMENT "pigment" FINISH "finish" INTERIOR "interior"
@@ -161,6 +163,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::shared_ptr<sg::Interior>> interior
 %nterm <Edits<sg::Interior>> interior_items
 %nterm <std::shared_ptr<sg::Media>> media
+%nterm <std::shared_ptr<sg::SkySphere>> sky_sphere
+%nterm <Edits<sg::SkySphere>> sky_sphere_items
 %nterm <Edits<sg::Media>> media_items scattering_items
 %nterm <std::function<void(sg::Media&)>> media_item
 %nterm <sg::Light> light
@@ -310,6 +314,7 @@ scene_item
   | camera             { ev.set_camera($1); }
   | "background" "{" colour "}"   { ev.scene().background = ev.to_color($3, @3).rgb; }
   | media              { ev.scene().atmosphere.push_back(*$1); }
+  | sky_sphere         { ev.scene().sky_sphere = *$1; }
   | "global_settings" "{" global_items "}"
   | "render_settings" "{" render_items "}" { ev.scene().render.location = LOC(@1); }
   | ";"                { ev.warning(LOC(@1), "stray ';' ignored"); }
@@ -328,6 +333,7 @@ declared_non_scalar
   | finish             { $$.kind = Value::Kind::Finish; $$.finish = $1; }
   | interior           { $$.kind = Value::Kind::Interior; $$.interior = $1; }
   | media              { $$.kind = Value::Kind::Media; $$.media = $1; }
+  | sky_sphere         { $$.kind = Value::Kind::SkySphere; $$.sky_sphere = $1; }
   | "density" "{" pigment_edits "}" { $$.kind = Value::Kind::Pigment; $$.pigment = ev.build_density($3, LOC(@1)); }
   | material           { $$.kind = Value::Kind::Texture; $$.texture = $1; }
   | camera             { $$.kind = Value::Kind::Camera; $$.camera = std::make_shared<CameraSpec>($1); }
@@ -1352,6 +1358,26 @@ media_item
   | "jitter" expr      { $$ = ev.media_real("jitter", $2, @2, 0.0, 1e30); }
   | "collect" opt_bool { $$ = [](sg::Media&) {}; ev.ignored(LOC(@1), "collect (photons)"); }
   | transform_item     { sg::Mat4 t = $1; $$ = [t](sg::Media& m) { transform_densities(m, t); }; }
+  ;
+
+/* --------------------------------------------------------------- sky_sphere */
+
+/* POV's Parse_Skysphere: a declared sky first, then pigments (the last on
+   top), emission and transforms of the whole sky. */
+sky_sphere
+  : "sky_sphere" "{" sky_sphere_items "}" { $$ = ev.build_sky_sphere($3, LOC(@1)); }
+  ;
+
+sky_sphere_items
+  : %empty             {}
+  | sky_sphere_items SKY_SPHERE_ID { $$ = std::move($1); auto s = $2.value.sky_sphere;
+                           $$.push_back([s](sg::SkySphere& target) { target = *s; }); }
+  | sky_sphere_items pigment { $$ = std::move($1); auto p = $2;
+                           $$.push_back([p](sg::SkySphere& s) { s.pigments.push_back(*p); }); }
+  | sky_sphere_items "emission" colour { $$ = std::move($1); sg::Vec3 c = ev.to_color($3, @3).rgb;
+                           $$.push_back([c](sg::SkySphere& s) { s.emission = c; }); }
+  | sky_sphere_items transform_item { $$ = std::move($1); sg::Mat4 t = $2;
+                           $$.push_back([t](sg::SkySphere& s) { s.transform = t * s.transform; }); }
   ;
 
 /* After scattering's type and colour: eccentricity (type 5) and extinction. */

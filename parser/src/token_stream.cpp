@@ -54,8 +54,8 @@ const std::unordered_set<std::string>& builtin_names() {
 
 // Ignored POV blocks: swallowed with a warning so nothing is dropped silently.
 const std::unordered_set<std::string>& ignored_blocks() {
-    static const std::unordered_set<std::string> names = {"photons", "radiosity",        "fog",        "sky_sphere",
-                                                          "rainbow", "interior_texture", "subsurface", "mm_per_unit"};
+    static const std::unordered_set<std::string> names = {"photons",          "radiosity",  "fog",        "rainbow",
+                                                          "interior_texture", "subsurface", "mm_per_unit"};
     return names;
 }
 
@@ -428,6 +428,7 @@ Evaluator::Kind Evaluator::token_for_value(const Value& value) {
     case VK::Finish: return Parser::token::TOK_FINISH_ID;
     case VK::Interior: return Parser::token::TOK_INTERIOR_ID;
     case VK::Media: return Parser::token::TOK_MEDIA_ID;
+    case VK::SkySphere: return Parser::token::TOK_SKY_SPHERE_ID;
     case VK::Camera: return Parser::token::TOK_CAMERA_ID;
     case VK::Light: return Parser::token::TOK_LIGHT_ID;
     case VK::Transform: return Parser::token::TOK_TRANSFORM_ID;

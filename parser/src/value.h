@@ -99,7 +99,8 @@ struct Value {
         Array,
         File,
         Spline,
-        Media
+        Media,
+        SkySphere
     };
     Kind kind = Kind::Float;
     // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
@@ -113,6 +114,7 @@ struct Value {
     std::shared_ptr<const sg::Finish> finish;
     std::shared_ptr<const sg::Interior> interior;
     std::shared_ptr<const sg::Media> media;
+    std::shared_ptr<const sg::SkySphere> sky_sphere;
     std::shared_ptr<const CameraSpec> camera;
     std::shared_ptr<const sg::Light> light;
     sg::NormalRef normal;

@@ -147,6 +147,27 @@ TEST_F(PathFixture, WhiteFurnaceHidesAnAlbedoOneObject) {
     EXPECT_LT(max_deviation(film, 1.0), 0.02) << "image mean " << image_mean(film);
 }
 
+// Under a sky_sphere of constant radiance 0.7, an albedo-one diffuse ball
+// reflects exactly the sky it sees: the whole image is 0.7. A ball that
+// absorbs half is a disc of 0.35 in it (a convex object sees only sky).
+TEST_F(PathFixture, ConstantSkyIsAnEnvironmentLight) {
+    for (const double albedo : {1.0, 0.5}) {
+        sg::SceneGraph graph;
+        graph.camera = camera_at(sg::Vec3(0.0, 0.0, -3.0), sg::Vec3(0.0), 4.0);
+        graph.objects.push_back(sphere(sg::Vec3(0.0), 1.0, make_material(1.0, 0.0, sg::Vec3(albedo))));
+        graph.global.ambient_light = sg::Vec3(0.0);
+        sg::SkySphere sky;
+        sky.pigments.emplace_back();
+        sky.pigments.back().color.rgb = sg::Vec3(0.7);
+        graph.sky_sphere = sky;
+        auto integrator = make_integrator(path);
+        const Film film = render(graph, *integrator, 4, 4, 4096);
+        // Zoom 4 frames the ball's middle only.
+        EXPECT_LT(max_deviation(film, 0.7 * albedo), 0.02)
+            << "albedo " << albedo << ", image mean " << image_mean(film);
+    }
+}
+
 // A floor and a ball lit from above, by a point light or by a tiny sphere
 // light of the same colour (hence the same power) at the same place.
 sg::SceneGraph lit_floor_scene(bool sphere_light) {

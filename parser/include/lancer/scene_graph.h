@@ -901,12 +901,22 @@ struct RenderSettings {
     SourceLocation location;
 };
 
+// POV's sky_sphere: pigments seen in the direction of every ray that
+// escapes, layered with the last written on top, over the background.
+struct SkySphere {
+    std::vector<Pigment> pigments;
+    Mat4 transform{1.0};  // world from sky: the pigments are read at its inverse applied to the direction
+    Vec3 emission{1.0};
+    SourceLocation location;
+};
+
 struct SceneGraph {
     std::optional<Camera> camera;  // absent: POV's default camera
     std::vector<Light> lights;
     std::vector<Object> objects;
     Vec3 background{0.0};
-    std::vector<Media> atmosphere;  // scene-level media: fill the open, hollow objects included
+    std::optional<SkySphere> sky_sphere;  // the last one written
+    std::vector<Media> atmosphere;        // scene-level media: fill the open, hollow objects included
     GlobalSettings global;
     RenderSettings render;
     std::string main_file;  // the scene file's path

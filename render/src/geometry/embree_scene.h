@@ -115,7 +115,9 @@ class EmbreeScene final : public RenderScene {
     const std::vector<const Light*>& lights() const override { return m_data->lights; }
     const std::vector<const Light*>& local_lights() const override { return m_data->local_lights; }
     const Camera& camera() const override { return m_data->camera; }
-    Color background(const Ray&) const override { return m_data->background; }
+    Color background(const Ray& ray) const override {
+        return m_data->sky ? m_data->sky->radiance(ray.direction) : m_data->background;
+    }
     const SceneOptions& options() const override { return m_data->options; }
     Bounds bounds() const override { return m_data->bounds; }
     bool has_media() const override { return m_data->has_media; }

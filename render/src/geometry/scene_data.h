@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "camera/mesh_camera.h"
+#include "environment/sky_sphere.h"
 #include "geometry/csg.h"
 #include "geometry/isosurface.h"
 #include "geometry/shape.h"
@@ -89,6 +90,7 @@ struct SceneData {
     Camera camera;
     std::unique_ptr<MeshCameraRays> mesh_camera;  // a mesh_camera's faces, which `camera` reads
     Color background{0.0f};
+    std::unique_ptr<SkySphere> sky;  // null: escaping rays see `background`
     SceneOptions options;
     Bounds bounds;
     // Each isosurface's steepest slope met while rendering, for POV's

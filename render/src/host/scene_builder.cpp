@@ -109,6 +109,9 @@ class Builder {
     std::unique_ptr<SceneData> run(InsideTest* inside_of_first = nullptr) {
         build_camera();
         m_data->background = Color(m_graph.background);
+        if (m_graph.sky_sphere)
+            m_data->sky = std::make_unique<SkySphere>(*m_graph.sky_sphere, m_data->background,
+                                                      m_graph.global.language_version, *m_data->texture_factory);
         m_data->options.max_trace_level = m_graph.global.max_trace_level;
         m_data->options.adc_bailout = float(m_graph.global.adc_bailout);
         m_data->options.ambient_light = Color(m_graph.global.ambient_light);

@@ -4,6 +4,7 @@
 #include "lancer/scene_error.h"
 #include "materials/function_natives.h"
 #include "materials/pattern_space.h"
+#include "materials/point_pigment.h"
 
 namespace lancer {
 
@@ -48,6 +49,10 @@ std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
 
 std::unique_ptr<NormalPerturbation> TextureFactory::make_normal(const sg::Normal& normal) {
     return make_surface_normal(normal, m_spaces, build());
+}
+
+std::unique_ptr<PointPigment> TextureFactory::make_point_pigment(const sg::Pigment& pigment) {
+    return lancer::make_point_pigment(pigment, build());
 }
 
 std::unique_ptr<Texture> TextureFactory::make_solid(const Color& rgb, float filter, float transmit) {

@@ -22,6 +22,7 @@ using TextureSpaces = std::vector<glm::dmat4>;
 // Owns the OpenImageIO TextureSystem; created only when a scene has an
 // image_map.
 class ImageTextureSystem;
+class PointPigment;
 
 // POV's Inside_Object for the object pattern: whether a point of pattern
 // space lies in the object's solid. The scene builder makes them (this
@@ -57,6 +58,8 @@ class TextureFactory {
     // cannot be read, and at a pattern's when lancer cannot evaluate it.
     std::unique_ptr<Texture> make(const sg::Pigment& pigment);
     std::unique_ptr<NormalPerturbation> make_normal(const sg::Normal& normal);
+    // A pigment read at points of its own space, not at hits (the sky).
+    std::unique_ptr<PointPigment> make_point_pigment(const sg::Pigment& pigment);
     // A constant colour (default black pigment, light materials).
     static std::unique_ptr<Texture> make_solid(const Color& rgb, float filter = 0.0f, float transmit = 0.0f);
     // What `function` and its callees ask of the renderer (noise, patterns,
