@@ -31,7 +31,9 @@
 // camera_world.inc; and participating media (absorbing glass, emitting
 // and scattering media with densities, several media per interior), and
 // sky_spheres (layered pigments over the background, 3.7's and 3.6's
-// compositing, emission, transforms, skies.inc, seen in mirrors).
+// compositing, emission, transforms, skies.inc, seen in mirrors) and fog
+// (constant and ground, filter and transmit, turbulence, several fogs,
+// solid and hollow objects, a light's media_attenuation).
 #include <filesystem>
 #include <string>
 

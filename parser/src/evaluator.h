@@ -266,6 +266,11 @@ class Evaluator {
 
     // ---- media (media.cpp)
     std::shared_ptr<sg::Media> build_media(const Edits<sg::Media>& edits, const sg::SourceLocation& at);
+    std::shared_ptr<sg::Fog> build_fog(const Edits<sg::Fog>& edits, const sg::SourceLocation& at);
+    std::function<void(sg::Fog&)> fog_value(const Value& v, const SourceRange& where);
+    std::function<void(sg::Fog&)> fog_type(const Value& v, const SourceRange& where);
+    std::function<void(sg::Fog&)> fog_octaves(const Value& v, const SourceRange& where);
+    std::function<void(sg::Fog&)> fog_transform(const sg::Mat4& transform, const SourceRange& where);
     std::shared_ptr<sg::SkySphere> build_sky_sphere(const Edits<sg::SkySphere>& edits, const sg::SourceLocation& at);
     // A density is a pigment whose pattern without a map reads as grey, its value.
     std::shared_ptr<sg::Pigment> build_density(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);

@@ -54,7 +54,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        INTERIOR_ID "interior identifier" CAMERA_ID "camera identifier"
        LIGHT_ID "light_source identifier" TRANSFORM_ID "transform identifier"
        FUNCTION_LITERAL "function definition" FUNCTION_ID "function identifier" SPLINE_ID "spline identifier" MEDIA_ID "media identifier"
-       SKY_SPHERE_ID "sky_sphere identifier"
+       SKY_SPHERE_ID "sky_sphere identifier" FOG_ID "fog identifier"
        UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" FUNCTION_OPEN "function {"
        UNSUPPORTED "unsupported keyword"
 
@@ -63,7 +63,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        MESH "mesh" MESH2 "mesh2" UNION "union" MERGE "merge" DIFFERENCE "difference"
        INTERSECTION "intersection" OBJECT "object" OBJ_MESH "obj_mesh"
        LIGHT_SOURCE "light_source" CAMERA "camera" MESH_CAMERA "mesh_camera" BACKGROUND "background"
-       SKY_SPHERE "sky_sphere"
+       SKY_SPHERE "sky_sphere" FOG "fog" FOG_TYPE "fog_type" FOG_OFFSET "fog_offset" FOG_ALT "fog_alt"
+       TURB_DEPTH "turb_depth" DISTANCE "distance"
        GLOBAL_SETTINGS "global_settings" RENDER_SETTINGS "render_settings"
        TRANSLATE "translate" ROTATE "rotate" SCALE "scale" MATRIX "matrix" TRANSFORM "transform"
        INVERSE "inverse" TEXTURE "texture" PIGMENT "pigment" FINISH "finish" INTERIOR "interior"
@@ -165,6 +166,9 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::shared_ptr<sg::Media>> media
 %nterm <std::shared_ptr<sg::SkySphere>> sky_sphere
 %nterm <Edits<sg::SkySphere>> sky_sphere_items
+%nterm <std::shared_ptr<sg::Fog>> fog
+%nterm <Edits<sg::Fog>> fog_items
+%nterm <std::function<void(sg::Fog&)>> fog_item
 %nterm <Edits<sg::Media>> media_items scattering_items
 %nterm <std::function<void(sg::Media&)>> media_item
 %nterm <sg::Light> light
@@ -315,6 +319,7 @@ scene_item
   | "background" "{" colour "}"   { ev.scene().background = ev.to_color($3, @3).rgb; }
   | media              { ev.scene().atmosphere.push_back(*$1); }
   | sky_sphere         { ev.scene().sky_sphere = *$1; }
+  | fog                { ev.scene().fogs.push_back(*$1); }
   | "global_settings" "{" global_items "}"
   | "render_settings" "{" render_items "}" { ev.scene().render.location = LOC(@1); }
   | ";"                { ev.warning(LOC(@1), "stray ';' ignored"); }
@@ -334,6 +339,7 @@ declared_non_scalar
   | interior           { $$.kind = Value::Kind::Interior; $$.interior = $1; }
   | media              { $$.kind = Value::Kind::Media; $$.media = $1; }
   | sky_sphere         { $$.kind = Value::Kind::SkySphere; $$.sky_sphere = $1; }
+  | fog                { $$.kind = Value::Kind::Fog; $$.fog = $1; }
   | "density" "{" pigment_edits "}" { $$.kind = Value::Kind::Pigment; $$.pigment = ev.build_density($3, LOC(@1)); }
   | material           { $$.kind = Value::Kind::Texture; $$.texture = $1; }
   | camera             { $$.kind = Value::Kind::Camera; $$.camera = std::make_shared<CameraSpec>($1); }
@@ -1378,6 +1384,39 @@ sky_sphere_items
                            $$.push_back([c](sg::SkySphere& s) { s.emission = c; }); }
   | sky_sphere_items transform_item { $$ = std::move($1); sg::Mat4 t = $2;
                            $$.push_back([t](sg::SkySphere& s) { s.transform = t * s.transform; }); }
+  ;
+
+/* --------------------------------------------------------------------- fog */
+
+/* POV's Parse_Fog: a declared fog first, then its items in any order;
+   transforms turn only its up vector. */
+fog
+  : "fog" "{" fog_items "}" { $$ = ev.build_fog($3, LOC(@1)); }
+  ;
+
+fog_items
+  : %empty             {}
+  | fog_items FOG_ID   { $$ = std::move($1); auto f = $2.value.fog;
+                         $$.push_back([f](sg::Fog& target) { target = *f; }); }
+  | fog_items fog_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+fog_item
+  : colour_keyword arith %prec OPT_EMPTY { sg::Color c = ev.to_color(ev.colour_from($2, @2), @2); $$ = [c](sg::Fog& f) { f.color = c; }; }
+  /* POV's CASE_COLOUR and CASE_FLOAT: a colour, or the distance unnamed. */
+  | arith %prec OPT_EMPTY              { $$ = ev.fog_value($1, @1); }
+  | "distance" arith %prec OPT_EMPTY    { double d = ev.to_float($2, @2, "a fog distance"); $$ = [d](sg::Fog& f) { f.distance = d; }; }
+  | "fog_type" arith %prec OPT_EMPTY    { $$ = ev.fog_type($2, @2); }
+  | "fog_offset" arith %prec OPT_EMPTY  { double v = ev.to_float($2, @2, "a fog_offset"); $$ = [v](sg::Fog& f) { f.offset = v; }; }
+  | "fog_alt" arith %prec OPT_EMPTY     { double v = ev.to_float($2, @2, "a fog_alt"); $$ = [v](sg::Fog& f) { f.alt = v; }; }
+  | "turb_depth" arith %prec OPT_EMPTY  { double v = ev.to_float($2, @2, "a turb_depth"); $$ = [v](sg::Fog& f) { f.turb_depth = v; }; }
+  | "up" arith %prec OPT_EMPTY          { sg::Vec3 u = ev.nonzero_vec3($2, @2, "a fog's up vector"); $$ = [u](sg::Fog& f) { f.up = u; }; }
+  | "turbulence" arith %prec OPT_EMPTY  { sg::Vec3 t = ev.to_vec3($2, @2);
+                         $$ = [t](sg::Fog& f) { f.turbulent = true; f.turbulence = t; }; }
+  | "octaves" arith %prec OPT_EMPTY     { $$ = ev.fog_octaves($2, @2); }
+  | "omega" arith %prec OPT_EMPTY       { double v = ev.to_float($2, @2, "an omega"); $$ = [v](sg::Fog& f) { f.turbulent = true; f.omega = v; }; }
+  | "lambda" arith %prec OPT_EMPTY      { double v = ev.to_float($2, @2, "a lambda"); $$ = [v](sg::Fog& f) { f.turbulent = true; f.lambda = v; }; }
+  | transform_item     { $$ = ev.fog_transform($1, @1); }
   ;
 
 /* After scattering's type and colour: eccentricity (type 5) and extinction. */

@@ -100,7 +100,8 @@ struct Value {
         File,
         Spline,
         Media,
-        SkySphere
+        SkySphere,
+        Fog
     };
     Kind kind = Kind::Float;
     // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
@@ -115,6 +116,7 @@ struct Value {
     std::shared_ptr<const sg::Interior> interior;
     std::shared_ptr<const sg::Media> media;
     std::shared_ptr<const sg::SkySphere> sky_sphere;
+    std::shared_ptr<const sg::Fog> fog;
     std::shared_ptr<const CameraSpec> camera;
     std::shared_ptr<const sg::Light> light;
     sg::NormalRef normal;

@@ -22,6 +22,7 @@
 
 #include <lancer/integrator.h>
 #include <lancer/shading/local_shading.h>
+#include <lancer/shading/pov_media.h>
 #include "diffuse_point_lanes.h"
 
 namespace {
@@ -54,8 +55,9 @@ class RaycastIntegrator final : public Integrator {
             bool shaded[kLanes];
             lanes.shade(lane_ray, lane_hit, waiting, lane_radiance, shaded);
             for (int k = 0; k < waiting; ++k)
-                radiance[lane_sample[k]] =
-                    shaded[k] ? lane_radiance[k] : shade(*lane_ray[k], lane_hit[k], scene, lighting);
+                radiance[lane_sample[k]] = shaded[k]
+                                               ? seen_through_fog(scene, *lane_ray[k], lane_hit[k], lane_radiance[k])
+                                               : shade(*lane_ray[k], lane_hit[k], scene, lighting);
             waiting = 0;
         };
         for (int i = 0; i < batch.count(); ++i) {
@@ -83,6 +85,11 @@ class RaycastIntegrator final : public Integrator {
     };
 
     Color shade(const Ray& ray, const Hit* found, const RenderScene& scene, const SceneLighting& lighting) const {
+        return seen_through_fog(scene, ray, found, surface_radiance(ray, found, scene, lighting));
+    }
+
+    Color surface_radiance(const Ray& ray, const Hit* found, const RenderScene& scene,
+                           const SceneLighting& lighting) const {
         if (!found) return scene.background(ray);
         const Hit& hit = *found;
         // The same local model as shadow/whitted/gather (local_shading.h),

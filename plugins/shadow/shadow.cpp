@@ -34,6 +34,7 @@
 
 #include <lancer/integrator.h>
 #include <lancer/shading/local_shading.h>
+#include <lancer/shading/pov_media.h>
 
 namespace {
 
@@ -46,6 +47,13 @@ class ShadowIntegrator final : public Integrator {
 
     Color shade_camera_hit(const Ray& ray, const Hit* found, const RenderScene& scene,
                            Sampler& sampler) const override {
+        return seen_through_fog(scene, ray, found, surface_radiance(ray, found, scene, sampler));
+    }
+
+    bool is_deterministic() const override { return m_area_samples == 0; }
+
+  private:
+    Color surface_radiance(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler& sampler) const {
         if (!found) return scene.background(ray);
         const Hit& hit = *found;
         const ShadingContext at = make_shading_context(hit, ray);
@@ -61,9 +69,6 @@ class ShadowIntegrator final : public Integrator {
         return radiance;
     }
 
-    bool is_deterministic() const override { return m_area_samples == 0; }
-
-  private:
     // Mean over area_samples points of the light's surface, each behind its
     // own shadow ray: the Monte Carlo estimate of the lamp's direct light.
     Color sampled_area_light(const RenderScene& scene, const ShadingContext& at, const Light& light,

@@ -910,12 +910,33 @@ struct SkySphere {
     SourceLocation location;
 };
 
+// POV's fog: the view fades into `color` with distance, evenly (type 1) or
+// thicker near the ground (type 2: density 1 below fog_offset along `up`,
+// 1/(1+h^2) at h fog_alts above it), broken up by turbulence.
+struct Fog {
+    enum class Type { Constant = 1, Ground = 2 };
+    Type type = Type::Constant;
+    double distance = 0.0;  // where the fog lets 1/e through; 0: no fog
+    Color color;            // filter tints what it lets through; transmit is its least transmittance
+    double offset = 0.0;    // fog_offset
+    double alt = 0.0;       // fog_alt
+    Vec3 up{0.0, 1.0, 0.0};
+    bool turbulent = false;  // turbulence, octaves, omega or lambda given
+    Vec3 turbulence{0.0};
+    double turb_depth = 0.5;
+    int octaves = 6;
+    double omega = 0.5;
+    double lambda = 2.0;
+    SourceLocation location;
+};
+
 struct SceneGraph {
     std::optional<Camera> camera;  // absent: POV's default camera
     std::vector<Light> lights;
     std::vector<Object> objects;
     Vec3 background{0.0};
     std::optional<SkySphere> sky_sphere;  // the last one written
+    std::vector<Fog> fogs;                // every one applies
     std::vector<Media> atmosphere;        // scene-level media: fill the open, hollow objects included
     GlobalSettings global;
     RenderSettings render;

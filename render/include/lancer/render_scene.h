@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lancer/camera.h"
+#include "lancer/fog.h"
 #include "lancer/hit.h"
 #include "lancer/light.h"
 #include "lancer/material.h"
@@ -66,6 +67,8 @@ class RenderScene {
     // scene-level medium, the atmosphere (empty region: none).
     virtual bool has_media() const { return false; }
     virtual MediumRegion atmosphere() const { return {}; }
+    // POV's fog (lancer/fog.h); null: none, and no integrator looks for it.
+    virtual const SceneFog* fog() const { return nullptr; }
 };
 
 }  // namespace lancer

@@ -122,6 +122,7 @@ class EmbreeScene final : public RenderScene {
     Bounds bounds() const override { return m_data->bounds; }
     bool has_media() const override { return m_data->has_media; }
     MediumRegion atmosphere() const override { return m_data->atmosphere; }
+    const SceneFog* fog() const override { return m_data->fog.get(); }
     // The tables the scene was built from (for the host's own reports).
     const SceneData& data() const { return *m_data; }
 

@@ -109,6 +109,7 @@ class Builder {
     std::unique_ptr<SceneData> run(InsideTest* inside_of_first = nullptr) {
         build_camera();
         m_data->background = Color(m_graph.background);
+        build_fog();
         if (m_graph.sky_sphere)
             m_data->sky = std::make_unique<SkySphere>(*m_graph.sky_sphere, m_data->background,
                                                       m_graph.global.language_version, *m_data->texture_factory);
@@ -257,6 +258,30 @@ class Builder {
         m_data->media.push_back(std::make_unique<Medium>(std::move(components), sampling));
         m_data->has_media = true;
         return m_data->media.back().get();
+    }
+
+    void build_fog() {
+        std::vector<FogLayer> layers;
+        for (const sg::Fog& fog : m_graph.fogs) {
+            FogLayer layer;
+            layer.ground = fog.type == sg::Fog::Type::Ground;
+            layer.distance = float(fog.distance);
+            layer.color = Color(fog.color.rgb);
+            layer.filter = float(fog.color.filter);
+            layer.transmit = float(fog.color.transmit);
+            layer.offset = float(fog.offset);
+            layer.alt = float(fog.alt);
+            layer.up = Vec3(fog.up);
+            layer.turbulent = fog.turbulent;
+            layer.turbulence = Vec3(fog.turbulence);
+            layer.turb_depth = float(fog.turb_depth);
+            layer.octaves = fog.octaves;
+            layer.omega = float(fog.omega);
+            layer.lambda = float(fog.lambda);
+            layers.push_back(layer);
+        }
+        if (!layers.empty())
+            m_data->fog = std::make_unique<SceneFog>(std::move(layers), m_graph.global.noise_generator);
     }
 
     // The scene's media, in world space: a texture space of their own, after every object's.

@@ -41,10 +41,12 @@ SegmentMedia media_before(const RenderScene& scene, const Ray& ray, const Hit* h
         // POV: no media at all in a ray inside a solid object.
         if (!all_hollow) return SegmentMedia{};
         media.open = atmosphere;
+        media.in_open = true;
         return media;
     }
     if (hit == nullptr || hit->is_front_face(-ray.direction)) {
         media.open = atmosphere;
+        media.in_open = true;
         return media;
     }
     // The segment ends on a back face: it ran inside that object.
@@ -52,6 +54,7 @@ SegmentMedia media_before(const RenderScene& scene, const Ray& ray, const Hit* h
     if (!container.hollow) return media;  // a solid object: no media, not even the atmosphere
     if (container.medium) media.interior = MediumRegion{container.medium, hit->object_id};
     media.open = atmosphere;
+    media.in_open = true;
     return media;
 }
 

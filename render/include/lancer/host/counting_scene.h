@@ -41,6 +41,7 @@ class CountingScene final : public RenderScene {
     Bounds bounds() const override { return m_inner.bounds(); }
     bool has_media() const override { return m_inner.has_media(); }
     MediumRegion atmosphere() const override { return m_inner.atmosphere(); }
+    const SceneFog* fog() const override { return m_inner.fog(); }
 
     // Queries so far, over every thread. Exact once the threads are idle.
     std::uint64_t rays() const;

@@ -57,6 +57,7 @@ struct SegmentMedia {
     MediumRegion interior;
     MediumRegion outer_interior;  // a second, enclosing interior with media
     MediumRegion open;
+    bool in_open = false;  // outside every solid object: the atmosphere and fog apply
     bool empty() const { return !interior && !outer_interior && !open; }
 };
 SegmentMedia media_before(const RenderScene& scene, const Ray& ray, const Hit* hit, const InteriorStack& inside = {});
@@ -78,11 +79,13 @@ Color pov_media_optical_depth(const MediumRegion& region, const Vec3& origin, co
 // What an integrator calls with the radiance it found along `ray` (hit null:
 // the background): the radiance after the segment's media. Free when the
 // scene has none.
+// Fog (lancer/fog.h) comes last, nearest the eye, as in POV.
 inline Color seen_through_media(const RenderScene& scene, const Ray& ray, const Hit* hit, const Color& radiance,
                                 Sampler& sampler, const InteriorStack& inside) {
-    if (!scene.has_media()) return radiance;
+    const SceneFog* fog = scene.fog();
+    if (!scene.has_media() && fog == nullptr) return radiance;
     const SegmentMedia media = media_before(scene, ray, hit, inside);
-    if (media.empty()) return radiance;
+    if (media.empty() && !(fog && media.in_open)) return radiance;
     const float scale = glm::length(ray.direction);
     const Vec3 direction = ray.direction / scale;
     const float length = hit ? hit->t * scale : kMediaEscapeDistance;
@@ -91,7 +94,18 @@ inline Color seen_through_media(const RenderScene& scene, const Ray& ray, const 
     if (media.outer_interior)
         seen = pov_media_radiance(scene, media.outer_interior, ray.origin, direction, length, seen, sampler);
     if (media.open) seen = pov_media_radiance(scene, media.open, ray.origin, direction, length, seen, sampler);
+    if (fog && media.in_open) seen = fog->seen_through(ray.origin, direction, length, seen);
     return seen;
+}
+
+// Fog alone along a camera ray, for the integrators without media (raycast,
+// shadow): free without fog.
+inline Color seen_through_fog(const RenderScene& scene, const Ray& ray, const Hit* hit, const Color& radiance) {
+    const SceneFog* fog = scene.fog();
+    if (fog == nullptr || !media_before(scene, ray, hit).in_open) return radiance;
+    const float scale = glm::length(ray.direction);
+    const float length = hit ? hit->t * scale : kFogEscapeDistance;
+    return fog->seen_through(ray.origin, ray.direction / scale, length, radiance);
 }
 
 }  // namespace lancer

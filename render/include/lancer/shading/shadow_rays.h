@@ -47,8 +47,15 @@ inline Color transmittance_to(const RenderScene& scene, const Hit& from, const V
     Ray ray = from.spawn_ray_to(target);
     // POV's media_attenuation: the atmosphere dims the light on its way.
     Color dimmed(1.0f);
-    if (own_light != nullptr && own_light->dimmed_by_atmosphere() && scene.has_media())
-        dimmed = atmosphere_transmittance(scene, ray);
+    if (own_light != nullptr && own_light->dimmed_by_atmosphere()) {
+        if (scene.has_media()) dimmed = atmosphere_transmittance(scene, ray);
+        // And fog, which dims without adding its colour (POV's shadow rays).
+        if (const SceneFog* fog = scene.fog()) {
+            const float scale = glm::length(ray.direction);
+            const float length = std::isfinite(ray.t_max) ? ray.t_max * scale : kFogEscapeDistance;
+            dimmed *= fog->transmittance(ray.origin, ray.direction / scale, length);
+        }
+    }
     if (!scene.occluded(ray)) return dimmed;  // the common case: one cheap query
 
     // Walk the surfaces in between, nearest first. The bound only guards
