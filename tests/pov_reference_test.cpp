@@ -33,7 +33,8 @@
 // sky_spheres (layered pigments over the background, 3.7's and 3.6's
 // compositing, emission, transforms, skies.inc, seen in mirrors) and fog
 // (constant and ground, filter and transmit, turbulence, several fogs,
-// solid and hollow objects, a light's media_attenuation).
+// solid and hollow objects, a light's media_attenuation) and rainbows (arc,
+// falloff, filter and transmit, fading with distance).
 #include <filesystem>
 #include <string>
 
@@ -80,19 +81,21 @@ TEST_P(PovReference, WhittedMatchesPovRay) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, PovReference,
-    ::testing::Values(
-        "wall_point_light", "spotlights", "area_room", "area_circular", "cylinder_parallel", "looks_like_projected",
-        "finishes", "gamma", "legacy_gamma", "area_illumination", "orthographic_down", "orthographic_default_size",
-        "quadric_family", "csg_solids", "csg_glass", "polygons_polynomials", "superellipsoids", "blobs", "prisms",
-        "lathes", "text", "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals", "height_fields",
-        "patterns_geometric", "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
-        "patterns_tilings_more", "normals", "textures", "tiles", "uv_mapping", "csg_meshes", "images", "object_pattern",
-        "irid_backside", "functions", "isosurfaces", "height_field_functions", "camera_fisheye", "camera_fisheye_360",
-        "camera_ultra_wide_angle", "camera_omnimax", "camera_panoramic", "camera_cylinder_1", "camera_cylinder_2",
-        "camera_cylinder_3", "camera_cylinder_4", "camera_spherical", "camera_spherical_narrow", "camera_transforms",
-        "camera_orthographic_bare_angle", "camera_normal", "camera_mesh_per_pixel", "camera_mesh_side_by_side",
-        "camera_mesh_uv_smooth", "camera_mesh_summed", "camera_mesh_averaged", "media_emission", "media_scattering",
-        "media_absorbing_glass", "sky_layers", "sky_legacy", "sky_skies_inc"),
+    ::testing::Values("wall_point_light", "spotlights", "area_room", "area_circular", "cylinder_parallel",
+                      "looks_like_projected", "finishes", "gamma", "legacy_gamma", "area_illumination",
+                      "orthographic_down", "orthographic_default_size", "quadric_family", "csg_solids", "csg_glass",
+                      "polygons_polynomials", "superellipsoids", "blobs", "prisms", "lathes", "text", "sors", "ovus",
+                      "sphere_sweeps", "bicubic_patches", "julia_fractals", "height_fields", "patterns_geometric",
+                      "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
+                      "patterns_tilings_more", "normals", "textures", "tiles", "uv_mapping", "csg_meshes", "images",
+                      "object_pattern", "irid_backside", "functions", "isosurfaces", "height_field_functions",
+                      "camera_fisheye", "camera_fisheye_360", "camera_ultra_wide_angle", "camera_omnimax",
+                      "camera_panoramic", "camera_cylinder_1", "camera_cylinder_2", "camera_cylinder_3",
+                      "camera_cylinder_4", "camera_spherical", "camera_spherical_narrow", "camera_transforms",
+                      "camera_orthographic_bare_angle", "camera_normal", "camera_mesh_per_pixel",
+                      "camera_mesh_side_by_side", "camera_mesh_uv_smooth", "camera_mesh_summed", "camera_mesh_averaged",
+                      "media_emission", "media_scattering", "media_absorbing_glass", "sky_layers", "sky_legacy",
+                      "sky_skies_inc", "fog_constant", "fog_ground", "fog_turbulent", "fog_hollow", "rainbow"),
     [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 // Isosurfaces of POV's internal functions (f_helix1, f_torus2, f_helix2,

@@ -266,6 +266,8 @@ class Evaluator {
 
     // ---- media (media.cpp)
     std::shared_ptr<sg::Media> build_media(const Edits<sg::Media>& edits, const sg::SourceLocation& at);
+    std::shared_ptr<sg::Rainbow> build_rainbow(const Edits<sg::Rainbow>& edits, const sg::SourceLocation& at);
+    std::function<void(sg::Rainbow&)> rainbow_angle(bool arc, const Value& v, const SourceRange& where);
     std::shared_ptr<sg::Fog> build_fog(const Edits<sg::Fog>& edits, const sg::SourceLocation& at);
     std::function<void(sg::Fog&)> fog_value(const Value& v, const SourceRange& where);
     std::function<void(sg::Fog&)> fog_type(const Value& v, const SourceRange& where);

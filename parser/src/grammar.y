@@ -54,7 +54,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        INTERIOR_ID "interior identifier" CAMERA_ID "camera identifier"
        LIGHT_ID "light_source identifier" TRANSFORM_ID "transform identifier"
        FUNCTION_LITERAL "function definition" FUNCTION_ID "function identifier" SPLINE_ID "spline identifier" MEDIA_ID "media identifier"
-       SKY_SPHERE_ID "sky_sphere identifier" FOG_ID "fog identifier"
+       SKY_SPHERE_ID "sky_sphere identifier" FOG_ID "fog identifier" RAINBOW_ID "rainbow identifier"
        UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" FUNCTION_OPEN "function {"
        UNSUPPORTED "unsupported keyword"
 
@@ -64,7 +64,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        INTERSECTION "intersection" OBJECT "object" OBJ_MESH "obj_mesh"
        LIGHT_SOURCE "light_source" CAMERA "camera" MESH_CAMERA "mesh_camera" BACKGROUND "background"
        SKY_SPHERE "sky_sphere" FOG "fog" FOG_TYPE "fog_type" FOG_OFFSET "fog_offset" FOG_ALT "fog_alt"
-       TURB_DEPTH "turb_depth" DISTANCE "distance"
+       TURB_DEPTH "turb_depth" DISTANCE "distance" RAINBOW "rainbow" WIDTH "width" ARC_ANGLE "arc_angle"
+       FALLOFF_ANGLE "falloff_angle"
        GLOBAL_SETTINGS "global_settings" RENDER_SETTINGS "render_settings"
        TRANSLATE "translate" ROTATE "rotate" SCALE "scale" MATRIX "matrix" TRANSFORM "transform"
        INVERSE "inverse" TEXTURE "texture" PIGMENT "pigment" FINISH "finish" INTERIOR "interior"
@@ -167,6 +168,9 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::shared_ptr<sg::SkySphere>> sky_sphere
 %nterm <Edits<sg::SkySphere>> sky_sphere_items
 %nterm <std::shared_ptr<sg::Fog>> fog
+%nterm <std::shared_ptr<sg::Rainbow>> rainbow
+%nterm <Edits<sg::Rainbow>> rainbow_items
+%nterm <std::function<void(sg::Rainbow&)>> rainbow_item
 %nterm <Edits<sg::Fog>> fog_items
 %nterm <std::function<void(sg::Fog&)>> fog_item
 %nterm <Edits<sg::Media>> media_items scattering_items
@@ -320,6 +324,7 @@ scene_item
   | media              { ev.scene().atmosphere.push_back(*$1); }
   | sky_sphere         { ev.scene().sky_sphere = *$1; }
   | fog                { ev.scene().fogs.push_back(*$1); }
+  | rainbow            { ev.scene().rainbows.push_back(*$1); }
   | "global_settings" "{" global_items "}"
   | "render_settings" "{" render_items "}" { ev.scene().render.location = LOC(@1); }
   | ";"                { ev.warning(LOC(@1), "stray ';' ignored"); }
@@ -340,6 +345,7 @@ declared_non_scalar
   | media              { $$.kind = Value::Kind::Media; $$.media = $1; }
   | sky_sphere         { $$.kind = Value::Kind::SkySphere; $$.sky_sphere = $1; }
   | fog                { $$.kind = Value::Kind::Fog; $$.fog = $1; }
+  | rainbow            { $$.kind = Value::Kind::Rainbow; $$.rainbow = $1; }
   | "density" "{" pigment_edits "}" { $$.kind = Value::Kind::Pigment; $$.pigment = ev.build_density($3, LOC(@1)); }
   | material           { $$.kind = Value::Kind::Texture; $$.texture = $1; }
   | camera             { $$.kind = Value::Kind::Camera; $$.camera = std::make_shared<CameraSpec>($1); }
@@ -1419,6 +1425,32 @@ fog_item
   | transform_item     { $$ = ev.fog_transform($1, @1); }
   ;
 
+/* ----------------------------------------------------------------- rainbow */
+
+/* POV's Parse_Rainbow: a declared rainbow first, then its items. */
+rainbow
+  : "rainbow" "{" rainbow_items "}" { $$ = ev.build_rainbow($3, LOC(@1)); }
+  ;
+
+rainbow_items
+  : %empty             {}
+  | rainbow_items RAINBOW_ID { $$ = std::move($1); auto r = $2.value.rainbow;
+                         $$.push_back([r](sg::Rainbow& target) { target = *r; }); }
+  | rainbow_items rainbow_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+rainbow_item
+  : "angle" expr       { double v = ev.to_float($2, @2, "a rainbow angle"); $$ = [v](sg::Rainbow& r) { r.angle = v; }; }
+  | "width" expr       { double v = ev.to_float($2, @2, "a rainbow width"); $$ = [v](sg::Rainbow& r) { r.width = v; }; }
+  | "distance" expr    { double v = ev.to_float($2, @2, "a rainbow distance"); $$ = [v](sg::Rainbow& r) { r.distance = v; }; }
+  | "jitter" expr      { double v = ev.to_float($2, @2, "a rainbow jitter"); $$ = [v](sg::Rainbow& r) { r.jitter = v; }; }
+  | "direction" expr   { sg::Vec3 v = ev.to_vec3($2, @2); $$ = [v](sg::Rainbow& r) { r.direction = v; }; }
+  | "up" expr          { sg::Vec3 v = ev.to_vec3($2, @2); $$ = [v](sg::Rainbow& r) { r.up = v; }; }
+  | "arc_angle" expr   { $$ = ev.rainbow_angle(true, $2, @2); }
+  | "falloff_angle" expr { $$ = ev.rainbow_angle(false, $2, @2); }
+  | color_map          { auto m = $1; $$ = [m](sg::Rainbow& r) { r.color_map = m; }; }
+  ;
+
 /* After scattering's type and colour: eccentricity (type 5) and extinction. */
 scattering_items
   : %empty             {}
@@ -1789,6 +1821,7 @@ param_name
   | BUILTIN            { $$ = $1.text; }
   | "ambient"          { $$ = "ambient"; }
   | "jitter"           { $$ = "jitter"; }
+  | "width"            { $$ = "width"; }
   | "adaptive"         { $$ = "adaptive"; }
   | "exponent"         { $$ = "exponent"; }
   | "radius"           { $$ = "radius"; }

@@ -242,9 +242,9 @@ TEST(ParserTextures, BlocksEditWhatTheTextureHas) {
 }
 
 TEST(ParserDirectives, DeclaringAnIgnoredBlockDeclaresNothingAndReadsNoFurther) {
-    // An ignored block declared (a rainbow); the next statement must stay its own.
+    // An ignored block declared; the next statement must stay its own.
     ParseResult result =
-        parse_scene_string("#declare R = rainbow { angle 42 width 5 }\n#declare A = 2;\nsphere { 0, A }", "s.pov");
+        parse_scene_string("#declare P = photons { spacing 0.1 }\n#declare A = 2;\nsphere { 0, A }", "s.pov");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     ASSERT_EQ(result.scene->objects.size(), 1u);
     EXPECT_DOUBLE_EQ(std::get<sg::Sphere>(result.scene->objects[0].shape).radius, 2.0);

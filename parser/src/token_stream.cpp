@@ -54,8 +54,8 @@ const std::unordered_set<std::string>& builtin_names() {
 
 // Ignored POV blocks: swallowed with a warning so nothing is dropped silently.
 const std::unordered_set<std::string>& ignored_blocks() {
-    static const std::unordered_set<std::string> names = {"photons",          "radiosity",  "rainbow",
-                                                          "interior_texture", "subsurface", "mm_per_unit"};
+    static const std::unordered_set<std::string> names = {"photons", "radiosity", "interior_texture", "subsurface",
+                                                          "mm_per_unit"};
     return names;
 }
 
@@ -430,6 +430,7 @@ Evaluator::Kind Evaluator::token_for_value(const Value& value) {
     case VK::Media: return Parser::token::TOK_MEDIA_ID;
     case VK::SkySphere: return Parser::token::TOK_SKY_SPHERE_ID;
     case VK::Fog: return Parser::token::TOK_FOG_ID;
+    case VK::Rainbow: return Parser::token::TOK_RAINBOW_ID;
     case VK::Camera: return Parser::token::TOK_CAMERA_ID;
     case VK::Light: return Parser::token::TOK_LIGHT_ID;
     case VK::Transform: return Parser::token::TOK_TRANSFORM_ID;

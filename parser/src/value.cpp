@@ -41,6 +41,7 @@ std::string describe(Value::Kind kind) {
     case Value::Kind::Media: return "a media";
     case Value::Kind::SkySphere: return "a sky_sphere";
     case Value::Kind::Fog: return "a fog";
+    case Value::Kind::Rainbow: return "a rainbow";
     case Value::Kind::Camera: return "a camera";
     case Value::Kind::Light: return "a light_source";
     case Value::Kind::Transform: return "a transform";

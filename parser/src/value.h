@@ -101,7 +101,8 @@ struct Value {
         Spline,
         Media,
         SkySphere,
-        Fog
+        Fog,
+        Rainbow
     };
     Kind kind = Kind::Float;
     // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
@@ -117,6 +118,7 @@ struct Value {
     std::shared_ptr<const sg::Media> media;
     std::shared_ptr<const sg::SkySphere> sky_sphere;
     std::shared_ptr<const sg::Fog> fog;
+    std::shared_ptr<const sg::Rainbow> rainbow;
     std::shared_ptr<const CameraSpec> camera;
     std::shared_ptr<const sg::Light> light;
     sg::NormalRef normal;

@@ -930,6 +930,25 @@ struct Fog {
     SourceLocation location;
 };
 
+// POV's rainbow: a colour map laid around the antisolar direction, from
+// `angle - width/2` to `angle + width/2` degrees off it, over an arc.
+struct Rainbow {
+    double angle = 0.0;     // degrees
+    double width = 0.0;     // degrees; 0: no rainbow
+    double distance = 1e7;  // POV's MAX_DISTANCE
+    double jitter = 0.0;
+    Vec3 direction{0.0};  // the antisolar direction (not zero)
+    Vec3 up{0.0, 1.0, 0.0};
+    // POV's half-angles in radians once given; POV keeps 180 (as radians:
+    // every direction) when neither is.
+    double arc_angle = 180.0;
+    double falloff_angle = 180.0;
+    bool arc_angle_given = false;
+    bool falloff_angle_given = false;
+    ColorMapRef color_map;
+    SourceLocation location;
+};
+
 struct SceneGraph {
     std::optional<Camera> camera;  // absent: POV's default camera
     std::vector<Light> lights;
@@ -937,6 +956,7 @@ struct SceneGraph {
     Vec3 background{0.0};
     std::optional<SkySphere> sky_sphere;  // the last one written
     std::vector<Fog> fogs;                // every one applies
+    std::vector<Rainbow> rainbows;        // every one applies
     std::vector<Media> atmosphere;        // scene-level media: fill the open, hollow objects included
     GlobalSettings global;
     RenderSettings render;

@@ -14,6 +14,7 @@
 #include "lancer/light.h"
 #include "lancer/material.h"
 #include "lancer/medium.h"
+#include "lancer/rainbow.h"
 
 namespace lancer {
 
@@ -69,6 +70,8 @@ class RenderScene {
     virtual MediumRegion atmosphere() const { return {}; }
     // POV's fog (lancer/fog.h); null: none, and no integrator looks for it.
     virtual const SceneFog* fog() const { return nullptr; }
+    // POV's rainbows (lancer/rainbow.h); null: none.
+    virtual const SceneRainbows* rainbows() const { return nullptr; }
 };
 
 }  // namespace lancer

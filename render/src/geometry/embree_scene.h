@@ -123,6 +123,7 @@ class EmbreeScene final : public RenderScene {
     bool has_media() const override { return m_data->has_media; }
     MediumRegion atmosphere() const override { return m_data->atmosphere; }
     const SceneFog* fog() const override { return m_data->fog.get(); }
+    const SceneRainbows* rainbows() const override { return m_data->rainbows.get(); }
     // The tables the scene was built from (for the host's own reports).
     const SceneData& data() const { return *m_data; }
 

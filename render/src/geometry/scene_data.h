@@ -90,8 +90,9 @@ struct SceneData {
     Camera camera;
     std::unique_ptr<MeshCameraRays> mesh_camera;  // a mesh_camera's faces, which `camera` reads
     Color background{0.0f};
-    std::unique_ptr<SkySphere> sky;  // null: escaping rays see `background`
-    std::unique_ptr<SceneFog> fog;   // null: no fog
+    std::unique_ptr<SkySphere> sky;           // null: escaping rays see `background`
+    std::unique_ptr<SceneFog> fog;            // null: no fog
+    std::unique_ptr<SceneRainbows> rainbows;  // null: none
     SceneOptions options;
     Bounds bounds;
     // Each isosurface's steepest slope met while rendering, for POV's

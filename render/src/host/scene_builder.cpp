@@ -17,6 +17,7 @@
 #include "geometry/sphere_sweep.h"
 #include "lancer/host/scene_compiler.h"
 #include "lancer/scene_error.h"
+#include "materials/point_pigment.h"
 
 namespace lancer {
 namespace {
@@ -110,6 +111,7 @@ class Builder {
         build_camera();
         m_data->background = Color(m_graph.background);
         build_fog();
+        build_rainbows();
         if (m_graph.sky_sphere)
             m_data->sky = std::make_unique<SkySphere>(*m_graph.sky_sphere, m_data->background,
                                                       m_graph.global.language_version, *m_data->texture_factory);
@@ -282,6 +284,35 @@ class Builder {
         }
         if (!layers.empty())
             m_data->fog = std::make_unique<SceneFog>(std::move(layers), m_graph.global.noise_generator);
+    }
+
+    // POV's set-up (Parse_Rainbow): up squared to the antisolar direction,
+    // the map starting half a width before `angle`.
+    void build_rainbows() {
+        std::vector<RainbowArc> arcs;
+        std::vector<std::unique_ptr<PointPigment>> maps;
+        for (const sg::Rainbow& rainbow : m_graph.rainbows) {
+            if (!rainbow.color_map) continue;
+            RainbowArc arc;
+            const DVec3 antisolar = glm::normalize(rainbow.direction);
+            const DVec3 right = glm::normalize(glm::cross(glm::normalize(rainbow.up), antisolar));
+            arc.antisolar = Vec3(antisolar);
+            arc.right = Vec3(right);
+            arc.up = Vec3(glm::normalize(glm::cross(antisolar, right)));
+            arc.start_angle = glm::radians(rainbow.angle - 0.5 * rainbow.width);
+            arc.width = glm::radians(rainbow.width);
+            arc.distance = rainbow.distance;
+            arc.jitter = rainbow.jitter;
+            arc.arc_angle = rainbow.arc_angle;
+            arc.falloff_angle = rainbow.falloff_angle;
+            sg::Pigment map;  // POV's gradient x through the map, read at (index, 0, 0)
+            map.kind = sg::Pigment::Kind::Patterned;
+            map.color_map = rainbow.color_map;
+            map.location = rainbow.location;
+            maps.push_back(m_data->texture_factory->make_point_pigment(map));
+            arcs.push_back(arc);
+        }
+        if (!arcs.empty()) m_data->rainbows = std::make_unique<SceneRainbows>(std::move(arcs), std::move(maps));
     }
 
     // The scene's media, in world space: a texture space of their own, after every object's.

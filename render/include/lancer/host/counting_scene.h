@@ -42,6 +42,7 @@ class CountingScene final : public RenderScene {
     bool has_media() const override { return m_inner.has_media(); }
     MediumRegion atmosphere() const override { return m_inner.atmosphere(); }
     const SceneFog* fog() const override { return m_inner.fog(); }
+    const SceneRainbows* rainbows() const override { return m_inner.rainbows(); }
 
     // Queries so far, over every thread. Exact once the threads are idle.
     std::uint64_t rays() const;

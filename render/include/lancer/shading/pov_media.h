@@ -79,17 +79,20 @@ Color pov_media_optical_depth(const MediumRegion& region, const Vec3& origin, co
 // What an integrator calls with the radiance it found along `ray` (hit null:
 // the background): the radiance after the segment's media. Free when the
 // scene has none.
-// Fog (lancer/fog.h) comes last, nearest the eye, as in POV.
+// Rainbows (lancer/rainbow.h) come first, fog (lancer/fog.h) last, nearest
+// the eye, as in POV.
 inline Color seen_through_media(const RenderScene& scene, const Ray& ray, const Hit* hit, const Color& radiance,
                                 Sampler& sampler, const InteriorStack& inside) {
     const SceneFog* fog = scene.fog();
-    if (!scene.has_media() && fog == nullptr) return radiance;
+    const SceneRainbows* rainbows = scene.rainbows();
+    if (!scene.has_media() && fog == nullptr && rainbows == nullptr) return radiance;
     const SegmentMedia media = media_before(scene, ray, hit, inside);
-    if (media.empty() && !(fog && media.in_open)) return radiance;
+    if (media.empty() && !((fog || rainbows) && media.in_open)) return radiance;
     const float scale = glm::length(ray.direction);
     const Vec3 direction = ray.direction / scale;
     const float length = hit ? hit->t * scale : kMediaEscapeDistance;
     Color seen = radiance;
+    if (rainbows && media.in_open) seen = rainbows->seen_through(direction, length, seen);
     if (media.interior) seen = pov_media_radiance(scene, media.interior, ray.origin, direction, length, seen, sampler);
     if (media.outer_interior)
         seen = pov_media_radiance(scene, media.outer_interior, ray.origin, direction, length, seen, sampler);
@@ -98,14 +101,19 @@ inline Color seen_through_media(const RenderScene& scene, const Ray& ray, const 
     return seen;
 }
 
-// Fog alone along a camera ray, for the integrators without media (raycast,
-// shadow): free without fog.
+// Rainbows and fog alone along a camera ray, for the integrators without
+// media (raycast, shadow): free without either.
 inline Color seen_through_fog(const RenderScene& scene, const Ray& ray, const Hit* hit, const Color& radiance) {
     const SceneFog* fog = scene.fog();
-    if (fog == nullptr || !media_before(scene, ray, hit).in_open) return radiance;
+    const SceneRainbows* rainbows = scene.rainbows();
+    if ((fog == nullptr && rainbows == nullptr) || !media_before(scene, ray, hit).in_open) return radiance;
     const float scale = glm::length(ray.direction);
+    const Vec3 direction = ray.direction / scale;
     const float length = hit ? hit->t * scale : kFogEscapeDistance;
-    return fog->seen_through(ray.origin, ray.direction / scale, length, radiance);
+    Color seen = radiance;
+    if (rainbows) seen = rainbows->seen_through(direction, length, seen);
+    if (fog) seen = fog->seen_through(ray.origin, direction, length, seen);
+    return seen;
 }
 
 }  // namespace lancer

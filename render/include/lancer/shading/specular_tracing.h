@@ -116,7 +116,7 @@ Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene,
         const float next_weight = weight * max_component(path_weight);
         if (level + 1 > options.max_depth || next_weight < options.min_weight) return;
         // A transmitted ray enters or leaves the object (media see it).
-        const bool crosses = transmitted && (scene.has_media() || scene.fog() != nullptr);
+        const bool crosses = transmitted && (scene.has_media() || scene.fog() || scene.rainbows());
         Color seen = trace_specular(hit.spawn_ray(direction), scene, sampler, options, local_term, level + 1,
                                     next_weight, crosses ? inside.crossed(hit, at.entering) : inside);
         // POV's reflection exponent raises the reflected colour to a power.
