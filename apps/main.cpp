@@ -21,8 +21,22 @@ int main(int argc, char** argv) {
         lancer::app::add_plugins_command(app),
         lancer::app::add_trade_command(app),
     };
+    // POV-Ray's switches for alpha output, as its users type them: the
+    // last of +UA and -UA decides, as in POV-Ray.
+    std::vector<std::string> arguments;
+    bool last_alpha_switch_seen = false;
+    for (int i = argc - 1; i >= 1; --i) {
+        const std::string argument = argv[i];
+        const bool plus = argument == "+UA" || argument == "+ua", minus = argument == "-UA" || argument == "-ua";
+        if (plus || minus) {
+            if (!last_alpha_switch_seen && plus) arguments.push_back("--alpha");
+            last_alpha_switch_seen = true;  // seen from the end: this one is the last
+        } else {
+            arguments.push_back(argument);
+        }
+    }
     try {
-        app.parse(argc, argv);
+        app.parse(arguments);  // CLI11 takes them last first
     } catch (const CLI::ParseError& error) {
         // Printed by the failure message above, with the offending argument.
         int status = app.exit(error);

@@ -31,6 +31,7 @@
 #include "cli_output.h"
 #include "commands.h"
 #include "distribution.h"
+#include "lancer/host/aov.h"
 #include "lancer/host/checkpoint.h"
 #include "lancer/host/counting_scene.h"
 #include "lancer/host/image_io.h"
@@ -114,6 +115,10 @@ struct RenderArguments {
     bool safe = false;   // --safe: files only from the scene's folder and the include path
     std::string frames;  // --frames A..B: an animation, one image per frame
     std::string clock;   // --clock C0..C1 (default 0..1)
+    std::string aov;     // --aov albedo,normal,...: layers in the EXR beside the beauty
+    bool alpha = false;  // --alpha (POV's +UA): an alpha channel
+    int png_bits = 8;    // --bits
+    int jpeg_quality = 90;
     SceneInputOptions inputs;
     long long max_memory_bytes = ParseOptions{}.max_memory_bytes;  // --max-memory
     // Which options the user gave (CLI11 leaves the others untouched).
@@ -128,6 +133,9 @@ struct RenderArguments {
     CLI::Option* checkpoint_option = nullptr;
     CLI::Option* frames_option = nullptr;
     CLI::Option* clock_option = nullptr;
+    CLI::Option* aov_option = nullptr;
+    CLI::Option* bits_option = nullptr;
+    CLI::Option* quality_option = nullptr;
 };
 
 // One image to make: a still, or one frame of an animation with its own
@@ -141,6 +149,8 @@ struct FrameJob {
     // interrupted render writes no image (a rank that died ends the job, and
     // only a whole image may be left), and signal handlers are the caller's.
     bool distributed = false;
+    // This frame's part of the animation's progress.
+    ProgressShare progress;
 };
 
 // "x0,y0,x1,y1" as four integers, nothing else.
@@ -156,6 +166,74 @@ bool parse_crop(const std::string& text, CropWindow& crop) {
     if (!stream.eof()) return false;
     crop = {values[0], values[1], values[2], values[3]};
     return true;
+}
+
+// The layers --aov names, and whether the image has an alpha channel
+// (--alpha, or alpha among the layers: either way the A channel).
+struct OutputLayers {
+    std::vector<Aov> layers;
+    bool alpha = false;
+};
+
+OutputLayers output_layers(const RenderArguments& arguments) {
+    OutputLayers out;
+    out.alpha = arguments.alpha;
+    if (arguments.aov_option->count()) {
+        std::string ignored;
+        for (Aov aov : parse_aov_list(arguments.aov, ignored)) {
+            if (aov == Aov::Alpha)
+                out.alpha = true;
+            else
+                out.layers.push_back(aov);
+        }
+    }
+    return out;
+}
+
+// --aov, --alpha, --bits and --quality against the output's format.
+int check_output_format(const RenderArguments& arguments) {
+    const std::string output = arguments.output.empty() ? std::string("image.png") : arguments.output;
+    const std::string shown = arguments.output.empty() ? std::string("the default .png output") : "'" + output + "'";
+    if (arguments.aov_option->count()) {
+        std::string problem;
+        parse_aov_list(arguments.aov, problem);
+        if (!problem.empty()) {
+            print_error("--aov: " + problem);
+            return kExitUsage;
+        }
+    }
+    const OutputLayers wanted = output_layers(arguments);
+    if (!wanted.layers.empty() && !image_format_has_layers(output)) {
+        print_error("--aov writes its layers into one multi-layer EXR beside the beauty: use -o NAME.exr, not " +
+                    shown);
+        return kExitUsage;
+    }
+    if (wanted.alpha && !image_format_has_alpha(output)) {
+        print_error("an alpha channel (--alpha, +UA) needs a format that holds one (.png, .exr, .tif), not " + shown);
+        return kExitUsage;
+    }
+    if (arguments.bits_option->count()) {
+        if (arguments.png_bits != 8 && arguments.png_bits != 16) {
+            print_error("--bits must be 8 or 16, got " + std::to_string(arguments.png_bits));
+            return kExitUsage;
+        }
+        if (fs::path(output).extension() != ".png" && fs::path(output).extension() != ".PNG") {
+            print_error("--bits chooses a PNG's depth (TIFF is 16-bit, EXR float), not for " + shown);
+            return kExitUsage;
+        }
+    }
+    if (arguments.quality_option->count()) {
+        if (arguments.jpeg_quality < 1 || arguments.jpeg_quality > 100) {
+            print_error("--quality must be 1 to 100, got " + std::to_string(arguments.jpeg_quality));
+            return kExitUsage;
+        }
+        const std::string ext = fs::path(output).extension().string();
+        if (ext != ".jpg" && ext != ".jpeg" && ext != ".JPG" && ext != ".JPEG") {
+            print_error("--quality is a JPEG's (-o NAME.jpg), not for " + shown);
+            return kExitUsage;
+        }
+    }
+    return 0;
 }
 
 // Checks that need nothing but the arguments; returns an exit status, or 0.
@@ -212,10 +290,10 @@ int check_arguments(const RenderArguments& arguments) {
     }
     if (!arguments.output.empty() && !is_supported_image_extension(arguments.output)) {
         print_error("cannot write '" + arguments.output +
-                    "': unknown image extension (use .png, .exr, .hdr, .tif or .tiff)");
+                    "': unknown image extension (use .png, .jpg, .exr, .hdr, .tif or .tiff)");
         return kExitUsage;
     }
-    return 0;
+    return check_output_format(arguments);
 }
 
 std::vector<std::pair<std::string, std::string>> parameter_list(const ParameterSet& parameters) {
@@ -386,6 +464,7 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
 
     RenderOptions options;
     if (const int status = settle_image_options(arguments, settings, options)) return status;
+    options.progress_share = job.progress;
 
     if (const int status = check_film_fits(options)) return status;
 
@@ -507,9 +586,24 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
         ImageWriteOptions write_options;
         write_options.sample_count_channel =
             stats.interrupted || stats.min_samples_per_pixel != stats.max_samples_per_pixel;
-        write_options.metadata = stats_metadata(report);
         write_options.working_gamma = scene.working_gamma;
         write_options.gamma_correction = scene.gamma_correction;
+        write_options.png_bits = arguments.png_bits;
+        write_options.jpeg_quality = arguments.jpeg_quality;
+        const OutputLayers wanted = output_layers(arguments);
+        if (!wanted.layers.empty() || wanted.alpha) {
+            std::vector<Aov> passes = wanted.layers;
+            if (wanted.alpha) passes.push_back(Aov::Alpha);
+            std::vector<ImageLayer> rendered =
+                render_aovs(*scene.scene, *integrator, passes, options, aov_samples_for(stats.mean_samples_per_pixel));
+            if (wanted.alpha) {
+                write_options.alpha = std::move(rendered.back().values);
+                rendered.pop_back();
+            }
+            write_options.layers = std::move(rendered);
+        }
+        report.total_seconds = seconds_so_far();
+        write_options.metadata = stats_metadata(report);
         write_image(film, output, write_options);
         warn_after_render(*scene.scene);
         if (stats.interrupted && (checkpointing || arguments.resume)) write_checkpoint(checkpoint_path, identity, film);
@@ -549,8 +643,12 @@ int render_frames_distributed(const RenderArguments& arguments, const AnimationR
                               const std::string& stats, Distribution& distribution) {
     std::vector<int> frames;
     const auto job_for = [&](int frame) {
-        return FrameJob{range.frame(frame), frame_file_name(output, frame, range.final_frame),
-                        stats.empty() ? std::string() : frame_file_name(stats, frame, range.final_frame), true, true};
+        return FrameJob{range.frame(frame),
+                        frame_file_name(output, frame, range.final_frame),
+                        stats.empty() ? std::string() : frame_file_name(stats, frame, range.final_frame),
+                        true,
+                        true,
+                        ProgressShare{}};
     };
     for (int frame = range.initial_frame; frame <= range.final_frame; ++frame) {
         const FrameJob job = job_for(frame);
@@ -590,7 +688,8 @@ int render_command(const RenderArguments& arguments, Distribution* distribution)
         const auto seconds_so_far = [&] {
             return age_at_start + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         };
-        return render_frame(arguments, FrameJob{AnimationFrame{}, output, stats, false, distribution != nullptr},
+        return render_frame(arguments,
+                            FrameJob{AnimationFrame{}, output, stats, false, distribution != nullptr, ProgressShare{}},
                             seconds_so_far, distribution);
     }
     std::string problem;
@@ -601,12 +700,22 @@ int render_command(const RenderArguments& arguments, Distribution* distribution)
         return kExitUsage;
     }
     if (distribution) return render_frames_distributed(arguments, *range, output, stats, *distribution);
+    const int frame_count = range->final_frame - range->initial_frame + 1;
+    const auto animation_started = std::chrono::steady_clock::now();
     for (int frame = range->initial_frame; frame <= range->final_frame; ++frame) {
-        FrameJob job{range->frame(frame), frame_file_name(output, frame, range->final_frame),
-                     stats.empty() ? std::string() : frame_file_name(stats, frame, range->final_frame), true};
+        FrameJob job{range->frame(frame),
+                     frame_file_name(output, frame, range->final_frame),
+                     stats.empty() ? std::string() : frame_file_name(stats, frame, range->final_frame),
+                     true,
+                     false,
+                     ProgressShare{}};
         // --resume goes on from the frame that was stopped: frames written
         // whole (an image and no checkpoint beside it) are not made again.
         if (arguments.resume && fs::exists(job.output) && !fs::exists(checkpoint_path_for(job.output))) continue;
+        job.progress =
+            ProgressShare{frame - range->initial_frame, frame_count,
+                          std::chrono::duration<double>(std::chrono::steady_clock::now() - animation_started).count(),
+                          "frame " + std::to_string(frame)};
         if (!arguments.quiet) {
             std::printf("lancer: frame %d of %d..%d (clock %g) -> %s\n", frame, range->initial_frame,
                         range->final_frame, job.animation.clock, job.output.c_str());
@@ -679,6 +788,14 @@ Command add_render_command(CLI::App& app) {
         "Animation: render frames A..B (POV's +KFI/+KFF), one image each, numbered as POV names them");
     arguments->clock_option = render->add_option(
         "--clock", arguments->clock, "Animation: clock from C0 at the first frame to C1 at the last (default 0..1)");
+    arguments->aov_option = render->add_option(
+        "--aov", arguments->aov,
+        "Also write these layers into the EXR: albedo, normal, depth, position, alpha (comma-separated)");
+    render->add_flag("--alpha", arguments->alpha,
+                     "An alpha channel (POV's +UA): the background's transmit shows through (PNG, EXR, TIFF)");
+    arguments->bits_option = render->add_option("--bits", arguments->png_bits, "Bits per channel of a PNG: 8 or 16");
+    arguments->quality_option =
+        render->add_option("--quality", arguments->jpeg_quality, "JPEG quality, 1 to 100 (default 90)");
     render->add_flag("--safe", arguments->safe,
                      "Untrusted scene: read includes, OBJ/MTL and image files only from the scene's folder and the "
                      "include path");

@@ -177,6 +177,33 @@ TEST_F(CliProgressive, StatsFileMetadataAndSummaryAgree) {
     EXPECT_FALSE(image.spec.get_string_attribute("lancer:rays").empty());
 }
 
+// Under a noise target the progress counts samples against the total the
+// render predicts it needs, not the share of pixels already done (which
+// runs far ahead: the last pixels take most of the samples). So the ETA
+// at half way, added to the time spent, foretells the render's length.
+// Both ends are measured in one run: a loaded machine slows them alike.
+TEST_F(CliProgressive, EtaUnderANoiseTargetForetellsTheEnd) {
+    const CommandResult result = render("--noise 0.05 -o '" + out("eta.png") + "'", 64);
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    std::istringstream lines(result.output);
+    std::string line;
+    double predicted_total = -1.0, last_elapsed = -1.0;
+    while (std::getline(lines, line)) {
+        int percent = 0;
+        double elapsed = 0.0, eta = 0.0;
+        if (std::sscanf(line.c_str(), "progress: %d%% elapsed %lfs ETA %lfs", &percent, &elapsed, &eta) == 3) {
+            if (percent == 50) predicted_total = elapsed + eta;
+            last_elapsed = elapsed;
+        } else if (std::sscanf(line.c_str(), "progress: %d%% elapsed %lfs", &percent, &elapsed) == 2) {
+            last_elapsed = elapsed;
+        }
+    }
+    ASSERT_GT(predicted_total, 0.0) << result.output;
+    ASSERT_GT(last_elapsed, 0.5) << "too short a render to measure: " << result.output;
+    EXPECT_GT(predicted_total, 0.6 * last_elapsed) << result.output;
+    EXPECT_LT(predicted_total, 1.6 * last_elapsed) << result.output;
+}
+
 TEST_F(CliProgressive, NoiseTargetVariesSamplesAndRecordsThem) {
     const CommandResult result =
         render("--noise 0.1 --spp 256 -o '" + out("n.exr") + "' --stats '" + out("n.json") + "'", 32);
@@ -218,6 +245,9 @@ TEST_F(CliProgressive, SignalsWriteTheImageSoFar) {
         ASSERT_TRUE(WIFEXITED(status)) << read_file(log);
         EXPECT_EQ(WEXITSTATUS(status), 128 + number);
         EXPECT_CONTAINS(read_file(log), number == SIGINT ? "interrupted by SIGINT" : "interrupted by SIGTERM");
+        // The progress says where it stopped, never that it finished.
+        EXPECT_CONTAINS(read_file(log), "progress: interrupted at");
+        EXPECT_EQ(read_file(log).find("progress: 100%"), std::string::npos) << read_file(log);
         const Pixels pixels = read_pixels(image);
         ASSERT_EQ(pixels.width, 32) << read_file(log);
         ASSERT_EQ(pixels.channels.size(), 4u);

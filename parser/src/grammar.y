@@ -320,7 +320,11 @@ scene_item
   : object             { ev.add_object($1); }
   | light              { ev.add_light($1, sg::Mat4(1.0)); }
   | camera             { ev.set_camera($1); }
-  | "background" "{" colour "}"   { ev.scene().background = ev.to_color($3, @3).rgb; }
+  | "background" "{" colour "}"   {
+        const sg::Color colour = ev.to_color($3, @3);
+        ev.scene().background = colour.rgb;
+        ev.scene().background_transmit = colour.transmit;
+    }
   | media              { ev.scene().atmosphere.push_back(*$1); }
   | sky_sphere         { ev.scene().sky_sphere = *$1; }
   | fog                { ev.scene().fogs.push_back(*$1); }

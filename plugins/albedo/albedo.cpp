@@ -1,15 +1,18 @@
-// albedo — an AOV: the diffuse reflectance at the nearest hit.
+// albedo — an AOV: the albedo a denoiser takes as its guide.
 //
-// The colour is the pigment at the hit times the finish's `diffuse`, i.e. the
-// fraction of light a matte surface would scatter, without any lighting. A
-// ray that hits nothing is black. Denoisers take it as their albedo guide;
-// it also shows texture lookups and (u,v) mapping without shading.
+// Intel Open Image Denoise's albedo (lancer/shading/denoiser_guides.h): the
+// pigment times the finish's `diffuse` times the surface's opacity, in
+// [0, 1], unlit. A perfect mirror or clear glass shows the albedo of what it
+// reflects or lets through, tinted by it; a ray that escapes shows the
+// background, clamped. `lancer render --aov albedo` writes the same values
+// as a layer beside the beauty.
 //
 // No parameters.
 //
 // Example:
 //     lancer render scenes/demo.pov -i albedo -o demo_albedo.exr
 #include <lancer/integrator.h>
+#include <lancer/shading/denoiser_guides.h>
 
 namespace {
 
@@ -17,10 +20,8 @@ using namespace lancer;
 
 class AlbedoIntegrator final : public Integrator {
   public:
-    Color shade_camera_hit(const Ray&, const Hit* hit, const RenderScene&, Sampler&) const override {
-        if (!hit) return Color(0.0f);
-        const Material& material = *hit->material;
-        return material.sample_surface(*hit).pigment * material.parameters().diffuse;
+    Color shade_camera_hit(const Ray& ray, const Hit* hit, const RenderScene& scene, Sampler&) const override {
+        return denoiser_guides(ray, hit, scene).albedo;
     }
 
     bool is_deterministic() const override { return true; }
@@ -31,7 +32,8 @@ std::unique_ptr<Integrator> create(const ParameterSet&) {
 }
 
 const IntegratorDescriptor kDescriptor = {
-    kPluginAbiVersion, "albedo", "AOV: pigment x diffuse at the nearest hit, unlit", nullptr, 0, &create,
+    kPluginAbiVersion, "albedo", "AOV: the denoiser albedo, pigment x diffuse, seen through mirrors and glass",
+    nullptr,           0,        &create,
 };
 
 }  // namespace

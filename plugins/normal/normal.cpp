@@ -3,8 +3,9 @@
 // Each component of the unit normal n, turned to face the camera, is mapped
 // to [0, 1] as 0.5 + 0.5 n (so +x is red, +y green, +z blue; a surface facing
 // the camera along -z is bluish-dark). A ray that hits nothing is black.
-// Useful to debug geometry and normals, and as a denoiser's guide channel
-// (write EXR to keep the values linear).
+// Useful to debug geometry and normals. A denoiser wants the normal
+// unencoded, in [-1, 1]: `lancer render --aov normal` writes it so, as the
+// N layer beside the beauty.
 //
 // Parameters: documented by `lancer plugins` / docs/integrators.md (from kParameters below).
 //
@@ -14,6 +15,7 @@
 #include <iterator>
 
 #include <lancer/integrator.h>
+#include <lancer/shading/denoiser_guides.h>
 
 namespace {
 
@@ -25,11 +27,7 @@ class NormalIntegrator final : public Integrator {
 
     Color shade_camera_hit(const Ray& ray, const Hit* found, const RenderScene&, Sampler&) const override {
         if (!found) return Color(0.0f);
-        const Hit& hit = *found;
-        const Vec3 toward_camera = -ray.direction;
-        Vec3 n = m_shading ? hit.facing_normal(toward_camera) : hit.geometric_normal;
-        if (glm::dot(n, toward_camera) < 0.0f) n = -n;
-        return Color(0.5f) + 0.5f * n;
+        return Color(0.5f) + 0.5f * camera_facing_normal(ray, *found, m_shading);
     }
 
     bool is_deterministic() const override { return true; }

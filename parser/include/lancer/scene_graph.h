@@ -954,6 +954,10 @@ struct SceneGraph {
     std::vector<Light> lights;
     std::vector<Object> objects;
     Vec3 background{0.0};
+    // The background statement's transmit: what an alpha channel sees
+    // through where rays escape (POV's +UA), and the share of its colour
+    // taken away. Empty: no background statement, POV's transparent black.
+    std::optional<double> background_transmit;
     std::optional<SkySphere> sky_sphere;  // the last one written
     std::vector<Fog> fogs;                // every one applies
     std::vector<Rainbow> rainbows;        // every one applies

@@ -33,6 +33,11 @@ inline float max_component(const Color& c) {
 inline float luminance(const Color& c) {
     return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
 }
+// POV-Ray's grey of a colour (its intensities 0.297, 0.589, 0.114), which
+// it weighs filtered light by where one number must stand for three.
+inline float pov_grey(const Color& c) {
+    return 0.297f * c.r + 0.589f * c.g + 0.114f * c.b;
+}
 inline bool is_black(const Color& c) {
     return c.r == 0.0f && c.g == 0.0f && c.b == 0.0f;
 }

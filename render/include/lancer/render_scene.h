@@ -60,6 +60,9 @@ class RenderScene {
     virtual const Camera& camera() const = 0;
     // Radiance of a ray that escapes the scene.
     virtual Color background(const Ray& ray) const = 0;
+    // The share of the background an image's alpha channel sees through
+    // (POV's background transmit, with +UA): 0 is opaque.
+    virtual float background_transparency() const { return 0.0f; }
     virtual const SceneOptions& options() const = 0;
     virtual Bounds bounds() const = 0;  // of all finite geometry
 

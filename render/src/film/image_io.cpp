@@ -40,42 +40,91 @@ float srgb_to_linear(float encoded) {
 
 bool is_supported_image_extension(const std::string& path) {
     const std::string ext = lower_extension(path);
-    return ext == ".png" || ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff";
+    return ext == ".png" || ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff" || ext == ".jpg" ||
+           ext == ".jpeg";
+}
+
+bool image_format_has_alpha(const std::string& path) {
+    const std::string ext = lower_extension(path);
+    return ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff";
+}
+
+bool image_format_has_layers(const std::string& path) {
+    return lower_extension(path) == ".exr";
 }
 
 void write_image(const Film& film, const std::string& path, const ImageWriteOptions& options) {
     const std::string ext = lower_extension(path);
     if (!is_supported_image_extension(path))
         throw std::runtime_error("cannot write '" + path + "': unknown image extension '" + ext +
-                                 "' (use .png, .exr, .hdr, .tif or .tiff)");
-    const Encoding encoding = ext == ".png"                       ? Encoding::Srgb8
-                              : (ext == ".tif" || ext == ".tiff") ? Encoding::Srgb16
-                                                                  : Encoding::LinearFloat;
-    const bool sample_channel = options.sample_count_channel && ext == ".exr";
+                                 "' (use .png, .jpg, .exr, .hdr, .tif or .tiff)");
+    const bool png = ext == ".png", jpeg = ext == ".jpg" || ext == ".jpeg";
+    const Encoding encoding = (png && options.png_bits == 16) || ext == ".tif" || ext == ".tiff" ? Encoding::Srgb16
+                              : png || jpeg                                                      ? Encoding::Srgb8
+                                            : Encoding::LinearFloat;
     const int width = film.width(), height = film.height();
-    const int channels = sample_channel ? 4 : 3;
+    const std::size_t pixel_count = std::size_t(width) * std::size_t(height);
+    const bool has_alpha = !options.alpha.empty();
+    if (has_alpha && !image_format_has_alpha(path))
+        throw std::runtime_error("cannot write '" + path + "': " + ext +
+                                 " has no alpha channel (use .png, .exr or .tif)");
+    if (has_alpha && options.alpha.size() != pixel_count)
+        throw std::invalid_argument("write_image: the alpha channel is not the film's size");
+    if (!options.layers.empty() && !image_format_has_layers(path))
+        throw std::runtime_error("cannot write '" + path + "': only EXR holds extra layers (AOVs)");
+    const bool sample_channel = options.sample_count_channel && ext == ".exr";
+
+    std::vector<std::string> names{"R", "G", "B"};
+    if (has_alpha) names.push_back("A");
+    for (const ImageLayer& layer : options.layers) {
+        if (layer.values.size() != pixel_count * layer.channels.size())
+            throw std::invalid_argument("write_image: layer values are not the film's size");
+        names.insert(names.end(), layer.channels.begin(), layer.channels.end());
+    }
+    if (sample_channel) names.push_back("samples");
+    const int channels = int(names.size());
 
     // Pixels in float, encoded as the format wants; OIIO quantises
-    // (rounding to nearest) when the file is 8 or 16 bit.
-    std::vector<float> pixels(std::size_t(width) * height * channels);
+    // (rounding to nearest) when the file is 8 or 16 bit. The film is
+    // premultiplied: integer formats get the colour divided by alpha.
+    const bool raw = encoding == Encoding::LinearFloat || !options.gamma_correction;
+    const bool straight = has_alpha && encoding != Encoding::LinearFloat;
+    std::vector<float> pixels(pixel_count * std::size_t(channels));
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
+            const std::size_t index = std::size_t(y) * width + x;
+            const float alpha = has_alpha ? glm::clamp(options.alpha[index], 0.0f, 1.0f) : 1.0f;
             Color c = film.mean(x, y);
+            if (has_alpha) c = alpha > 0.0f ? c / alpha : Color(0.0f);
             if (options.gamma_correction && options.working_gamma != 1.0)
                 for (int k = 0; k < 3; ++k) c[k] = float(std::pow(std::max(double(c[k]), 0.0), options.working_gamma));
-            float* out = &pixels[(std::size_t(y) * width + x) * channels];
-            const bool raw = encoding == Encoding::LinearFloat || !options.gamma_correction;
-            for (int k = 0; k < 3; ++k) out[k] = raw ? c[k] : linear_to_srgb(c[k]);
-            if (sample_channel) out[3] = float(film.sample_count(x, y));
+            if (has_alpha && !straight) c *= alpha;
+            float* out = &pixels[index * channels];
+            int channel = 0;
+            for (int k = 0; k < 3; ++k) out[channel++] = raw ? c[k] : linear_to_srgb(c[k]);
+            if (has_alpha) out[channel++] = alpha;
+            for (const ImageLayer& layer : options.layers)
+                for (std::size_t k = 0; k < layer.channels.size(); ++k)
+                    out[channel++] = layer.values[index * layer.channels.size() + k];
+            if (sample_channel) out[channel++] = float(film.sample_count(x, y));
         }
 
     OIIO::TypeDesc format = encoding == Encoding::Srgb8    ? OIIO::TypeDesc::UINT8
                             : encoding == Encoding::Srgb16 ? OIIO::TypeDesc::UINT16
                                                            : OIIO::TypeDesc::FLOAT;
     OIIO::ImageSpec spec(width, height, channels, format);
-    spec.channelnames = {"R", "G", "B"};
-    if (sample_channel) spec.channelnames.push_back("samples");
-    spec.alpha_channel = -1;
+    spec.channelnames = names;
+    spec.alpha_channel = has_alpha ? 3 : -1;
+    // Straight alpha as computed here: OIIO must not divide it again.
+    if (straight) spec.attribute("oiio:UnassociatedAlpha", 1);
+    if (jpeg) {
+        const int quality = std::clamp(options.jpeg_quality, 1, 100);
+        spec.attribute("Compression", "jpeg:" + std::to_string(quality));
+        spec.attribute("CompressionQuality", quality);
+        // Halving the colour's resolution costs more than the quality
+        // asked for at 90 and above (a red edge bleeds a pixel).
+        if (quality >= 90) spec.attribute("jpeg:subsampling", "4:4:4");
+    }
     spec.attribute("oiio:ColorSpace", encoding == Encoding::LinearFloat ? "Linear" : "sRGB");
     spec.attribute("Software", "lancer");
     for (const auto& [key, value] : options.metadata) spec.attribute("lancer:" + key, value);

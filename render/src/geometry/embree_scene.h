@@ -115,6 +115,7 @@ class EmbreeScene final : public RenderScene {
     const std::vector<const Light*>& lights() const override { return m_data->lights; }
     const std::vector<const Light*>& local_lights() const override { return m_data->local_lights; }
     const Camera& camera() const override { return m_data->camera; }
+    float background_transparency() const override { return m_data->background_transparency; }
     Color background(const Ray& ray) const override {
         return m_data->sky ? m_data->sky->radiance(ray.direction) : m_data->background;
     }

@@ -90,6 +90,9 @@ struct SceneData {
     Camera camera;
     std::unique_ptr<MeshCameraRays> mesh_camera;  // a mesh_camera's faces, which `camera` reads
     Color background{0.0f};
+    // What an alpha channel sees through where rays escape: the background's
+    // transmit (1 when the scene has none), 0 under a sky_sphere.
+    float background_transparency = 1.0f;
     std::unique_ptr<SkySphere> sky;           // null: escaping rays see `background`
     std::unique_ptr<SceneFog> fog;            // null: no fog
     std::unique_ptr<SceneRainbows> rainbows;  // null: none

@@ -69,7 +69,7 @@ class PassPlanner {
         }
         if (m_mode == PassMode::Adaptive) update_relative_variance(film);
         struct Sweep {
-            std::uint64_t wanted = 0, taken = 0, pixels_wanting = 0;
+            std::uint64_t wanted = 0, taken = 0, pixels_wanting = 0, predicted = 0;
             bool completes = true;
         };
         const Sweep sweep = tbb::parallel_reduce(
@@ -85,6 +85,7 @@ class PassPlanner {
                         sum.wanted += wanted;
                         sum.taken += taken;
                         sum.pixels_wanting += wanted > 0;
+                        if (m_mode == PassMode::Adaptive) sum.predicted += predicted_final(taken, x, y);
                         sum.completes = sum.completes && taken + wanted >= m_cap;
                     }
                 return sum;
@@ -93,12 +94,14 @@ class PassPlanner {
                 a.wanted += b.wanted;
                 a.taken += b.taken;
                 a.pixels_wanting += b.pixels_wanting;
+                a.predicted += b.predicted;
                 a.completes = a.completes && b.completes;
                 return a;
             });
         m_taken_at_plan = sweep.taken;
         m_plan_completes = sweep.completes;
         m_pixels_wanting = sweep.pixels_wanting;
+        m_predicted_total = sweep.predicted;
         return sweep.wanted;
     }
 
@@ -136,6 +139,10 @@ class PassPlanner {
 
     // Pixels that want at least one more sample (in the plan before any limit).
     std::uint64_t pixels_wanting() const { return m_pixels_wanting; }
+    // Adaptive mode: the samples the window will hold when every pixel
+    // meets the target, as the last plan predicts from the error each
+    // pixel shows (0 before the first plan over a film with samples).
+    std::uint64_t predicted_total() const { return m_predicted_total; }
 
     // Samples pixel (x, y) of the window takes this pass, given the samples
     // `taken` it held when the pass began.
@@ -183,6 +190,17 @@ class PassPlanner {
         return std::min(room, std::uint32_t(extra));
     }
 
+    // The samples a pixel holding `taken` will end with, by the same 1/n
+    // rule as wanted_after but with no limit on the step.
+    std::uint32_t predicted_final(std::uint32_t taken, int x, int y) const {
+        const double least = double(std::min(std::max(m_min_samples, taken), m_cap));
+        if (taken >= m_cap || taken < 2) return std::uint32_t(least);  // one sample shows no error
+        const double error_squared = pooled_relative_variance(x, y);
+        const double target_squared = m_noise_target * m_noise_target;
+        const double needed = std::ceil(double(taken) * error_squared / target_squared * 1.1);
+        return std::uint32_t(std::clamp(needed, least, double(m_cap)));
+    }
+
     void update_relative_variance(const Film& film) {
         tbb::parallel_for(0, m_height, [&](int y) {
             for (int x = 0; x < m_width; ++x)
@@ -215,6 +233,7 @@ class PassPlanner {
     std::vector<double> m_relative_variance;  // per pixel, adaptive mode only
     std::uint64_t m_taken_at_plan = 0;
     std::uint64_t m_pixels_wanting = 0;
+    std::uint64_t m_predicted_total = 0;
     bool m_plan_completes = false;
     bool m_plans_per_pixel = true;  // else m_wanted and m_plan stay empty
 };

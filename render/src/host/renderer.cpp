@@ -175,7 +175,7 @@ class ImageRender {
           // One batch per thread for the whole render: its 41 KB of rays
           // and hits are initialised once, not once per tile.
           m_batches([] { return std::make_unique<CameraBatch>(); }),
-          m_progress(options.progress),
+          m_progress(options.progress, options.progress_share),
           // Budget mode stops at the deadline even mid-pass; the planner
           // keeps passes short enough that this is only a backstop.
           m_has_deadline(m_planner.mode() == PassMode::Budget ||
@@ -190,13 +190,14 @@ class ImageRender {
         tbb::task_arena arena(m_options.threads > 0 ? m_options.threads : tbb::task_arena::automatic);
         RenderStats stats;
         arena.execute([&] { stats.passes = run_passes(); });
-        m_progress.report(1.0);
-        m_progress.finish();
+        const bool interrupted = m_options.cancel && m_options.cancel->load();
+        if (!interrupted) m_progress.report(1.0);
+        m_progress.finish(interrupted);
 
         stats.seconds = seconds_since(m_start);
         stats.samples = m_samples_taken;
         stats.nonfinite_samples = m_film.nonfinite_samples() - nonfinite_before;
-        stats.interrupted = m_options.cancel && m_options.cancel->load();
+        stats.interrupted = interrupted;
         if (counting) stats.rays = counting->rays() - rays_before;
         stats.rays_per_second = stats.seconds > 0.0 ? double(stats.rays) / stats.seconds : 0.0;
         const SampleCounts counts = arena.execute([&] { return count_samples(m_film, m_window); });
@@ -219,8 +220,6 @@ class ImageRender {
         while (!should_stop()) {
             const std::uint64_t planned = plan_pass(passes, seconds_per_sample);
             if (planned == 0) break;
-            m_stopped_fraction =
-                1.0 - double(m_planner.pixels_wanting()) / double(std::max<std::uint64_t>(m_window_pixels, 1));
 
             const auto pass_start = Clock::now();
             const std::uint64_t before = m_samples_taken;
@@ -279,15 +278,22 @@ class ImageRender {
         return false;
     }
 
-    // Progress: samples against the fixed total, else time against the
-    // budget, else (adaptive alone) the share of pixels that stopped.
+    // Progress: samples against the fixed total; under a noise target,
+    // samples against the total the planner predicts from the error each
+    // pixel shows (the share of pixels that stopped runs ahead: the last
+    // ones take most of the samples); under a time budget, at least the
+    // time spent against it.
     double fraction_done() const {
+        const double taken = double(m_already_taken + m_samples_taken);
         if (m_planner.mode() == PassMode::Fixed) {
             const double fixed_total = double(m_window_pixels) * m_planner.cap();
-            return fixed_total > 0 ? double(m_already_taken + m_samples_taken) / fixed_total : 1.0;
+            return fixed_total > 0 ? taken / fixed_total : 1.0;
         }
-        if (m_has_deadline) return seconds_since(m_start) / m_options.time_budget_seconds;
-        return m_stopped_fraction;
+        double fraction = 0.0;
+        if (m_planner.mode() == PassMode::Adaptive && m_planner.predicted_total() > 0)
+            fraction = taken / double(m_planner.predicted_total());
+        if (m_has_deadline) fraction = std::max(fraction, seconds_since(m_start) / m_options.time_budget_seconds);
+        return fraction;
     }
 
     // The k-th sample of a pixel always uses stream k: its film point, then
@@ -418,7 +424,6 @@ class ImageRender {
     std::atomic<bool> m_stop{false};
     std::atomic<std::uint64_t> m_samples_taken{0};
     std::uint64_t m_already_taken = 0;  // e.g. resumed from a checkpoint; set by the first plan
-    double m_stopped_fraction = 0.0;
 };
 
 }  // namespace

@@ -261,7 +261,9 @@ Film gradient_film() {
 TEST_F(ImageOutput, PngIsSrgbEncodedAndClamped) {
     const Film film = gradient_film();
     const std::string path = (m_dir / "out.png").string();
-    write_image(film, path, {{{"integrator", "test"}}, false});
+    ImageWriteOptions options;
+    options.metadata = {{"integrator", "test"}};
+    write_image(film, path, options);
     const Image image = load_image(path);
     ASSERT_EQ(image.width, 4);
     ASSERT_EQ(image.height, 3);

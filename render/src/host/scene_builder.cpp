@@ -109,7 +109,14 @@ class Builder {
     // object (for the parser's inside()).
     std::unique_ptr<SceneData> run(InsideTest* inside_of_first = nullptr) {
         build_camera();
-        m_data->background = Color(m_graph.background);
+        // POV-Ray takes a transparent background's transmit away from its
+        // colour whether or not the image has an alpha channel (measured:
+        // rgbt <1,0,0,0.5> shows as rgb <0.5,0,0>).
+        // Without a background statement, POV's is black and transparent.
+        const double background_transmit = std::clamp(m_graph.background_transmit.value_or(0.0), 0.0, 1.0);
+        m_data->background = Color(m_graph.background * (1.0 - background_transmit));
+        m_data->background_transparency =
+            m_graph.sky_sphere ? 0.0f : float(m_graph.background_transmit ? background_transmit : 1.0);
         build_fog();
         build_rainbows();
         if (m_graph.sky_sphere)

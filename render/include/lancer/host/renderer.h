@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 
 #include "lancer/host/film.h"
 #include "lancer/integrator.h"
@@ -24,6 +25,15 @@
 namespace lancer {
 
 enum class ProgressMode { Auto, Bar, Lines, Quiet };  // Auto: bar on a terminal, lines otherwise
+
+// One render as a part of a longer job (an animation's frames), so the
+// progress shown counts the whole job and its ETA is the job's.
+struct ProgressShare {
+    int part = 0;                 // 0-based
+    int parts = 1;                // 1: the render is the whole job
+    double seconds_before = 0.0;  // spent on the earlier parts
+    std::string label;            // e.g. "frame 3": shown beside the percentage
+};
 
 struct CropWindow {
     int x0, y0, x1, y1;  // pixel rectangle [x0, x1) x [y0, y1)
@@ -52,6 +62,7 @@ struct RenderOptions {
     int threads = 0;  // 0: every core
     std::optional<CropWindow> crop;
     ProgressMode progress = ProgressMode::Auto;
+    ProgressShare progress_share;
     int tile_size = 16;
     // Called between passes, from the calling thread, with a consistent
     // film, at most every checkpoint_interval_seconds (0: never).
