@@ -33,6 +33,7 @@
 #include "render_job.h"
 #include "trade_ladder.h"
 #include "trade_report.h"
+#include "trade_verdict.h"
 
 namespace lancer::app {
 namespace {
@@ -447,6 +448,9 @@ int run_trade(const TradeArguments& arguments) {
                 result.curve = integrator;
                 result.integrator = setting.integrator;
                 result.setting = setting.label();
+                result.parameters = setting.parameters;
+                result.spp = spp;
+                result.noise_target = setting.noise_target;
                 result.seconds = rendered.seconds;
                 result.cpu_seconds = rendered.cpu_seconds;
                 result.rays = rendered.rays;
@@ -486,6 +490,10 @@ int run_trade(const TradeArguments& arguments) {
         std::printf("trade: %zu renders of %zu integrators in %s; wrote %s, %s and %s\n", run.results.size(),
                     integrators.size(), seconds_text(total).c_str(), (out / "results.csv").c_str(),
                     (out / plots.front()).c_str(), (out / "index.html").c_str());
+        const TradeVerdict verdict = decide_trade(run);
+        if (verdict.recommended >= 0)
+            std::printf("trade: recommended: %s\n  %s\n", verdict.recommended_command.c_str(),
+                        verdict.recommended_reason.c_str());
     } catch (const SceneError& error) {
         print_scene_error(error);
         return kExitBadInput;

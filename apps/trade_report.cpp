@@ -8,6 +8,7 @@
 
 #include "image_metrics.h"
 #include "report_plot.h"
+#include "trade_verdict.h"
 
 namespace lancer::app {
 namespace {
@@ -130,7 +131,42 @@ std::string report_html(const TradeRun& run, const std::vector<std::string>& plo
          << " (relative MSE " << format("%.3g", ref.noise_rel_mse)
          << ", the dashed lines): errors near that are the reference's, not the render's.</p>\n";
 
-    // The plots first: they answer "which integrator for my budget".
+    // The verdict first: which setting to use, and for what budget.
+    const TradeVerdict verdict = decide_trade(run);
+    html << "<h2>Verdict</h2>\n";
+    if (verdict.recommended >= 0)
+        html << "<p class=\"recommended\">Recommended: <code>" << escape_xml(verdict.recommended_command)
+             << "</code></p>\n<p>" << escape_xml(verdict.recommended_reason) << "</p>\n";
+    html << "<p>For each time budget, the setting with the lowest error that fits in it (read off the Pareto "
+            "fronts of the plots below: the settings no other beats in both time and error).</p>\n"
+            "<table class=\"verdict\"><tr><th>budget</th>";
+    for (TradeMetric metric : trade_metrics()) html << "<th>lowest " << metric_label(metric) << "</th>";
+    html << "<th>the metrics</th></tr>\n";
+    for (const BudgetVerdict& row : verdict.budgets) {
+        html << "<tr><td>" << format("%.3g s", row.budget_seconds) << "</td>";
+        for (std::size_t m = 0; m < row.best.size(); ++m) {
+            html << "<td>";
+            if (row.best[m] >= 0) {
+                const TradeResult& r = run.results[row.best[m]];
+                html << escape_xml(r.integrator + " " + r.setting) << " ("
+                     << format("%.3g", metric_error(r, trade_metrics()[m])) << ")";
+            }
+            html << "</td>";
+        }
+        html << "<td>"
+             << (!row.disagreement.empty() ? escape_xml(row.disagreement)
+                 : row.tie                 ? std::string("a tie: their picks differ by less than one seed can tell")
+                                           : std::string("agree"))
+             << "</td></tr>\n";
+    }
+    html << "</table>\n";
+    if (!verdict.anomalies.empty()) {
+        html << "<p>More time, more error:</p>\n<ul>";
+        for (const std::string& anomaly : verdict.anomalies) html << "<li>" << escape_xml(anomaly) << "</li>";
+        html << "</ul>\n";
+    }
+
+    // The plots: they show the whole trade behind the verdict.
     html << "<h2>Error against time</h2>\n<p>Lower and further left is better. Each point is one setting "
             "(hover for its name); a curve that flattens has reached its integrator's bias.</p>\n"
             "<div class=\"plots\">";

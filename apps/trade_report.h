@@ -13,10 +13,14 @@ namespace lancer::app {
 struct TradeResult {
     std::string curve;  // the plot's series: the integrator, or "path --noise"
     std::string integrator;
-    std::string setting;       // "n=64 spp=4"
-    double seconds = 0.0;      // wall clock, what the user waits
-    double cpu_seconds = 0.0;  // over every thread: steadier on a shared machine
-    std::uint64_t rays = 0;    // ray queries (intersect and occluded)
+    std::string setting;  // "n=64 spp=4"
+    // What reproduces it with `lancer render` (trade_verdict.h's render_options).
+    std::vector<std::string> parameters;  // key=value
+    int spp = 0;                          // samples per pixel, or the cap when adaptive
+    double noise_target = 0.0;            // > 0: adaptive
+    double seconds = 0.0;                 // wall clock, what the user waits
+    double cpu_seconds = 0.0;             // over every thread: steadier on a shared machine
+    std::uint64_t rays = 0;               // ray queries (intersect and occluded)
     // The renderer's own estimate of the relative RMSE (as --noise uses it);
     // compare with sqrt(rel_mse), the true one. 0 for deterministic renders.
     double estimated_rel_rmse = 0.0;

@@ -57,6 +57,9 @@ TEST_F(TradeCommand, MeasuresEveryIntegratorAndWritesTheReport) {
     const CommandResult result = trade("out");
     ASSERT_EQ(result.exit_code, 0) << result.output;
     EXPECT_CONTAINS(result.output, "reference: rendered");
+    // The verdict: one command to run, also at the top of the report.
+    EXPECT_CONTAINS(result.output, "trade: recommended: lancer render ");
+    EXPECT_CONTAINS(read_text(m_folder / "out" / "index.html"), "<h2>Verdict</h2>");
 
     // results.csv: the header, then rows for all five integrators.
     const std::string csv = read_text(m_folder / "out" / "results.csv");
