@@ -25,5 +25,6 @@ Command add_check_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
 Command add_plugins_command(CLI::App& app);
 Command add_trade_command(CLI::App& app);
+Command add_live_command(CLI::App& app);
 
 }  // namespace lancer::app

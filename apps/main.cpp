@@ -16,10 +16,9 @@ int main(int argc, char** argv) {
         return "lancer: error: " + std::string(error.what()) + "\nRun with --help for more information.\n";
     });
     std::vector<lancer::app::Command> commands = {
-        lancer::app::add_check_command(app),
-        lancer::app::add_render_command(app),
-        lancer::app::add_plugins_command(app),
-        lancer::app::add_trade_command(app),
+        lancer::app::add_check_command(app),   lancer::app::add_render_command(app),
+        lancer::app::add_plugins_command(app), lancer::app::add_trade_command(app),
+        lancer::app::add_live_command(app),
     };
     // POV-Ray's switches for alpha output, as its users type them: the
     // last of +UA and -UA decides, as in POV-Ray.

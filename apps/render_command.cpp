@@ -25,12 +25,14 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "animation.h"
 #include "cli_output.h"
 #include "commands.h"
 #include "distribution.h"
+#include "interrupts.h"
 #include "lancer/host/aov.h"
 #include "lancer/host/checkpoint.h"
 #include "lancer/host/counting_scene.h"
@@ -42,6 +44,8 @@
 #include "lancer/parser.h"
 #include "lancer/scene_error.h"
 #include "output_files.h"
+#include "preview_feed.h"
+#include "preview_server.h"
 #include "render_job.h"
 #include "render_report.h"
 
@@ -60,40 +64,6 @@ constexpr int kExitUsage = 2;
 // fixed (measured: a 640x480 PNG takes about 30 ms to encode).
 constexpr double kOutputReserveSeconds = 0.05;
 constexpr double kOutputReserveSecondsPerPixel = 1e-7;
-
-// A signal handler can only reach globals; these two are its whole state.
-// Lock-free atomics are async-signal-safe.
-std::atomic<bool> g_interrupt_requested{false};
-std::atomic<int> g_interrupt_signal{0};
-
-extern "C" void request_interrupt(int signal_number) {
-    g_interrupt_signal.store(signal_number);
-    g_interrupt_requested.store(true);
-    // A second signal kills at once, for a user who will not wait.
-    std::signal(signal_number, SIG_DFL);
-}
-
-// Installs the handlers for the render's duration and restores the
-// previous ones after.
-class InterruptHandlers {
-  public:
-    InterruptHandlers() {
-        g_interrupt_requested = false;
-        g_interrupt_signal = 0;
-        m_previous_int = std::signal(SIGINT, request_interrupt);
-        m_previous_term = std::signal(SIGTERM, request_interrupt);
-    }
-    ~InterruptHandlers() {
-        std::signal(SIGINT, m_previous_int);
-        std::signal(SIGTERM, m_previous_term);
-    }
-    InterruptHandlers(const InterruptHandlers&) = delete;
-    InterruptHandlers& operator=(const InterruptHandlers&) = delete;
-
-  private:
-    void (*m_previous_int)(int) = SIG_DFL;
-    void (*m_previous_term)(int) = SIG_DFL;
-};
 
 struct RenderArguments {
     std::string scene;
@@ -136,6 +106,9 @@ struct RenderArguments {
     CLI::Option* aov_option = nullptr;
     CLI::Option* bits_option = nullptr;
     CLI::Option* quality_option = nullptr;
+    bool preview = false;  // --preview: a live page of the render
+    int port = 0;          // --port: the page's port (0: any free one)
+    CLI::Option* port_option = nullptr;
 };
 
 // One image to make: a still, or one frame of an animation with its own
@@ -151,6 +124,8 @@ struct FrameJob {
     bool distributed = false;
     // This frame's part of the animation's progress.
     ProgressShare progress;
+    // --preview: the page that shows the render as it refines.
+    PreviewServer* preview = nullptr;
 };
 
 // "x0,y0,x1,y1" as four integers, nothing else.
@@ -238,6 +213,10 @@ int check_output_format(const RenderArguments& arguments) {
 
 // Checks that need nothing but the arguments; returns an exit status, or 0.
 int check_arguments(const RenderArguments& arguments) {
+    if (arguments.port_option->count() && !arguments.preview) {
+        print_error("--port is the preview's: add --preview");
+        return kExitUsage;
+    }
     if (arguments.width_option->count() && arguments.width <= 0) {
         print_error("--width must be a positive number of pixels, got " + std::to_string(arguments.width));
         return kExitUsage;
@@ -458,8 +437,12 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
         request.image_width = arguments.width;
         request.image_height = arguments.height;
     }
-    std::optional<sg::SceneGraph> graph = parse_job_scene(request);
-    if (!graph) return kExitBadInput;
+    std::vector<Diagnostic> diagnostics;
+    std::optional<sg::SceneGraph> graph = parse_job_scene(request, job.preview ? &diagnostics : nullptr);
+    if (!graph) {
+        if (job.preview) job.preview->publish_status(preview_errors(arguments.scene, diagnostics));
+        return kExitBadInput;
+    }
     const sg::RenderSettings settings = graph->render;
 
     RenderOptions options;
@@ -543,6 +526,15 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
             options.time_budget_seconds = std::max(arguments.time_budget - seconds_so_far() - reserve, 1e-3);
         }
 
+        if (job.preview) {
+            ImageWriteOptions look;
+            look.working_gamma = scene.working_gamma;
+            look.gamma_correction = scene.gamma_correction;
+            feed_preview(*job.preview, arguments.scene,
+                         integrator_name + ", " + std::to_string(options.width) + "x" + std::to_string(options.height),
+                         look, options);
+        }
+
         std::optional<InterruptHandlers> handlers;
         if (!job.distributed || (shared_still && shared_still->coordinates())) handlers.emplace();
         options.cancel = &g_interrupt_requested;
@@ -616,6 +608,13 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
         }
         if (stats.interrupted) {
             const char* name = signal_number == SIGTERM ? "SIGTERM" : "SIGINT";
+            if (job.preview) {
+                PreviewStatus stopped;
+                stopped.state = "interrupted";
+                stopped.scene = arguments.scene;
+                stopped.message = summary_line(report);
+                job.preview->publish_status(stopped);
+            }
             std::fprintf(stderr,
                          "lancer: interrupted by %s after %.1f s: wrote the image so far (%.1f spp, %u-%u) to %s%s\n",
                          name, report.total_seconds, stats.mean_samples_per_pixel, stats.min_samples_per_pixel,
@@ -626,11 +625,30 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
         std::error_code ignored;
         fs::remove(checkpoint_path, ignored);
         if (!arguments.quiet) std::printf("%s\n", summary_line(report).c_str());
+        if (job.preview) {
+            PreviewStatus done;
+            done.state = "done";
+            done.scene = arguments.scene;
+            done.progress = 1.0;
+            done.message = summary_line(report);
+            job.preview->publish_status(done);
+        }
     } catch (const SceneError& error) {
         print_scene_error(error);
+        if (job.preview) {
+            Diagnostic diagnostic;
+            diagnostic.location = error.location();
+            diagnostic.message = error.what();
+            job.preview->publish_status(preview_errors(arguments.scene, {diagnostic}));
+        }
         return kExitBadInput;
     } catch (const std::exception& error) {
         print_error(error.what());
+        if (job.preview) {
+            Diagnostic diagnostic;
+            diagnostic.message = error.what();
+            job.preview->publish_status(preview_errors(arguments.scene, {diagnostic}));
+        }
         return kExitBadInput;
     }
     return 0;
@@ -671,10 +689,10 @@ int render_frames_distributed(const RenderArguments& arguments, const AnimationR
         &g_interrupt_requested);
 }
 
-// `lancer render` in one process, or in every process of an mpirun job
-// (`distribution` not null): a still shared among them, frames handed out.
-int render_command(const RenderArguments& arguments, Distribution* distribution) {
-    if (const int status = check_arguments(arguments)) return status;
+// The still or the frames, in one process or in every process of an
+// mpirun job (`distribution` not null: a still shared among them, frames
+// handed out), each shown in `preview` when there is one.
+int render_all(const RenderArguments& arguments, Distribution* distribution, PreviewServer* preview) {
     const std::string output =
         arguments.output_option->count() ? arguments.output : fs::path(arguments.scene).stem().string() + ".png";
     const std::string stats = arguments.stats_option->count() ? arguments.stats : std::string();
@@ -688,9 +706,10 @@ int render_command(const RenderArguments& arguments, Distribution* distribution)
         const auto seconds_so_far = [&] {
             return age_at_start + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         };
-        return render_frame(arguments,
-                            FrameJob{AnimationFrame{}, output, stats, false, distribution != nullptr, ProgressShare{}},
-                            seconds_so_far, distribution);
+        return render_frame(
+            arguments,
+            FrameJob{AnimationFrame{}, output, stats, false, distribution != nullptr, ProgressShare{}, preview},
+            seconds_so_far, distribution);
     }
     std::string problem;
     std::optional<AnimationRange> range = parse_frame_range(arguments.frames, problem);
@@ -708,7 +727,8 @@ int render_command(const RenderArguments& arguments, Distribution* distribution)
                      stats.empty() ? std::string() : frame_file_name(stats, frame, range->final_frame),
                      true,
                      false,
-                     ProgressShare{}};
+                     ProgressShare{},
+                     preview};
         // --resume goes on from the frame that was stopped: frames written
         // whole (an image and no checkpoint beside it) are not made again.
         if (arguments.resume && fs::exists(job.output) && !fs::exists(checkpoint_path_for(job.output))) continue;
@@ -729,6 +749,40 @@ int render_command(const RenderArguments& arguments, Distribution* distribution)
         if (const int status = render_frame(arguments, job, seconds_so_far)) return status;
     }
     return 0;
+}
+
+// Serves the page until the user presses Ctrl-C, after a render that ended
+// on its own: the last image stays to look at.
+void keep_preview_open(const PreviewServer& preview) {
+    std::fprintf(stderr, "lancer: preview: the render is done; the page stays at %s until Ctrl-C\n",
+                 preview.url().c_str());
+    std::fflush(stderr);
+    InterruptHandlers handlers;
+    while (!g_interrupt_requested.load()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+}
+
+// `lancer render`: checks the arguments, opens the preview if asked, renders.
+int render_command(const RenderArguments& arguments, Distribution* distribution) {
+    if (const int status = check_arguments(arguments)) return status;
+    std::unique_ptr<PreviewServer> preview_server;
+    if (arguments.preview) {
+        if (distribution) {
+            print_error("--preview is not offered under mpirun (each process would serve its own page)");
+            return kExitUsage;
+        }
+        preview_server = std::make_unique<PreviewServer>();
+        std::string problem;
+        if (!preview_server->start(arguments.port, problem)) {
+            print_error(problem);
+            return kExitUsage;
+        }
+        std::fprintf(stderr, "lancer: preview: %s\n", preview_server->url().c_str());
+        std::fflush(stderr);
+    }
+    PreviewServer* const preview = preview_server.get();
+    const int status = render_all(arguments, distribution, preview);
+    if (preview && status == 0) keep_preview_open(*preview);
+    return status;
 }
 
 int run_render(const RenderArguments& arguments) {
@@ -796,6 +850,11 @@ Command add_render_command(CLI::App& app) {
     arguments->bits_option = render->add_option("--bits", arguments->png_bits, "Bits per channel of a PNG: 8 or 16");
     arguments->quality_option =
         render->add_option("--quality", arguments->jpeg_quality, "JPEG quality, 1 to 100 (default 90)");
+    render->add_flag("--preview", arguments->preview,
+                     "Show the render refining in a browser: serves a page on 127.0.0.1 (its address is printed), "
+                     "kept after the render until Ctrl-C");
+    arguments->port_option =
+        render->add_option("--port", arguments->port, "The preview's port (default 0: any free port)");
     render->add_flag("--safe", arguments->safe,
                      "Untrusted scene: read includes, OBJ/MTL and image files only from the scene's folder and the "
                      "include path");

@@ -10,7 +10,7 @@
 
 namespace lancer::app {
 
-std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request) {
+std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request, std::vector<Diagnostic>* diagnostics) {
     ParseOptions options;
     options.include_path = default_include_path();
     options.safe = request.safe;
@@ -18,6 +18,11 @@ std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request) {
     std::string problem;
     if (!apply_scene_input_options(request.inputs, options, problem)) {
         print_error(problem);
+        if (diagnostics) {
+            Diagnostic error;
+            error.message = problem;
+            diagnostics->push_back(error);
+        }
         return std::nullopt;
     }
     options.max_memory_bytes = request.max_memory_bytes;
@@ -32,6 +37,7 @@ std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request) {
     options.geometry_queries = geometry.get();
     ParseResult parsed = parse_scene_file(request.path, options);
     for (const Diagnostic& diagnostic : parsed.diagnostics) print_diagnostic(diagnostic);
+    if (diagnostics) diagnostics->insert(diagnostics->end(), parsed.diagnostics.begin(), parsed.diagnostics.end());
     if (!parsed.ok()) return std::nullopt;
     return std::move(parsed.scene);
 }

@@ -47,9 +47,11 @@ struct SceneRequest {
     long long max_memory_bytes = ParseOptions{}.max_memory_bytes;  // --max-memory
 };
 
-// Parses the scene once, printing every diagnostic, and keeps the graph for
-// compile_job_scene. Empty when the scene has errors.
-std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request);
+// Parses the scene once, printing every diagnostic (and appending it to
+// `diagnostics` when given), and keeps the graph for compile_job_scene.
+// Empty when the scene has errors.
+std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request,
+                                              std::vector<Diagnostic>* diagnostics = nullptr);
 
 // Compiles the parsed graph, consuming it. Throws lancer::SceneError for
 // what the user can fix (an unreadable image_map).

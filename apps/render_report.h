@@ -27,6 +27,9 @@ struct RenderReport {
     RenderStats stats;
 };
 
+// `text` as a JSON string, quotes included.
+std::string json_string(const std::string& text);
+
 // The --stats document (a JSON object; fields in docs/rendering.md).
 std::string stats_json(const RenderReport& report);
 // Writes stats_json atomically (temporary file, then rename). Throws

@@ -12,6 +12,9 @@ packages=(
   libtinyobjloader-dev libcli11-dev libfreetype-dev fonts-povray
   povray-includes
   libgtest-dev libgmock-dev libbenchmark-dev
+  # The live preview's HTTP server, and the headless browser its tests and
+  # the trade report's drive (tests/browser/).
+  libcpp-httplib-dev chromium chromium-driver python3-selenium
   # Optional: rendering over several processes (docs/distributed.md).
   libopenmpi-dev openmpi-bin
 )

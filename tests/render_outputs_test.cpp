@@ -339,5 +339,17 @@ TEST_F(RenderOutputs, OptionsTheFormatCannotHoldAreErrors) {
     }
 }
 
+TEST_F(RenderOutputs, PreviewArgumentsAreChecked) {
+    CommandResult result = render(guides_scene(), "x.png", "--port 8080");
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_CONTAINS(result.output, "--port is the preview's: add --preview");
+    result = run_lancer("live '" + path("missing.pov") + "'");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_CONTAINS(result.output, "no such file");
+    result = run_lancer("live '" + guides_scene() + "' --width 10");
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_CONTAINS(result.output, "--width and --height go together");
+}
+
 }  // namespace
 }  // namespace lancer::test

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "film/file_extension.h"
@@ -53,7 +54,16 @@ bool image_format_has_layers(const std::string& path) {
     return lower_extension(path) == ".exr";
 }
 
-void write_image(const Film& film, const std::string& path, const ImageWriteOptions& options) {
+namespace {
+
+// The pixels and header a file of `path`'s format receives. Throws as
+// write_image does.
+struct EncodedImage {
+    OIIO::ImageSpec spec;
+    std::vector<float> pixels;
+};
+
+EncodedImage encode_for(const Film& film, const std::string& path, const ImageWriteOptions& options) {
     const std::string ext = lower_extension(path);
     if (!is_supported_image_extension(path))
         throw std::runtime_error("cannot write '" + path + "': unknown image extension '" + ext +
@@ -128,7 +138,13 @@ void write_image(const Film& film, const std::string& path, const ImageWriteOpti
     spec.attribute("oiio:ColorSpace", encoding == Encoding::LinearFloat ? "Linear" : "sRGB");
     spec.attribute("Software", "lancer");
     for (const auto& [key, value] : options.metadata) spec.attribute("lancer:" + key, value);
+    return {std::move(spec), std::move(pixels)};
+}
 
+}  // namespace
+
+void write_image(const Film& film, const std::string& path, const ImageWriteOptions& options) {
+    const auto [spec, pixels] = encode_for(film, path, options);
     const fs::path target(path);
     std::error_code ignored;
     if (!target.parent_path().empty() && !fs::is_directory(target.parent_path(), ignored))
@@ -153,6 +169,20 @@ void write_image(const Film& film, const std::string& path, const ImageWriteOpti
     std::error_code renamed;
     fs::rename(temporary, target, renamed);
     if (renamed) fail(renamed.message());
+}
+
+std::vector<unsigned char> encode_png(const Film& film, const ImageWriteOptions& options) {
+    const auto [spec, pixels] = encode_for(film, "memory.png", options);
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    OIIO::ImageSpec with_proxy = spec;
+    OIIO::Filesystem::IOProxy* proxy = &memory;
+    with_proxy.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    auto output = OIIO::ImageOutput::create("memory.png");
+    if (!output || !output->open("memory.png", with_proxy) ||
+        !output->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !output->close())
+        throw std::runtime_error("cannot encode a PNG in memory: " + (output ? output->geterror() : OIIO::geterror()));
+    return bytes;
 }
 
 }  // namespace lancer

@@ -141,6 +141,8 @@ std::vector<ImageLayer> render_aovs(const RenderScene& scene, const Integrator& 
     pass.progress = ProgressMode::Quiet;
     pass.checkpoint_interval_seconds = 0.0;
     pass.on_checkpoint = nullptr;
+    pass.on_pass = nullptr;
+    pass.on_progress = nullptr;
     pass.cancel = nullptr;
     pass.ray_counter = nullptr;
 

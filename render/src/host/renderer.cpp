@@ -237,6 +237,7 @@ class ImageRender {
                 m_options.on_checkpoint(m_film);
                 last_checkpoint = Clock::now();
             }
+            if (m_options.on_pass) m_options.on_pass(m_film, finished ? 1.0 : fraction_done());
             if (finished) break;
         }
         return passes;
@@ -399,7 +400,9 @@ class ImageRender {
             }
         shade_batch(batch);
         m_samples_taken += taken;
-        m_progress.report(fraction_done());
+        const double fraction = fraction_done();
+        m_progress.report(fraction);
+        if (m_options.on_progress) m_options.on_progress(fraction);
     }
 
     const RenderScene& m_scene;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include <OpenImageIO/imageio.h>
 
@@ -274,6 +275,23 @@ TEST_F(ImageOutput, PngIsSrgbEncodedAndClamped) {
     int files = 0;
     for (const auto& entry : fs::directory_iterator(m_dir)) files += entry.is_regular_file();
     EXPECT_EQ(files, 1);
+}
+
+TEST_F(ImageOutput, PngInMemoryHoldsWhatTheFileHolds) {
+    const Film film = gradient_film();
+    const std::string path = (m_dir / "file.png").string();
+    write_image(film, path);
+    const std::vector<unsigned char> bytes = encode_png(film);
+    ASSERT_GT(bytes.size(), 8u);
+    EXPECT_EQ(bytes[1], 'P');  // the PNG signature
+    const std::string copy = (m_dir / "memory.png").string();
+    std::ofstream(copy, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    const Image from_file = load_image(path), from_memory = load_image(copy);
+    ASSERT_EQ(from_memory.width, 4);
+    ASSERT_EQ(from_memory.height, 3);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 4; ++x)
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(from_memory.at(x, y, c), from_file.at(x, y, c));
 }
 
 TEST_F(ImageOutput, ExrKeepsLinearValuesAndSampleCounts) {

@@ -48,6 +48,9 @@ struct ImageWriteOptions {
 // unwritable directory).
 void write_image(const Film& film, const std::string& path, const ImageWriteOptions& options = {});
 
+// The PNG write_image would write, in memory (for a preview page).
+std::vector<unsigned char> encode_png(const Film& film, const ImageWriteOptions& options = {});
+
 // True if the extension names a format write_image supports.
 bool is_supported_image_extension(const std::string& path);
 // Whether the format can hold an alpha channel; extra layers.

@@ -68,6 +68,12 @@ struct RenderOptions {
     // film, at most every checkpoint_interval_seconds (0: never).
     double checkpoint_interval_seconds = 0.0;
     std::function<void(const Film&)> on_checkpoint;
+    // Called after every pass, from the calling thread, with the film as it
+    // stands and the fraction of the render done (a live preview shows it).
+    std::function<void(const Film&, double)> on_pass;
+    // Called as tiles finish, from any worker thread, with the fraction of
+    // the render done: must be cheap and thread-safe.
+    std::function<void(double)> on_progress;
     // When it becomes true (e.g. from a signal handler) the render abandons
     // its remaining pixels quickly and returns with stats.interrupted set.
     const std::atomic<bool>* cancel = nullptr;
