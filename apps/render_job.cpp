@@ -72,6 +72,21 @@ void warn_about_scene_for(const sg::SceneGraph& scene, const std::string& integr
     // recursions end, so a bright finish there is just bright, as in POV.
     if (integrator != "path") return;
     for (const Diagnostic& warning : energy_gaining_finishes(scene)) print_diagnostic(warning);
+    // POV-Ray's fog and rainbow are effects the classic integrators add
+    // along camera and reflected rays, not light in a volume: path, the
+    // physical reference, has no such effect to add.
+    const auto ignored = [](const sg::SourceLocation& location, const std::string& what) {
+        Diagnostic warning;
+        warning.severity = Diagnostic::Severity::Warning;
+        warning.location = location;
+        warning.message = "path ignores " + what +
+                          " (a POV-Ray effect of raycast, shadow, whitted and gather, not light in a volume); for "
+                          "path, fill the scene with a scattering media";
+        print_diagnostic(warning);
+    };
+    if (!scene.fogs.empty()) ignored(scene.fogs.front().location, scene.fogs.size() > 1 ? "every fog" : "fog");
+    if (!scene.rainbows.empty())
+        ignored(scene.rainbows.front().location, scene.rainbows.size() > 1 ? "every rainbow" : "rainbow");
 }
 
 void warn_after_render(const RenderScene& scene) {

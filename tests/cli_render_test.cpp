@@ -156,6 +156,21 @@ TEST_F(CliRender, UnknownOutputExtension) {
     EXPECT_TRUE(folder_holds_only_the_scene());
 }
 
+// path has no fog or rainbow to add (they are POV-Ray's effects, not light
+// in a volume): it says so, where the scene asks for them; whitted does not.
+TEST_F(CliRender, PathSaysItIgnoresFogAndRainbows) {
+    std::ofstream(m_scene, std::ios::app) << "fog { distance 3 color rgb 0.5 }\n"
+                                             "rainbow { angle 42.5 width 5 distance 1e3 direction <0, 0, 1>\n"
+                                             "  color_map { [0 rgbt <1, 0, 0, 0.5>] [1 rgbt <0, 0, 1, 0.5>] } }\n";
+    const CommandResult path = render("-i path --spp 1 -q");
+    ASSERT_EQ(path.exit_code, 0) << path.output;
+    EXPECT_CONTAINS(path.output, "ball.pov:4:1: warning: path ignores fog");
+    EXPECT_CONTAINS(path.output, "ball.pov:5:1: warning: path ignores rainbow");
+    const CommandResult whitted = render("-i whitted -q");
+    ASSERT_EQ(whitted.exit_code, 0) << whitted.output;
+    EXPECT_EQ(whitted.output.find("ignores"), std::string::npos) << whitted.output;
+}
+
 TEST_F(CliRender, ParametersAreCheckedAgainstThePlugin) {
     CommandResult result = render("-i raycast -p no_such_parameter=1");
     EXPECT_EQ(result.exit_code, 1) << result.output;
