@@ -25,6 +25,14 @@ if [ "$(id -u)" -ne 0 ]; then
   sudo_cmd=(sudo)
 fi
 
+# chromedriver reaches the browser it starts at "localhost" (the browser
+# tests, tests/browser/): a bare root (debootstrap, some containers) has no
+# /etc/hosts to say where that is.
+if ! getent hosts localhost >/dev/null; then
+  echo "setup-deps: 'localhost' does not resolve; adding it to /etc/hosts"
+  echo "127.0.0.1 localhost" | "${sudo_cmd[@]}" tee -a /etc/hosts >/dev/null
+fi
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

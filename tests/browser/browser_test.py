@@ -14,6 +14,7 @@ import os
 import re
 import shutil
 import signal
+import socket
 import subprocess
 import sys
 import tempfile
@@ -36,6 +37,11 @@ BROKEN = SCENE.replace("0.6 pigment", "0.6 0.6 pigment")
 
 
 def start_browser():
+    try:
+        socket.getaddrinfo("localhost", None)
+    except OSError:
+        raise AssertionError("'localhost' does not resolve, and chromedriver needs it to reach the browser: "
+                             "add '127.0.0.1 localhost' to /etc/hosts (scripts/setup-deps.sh does)")
     options = webdriver.ChromeOptions()
     options.binary_location = shutil.which("chromium") or "/usr/bin/chromium"
     for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
