@@ -182,15 +182,10 @@ void render_round(const LiveArguments& arguments, PreviewServer& preview, std::v
         preview.publish_status(done);
     } catch (const SceneError& error) {
         print_scene_error(error);
-        Diagnostic diagnostic;
-        diagnostic.location = error.location();
-        diagnostic.message = error.what();
-        preview.publish_status(preview_errors(arguments.scene, {diagnostic}));
+        preview.publish_status(preview_failure(arguments.scene, error));
     } catch (const std::exception& error) {
         print_error(error.what());
-        Diagnostic diagnostic;
-        diagnostic.message = error.what();
-        preview.publish_status(preview_errors(arguments.scene, {diagnostic}));
+        preview.publish_status(preview_failure(arguments.scene, error));
     }
 }
 

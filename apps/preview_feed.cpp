@@ -1,6 +1,8 @@
 // The render's side of the live preview: see preview_feed.h.
 #include "preview_feed.h"
 
+#include "lancer/scene_error.h"
+
 namespace lancer::app {
 
 PreviewStatus preview_errors(const std::string& scene, const std::vector<Diagnostic>& diagnostics) {
@@ -11,6 +13,13 @@ PreviewStatus preview_errors(const std::string& scene, const std::vector<Diagnos
         if (diagnostic.severity == Diagnostic::Severity::Error) status.errors.push_back(format_diagnostic(diagnostic));
     if (status.errors.empty()) status.errors.push_back("the scene has errors (see the terminal)");
     return status;
+}
+
+PreviewStatus preview_failure(const std::string& scene, const std::exception& error) {
+    Diagnostic diagnostic;
+    if (const auto* located = dynamic_cast<const SceneError*>(&error)) diagnostic.location = located->location();
+    diagnostic.message = error.what();
+    return preview_errors(scene, {diagnostic});
 }
 
 void feed_preview(PreviewServer& preview, const std::string& scene, const std::string& label,

@@ -4,6 +4,7 @@
 // `lancer live`.
 #pragma once
 
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,10 @@ namespace lancer::app {
 // The "error" status: each error of `diagnostics`, located and formatted as
 // the terminal prints it (warnings and notes are left to the terminal).
 PreviewStatus preview_errors(const std::string& scene, const std::vector<Diagnostic>& diagnostics);
+
+// The "error" status of what a render threw: a SceneError keeps its
+// location, any other exception is its message.
+PreviewStatus preview_failure(const std::string& scene, const std::exception& error);
 
 // Publishes the "rendering" status, and sets `options` so that every pass
 // publishes the film (encoded as `look` says: the scene's gamma) and every

@@ -635,20 +635,11 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
         }
     } catch (const SceneError& error) {
         print_scene_error(error);
-        if (job.preview) {
-            Diagnostic diagnostic;
-            diagnostic.location = error.location();
-            diagnostic.message = error.what();
-            job.preview->publish_status(preview_errors(arguments.scene, {diagnostic}));
-        }
+        if (job.preview) job.preview->publish_status(preview_failure(arguments.scene, error));
         return kExitBadInput;
     } catch (const std::exception& error) {
         print_error(error.what());
-        if (job.preview) {
-            Diagnostic diagnostic;
-            diagnostic.message = error.what();
-            job.preview->publish_status(preview_errors(arguments.scene, {diagnostic}));
-        }
+        if (job.preview) job.preview->publish_status(preview_failure(arguments.scene, error));
         return kExitBadInput;
     }
     return 0;
