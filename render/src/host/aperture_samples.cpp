@@ -8,6 +8,7 @@
 #include "host/aperture_samples.h"
 
 #include <cmath>
+#include <limits>
 
 namespace lancer {
 namespace {
@@ -27,6 +28,33 @@ std::vector<Vec2> hexagonal_grid(int rings) {
             points.emplace_back(float(x), float(y));
         }
     return points;
+}
+
+// The points reordered so that every prefix spreads over the lens: the
+// centre-most first, then each time the point farthest from those already
+// taken (ties to the earlier one). A pixel that POV's confidence test stops
+// after a batch has seen the whole aperture, not one side of it.
+std::vector<Vec2> spread_order(std::vector<Vec2> points) {
+    if (points.empty()) return points;
+    std::vector<Vec2> ordered;
+    ordered.reserve(points.size());
+    std::size_t first = 0;
+    for (std::size_t i = 1; i < points.size(); ++i)
+        if (glm::length(points[i]) < glm::length(points[first]) - 1e-6f) first = i;
+    std::vector<float> nearest(points.size(), std::numeric_limits<float>::infinity());
+    std::vector<bool> taken(points.size(), false);
+    for (std::size_t next = first; ordered.size() < points.size();) {
+        taken[next] = true;
+        ordered.push_back(points[next]);
+        std::size_t farthest = points.size();
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            if (taken[i]) continue;
+            nearest[i] = std::min(nearest[i], glm::length(points[i] - points[next]));
+            if (farthest == points.size() || nearest[i] > nearest[farthest] + 1e-6f) farthest = i;
+        }
+        next = farthest;
+    }
+    return ordered;
 }
 
 }  // namespace
@@ -67,13 +95,20 @@ ApertureSamples::ApertureSamples(int blur_samples, bool pov_pattern) {
     if (int(grid.size()) > n) grid.resize(std::size_t(n));
     // The rest evenly over the disc: a golden-angle spiral of equal areas
     // (POV draws them from a sub-random sequence, avoiding taken cells).
+    // Each part is spread in order (the standard grid's batches come first);
+    // past a few thousand points the spiral's own order, centre outwards, is
+    // kept: ordering costs the square of the count.
     const int rest = n - int(grid.size());
     const double golden_angle = kPiDouble * (3.0 - std::sqrt(5.0));
+    std::vector<Vec2> spiral;
     for (int k = 0; k < rest; ++k) {
         const double radius = 0.5 * std::sqrt((k + 0.5) / rest), theta = k * golden_angle;
-        grid.emplace_back(float(radius * std::cos(theta)), float(radius * std::sin(theta)));
+        spiral.emplace_back(float(radius * std::cos(theta)), float(radius * std::sin(theta)));
     }
-    m_grid = std::move(grid);
+    constexpr int kMostSpreadPoints = 2048;
+    m_grid = spread_order(std::move(grid));
+    if (rest <= kMostSpreadPoints) spiral = spread_order(std::move(spiral));
+    m_grid.insert(m_grid.end(), spiral.begin(), spiral.end());
 }
 
 Vec2 ApertureSamples::point(std::uint32_t index, const Vec2& u) const {

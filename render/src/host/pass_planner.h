@@ -10,13 +10,16 @@
 
 #include <tbb/parallel_for.h>
 
+#include "host/focal_blur_confidence.h"
 #include "lancer/host/estimate.h"
 #include "lancer/host/film.h"
 #include "lancer/host/renderer.h"
 
 namespace lancer {
 
-enum class PassMode { Fixed, Budget, Adaptive };
+// Confidence: a fixed count that a focal-blurred pixel of a deterministic
+// integrator may cut short by POV-Ray's confidence test.
+enum class PassMode { Fixed, Budget, Adaptive, Confidence };
 
 // Decides, before each pass, how many samples every pixel of the window
 // takes in it. Everything except the time-budget limit is a function of the
@@ -25,12 +28,18 @@ enum class PassMode { Fixed, Budget, Adaptive };
 // evenly and the estimates that steer adaptive sampling are refreshed often.
 class PassPlanner {
   public:
-    PassPlanner(const RenderOptions& options, bool deterministic, const CropWindow& window)
-        : m_window(window), m_width(window.x1 - window.x0), m_height(window.y1 - window.y0) {
+    // `confidence`, when given, turns a fixed count into PassMode::Confidence
+    // (its most() is the count); it must outlive the planner.
+    PassPlanner(const RenderOptions& options, bool deterministic, const CropWindow& window,
+                const FocalBlurConfidence* confidence = nullptr)
+        : m_window(window), m_width(window.x1 - window.x0), m_height(window.y1 - window.y0), m_confidence(confidence) {
         const bool budget = !deterministic && options.time_budget_seconds > 0.0;
         const bool adaptive = !deterministic && options.noise_target > 0.0;
         m_mode = adaptive ? PassMode::Adaptive : budget ? PassMode::Budget : PassMode::Fixed;
-        if (m_mode == PassMode::Fixed) {
+        if (m_mode == PassMode::Fixed && confidence) {
+            m_mode = PassMode::Confidence;
+            m_cap = confidence->most();
+        } else if (m_mode == PassMode::Fixed) {
             m_cap = std::uint32_t(std::max(options.samples_per_pixel, 1));
         } else if (options.max_samples_per_pixel > 0) {
             m_cap = std::uint32_t(options.max_samples_per_pixel);
@@ -80,12 +89,19 @@ class PassPlanner {
                         const std::size_t i = index(x, y);
                         const std::uint32_t taken =
                             std::min(film.samples_taken(m_window.x0 + x, m_window.y0 + y), m_cap);
-                        const std::uint32_t wanted = wanted_after(taken, x, y);
+                        const std::uint32_t wanted =
+                            m_mode == PassMode::Confidence
+                                ? m_confidence->wanted(taken,
+                                                       film.accumulators()[std::size_t(m_window.y0 + y) * film.width() +
+                                                                           std::size_t(m_window.x0 + x)])
+                                : wanted_after(taken, x, y);
                         if (m_plans_per_pixel) m_wanted[i] = m_plan[i] = wanted;
                         sum.wanted += wanted;
                         sum.taken += taken;
                         sum.pixels_wanting += wanted > 0;
                         if (m_mode == PassMode::Adaptive) sum.predicted += predicted_final(taken, x, y);
+                        // A pixel the test stopped is done; the others may run to the cap.
+                        if (m_mode == PassMode::Confidence) sum.predicted += wanted > 0 ? m_cap : taken;
                         sum.completes = sum.completes && taken + wanted >= m_cap;
                     }
                 return sum;
@@ -142,6 +158,8 @@ class PassPlanner {
     // Adaptive mode: the samples the window will hold when every pixel
     // meets the target, as the last plan predicts from the error each
     // pixel shows (0 before the first plan over a film with samples).
+    // Confidence mode: at most that many (pixels still sampling count
+    // their cap).
     std::uint64_t predicted_total() const { return m_predicted_total; }
 
     // Samples pixel (x, y) of the window takes this pass, given the samples
@@ -236,6 +254,7 @@ class PassPlanner {
     std::uint64_t m_predicted_total = 0;
     bool m_plan_completes = false;
     bool m_plans_per_pixel = true;  // else m_wanted and m_plan stay empty
+    const FocalBlurConfidence* m_confidence = nullptr;
 };
 
 }  // namespace lancer

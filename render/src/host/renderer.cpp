@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -120,6 +121,19 @@ RenderOptions with_focal_blur_samples(RenderOptions options, const Camera& camer
         options.samples_per_pixel = std::max(options.samples_per_pixel, camera.focal_blur().samples);
     return options;
 }
+// POV-Ray's confidence test for a focal-blurred render of a deterministic
+// integrator whose sample count is the scene's blur_samples (a larger
+// --spp, a time budget or a noise target asks for something else). `path`
+// and the other Monte Carlo integrators always take every sample: a stop
+// decided by the samples themselves would bias them.
+std::optional<FocalBlurConfidence> focal_blur_confidence(const RenderOptions& options, const Camera& camera,
+                                                         bool deterministic) {
+    if (!deterministic || !camera.has_focal_blur() || options.time_budget_seconds > 0.0 || options.noise_target > 0.0 ||
+        options.samples_per_pixel > camera.focal_blur().samples)
+        return std::nullopt;
+    return FocalBlurConfidence(camera.focal_blur(), std::uint32_t(camera.focal_blur().samples));
+}
+
 // Samples per pixel over a window: their sum, least and most.
 struct SampleCounts {
     std::uint64_t sum = 0;
@@ -162,7 +176,8 @@ class ImageRender {
           m_tiles_x((m_window.x1 - m_window.x0 + m_tile - 1) / m_tile),
           m_tiles((m_window.y1 - m_window.y0 + m_tile - 1) / m_tile * m_tiles_x),
           m_window_pixels(std::uint64_t(m_window.x1 - m_window.x0) * std::uint64_t(m_window.y1 - m_window.y0)),
-          m_planner(m_options, integrator.is_deterministic(), m_window),
+          m_confidence(focal_blur_confidence(options, scene.camera(), integrator.is_deterministic())),
+          m_planner(m_options, integrator.is_deterministic(), m_window, m_confidence ? &*m_confidence : nullptr),
           // One sample of a deterministic integrator goes through the pixel
           // centre (POV-Ray's picture without antialiasing); more samples,
           // of any integrator, spread over the pixel and antialias.
@@ -261,8 +276,8 @@ class ImageRender {
         }
         // A fixed render that checkpoints keeps passes within the interval,
         // so a kill loses at most about that much work.
-        if (m_planner.mode() == PassMode::Fixed && m_options.checkpoint_interval_seconds > 0.0 &&
-            seconds_per_sample > 0.0) {
+        if ((m_planner.mode() == PassMode::Fixed || m_planner.mode() == PassMode::Confidence) &&
+            m_options.checkpoint_interval_seconds > 0.0 && seconds_per_sample > 0.0) {
             const double affordable = m_options.checkpoint_interval_seconds / seconds_per_sample;
             planned = m_planner.limit_to(std::max(std::uint64_t(affordable), m_planner.pixels_wanting()));
         }
@@ -291,7 +306,8 @@ class ImageRender {
             return fixed_total > 0 ? taken / fixed_total : 1.0;
         }
         double fraction = 0.0;
-        if (m_planner.mode() == PassMode::Adaptive && m_planner.predicted_total() > 0)
+        if ((m_planner.mode() == PassMode::Adaptive || m_planner.mode() == PassMode::Confidence) &&
+            m_planner.predicted_total() > 0)
             fraction = taken / double(m_planner.predicted_total());
         if (m_has_deadline) fraction = std::max(fraction, seconds_since(m_start) / m_options.time_budget_seconds);
         return fraction;
@@ -413,6 +429,7 @@ class ImageRender {
     const CropWindow m_window;
     const int m_tile, m_tiles_x, m_tiles;
     const std::uint64_t m_window_pixels;
+    const std::optional<FocalBlurConfidence> m_confidence;
     PassPlanner m_planner;
     const bool m_pixel_centre;
     const bool m_lens_sampled;

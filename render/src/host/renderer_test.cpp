@@ -80,15 +80,31 @@ TEST(Renderer, PixelsACameraCannotSeeAreBlack) {
     EXPECT_EQ(film.mean(0, 10), Color(1.0f));  // on the circle's rim
 }
 
-// A camera with focal blur takes its blur_samples per pixel when the count
-// is fixed, as POV-Ray traces them; a larger count asked for is kept.
-TEST(Renderer, FocalBlurTakesItsBlurSamplesPerPixel) {
+// White where the camera ray meets something, black elsewhere.
+class CoverageIntegrator final : public Integrator {
+  public:
+    Color shade_camera_hit(const Ray&, const Hit* hit, const RenderScene&, Sampler&) const override {
+        return Color(hit ? 1.0f : 0.0f);
+    }
+    bool is_deterministic() const override { return true; }
+};
+
+std::unique_ptr<RenderScene> blurred_sphere(int least, int most, double variance) {
     sg::SceneGraph graph;
     graph.objects.push_back(sphere_object({0, 0, 5}, 1.0));
     graph.camera = sg::Camera{};
-    graph.camera->aperture = 0.5;
-    graph.camera->blur_samples = 7;
-    auto scene = compile_scene(graph);
+    graph.camera->aperture = 0.4;
+    graph.camera->focal_distance = 4.0;  // the sphere's near side: sharp
+    graph.camera->blur_samples = most;
+    graph.camera->blur_samples_min = least;
+    graph.camera->variance = variance;
+    return compile_scene(graph);
+}
+
+// A camera with focal blur takes its blur_samples per pixel when the count
+// is fixed, as POV-Ray traces them; a larger count asked for is kept.
+TEST(Renderer, FocalBlurTakesItsBlurSamplesPerPixel) {
+    auto scene = blurred_sphere(0, 7, 1.0 / 10000.0);
     Film film(6, 4);
     render_image(*scene, WhiteIntegrator(), quiet_options(6, 4), film);
     EXPECT_EQ(film.samples_taken(3, 2), 7u);
@@ -97,6 +113,48 @@ TEST(Renderer, FocalBlurTakesItsBlurSamplesPerPixel) {
     Film more(6, 4);
     render_image(*scene, WhiteIntegrator(), options, more);
     EXPECT_EQ(more.samples_taken(3, 2), 9u);
+}
+
+// POV-Ray's confidence test: a pixel whose first batch (the 7 points of the
+// inner hexagon of its 37-point grid) all agree stops there; one on the
+// blurred rim of the sphere, whose lens points disagree, takes all 37.
+TEST(Renderer, FocalBlurStopsWhereTheConfidenceTestPasses) {
+    const auto scene = blurred_sphere(0, 37, 1.0 / 10000.0);
+    Film film(24, 18);
+    const RenderStats stats = render_image(*scene, CoverageIntegrator(), quiet_options(24, 18), film);
+    EXPECT_EQ(film.samples_taken(0, 0), 7u);   // background only
+    EXPECT_EQ(film.samples_taken(12, 9), 7u);  // the sphere's middle
+    EXPECT_EQ(stats.max_samples_per_pixel, 37u);
+    EXPECT_LT(stats.mean_samples_per_pixel, 30.0);
+    // Every batch ends on one of POV's ring ends (7, 13, 19, 23, ..., 37).
+    for (int y = 0; y < 18; ++y)
+        for (int x = 0; x < 24; ++x) {
+            const std::uint32_t n = film.samples_taken(x, y);
+            EXPECT_TRUE(n == 7 || n == 13 || n == 19 || n == 23 || n == 27 || n == 31 || n == 35 || n == 37)
+                << n << " at " << x << "," << y;
+        }
+
+    // The picture is the one every sample gives, to within its noise.
+    const auto exact_scene = blurred_sphere(0, 37, 0.0);  // variance 0: never stops early
+    Film exact(24, 18);
+    const RenderStats all = render_image(*exact_scene, CoverageIntegrator(), quiet_options(24, 18), exact);
+    EXPECT_EQ(all.min_samples_per_pixel, 37u);
+    double difference = 0.0;
+    for (int y = 0; y < 18; ++y)
+        for (int x = 0; x < 24; ++x) difference += std::fabs(film.mean(x, y).r - exact.mean(x, y).r);
+    EXPECT_LT(difference / (24 * 18), 0.01);
+}
+
+// blur_samples MIN, MAX: no pixel stops before MIN (at the end of the batch
+// that reaches it); a Monte Carlo integrator takes every sample.
+TEST(Renderer, FocalBlurConfidenceHonoursMinimumAndMonteCarlo) {
+    const auto scene = blurred_sphere(10, 37, 1.0 / 10000.0);
+    Film film(24, 18);
+    render_image(*scene, CoverageIntegrator(), quiet_options(24, 18), film);
+    EXPECT_EQ(film.samples_taken(0, 0), 13u);
+
+    Film monte_carlo(24, 18);
+    EXPECT_EQ(render_image(*scene, NoisyIntegrator(), quiet_options(24, 18), monte_carlo).min_samples_per_pixel, 37u);
 }
 
 TEST(Renderer, BitIdenticalForOneAndTwoThreads) {
