@@ -240,15 +240,14 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         return Value::string(r);
     }
     if (name == "str")
-        return Value::string(
-            format_number(c.f(0), static_cast<int>(c.f(1)), c.f(2) < 0 ? 6 : static_cast<int>(c.f(2))));
+        return Value::string(format_number(c.f(0), saturated_int(c.f(1)), c.f(2) < 0 ? 6 : saturated_int(c.f(2))));
     if (name == "vstr") {
-        int dims = static_cast<int>(c.f(0));
+        int dims = saturated_int(c.f(0));
         const Value& v = args[1];
         std::string sep = c.s(2), r;
         for (int i = 0; i < dims && i < 5; ++i) {
             if (i) r += sep;
-            r += format_number(v.v[std::min(i, v.size - 1)], static_cast<int>(c.f(3)), static_cast<int>(c.f(4)));
+            r += format_number(v.v[std::min(i, v.size - 1)], saturated_int(c.f(3)), saturated_int(c.f(4)));
         }
         return Value::string(r);
     }

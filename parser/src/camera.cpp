@@ -120,7 +120,7 @@ double Evaluator::camera_angle(const Value& v, const SourceRange& where) {
 
 Projection Evaluator::cylinder_camera(const Value& v, const SourceRange& where) {
     // POV truncates the number, as it does every integer it reads.
-    const int type = int(to_float(v, where, "a cylinder camera type (1 to 4)"));
+    const int type = saturated_int(to_float(v, where, "a cylinder camera type (1 to 4)"));
     switch (type) {
     case 1: return Projection::Cylinder1;
     case 2: return Projection::Cylinder2;
@@ -138,8 +138,8 @@ Projection Evaluator::cylinder_camera(const Value& v, const SourceRange& where) 
 // passes.
 std::function<void(CameraSpec&)> Evaluator::blur_samples(const Value& first, const SourceRange& wf, const Value* second,
                                                          const SourceRange& ws) {
-    int least = int(to_float(first, wf, "a number of focal blur samples"));
-    int most = second ? int(to_float(*second, ws, "a number of focal blur samples")) : 0;
+    int least = saturated_int(to_float(first, wf, "a number of focal blur samples"));
+    int most = second ? saturated_int(to_float(*second, ws, "a number of focal blur samples")) : 0;
     if (least <= 0 && first.kind == Value::Kind::Float) {
         error(wf.begin, "blur_samples must be at least 1, got " + std::to_string(least));
         least = 1;

@@ -58,6 +58,10 @@ void transform_light(sg::Light& light, const sg::Mat4& world_from_local);
 // `sky_along_view` (when not null) is set when look_at looks along the sky.
 sg::Camera resolve_camera(const CameraSpec& spec, bool* sky_along_view = nullptr);
 bool is_reserved_word(const std::string& name);
+// A number POV truncates to an integer, without overflow: values past
+// int's range (clamped to +-2e9) are out of every setting's range anyway,
+// and the caller's checks report them; NaN gives 0.
+int saturated_int(double value);
 // A new object of `kind` written at `at`, its shape still to be set.
 inline ShapePtr new_shape(sg::Object::Kind kind, const sg::SourceLocation& at) {
     auto shape = std::make_shared<ShapeValue>();

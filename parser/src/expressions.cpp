@@ -39,6 +39,11 @@ double Evaluator::to_float(const Value& value, const SourceRange& where, const s
     return 0.0;
 }
 
+int saturated_int(double value) {
+    if (!(value == value)) return 0;
+    return static_cast<int>(std::clamp(value, -2.0e9, 2.0e9));
+}
+
 int Evaluator::to_int(const Value& value, const SourceRange& where) {
     double f = to_float(value, where, "an integer");
     if (std::fabs(f) > 2e9) {

@@ -80,4 +80,27 @@ TEST(FuzzRegression, DebugMessageHasNoCaret) {
     EXPECT_EQ(format_diagnostic(result.diagnostics.front()), "debug.pov:1: note: #debug: hello\n");
 }
 
+// fuzz_scene, UBSan (mesh2_huge_face_texture_index.pov): a face's texture
+// index of 3.3e12 was cast to int, which is undefined. Every number the
+// parser truncates to an int (mesh2 indices, str() and vstr() widths,
+// blur_samples, cylinder types, area_light sizes) now saturates first, and
+// the callers' range checks report it.
+TEST(FuzzRegression, HugeNumbersTruncatedToIntsAreReported) {
+    ParseResult mesh = parse_scene_string(
+        "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <1,1,0> }\n"
+        "texture_list { 1, texture { pigment { rgb 1 } } }\n"
+        "face_indices { 1, <0,1,2>3333333333333 } }\n",
+        "mesh.pov");
+    ASSERT_FALSE(mesh.ok());
+    EXPECT_NE(all_diagnostics(mesh).find("mesh.pov:3:"), std::string::npos) << all_diagnostics(mesh);
+    ParseResult vertex = parse_scene_string(
+        "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <1,1,0> } face_indices { 1, <0,1,3e12> } }\n", "vertex.pov");
+    EXPECT_FALSE(vertex.ok());
+    for (const char* text :
+         {"#declare S = str(1, 1e300, -1e300);\n", "#declare S = vstr(1e300, <1,2,3>, \",\", 1e300, 1e300);\n",
+          "camera { cylinder 1e300 }\n", "camera { aperture 1 blur_samples 1e300 }\n",
+          "light_source { 0, 1 area_light x, y, 1e300, -1e300 }\n"})
+        parse_scene_string(text, "huge.pov");  // no undefined behaviour (the sanitizer build)
+}
+
 }  // namespace lancer::test

@@ -26,7 +26,8 @@ std::function<void(sg::Light&)> Evaluator::area_light(const Value& a1, const Sou
                                                       const Value& n2, const SourceRange& wn2) {
     sg::Vec3 axis1 = to_vec3(a1, w1), axis2 = to_vec3(a2, w2);
     // POV truncates the sizes to integers.
-    int size1 = int(to_float(n1, wn1, "a grid size")), size2 = int(to_float(n2, wn2, "a grid size"));
+    int size1 = saturated_int(to_float(n1, wn1, "a grid size")),
+        size2 = saturated_int(to_float(n2, wn2, "a grid size"));
     if (size1 < 1 || size2 < 1) {
         error((size1 < 1 ? wn1 : wn2).begin, "area_light grid sizes must be at least 1");
         size1 = std::max(size1, 1);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <tiny_obj_loader.h>
@@ -289,6 +290,21 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_vectors(const std::strin
     };
 }
 
+namespace {
+
+// x as an int when it is a whole number int can hold (a cast of any other
+// value is undefined).
+bool whole_int(double x, int& out) {
+    out = 0;
+    if (!(x == std::floor(x)) || x < double(std::numeric_limits<int>::min()) ||
+        x > double(std::numeric_limits<int>::max()))
+        return false;
+    out = static_cast<int>(x);
+    return true;
+}
+
+}  // namespace
+
 std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_indices(const std::string& section, const Value& count,
                                                                 const SourceRange& wc, const std::vector<Value>& items,
                                                                 const SourceRange& wi, const sg::SourceLocation& at) {
@@ -305,17 +321,22 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_indices(const std::strin
         if (item.kind == Value::Kind::Vector && item.size == 3) {
             Entry entry;
             for (int i = 0; i < 3; ++i) {
-                double x = item.v[i];
-                entry.index[i] = static_cast<int>(x);
-                if (x != std::floor(x)) {
-                    error(here, section + " entries must be whole numbers, found " + std::to_string(x));
+                const double x = item.v[i];
+                if (!whole_int(x, entry.index[i])) {
+                    error(here, section + " entries must be whole numbers in int's range, found " + std::to_string(x));
                     ok = false;
                 }
             }
             entry.where = here;
             entries.push_back(entry);
         } else if (item.kind == Value::Kind::Float && section == "face_indices" && !entries.empty()) {
-            if (entries.back().texture < 0) entries.back().texture = static_cast<int>(item.v[0]);
+            int texture = 0;
+            if (!whole_int(item.v[0], texture) || texture < 0) {
+                error(here, "a face's texture index must be a whole number from 0, found " + std::to_string(item.v[0]));
+                ok = false;
+            } else if (entries.back().texture < 0) {
+                entries.back().texture = texture;
+            }
         } else {
             error(here, section + " entries must be <a, b, c> index vectors, found " + describe(item));
             ok = false;

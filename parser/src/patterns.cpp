@@ -211,13 +211,6 @@ void restart_pattern(sg::Pattern& pattern, const std::function<void(sg::Pattern&
     pattern.location = at;
 }
 
-// A setting's value as an int without overflow (values past int's range
-// are out of every pattern's range anyway; the caller's checks report them).
-int saturated_int(double value) {
-    if (!(value == value)) return 0;
-    return static_cast<int>(std::clamp(value, -2.0e9, 2.0e9));
-}
-
 // POV gives marble, wood and the spirals a triangle wave unless another is
 // written.
 sg::WaveType default_wave(PatternKind kind) {
