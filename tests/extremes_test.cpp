@@ -480,6 +480,33 @@ sphere { <0, 0, 0>, 1 pigment { color rgb 0.5 } finish { ambient 0.1 diffuse 0.8
     }
 }
 
+// Guards against: an abort inside Embree (Debian's build asserts on rays
+// whose origin lies past ±1.8e18) when a ray starts from a hit that far
+// out. Expected: the camera sees a mirror plane 1e20 away (planes are
+// intersected in double precision, outside Embree), and every ray from
+// there misses: reflections show the black background and shadow rays
+// reach the light, so `shadow` and `whitted` see what `raycast` (no
+// shadows, no mirrors) sees.
+TEST(Extremes, RaysFromHitsBeyondTheTraceableRange) {
+    const std::string scene = R"(
+camera { location <0, 0, 0> look_at <0, 0, 1> angle 60 }
+light_source { <0, 10, -10> color rgb 1 }
+plane { -z, -1e20 pigment { color rgb 0.5 } finish { ambient 0.2 diffuse 0.5 reflection 0.5 } }
+sphere { <0, 0, -100>, 1 }  // out of view: the BVH is not empty
+)";
+    const Film lit = render(scene, "raycast", quick("raycast"), 16, 12);
+    ASSERT_TRUE(all_finite(lit));
+    ASSERT_GT(lit.mean(8, 6).g, 0.1f);  // ambient and some diffuse
+    for (const char* name : {"shadow", "whitted", "path"}) {
+        const Film film = render(scene, name, quick(name), 16, 12, std::string(name) == "path" ? 2 : 1);
+        EXPECT_TRUE(all_finite(film)) << name;
+        if (std::string(name) == "path") continue;  // its own light transport
+        for (int y = 0; y < film.height(); ++y)
+            for (int x = 0; x < film.width(); ++x)
+                ASSERT_NEAR(film.mean(x, y).g, lit.mean(x, y).g, 1e-4f) << name << " at (" << x << ", " << y << ")";
+    }
+}
+
 // Guards against: coincident surfaces (z-fighting) shadowing each other, a
 // shadow ray leaving one and hitting its twin at t ~ 0. Expected: two
 // coincident planes, one red and one green, lit head-on by a directional

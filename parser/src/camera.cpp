@@ -238,6 +238,17 @@ void Evaluator::set_camera(const CameraSpec& spec) {
               "space");
         return;
     }
+    // lancer traces in single precision, and its ray tracer takes no ray
+    // whose origin lies farther out than about 1.8e18 on an axis.
+    constexpr double kFarthestCameraCoordinate = 1e18;
+    if (c.projection != Projection::Mesh && !(std::fabs(c.location.x) <= kFarthestCameraCoordinate &&
+                                              std::fabs(c.location.y) <= kFarthestCameraCoordinate &&
+                                              std::fabs(c.location.z) <= kFarthestCameraCoordinate)) {
+        error(spec.location_in_source,
+              "the camera's location lies more than 1e18 from the origin along an axis: lancer traces no ray from "
+              "that far (move the scene towards the origin)");
+        return;
+    }
     if (sky_along_view)
         warning(spec.location_in_source,
                 "the camera looks along its sky direction: the right vector is kept as given (POV-Ray's rule); "

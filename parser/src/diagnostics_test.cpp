@@ -108,6 +108,8 @@ const BadScene kBadScenes[] = {
     {"RadiusBeyondSinglePrecision", "sphere { 0, 1e39 }", "sphere radius 1e+39", 1, 13},
     {"CameraLooksAtItself", "camera { location <1,2,3> look_at <1,2,3> }", "must be different", 1, 1},
     {"CameraFrameIsFlat", "camera { direction x right x up y }", "lie in one plane", 1, 1},
+    {"CameraTooFarOut", "camera { location <0, 0, -1e19> look_at 0 }", "more than 1e18 from the origin", 1, 1},
+    {"CameraMovedTooFarOut", "camera { translate 2e18 * x }", "more than 1e18 from the origin", 1, 1},
     {"AreaLightZeroSamples", "light_source { 0, 1 area_light x, z, 0, 2 }", "at least 1", 1, 38},
     {"AreaRectangleParallelAxes", "light_source { 0, 1 area_rectangle x, x*2 }", "not parallel", 1, 36},
     {"CircularAreaLightOfOneRow", "light_source { 0, 1 area_light x, z, 4, 1 circular }", "more than one sample", 1, 1},

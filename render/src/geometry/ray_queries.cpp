@@ -10,6 +10,21 @@
 namespace lancer::embree {
 namespace {
 
+// Embree traces a ray only when its origin's and direction's components
+// lie within ±1.844e18 (its FLT_LARGE) and its t range is not NaN; past
+// that Debian's build aborts on an assertion. Such a ray (a camera or a hit
+// that far off) misses everything in the BVH; the unbounded shapes, tested
+// in double precision, may still hit it.
+constexpr float kLargestTraceable = 1.844e18f;
+
+bool embree_can_trace(const Ray& ray) {
+    const auto within = [](const Vec3& v) {
+        return std::fabs(v.x) <= kLargestTraceable && std::fabs(v.y) <= kLargestTraceable &&
+               std::fabs(v.z) <= kLargestTraceable;  // false for NaN
+    };
+    return within(ray.origin) && within(ray.direction) && !std::isnan(ray.t_min) && !std::isnan(ray.t_max);
+}
+
 void fill_embree_ray(const Ray& ray, RTCRay& out) {
     out.org_x = ray.origin.x;
     out.org_y = ray.origin.y;
@@ -48,7 +63,7 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
     rayhit.hit.primID = kInvalidId;
     rayhit.hit.instID[0] = kInvalidId;
     rayhit.hit.u = rayhit.hit.v = 0.0f;
-    rtcIntersect1(m_scene, &context, &rayhit);
+    if (embree_can_trace(ray)) rtcIntersect1(m_scene, &context, &rayhit);
     const EmbreeHit found{rayhit.ray.tnear,     rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
                           rayhit.hit.instID[0], rayhit.hit.u,    rayhit.hit.v};
     if (!complete_hit(ray, found, hit)) return false;
@@ -62,10 +77,16 @@ void EmbreeScene::trace_packet(const Ray* rays, int lanes, PacketAnswers& answer
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     alignas(64) int valid[kPacketLanes];
     alignas(64) RTCRayHit16 packet;
+    bool untraceable[kPacketLanes] = {};
     for (int k = 0; k < kPacketLanes; ++k) {
-        valid[k] = k < lanes ? -1 : 0;
-        // Idle lanes repeat a live ray so every lane holds finite data.
-        const Ray& ray = rays[std::min(k, lanes - 1)];
+        // Idle lanes repeat a live ray so every lane holds finite data; an
+        // untraceable lane, which Embree skips, holds a harmless one.
+        static const Ray kHarmless;
+        const Ray& source = rays[std::min(k, lanes - 1)];
+        const bool traceable = embree_can_trace(source);
+        untraceable[k] = k < lanes && !traceable;
+        valid[k] = k < lanes && traceable ? -1 : 0;
+        const Ray& ray = traceable ? source : kHarmless;
         packet.ray.org_x[k] = ray.origin.x;
         packet.ray.org_y[k] = ray.origin.y;
         packet.ray.org_z[k] = ray.origin.z;
@@ -85,6 +106,11 @@ void EmbreeScene::trace_packet(const Ray* rays, int lanes, PacketAnswers& answer
     }
     rtcIntersect16(valid, m_scene, &context, &packet);
     for (int k = 0; k < kPacketLanes; ++k) {
+        // A miss over the ray's own range, as intersect() gives.
+        if (untraceable[k]) {
+            packet.ray.tnear[k] = glm::max(rays[k].t_min, 0.0f);
+            packet.ray.tfar[k] = glm::max(rays[k].t_max, packet.ray.tnear[k]);
+        }
         answers.tnear[k] = packet.ray.tnear[k];
         answers.tfar[k] = packet.ray.tfar[k];
         answers.geometry[k] = packet.hit.geomID[k];
@@ -163,7 +189,7 @@ bool EmbreeScene::occluded(const Ray& ray) const {
     if (m_has_no_shadow_mesh) context.base.filter = skip_no_shadow;
     RTCRay shadow_ray;
     fill_embree_ray(ray, shadow_ray);
-    rtcOccluded1(m_scene, &context.base, &shadow_ray);
+    if (embree_can_trace(ray)) rtcOccluded1(m_scene, &context.base, &shadow_ray);
     if (shadow_ray.tfar == -INFINITY) return true;
     for (std::uint32_t index : m_unbounded) {
         const Instance& instance = m_data->instances[index];
