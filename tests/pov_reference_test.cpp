@@ -127,6 +127,15 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PovFocalBlurReference,
                          ::testing::Values("camera_focal_blur", "camera_focal_blur_adaptive"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
+// Focal blur through POV's bokeh: a disc lens with a quarter closed. POV
+// draws its lens points by rejection, lancer through the shape's
+// distribution, so again the blur agrees, not the noise. Measured when
+// made: 0.0020 mean; the same scene with POV's round lens 0.0050, with the
+// closed quarter on the other side 0.0074.
+TEST(PovBokehReference, ShapedLensBlursAsPovRay) {
+    expect_whitted_matches_pov("camera_bokeh", 0.003);
+}
+
 // Scene-level media lit by a spotlight, with POV's `jitter` (random in
 // POV-Ray, lancer's sampler here), so the images agree in the mean rather
 // than to the code value; the samples sit, as POV's, in the part of each

@@ -100,6 +100,7 @@ sg::Camera resolve_camera(const CameraSpec& spec, bool* sky_along_view) {
     camera.confidence = spec.confidence;
     camera.variance = spec.variance;
     camera.normal = spec.normal;
+    camera.bokeh = spec.bokeh;
     camera.mesh = spec.mesh;
     const sg::Mat4& m = spec.world_from_camera;
     camera.location = sg::Vec3(m * glm::dvec4(location, 1.0));
@@ -270,6 +271,9 @@ void Evaluator::set_camera(const CameraSpec& spec) {
                     projection_name(spec.projection) + " camera loses its parallel rays: the picture is a blur");
     if (spec.aperture == 0.0 && (spec.blur_samples > 0 || spec.focal_point))
         warning(spec.location_in_source, "blur_samples and focal_point do nothing without an aperture");
+    if (spec.bokeh && !c.focal_blur())
+        warning(spec.bokeh->location,
+                "bokeh shapes the lens of focal blur: without aperture and blur_samples it does nothing");
 }
 
 }  // namespace lancer::parse

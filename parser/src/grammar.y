@@ -90,7 +90,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        LOCATION "location" LOOK_AT "look_at" ANGLE "angle" UP "up" RIGHT "right" SKY "sky"
        DIRECTION "direction" PERSPECTIVE "perspective" ORTHOGRAPHIC "orthographic"
        APERTURE "aperture" BLUR_SAMPLES "blur_samples" FOCAL_POINT "focal_point"
-       CONFIDENCE "confidence" VARIANCE "variance" FISHEYE "fisheye" ULTRA_WIDE_ANGLE "ultra_wide_angle"
+       CONFIDENCE "confidence" VARIANCE "variance" BOKEH "bokeh" FISHEYE "fisheye" ULTRA_WIDE_ANGLE "ultra_wide_angle"
        OMNIMAX "omnimax" PANORAMIC "panoramic"
        PARALLEL "parallel" POINT_AT "point_at" AREA_LIGHT "area_light" JITTER "jitter"
        ADAPTIVE "adaptive" CIRCULAR "circular" ORIENT "orient" AREA_SPHERE "area_sphere" AREA_RECTANGLE "area_rectangle" CYLINDER "cylinder" PROJECTED_THROUGH "projected_through"
@@ -1746,6 +1746,7 @@ camera_item
   | "focal_point" expr { auto v = ev.to_vec3($2, @2); $$ = [v](CameraSpec& c) { c.focal_point = v; c.other_item_seen = true; }; }
   | "confidence" expr  { $$ = ev.blur_confidence($2, @2); }
   | "variance" expr    { $$ = ev.blur_variance($2, @2); }
+  | "bokeh" "{" pigment "}" { auto p = $3; $$ = [p](CameraSpec& c) { c.bokeh = p; c.other_item_seen = true; }; }
   | normal             { auto n = $1; $$ = [n](CameraSpec& c) { c.normal = n; c.other_item_seen = true; }; }
   | transform_item     { sg::Mat4 t = $1; $$ = [t](CameraSpec& c) { c.world_from_camera = t * c.world_from_camera; c.other_item_seen = true; }; }
   ;

@@ -582,12 +582,20 @@ TEST(ParserCamera, FocalBlurAsPovReadsIt) {
 TEST(ParserCamera, FocalBlurSettingsThatDoNothingWarn) {
     for (const char* text :
          {"camera { aperture 1 }", "camera { blur_samples 10 }", "camera { orthographic aperture 1 blur_samples 10 }",
-          "camera { aperture 1 blur_samples 10 confidence 1.5 }"}) {
+          "camera { aperture 1 blur_samples 10 confidence 1.5 }", "camera { bokeh { pigment { rgb 1 } } }"}) {
         const ParseResult result = parse_scene_string(text, "w.pov");
         EXPECT_TRUE(result.ok()) << text;
         EXPECT_GE(test::count_warnings(result), 1) << text;
     }
     EXPECT_EQ(test::count_warnings(parse_scene_string("camera { aperture 1 blur_samples 10 }", "w.pov")), 0);
+}
+
+TEST(ParserCamera, BokehKeepsItsPigment) {
+    auto scene = parse_ok(
+        "camera { aperture 1 blur_samples 10 bokeh { pigment { gradient x color_map { [0.5 rgb 0] [0.5 rgb 1] } } } }");
+    ASSERT_TRUE(scene.camera->bokeh);
+    EXPECT_EQ(scene.camera->bokeh->kind, sg::Pigment::Kind::Patterned);
+    EXPECT_FALSE(parse_ok("camera { aperture 1 blur_samples 10 }").camera->bokeh);
 }
 
 TEST(ParserCamera, NormalIsKept) {

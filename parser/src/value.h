@@ -41,6 +41,7 @@ struct CameraSpec {
     int blur_samples = 0, blur_samples_min = 0;
     double confidence = 0.9, variance = 1.0 / 10000.0;
     sg::NormalRef normal;
+    std::shared_ptr<const sg::Pigment> bokeh;
     std::shared_ptr<const sg::MeshCamera> mesh;  // mesh_camera's settings and meshes
     sg::Mat4 world_from_camera{1.0};             // transforms written in the block
     sg::SourceLocation location_in_source;

@@ -853,6 +853,10 @@ struct Camera {
     double confidence = 0.9;
     double variance = 1.0 / 10000.0;
     double focal_distance = 1.0;
+    // POV's bokeh { pigment { } }: the aperture's shape and transmission,
+    // the pigment's grey over x, y in [0, 1] (z = 0) spanning the square
+    // lens; null: POV's round lens, evenly open.
+    std::shared_ptr<const Pigment> bokeh;
     // normal { } on a camera: each ray's direction is bent as a surface
     // normal would be, the pattern read at (x0, y0, 0) of the image plane.
     NormalRef normal;

@@ -13,6 +13,7 @@ namespace lancer {
 
 class NormalPerturbation;
 class MeshCameraRays;
+class ApertureShape;
 
 class Camera {
   public:
@@ -55,6 +56,10 @@ class Camera {
         m_vertical_angle = vertical;
     }
     void set_focal_blur(const FocalBlur& blur) { m_blur = blur; }
+    // POV's bokeh: the lens' shape and transmission, which the host draws
+    // lens points from (null: the round lens); must outlive the camera.
+    void set_bokeh(const ApertureShape* bokeh) { m_bokeh = bokeh; }
+    const ApertureShape* bokeh() const { return m_bokeh; }
     // Bends every ray's direction as a surface normal (POV's camera
     // normal { }); the perturbation must outlive the camera.
     void set_normal(const NormalPerturbation* normal) { m_normal = normal; }
@@ -160,6 +165,7 @@ class Camera {
     double m_horizontal_angle = 360.0, m_vertical_angle = 180.0;
     FocalBlur m_blur;
     const NormalPerturbation* m_normal = nullptr;
+    const ApertureShape* m_bokeh = nullptr;
     const MeshCameraRays* m_mesh = nullptr;
     int m_rays_per_pixel = 1;
 };

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "camera/aperture_shape.h"
 #include "camera/mesh_camera.h"
 #include "environment/sky_sphere.h"
 #include "geometry/csg.h"
@@ -89,6 +90,7 @@ struct SceneData {
     std::vector<const Light*> local_lights;
     Camera camera;
     std::unique_ptr<MeshCameraRays> mesh_camera;  // a mesh_camera's faces, which `camera` reads
+    std::unique_ptr<ApertureShape> bokeh;         // the lens shape `camera` reads, if the scene has one
     Color background{0.0f};
     // What an alpha channel sees through where rays escape: the background's
     // transmit (1 when the scene has none), 0 under a sky_sphere.

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sampling/bit_reversal.h"
+
 namespace lancer {
 namespace {
 
@@ -29,6 +31,10 @@ std::vector<Vec2> hexagonal_grid(int rings) {
         }
     return points;
 }
+
+// Past a few thousand points a point set keeps its own order: ordering
+// costs the square of the count.
+constexpr int kMostSpreadPoints = 2048;
 
 // The points reordered so that every prefix spreads over the lens: the
 // centre-most first, then each time the point farthest from those already
@@ -73,9 +79,20 @@ Vec2 concentric_disc_point(const Vec2& u) {
     return Vec2(float(0.5 * radius * std::cos(theta)), float(0.5 * radius * std::sin(theta)));
 }
 
-ApertureSamples::ApertureSamples(int blur_samples, bool pov_pattern) {
+ApertureSamples::ApertureSamples(int blur_samples, bool pov_pattern, const ApertureShape* bokeh) : m_bokeh(bokeh) {
     if (!pov_pattern || blur_samples <= 0) return;
     const int n = blur_samples;
+    if (bokeh) {
+        // A Hammersley set carried through the shape's distribution: as
+        // evenly spread as the shape allows (POV draws its points by
+        // rejection from a sub-random sequence).
+        std::vector<Vec2> points;
+        for (int k = 0; k < n; ++k)
+            points.push_back(bokeh->point(Vec2(float(radical_inverse_base2(std::uint32_t(k))), float((k + 0.5) / n))));
+        m_max_jitter = float(0.5 / std::sqrt(double(n)));
+        m_grid = n <= kMostSpreadPoints ? spread_order(std::move(points)) : std::move(points);
+        return;
+    }
     // The largest standard grid n covers.
     std::vector<Vec2> grid;
     int rings = 0;
@@ -105,14 +122,13 @@ ApertureSamples::ApertureSamples(int blur_samples, bool pov_pattern) {
         const double radius = 0.5 * std::sqrt((k + 0.5) / rest), theta = k * golden_angle;
         spiral.emplace_back(float(radius * std::cos(theta)), float(radius * std::sin(theta)));
     }
-    constexpr int kMostSpreadPoints = 2048;
     m_grid = spread_order(std::move(grid));
     if (rest <= kMostSpreadPoints) spiral = spread_order(std::move(spiral));
     m_grid.insert(m_grid.end(), spiral.begin(), spiral.end());
 }
 
 Vec2 ApertureSamples::point(std::uint32_t index, const Vec2& u) const {
-    if (m_grid.empty()) return concentric_disc_point(u);
+    if (m_grid.empty()) return m_bokeh ? m_bokeh->point(u) : concentric_disc_point(u);
     const Vec2 jitter = (2.0f * u - 1.0f) * m_max_jitter;
     return m_grid[index % m_grid.size()] + jitter;
 }

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "camera/aperture_shape.h"
 #include "lancer/ray.h"
 
 namespace lancer {
@@ -16,8 +17,12 @@ class ApertureSamples {
     // and 37-point hexagonal grids, jittered, the rest spread evenly over
     // the disc), for the deterministic integrators that reproduce POV's
     // pictures; otherwise each sample is uniform over the disc, so a Monte
-    // Carlo integrator stays unbiased with a thin lens.
-    ApertureSamples(int blur_samples, bool pov_pattern);
+    // Carlo integrator stays unbiased with a thin lens. With a `bokeh`
+    // (which must outlive this), the lens is its shape instead: POV's
+    // pattern is blur_samples points spread in proportion to its
+    // transmission, jittered as above; a Monte Carlo sample is drawn from
+    // it.
+    ApertureSamples(int blur_samples, bool pov_pattern, const ApertureShape* bokeh = nullptr);
 
     // The lens point of a pixel's sample `index`, from a uniform pair u
     // in [0, 1)^2 (the sample's own random numbers).
@@ -26,6 +31,7 @@ class ApertureSamples {
   private:
     std::vector<Vec2> m_grid;  // POV's pattern, one point per blur sample; empty: uniform
     float m_max_jitter = 0.0f;
+    const ApertureShape* m_bokeh = nullptr;
 };
 
 // The uniform point of the disc of radius 0.5 that u in [0, 1)^2 maps to

@@ -18,7 +18,7 @@ constexpr std::uint32_t kBatchAfterRings = 4;
 
 }  // namespace
 
-FocalBlurConfidence::FocalBlurConfidence(const Camera::FocalBlur& blur, std::uint32_t most)
+FocalBlurConfidence::FocalBlurConfidence(const Camera::FocalBlur& blur, std::uint32_t most, bool bokeh)
     : m_most(std::max(most, 1u)),
       m_least(std::uint32_t(std::max(blur.samples_min, 0))),
       m_variance(blur.variance),
@@ -27,7 +27,9 @@ FocalBlurConfidence::FocalBlurConfidence(const Camera::FocalBlur& blur, std::uin
     // POV's standard grids: hexagons of 37, 19 and 7 points taken ring by
     // ring (its lists of batch sizes), else batches of four throughout.
     std::vector<std::uint32_t> rings;
-    if (samples >= 37)
+    if (bokeh)
+        rings.clear();  // fours only
+    else if (samples >= 37)
         rings = {7, 6, 6, 4, 4, 4, 4, 2};
     else if (samples >= 19)
         rings = {7, 6, 6};

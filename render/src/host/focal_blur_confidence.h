@@ -15,7 +15,9 @@ namespace lancer {
 class FocalBlurConfidence {
   public:
     // `most` samples per pixel at most (at least the camera's blur_samples).
-    FocalBlurConfidence(const Camera::FocalBlur& blur, std::uint32_t most);
+    // With a bokeh POV draws its lens points one by one (no hexagonal
+    // grid), so batches are fours from the first.
+    FocalBlurConfidence(const Camera::FocalBlur& blur, std::uint32_t most, bool bokeh = false);
 
     std::uint32_t most() const { return m_most; }
 

@@ -47,6 +47,11 @@ TEST(FocalBlurConfidence, BatchesFollowPovsGridRings) {
     const FocalBlurConfidence five(blur(0, 5), 5);
     EXPECT_EQ(five.batch_end(0), 4u);
     EXPECT_EQ(five.batch_end(4), 5u);
+    // A bokeh lens has no grid: fours from the first sample.
+    const FocalBlurConfidence shaped(blur(0, 50), 50, /*bokeh=*/true);
+    EXPECT_EQ(shaped.batch_end(0), 4u);
+    EXPECT_EQ(shaped.batch_end(4), 8u);
+    EXPECT_EQ(shaped.batch_end(48), 50u);
 }
 
 TEST(FocalBlurConfidence, ThresholdScalesTheVarianceByChiSquareQuantiles) {

@@ -131,7 +131,8 @@ std::optional<FocalBlurConfidence> focal_blur_confidence(const RenderOptions& op
     if (!deterministic || !camera.has_focal_blur() || options.time_budget_seconds > 0.0 || options.noise_target > 0.0 ||
         options.samples_per_pixel > camera.focal_blur().samples)
         return std::nullopt;
-    return FocalBlurConfidence(camera.focal_blur(), std::uint32_t(camera.focal_blur().samples));
+    return FocalBlurConfidence(camera.focal_blur(), std::uint32_t(camera.focal_blur().samples),
+                               camera.bokeh() != nullptr);
 }
 
 // Samples per pixel over a window: their sum, least and most.
@@ -184,7 +185,7 @@ class ImageRender {
           m_pixel_centre(integrator.is_deterministic() && m_planner.cap() == 1),
           m_lens_sampled(scene.camera().has_focal_blur()),
           m_rays_per_pixel(std::clamp(scene.camera().rays_per_pixel(), 1, CameraBatch::kCapacity)),
-          m_aperture(scene.camera().focal_blur().samples, integrator.is_deterministic()),
+          m_aperture(scene.camera().focal_blur().samples, integrator.is_deterministic(), scene.camera().bokeh()),
           m_prototype(integrator.make_sampler(options.seed)),
           m_samplers([this] { return m_prototype->clone(); }),
           // One batch per thread for the whole render: its 41 KB of rays

@@ -156,6 +156,11 @@ class Builder {
         blur.confidence = float(camera.confidence);
         blur.variance = float(camera.variance);
         m_data->camera.set_focal_blur(blur);
+        if (camera.bokeh && camera.focal_blur()) {
+            const auto pigment = m_data->texture_factory->make_point_pigment(*camera.bokeh);
+            m_data->bokeh = std::make_unique<ApertureShape>(*pigment, camera.bokeh->location);
+            m_data->camera.set_bokeh(m_data->bokeh.get());
+        }
         if (camera.normal) {
             m_data->normals.push_back(m_data->texture_factory->make_normal(*camera.normal));
             m_data->camera.set_normal(m_data->normals.back().get());

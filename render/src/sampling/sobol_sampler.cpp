@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "lancer/sampler.h"
+#include "sampling/bit_reversal.h"
 
 namespace lancer {
 
@@ -94,14 +95,6 @@ std::uint64_t mix64(std::uint64_t x) {
     x *= 0x94d049bb133111ebull;
     x ^= x >> 31;
     return x;
-}
-
-std::uint32_t reverse_bits(std::uint32_t x) {
-    x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-    x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-    return (x >> 16) | (x << 16);
 }
 
 // Nested uniform scramble (Burley, "Practical hash-based Owen scrambling",
