@@ -45,7 +45,9 @@ if [ "${LANCER_SKIP_FUZZ:-0}" != 1 ]; then
     # A finding makes libFuzzer exit non-zero and leaves the input in
     # build-fuzz/artifacts/<target>/ (docs/robustness.md says how to replay it).
     log="${TMPDIR:-/tmp}/lancer-fuzz-$target.log"
-    tests/fuzz/run.sh "$target" "${LANCER_FUZZ_SECONDS:-30}" >"$log" 2>&1 ||
+    # A fixed seed: a run repeats its mutations (up to how many fit in the
+    # time), so a finding here can be replayed; LANCER_FUZZ_SEED=0 draws one.
+    tests/fuzz/run.sh "$target" "${LANCER_FUZZ_SECONDS:-30}" -seed="${LANCER_FUZZ_SEED:-1}" >"$log" 2>&1 ||
       { tail -40 "$log"; echo "test.sh: fuzz_$target failed: a build error or a failing input (log: $log)" >&2; exit 1; }
   done
   echo "test.sh: fuzzing stage took $((SECONDS - start)) s"

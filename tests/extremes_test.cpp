@@ -507,6 +507,29 @@ sphere { <0, 0, -100>, 1 }  // out of view: the BVH is not empty
     }
 }
 
+// Guards against: the same abort for camera rays, whose origins an
+// orthographic camera spreads over its right and up vectors (1e30 wide
+// here, the location at the origin). Expected: every pixel's ray starts
+// past the range (the nearest pixel centre lies 3e28 off the axis), so it
+// misses the BVH but still meets the plane (tested in double precision):
+// no abort, nothing non-finite, every pixel the plane's ambient green.
+TEST(Extremes, CameraRaysFromBeyondTheTraceableRange) {
+    const std::string scene = R"(
+camera { orthographic location <0, 0, -5> right 1e30 * x up 1e30 * y look_at 0 }
+light_source { <0, 10, -10> color rgb 1 }
+sphere { 0, 1 pigment { color rgb <1, 0, 0> } }
+plane { -z, -3 pigment { color rgb <0, 1, 0> } finish { ambient 1 diffuse 0 } }
+)";
+    for (const char* name : {"raycast", "whitted", "path"}) {
+        const Film film = render(scene, name, quick(name), 16, 12, std::string(name) == "path" ? 2 : 1);
+        EXPECT_TRUE(all_finite(film)) << name;
+        if (std::string(name) == "path") continue;  // no ambient term
+        for (int y = 0; y < film.height(); ++y)
+            for (int x = 0; x < film.width(); ++x)
+                ASSERT_NEAR(film.mean(x, y).g, 1.0f, 1e-4f) << name << " at (" << x << ", " << y << ")";
+    }
+}
+
 // Guards against: coincident surfaces (z-fighting) shadowing each other, a
 // shadow ray leaving one and hitting its twin at t ~ 0. Expected: two
 // coincident planes, one red and one green, lit head-on by a directional
