@@ -376,6 +376,7 @@ class Evaluator {
     const sg::GeometryQueries* geometry_queries(const std::string& what, const sg::SourceLocation& at);
     Value pattern_function(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);
     Value pigment_function(const std::shared_ptr<sg::Pigment>& pigment, const sg::SourceLocation& at);
+    Value transform_function(const sg::Mat4& transform, const sg::SourceLocation& at);
     PatternEdit function_pattern(const Value& function, const sg::SourceLocation& at);
     // object { O [list] }: inside O (1) or outside (0), a block pattern of two.
     PatternEdit object_pattern(const std::shared_ptr<ShapeValue>& shape, const sg::SourceLocation& at);
@@ -502,7 +503,7 @@ class Evaluator {
                    const std::string& folder, const sg::SourceLocation& included_from);
     Symbol classify(const RawToken& raw);
     // function [(params)] { … } read from the token stream (functions.cpp):
-    // a FUNCTION_LITERAL, or FUNCTION_OPEN before a pattern or pigment body.
+    // a FUNCTION_LITERAL, or FUNCTION_OPEN before a pattern, pigment or transform body.
     std::optional<Symbol> read_function(const RawToken& keyword);
     Symbol symbol_for_identifier(const RawToken& raw);
     Kind token_for_value(const Value& value);

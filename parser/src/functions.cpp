@@ -371,8 +371,8 @@ class FunctionCompiler {
         if (!m_failed && is_punct(".")) {
             fetch();
             channel = channel_of(m_token.text);
-            if (channel < 0 || !callee->pigment) {
-                fail("'." + m_token.text + "' needs a pigment function");
+            if (channel < 0 || (!callee->pigment && !callee->transform) || (callee->transform && channel > 2)) {
+                fail("'." + m_token.text + "' needs a pigment function (or .x, .y, .z of a transform function)");
                 return;
             }
             fetch();
@@ -447,9 +447,10 @@ std::optional<Evaluator::Symbol> Evaluator::read_function(const RawToken& keywor
         return std::nullopt;
     }
     const RawToken* first = peek_raw();
-    if (first && first->kind == RawKind::Identifier && (first->text == "pattern" || first->text == "pigment") &&
-        default_parameters) {
-        // The grammar reads function { pattern { … } } and { pigment { … } }.
+    if (first && first->kind == RawKind::Identifier &&
+        (first->text == "pattern" || first->text == "pigment" || first->text == "transform") && default_parameters) {
+        // The grammar reads function { pattern { … } }, { pigment { … } }
+        // and { transform { … } }.
         m_block_names.push_back("function");
         ++m_nesting;
         Value sized;
@@ -484,6 +485,12 @@ Value Evaluator::call_function(const Value& function, const std::vector<Value>& 
             colour.transmit = c[4];
             return Value::color(colour);
         }
+        if (f.transform) {
+            double c[3];
+            for (int k = 0; k < 3; ++k)
+                c[k] = sg::evaluate_function(f, numbers.data(), int(numbers.size()), nullptr, k);
+            return Value::vector({c[0], c[1], c[2]});
+        }
         return Value::number(sg::evaluate_function(f, numbers.data(), int(numbers.size()), m_options.function_natives));
     } catch (const sg::FunctionError& e) {
         error(where.begin, e.what());
@@ -506,6 +513,13 @@ Value Evaluator::pigment_function(const std::shared_ptr<sg::Pigment>& pigment, c
     auto f = std::make_shared<sg::Function>();
     f->parameters = {"x", "y", "z"};
     f->pigment = pigment;
+    return function_value(f, at);
+}
+
+Value Evaluator::transform_function(const sg::Mat4& transform, const sg::SourceLocation& at) {
+    auto f = std::make_shared<sg::Function>();
+    f->parameters = {"x", "y", "z"};
+    f->transform = std::make_shared<const glm::dmat4>(transform);
     return function_value(f, at);
 }
 

@@ -89,6 +89,28 @@ TEST(ParserFunctions, MacrosPassAndBuildFunctions) {
     EXPECT_DOUBLE_EQ(declared("#macro Sq(A) (A * A) #end\n#declare R = 1 + Sq(3);", "R"), 10.0);
 }
 
+// function { transform { } } moves a point: transforms.inc's vtransform
+// and vinv_transform, with the values POV-Ray 3.7 prints for them.
+TEST(ParserFunctions, TransformsAsFunctions) {
+    const std::string moved =
+        "#include \"transforms.inc\"\n"
+        "#declare T = transform { rotate 90 * z translate <10, 0, 0> }\n"
+        "#declare V = vtransform(<1, 2, 3>, T);\n"
+        "#declare W = vinv_transform(V, transform { T });\n";
+    EXPECT_NEAR(declared(moved + "#declare R = V.x;", "R"), 8.0, 1e-12);
+    EXPECT_NEAR(declared(moved + "#declare R = V.y;", "R"), 1.0, 1e-12);
+    EXPECT_NEAR(declared(moved + "#declare R = W.y;", "R"), 2.0, 1e-12);
+    // Inside a function its channels are .x, .y and .z.
+    EXPECT_DOUBLE_EQ(declared("#declare F = function { transform { scale 2 translate z } }\n"
+                              "#declare G = function { F(x, y, z).y + F(x, y, z).z }\n#declare R = G(1, 2, 3);",
+                              "R"),
+                     4.0 + 7.0);
+    EXPECT_NE(
+        first_error("#declare F = function { transform { scale 2 } }\n#declare G = function { F(x, y, z).filter }")
+            .message.find(".x, .y, .z of a transform function"),
+        std::string::npos);
+}
+
 TEST(ParserFunctions, BadBodiesAreLocatedErrors) {
     const Diagnostic unknown = first_error("#declare F = function { x + nothing_here }");
     EXPECT_NE(unknown.message.find("unknown identifier 'nothing_here'"), std::string::npos);

@@ -363,6 +363,7 @@ declared_non_scalar
   | "array" begin_value array_sizes end_value array_init { $$ = ev.make_array($3, $5, LOC(@1)); }
   | FUNCTION_OPEN "pattern" "{" pigment_edits "}" "}" { $$ = ev.pattern_function($4, LOC(@1)); }
   | FUNCTION_OPEN pigment "}" { $$ = ev.pigment_function($2, LOC(@1)); }
+  | FUNCTION_OPEN transform_block "}" { $$ = ev.transform_function($2, LOC(@1)); }
   | "spline" "{" spline_kinds arith_seq opt_comma "}" { $$ = ev.make_spline({}, $3, $4, LOC(@1)); }
   | "spline" "{" SPLINE_ID spline_kinds "}" { $$ = ev.make_spline($3.value, $4, {}, LOC(@1)); }
   | "spline" "{" SPLINE_ID spline_kinds arith_seq opt_comma "}" { $$ = ev.make_spline($3.value, $4, $5, LOC(@1)); }
@@ -1665,6 +1666,8 @@ macro_arg
   | "array" begin_value array_sizes end_value array_init { $$ = ev.make_array($3, $5, LOC(@1)); }
   | FUNCTION_OPEN "pattern" "{" pigment_edits "}" "}" { $$ = ev.pattern_function($4, LOC(@1)); }
   | FUNCTION_OPEN pigment "}" { $$ = ev.pigment_function($2, LOC(@1)); }
+  | FUNCTION_OPEN transform_block "}" { $$ = ev.transform_function($2, LOC(@1)); }
+  | transform_block    { $$.kind = Value::Kind::Transform; $$.transform = $1; }
   | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
   | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
   | normal_map         { $$.kind = Value::Kind::NormalMap; $$.normal_map = $1; }

@@ -1,6 +1,6 @@
 // POV-Ray's user-defined functions (`function { expr }`, `function(a, b)
 // { expr }`, `function { internal(N) }`, `function { pattern { … } }`,
-// `function { pigment { … } }`), compiled by the parser into a small stack
+// `function { pigment { … } }`, `function { transform { … } }`), compiled by the parser into a small stack
 // program that the parser (for calls in expressions) and the renderer (for
 // the function pattern and isosurfaces) run alike. Header-only: the scene
 // graph is headers, and both sides interpret the same code.
@@ -102,6 +102,9 @@ struct Function {
     int internal = -1;                       // function { internal(N) }
     std::shared_ptr<const Pattern> pattern;  // function { pattern { … } }
     std::shared_ptr<const Pigment> pigment;  // function { pigment { … } }: a colour
+    // function { transform { … } }: the point moved by the transform, a
+    // vector (.x .y .z; POV's vtransform in transforms.inc).
+    std::shared_ptr<const glm::dmat4> transform;
     int stack_size = 0;
     std::string name;  // the #declare'd name, for messages
 };
@@ -114,7 +117,8 @@ struct FunctionError : std::runtime_error {
 };
 
 // POV's channel of a pigment function: .red .green .blue .filter .transmit
-// (.x .y .z .t, .gray as POV's grey weights); 0..4 and 5 for grey.
+// (.x .y .z .t, .gray as POV's grey weights); 0..4 and 5 for grey. A
+// transform function's .x .y .z are 0..2.
 double evaluate_function(const Function& f, const double* arguments, int count, const FunctionNatives* natives,
                          int channel = 0);
 
