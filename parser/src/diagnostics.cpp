@@ -148,6 +148,11 @@ std::string Evaluator::suggestion(const std::string& name) const {
     size_t best_distance = std::max<size_t>(1, name.size() / 3) + 1;
     for (const auto& candidate : candidates) {
         if (candidate == name) continue;
+        // The distance is at least the difference in length: most
+        // candidates are ruled out without the quadratic comparison.
+        const size_t length_gap =
+            candidate.size() > name.size() ? candidate.size() - name.size() : name.size() - candidate.size();
+        if (length_gap >= best_distance) continue;
         size_t distance = edit_distance(name, candidate);
         if (distance < best_distance) {
             best_distance = distance;
