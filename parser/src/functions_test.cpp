@@ -111,6 +111,25 @@ TEST(ParserFunctions, TransformsAsFunctions) {
         std::string::npos);
 }
 
+// Values measured with POV-Ray 3.7: `#declare G = F;` copies a function,
+// a spline copies the same way, and either passes uncalled to a macro.
+TEST(ParserFunctions, FunctionsAndSplinesAreValuesToCopy) {
+    const std::string copied =
+        "#declare F = function(x, y) { x * 2 + y }\n#declare G = F;\n"
+        "#declare H = function { G(x, 1) }\n"
+        "#declare S = spline { linear_spline 0, <0, 0, 0>, 1, <2, 4, 6> }\n#declare T = S;\n"
+        "#macro Apply(Q) Q(1, 1) #end\n";
+    EXPECT_DOUBLE_EQ(declared(copied + "#declare R = G(3, 1);", "R"), 7.0);
+    EXPECT_DOUBLE_EQ(declared(copied + "#declare R = H(2, 0, 0);", "R"), 5.0);
+    EXPECT_DOUBLE_EQ(declared(copied + "#declare R = T(0.5).z;", "R"), 3.0);
+    EXPECT_DOUBLE_EQ(declared(copied + "#declare R = Apply(G);", "R"), 3.0);
+    // Followed by "(" a function is called, never juxtaposed with a vector.
+    EXPECT_DOUBLE_EQ(declared(copied + "#declare R = G (3, 1);", "R"), 7.0);
+    const Diagnostic arithmetic = first_error(copied + "#declare R = G + 1;");
+    EXPECT_NE(arithmetic.message.find("found a function"), std::string::npos);
+    EXPECT_EQ(arithmetic.location.line, 7);
+}
+
 TEST(ParserFunctions, BadBodiesAreLocatedErrors) {
     const Diagnostic unknown = first_error("#declare F = function { x + nothing_here }");
     EXPECT_NE(unknown.message.find("unknown identifier 'nothing_here'"), std::string::npos);

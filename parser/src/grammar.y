@@ -237,6 +237,9 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %precedence OPT_EMPTY
 /* After an optional argument (poly_wave [exponent]), an identifier is the argument. */
 %precedence UNDECLARED_ID SPLINE_ID
+/* A function or spline name followed by "(" is called, not juxtaposed with a
+ * parenthesised vector. */
+%precedence "("
 /* A leading uv_mapping belongs to the pigment or normal it starts. */
 %precedence UV_MAPPING
 %right "?" ":"
@@ -1563,6 +1566,10 @@ primary
   | "<" vector_items "," ">" { $$ = ev.make_vector($2, @$); }  /* POV's Parse_Comma after each */
   | BUILTIN "(" opt_args ")" { $$ = ev.call_builtin($1.text, $3, @$); }
   | FUNCTION_ID "(" opt_args ")" { $$ = ev.call_function($1.value, $3, @$); }
+  /* Uncalled, a function or spline is a value to copy (`#declare G = F;`)
+   * or pass to a macro, as in POV. */
+  | FUNCTION_ID %prec OPT_EMPTY { $$ = std::move($1.value); }
+  | SPLINE_ID %prec OPT_EMPTY { $$ = std::move($1.value); }
   | "trace" "(" OBJECT_ID "," expr "," expr ")" { $$ = ev.trace($3.value, @3, $5, @5, $7, @7, {}, @$); }
   | "trace" "(" OBJECT_ID "," expr "," expr "," trace_normal ")"
       { $$ = ev.trace($3.value, @3, $5, @5, $7, @7, $9, @$); }
@@ -1641,8 +1648,6 @@ macro_arg_list_object
 
 macro_arg
   : colour             { $$ = std::move($1); }
-  | FUNCTION_ID        { $$ = std::move($1.value); }
-  | SPLINE_ID          { $$ = std::move($1.value); }
   | OBJECT_ID          { $$ = std::move($1.value); }
   | TEXTURE_ID         { $$ = std::move($1.value); }
   | PIGMENT_ID         { $$ = std::move($1.value); }
