@@ -44,6 +44,25 @@ TEST(Cli, FunctionsCalledWhileParsingUseTheRenderersNoiseAndPatterns) {
     EXPECT_NE(result.output.find("#debug: 0.612779047 0.512266456"), std::string::npos) << result.output;
 }
 
+// povray 3.7's #debug of the same lines prints the same digits; octaves past
+// int's range count as one there (its int conversion gives INT_MIN).
+TEST(Cli, VturbulenceWhileParsingIsPovRays) {
+    TempFolder folder;
+    const std::string scene = (folder.path() / "vturbulence.pov").string();
+    std::ofstream(scene) << "#macro Show(O) #debug concat(vstr(3, vturbulence(2.5, 0.6, O, <1.3, -2.1, 0.4>), "
+                            "\",\", 0, 12), \"\\n\") #end\n"
+                            "Show(4) Show(1e300) Show(10) Show(25)\n";
+    const CommandResult result = run_lancer("check '" + scene + "'");
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    for (const char* expected : {"#debug: 0.421749568306,-0.074745779538,-0.509335851621",
+                                 "#debug: 0.274151693514,-0.067478113667,-0.308677954094",
+                                 "#debug: 0.433020735099,-0.082115171000,-0.466145584035"})
+        EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+    // 25 octaves are clamped to POV's 10.
+    const std::string ten = "#debug: 0.433020735099,-0.082115171000,-0.466145584035";
+    EXPECT_NE(result.output.find(ten, result.output.find(ten) + 1), std::string::npos) << result.output;
+}
+
 TEST(Cli, GeometryQueriesWhileParsingAnswerAsPovRay) {
     // povray's #debug of the same lines prints the same numbers.
     TempFolder folder;

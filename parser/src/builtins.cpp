@@ -65,21 +65,60 @@ Value builtin_rand(Evaluator& ev, const std::vector<Value>& args, const SourceRa
 }
 
 Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>& args, const SourceRange& where) {
-    static const std::unordered_map<std::string, std::pair<int, int>> arity = {
-        {"abs", {1, 1}},           {"sqrt", {1, 1}},        {"sqr", {1, 1}},          {"pow", {2, 2}},
-        {"exp", {1, 1}},           {"log", {1, 1}},         {"ln", {1, 1}},           {"sin", {1, 1}},
-        {"cos", {1, 1}},           {"tan", {1, 1}},         {"asin", {1, 1}},         {"acos", {1, 1}},
-        {"atan", {1, 1}},          {"atan2", {2, 2}},       {"sinh", {1, 1}},         {"cosh", {1, 1}},
-        {"tanh", {1, 1}},          {"asinh", {1, 1}},       {"acosh", {1, 1}},        {"atanh", {1, 1}},
-        {"min", {1, 99}},          {"max", {1, 99}},        {"floor", {1, 1}},        {"ceil", {1, 1}},
-        {"mod", {2, 2}},           {"int", {1, 1}},         {"div", {2, 2}},          {"radians", {1, 1}},
-        {"degrees", {1, 1}},       {"vlength", {1, 1}},     {"vnormalize", {1, 1}},   {"vcross", {2, 2}},
-        {"vdot", {2, 2}},          {"vrotate", {2, 2}},     {"vaxis_rotate", {3, 3}}, {"seed", {1, 1}},
-        {"rand", {1, 1}},          {"select", {3, 4}},      {"concat", {1, 99}},      {"str", {3, 3}},
-        {"strlen", {1, 1}},        {"substr", {3, 3}},      {"chr", {1, 1}},          {"val", {1, 1}},
-        {"strupr", {1, 1}},        {"strlwr", {1, 1}},      {"vstr", {5, 5}},         {"asc", {1, 1}},
-        {"bitwise_and", {2, 99}},  {"bitwise_or", {2, 99}}, {"file_exists", {1, 1}},  {"dimensions", {1, 1}},
-        {"dimension_size", {2, 2}}};
+    static const std::unordered_map<std::string, std::pair<int, int>> arity = {{"abs", {1, 1}},
+                                                                               {"sqrt", {1, 1}},
+                                                                               {"sqr", {1, 1}},
+                                                                               {"pow", {2, 2}},
+                                                                               {"exp", {1, 1}},
+                                                                               {"log", {1, 1}},
+                                                                               {"ln", {1, 1}},
+                                                                               {"sin", {1, 1}},
+                                                                               {"cos", {1, 1}},
+                                                                               {"tan", {1, 1}},
+                                                                               {"asin", {1, 1}},
+                                                                               {"acos", {1, 1}},
+                                                                               {"atan", {1, 1}},
+                                                                               {"atan2", {2, 2}},
+                                                                               {"sinh", {1, 1}},
+                                                                               {"cosh", {1, 1}},
+                                                                               {"tanh", {1, 1}},
+                                                                               {"asinh", {1, 1}},
+                                                                               {"acosh", {1, 1}},
+                                                                               {"atanh", {1, 1}},
+                                                                               {"min", {1, 99}},
+                                                                               {"max", {1, 99}},
+                                                                               {"floor", {1, 1}},
+                                                                               {"ceil", {1, 1}},
+                                                                               {"mod", {2, 2}},
+                                                                               {"int", {1, 1}},
+                                                                               {"div", {2, 2}},
+                                                                               {"radians", {1, 1}},
+                                                                               {"degrees", {1, 1}},
+                                                                               {"vlength", {1, 1}},
+                                                                               {"vnormalize", {1, 1}},
+                                                                               {"vcross", {2, 2}},
+                                                                               {"vdot", {2, 2}},
+                                                                               {"vrotate", {2, 2}},
+                                                                               {"vaxis_rotate", {3, 3}},
+                                                                               {"seed", {1, 1}},
+                                                                               {"rand", {1, 1}},
+                                                                               {"select", {3, 4}},
+                                                                               {"concat", {1, 99}},
+                                                                               {"str", {3, 3}},
+                                                                               {"strlen", {1, 1}},
+                                                                               {"substr", {3, 3}},
+                                                                               {"chr", {1, 1}},
+                                                                               {"val", {1, 1}},
+                                                                               {"strupr", {1, 1}},
+                                                                               {"strlwr", {1, 1}},
+                                                                               {"vstr", {5, 5}},
+                                                                               {"asc", {1, 1}},
+                                                                               {"bitwise_and", {2, 99}},
+                                                                               {"bitwise_or", {2, 99}},
+                                                                               {"file_exists", {1, 1}},
+                                                                               {"dimensions", {1, 1}},
+                                                                               {"dimension_size", {2, 2}},
+                                                                               {"vturbulence", {4, 4}}};
     auto expected = arity.find(name);
     if (expected == arity.end()) {
         error(where.begin, "unknown function '" + name + "'");
@@ -216,6 +255,27 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         }
         sg::Mat4 m = glm::rotate(sg::Mat4(1.0), glm::radians(c.f(2)), glm::normalize(axis));
         return checked(Value::vec3(sg::Vec3(m * glm::dvec4(c.vec(0), 0.0))), where, "vaxis_rotate()");
+    }
+
+    if (name == "vturbulence") {
+        const double lambda = c.f(0), omega = c.f(1), octaves = c.f(2);
+        const sg::Vec3 point = c.vec(3);
+        if (!m_options.function_natives) {
+            error(where.begin, "vturbulence() needs the renderer's noise (lancer render or lancer check)");
+            return Value::vec3(sg::Vec3(0.0));
+        }
+        // POV's (int) then clamp to 1..10; its conversion of a number past
+        // int's range (or NaN) gives INT_MIN on x86, so one octave (measured).
+        const bool fits_int = octaves >= 1.0 && octaves < 2147483648.0;
+        const int clamped_octaves = !fits_int ? 1 : octaves >= 10.0 ? 10 : static_cast<int>(octaves);
+        try {
+            return checked(
+                Value::vec3(m_options.function_natives->turbulence_vector(point, omega, lambda, clamped_octaves)),
+                where, "vturbulence()");
+        } catch (const sg::FunctionError& e) {
+            error(where.begin, e.what());
+            return Value::vec3(sg::Vec3(0.0));
+        }
     }
 
     // String functions.

@@ -130,6 +130,14 @@ TEST(ParserFunctions, FunctionsAndSplinesAreValuesToCopy) {
     EXPECT_EQ(arithmetic.location.line, 7);
 }
 
+TEST(ParserFunctions, VturbulenceWithoutTheRendererIsALocatedError) {
+    const Diagnostic missing = first_error("#declare V = 1;\n#declare V = vturbulence(2, 0.5, 3, <1, 2, 3>);");
+    EXPECT_NE(missing.message.find("vturbulence() needs the renderer's noise"), std::string::npos);
+    EXPECT_EQ(missing.location.line, 2);
+    EXPECT_NE(first_error("#declare V = vturbulence(2, 0.5, <1, 2, 3>);").message.find("takes 4 argument(s)"),
+              std::string::npos);
+}
+
 TEST(ParserFunctions, BadBodiesAreLocatedErrors) {
     const Diagnostic unknown = first_error("#declare F = function { x + nothing_here }");
     EXPECT_NE(unknown.message.find("unknown identifier 'nothing_here'"), std::string::npos);

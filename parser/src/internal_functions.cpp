@@ -615,6 +615,10 @@ constexpr auto kBodies = make_bodies(std::make_integer_sequence<int, kLastIntern
 
 }  // namespace
 
+glm::dvec3 FunctionNatives::turbulence_vector(const glm::dvec3&, double, double, int) const {
+    throw FunctionError("vturbulence() needs the renderer's noise");
+}
+
 int internal_function_parameter_count(int number) {
     return internal_function_supported(number) ? kParameterCounts[number] : -1;
 }

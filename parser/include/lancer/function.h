@@ -33,6 +33,8 @@ class FunctionNatives {
     virtual double pattern(const Pattern& pattern, const glm::dvec3& p) const = 0;
     // The pigment's colour (r, g, b, filter, transmit) at p.
     virtual std::array<double, 5> pigment(const Pigment& pigment, const glm::dvec3& p) const = 0;
+    // POV's DTurbulence(), the SDL's vturbulence(lambda, omega, octaves, p).
+    virtual glm::dvec3 turbulence_vector(const glm::dvec3& p, double omega, double lambda, int octaves) const;
 };
 
 struct Function {
