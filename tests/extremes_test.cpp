@@ -530,6 +530,31 @@ plane { -z, -3 pigment { color rgb <0, 1, 0> } finish { ambient 1 diffuse 0 } }
     }
 }
 
+// Guards against: an object whose bounds reach past Embree's range
+// (±1.844e18) left out of the BVH's reach and never drawn (the image was
+// black, in silence). Expected: a box 2e19 wide across the view and a sphere
+// of radius 1e19 around everything show as they would at any size: the
+// box's face (ambient 1) green, the sky of sphere around it red; a shadow
+// ray from the box towards the light is blocked by neither.
+TEST(Extremes, ObjectsReachingPastTheTraceableRange) {
+    const std::string scene = R"(
+camera { location <0, 0, -5> look_at 0 }
+light_source { <0, 0, -4> color rgb 1 }
+sphere { 0, 1e19 pigment { color rgb <1, 0, 0> } finish { ambient 1 diffuse 0 } }
+box { <-1e19, -1, 0>, <1e19, 1, 1> pigment { color rgb <0, 1, 0> } finish { ambient 0 diffuse 1 } }
+)";
+    for (const char* name : {"raycast", "shadow", "whitted"}) {
+        const Film film = render(scene, name, quick(name), 16, 12);
+        ASSERT_TRUE(all_finite(film)) << name;
+        const Color middle = film.mean(8, 6);  // the box's face, lit head-on
+        EXPECT_GT(middle.g, 0.5f) << name;
+        EXPECT_NEAR(middle.r, 0.0f, 1e-4f) << name;
+        const Color top = film.mean(8, 0);  // above the box: the sphere's inside
+        EXPECT_NEAR(top.r, 1.0f, 1e-4f) << name;
+        EXPECT_NEAR(top.g, 0.0f, 1e-4f) << name;
+    }
+}
+
 // Guards against: coincident surfaces (z-fighting) shadowing each other, a
 // shadow ray leaving one and hitting its twin at t ~ 0. Expected: two
 // coincident planes, one red and one green, lit head-on by a directional

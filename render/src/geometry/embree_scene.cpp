@@ -76,7 +76,10 @@ void EmbreeScene::build() {
     for (std::uint32_t index = 0; index < data.instances.size(); ++index) {
         const Instance& instance = data.instances[index];
         if (instance.csg_leaf || instance.kind == ShapeKind::Mesh) continue;
-        if (!instance.bounded) {
+        // An object reaching past Embree's range would never be hit in the
+        // BVH: it is tested on every ray, as the unbounded ones are.
+        if (!instance.bounded || !within_embree_range(instance.bounds_lower) ||
+            !within_embree_range(instance.bounds_upper)) {
             m_unbounded.push_back(index);
             continue;
         }

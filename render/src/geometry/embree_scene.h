@@ -14,6 +14,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -24,6 +25,16 @@
 #include "lancer/render_scene.h"
 
 namespace lancer::embree {
+
+// Embree takes coordinates within ±1.844e18 (its FLT_LARGE): a ray past that
+// aborts Debian's build on an assertion, and a primitive whose bounds reach
+// past it is never hit.
+constexpr float kLargestTraceable = 1.844e18f;
+
+inline bool within_embree_range(const Vec3& v) {
+    return std::fabs(v.x) <= kLargestTraceable && std::fabs(v.y) <= kLargestTraceable &&
+           std::fabs(v.z) <= kLargestTraceable;  // false for NaN
+}
 
 constexpr unsigned kInvalidId = RTC_INVALID_GEOMETRY_ID;
 // Lanes of a ray packet (rtcIntersect16).

@@ -10,19 +10,13 @@
 namespace lancer::embree {
 namespace {
 
-// Embree traces a ray only when its origin's and direction's components
-// lie within ±1.844e18 (its FLT_LARGE) and its t range is not NaN; past
-// that Debian's build aborts on an assertion. Such a ray (a camera or a hit
-// that far off) misses everything in the BVH; the unbounded shapes, tested
-// in double precision, may still hit it.
-constexpr float kLargestTraceable = 1.844e18f;
-
+// Embree traces a ray only when its origin and direction are within its
+// range and its t range is not NaN. Such a ray (a camera or a hit that far
+// off) misses everything in the BVH; the shapes tested outside it, in double
+// precision, may still hit it.
 bool embree_can_trace(const Ray& ray) {
-    const auto within = [](const Vec3& v) {
-        return std::fabs(v.x) <= kLargestTraceable && std::fabs(v.y) <= kLargestTraceable &&
-               std::fabs(v.z) <= kLargestTraceable;  // false for NaN
-    };
-    return within(ray.origin) && within(ray.direction) && !std::isnan(ray.t_min) && !std::isnan(ray.t_max);
+    return within_embree_range(ray.origin) && within_embree_range(ray.direction) && !std::isnan(ray.t_min) &&
+           !std::isnan(ray.t_max);
 }
 
 void fill_embree_ray(const Ray& ray, RTCRay& out) {
