@@ -128,32 +128,34 @@ class AveragePigment final : public PointPigment {
   public:
     AveragePigment(const sg::Pigment& pigment, const MaterialBuild& build)
         : m_warps(compile_pattern(pigment.pattern, build)) {
+        // Normalised in double: a weight past float's range (fuzzing found
+        // 8.9e38) would otherwise make the mean inf/inf.
         double total = 0.0;
+        for (const auto& entry : pigment.pigment_map) total += entry.value;
+        const bool normalise = total != 0.0 && std::isfinite(total);
         for (const auto& entry : pigment.pigment_map) {
-            m_weights.push_back(float(entry.value));
-            total += entry.value;
+            const double weight = normalise ? entry.value / total : entry.value;
+            m_weights.push_back(float(std::clamp(weight, -1e30, 1e30)));
             m_pigments.push_back(make_point_pigment(*entry.pigment, build));
         }
-        m_total = float(total);
     }
     TextureSample at(const glm::dvec3& point, const PatternContext& context) const override {
         const glm::dvec3 inner = m_warps.pattern_point(point);
         TextureSample result;
         for (std::size_t i = 0; i < m_pigments.size(); ++i)
             result = sum(result, scaled(m_pigments[i]->at(inner, context), m_weights[i]));
-        return m_total != 0.0f ? scaled(result, 1.0f / m_total) : result;
+        return result;
     }
     TextureSample average() const override {
         TextureSample result;
         for (std::size_t i = 0; i < m_pigments.size(); ++i)
             result = sum(result, scaled(m_pigments[i]->average(), m_weights[i]));
-        return m_total != 0.0f ? scaled(result, 1.0f / m_total) : result;
+        return result;
     }
 
   private:
-    CompiledPattern m_warps;  // its transforms and warps; the pattern is not used
-    std::vector<float> m_weights;
-    float m_total = 0.0f;
+    CompiledPattern m_warps;       // its transforms and warps; the pattern is not used
+    std::vector<float> m_weights;  // divided by their sum (when it is not 0)
     std::vector<std::unique_ptr<PointPigment>> m_pigments;
 };
 
