@@ -534,7 +534,7 @@ plane { -z, -3 pigment { color rgb <0, 1, 0> } finish { ambient 1 diffuse 0 } }
 // (±1.844e18) left out of the BVH's reach and never drawn (the image was
 // black, in silence). Expected: a box 2e19 wide across the view and a sphere
 // of radius 1e19 around everything show as they would at any size: the
-// box's face (ambient 1) green, the sky of sphere around it red; a shadow
+// box's face (lit, diffuse) green, the sphere's inside (ambient 1) red; a shadow
 // ray from the box towards the light is blocked by neither.
 TEST(Extremes, ObjectsReachingPastTheTraceableRange) {
     const std::string scene = R"(

@@ -42,11 +42,6 @@ std::array<double, 5> RenderFunctionNatives::pigment(const sg::Pigment& pigment,
     return {c.rgb.r, c.rgb.g, c.rgb.b, c.filter, c.transmit};
 }
 
-glm::dvec3 RenderFunctionNatives::turbulence_vector(const glm::dvec3& p, double omega, double lambda,
-                                                    int octaves) const {
-    return pov_dturbulence(p, omega, lambda, octaves, m_generator);
-}
-
 namespace {
 
 // For functions called while parsing (single-threaded): each pattern and

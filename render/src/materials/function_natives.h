@@ -20,7 +20,6 @@ class RenderFunctionNatives final : public sg::FunctionNatives {
     double noise(const glm::dvec3& p, int generator) const override;
     double pattern(const sg::Pattern& pattern, const glm::dvec3& p) const override;
     std::array<double, 5> pigment(const sg::Pigment& pigment, const glm::dvec3& p) const override;
-    glm::dvec3 turbulence_vector(const glm::dvec3& p, double omega, double lambda, int octaves) const override;
 
   private:
     void gather(const sg::Function& f, const MaterialBuild& build);
