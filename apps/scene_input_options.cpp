@@ -16,12 +16,19 @@ void add_scene_input_options(CLI::App& command, SceneInputOptions& options) {
                     "Declare Name=value before the scene is read (a float, or a \"string\"; repeatable), as "
                     "POV-Ray's Declare=")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    command
+        .add_option("--language-version", options.language_version,
+                    "POV-Ray language version of the scene until its first #version, as POV-Ray's Version= "
+                    "(+MV). Without it, a scene with no #version is read as 3.62, as POV-Ray 3.7 does: no gamma "
+                    "correction unless it sets assumed_gamma")
+        ->check(CLI::Range(1.0, 99.99));
 }
 
 bool apply_scene_input_options(const SceneInputOptions& options, ParseOptions& parse, std::string& error) {
     std::vector<std::string> folders = options.include_path;
     folders.insert(folders.end(), parse.include_path.begin(), parse.include_path.end());
     parse.include_path = std::move(folders);
+    if (options.language_version) parse.language_version = options.language_version;
     for (const std::string& text : options.declarations) {
         const std::size_t equals = text.find('=');
         CommandLineDeclaration declaration;
@@ -47,6 +54,7 @@ std::string describe_scene_input_options(const SceneInputOptions& options) {
     std::string text;
     for (const auto& folder : options.include_path) text += " -I " + folder;
     for (const auto& declaration : options.declarations) text += " -D " + declaration;
+    if (options.language_version) text += " --language-version " + std::to_string(*options.language_version);
     return text;
 }
 

@@ -15,7 +15,11 @@
 namespace lancer::media_test {
 
 inline std::unique_ptr<RenderScene> scene_from(const std::string& text) {
-    ParseResult parsed = parse_scene_string(text);
+    // Snippets are POV-Ray 3.7 scenes (+MV3.7): without it one with no
+    // #version is read as 3.62 and warns about gamma.
+    ParseOptions options;
+    options.language_version = 3.7;
+    ParseResult parsed = parse_scene_string(text, "<string>", options);
     for (const auto& d : parsed.diagnostics) ADD_FAILURE() << format_diagnostic(d);
     if (!parsed.ok()) return nullptr;
     return compile_scene(std::move(*parsed.scene));

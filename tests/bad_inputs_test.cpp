@@ -43,7 +43,7 @@ struct BadFiles : ::testing::Test {
     // An obj_mesh of `obj_bytes`, at line 2 column 12 of the scene.
     ParseResult parse_obj(const std::string& obj_bytes) {
         temp.write("model.obj", obj_bytes);
-        return parse("sphere { 0, 1 }\nobj_mesh { \"model.obj\" }\n");
+        return parse("#version 3.7;\nobj_mesh { \"model.obj\" }\n");
     }
     // The first error, which must sit on the obj_mesh's file name.
     std::string obj_error(const std::string& obj_bytes) {

@@ -106,4 +106,25 @@ TEST(Cli, DeclarationsAndIncludeFoldersOnEveryCommand) {
     EXPECT_NE(reserved.output.find("reserved word"), std::string::npos) << reserved.output;
 }
 
+TEST(Cli, LanguageVersionStandsInForAMissingVersionDirective) {
+    // POV-Ray's +MV: a scene with no #version is 3.62 (legacy gamma, with a
+    // warning) unless the command line says which version it is.
+    TempFolder folder;
+    const std::string scene = (folder.path() / "unversioned.pov").string();
+    std::ofstream(scene) << "#debug concat(str(version, 0, 2), \"\\n\")\nsphere { 0, 1 }\n";
+    const CommandResult bare = run_lancer("check '" + scene + "'");
+    EXPECT_EQ(bare.exit_code, 0) << bare.output;
+    EXPECT_NE(bare.output.find("#debug: 3.70"), std::string::npos) << bare.output;
+    EXPECT_NE(bare.output.find("gamma correction is turned off"), std::string::npos) << bare.output;
+    const CommandResult as_3_7 = run_lancer("check '" + scene + "' --language-version 3.7");
+    EXPECT_EQ(as_3_7.exit_code, 0) << as_3_7.output;
+    EXPECT_EQ(as_3_7.output.find("gamma correction is turned off"), std::string::npos) << as_3_7.output;
+    const CommandResult as_3_5 = run_lancer("check '" + scene + "' --language-version 3.5");
+    EXPECT_NE(as_3_5.output.find("#debug: 3.50"), std::string::npos) << as_3_5.output;
+    EXPECT_NE(as_3_5.output.find("pre-3.7 scene"), std::string::npos) << as_3_5.output;
+    const CommandResult bad = run_lancer("check '" + scene + "' --language-version 0");
+    EXPECT_NE(bad.exit_code, 0);
+    EXPECT_NE(bad.output.find("--language-version"), std::string::npos) << bad.output;
+}
+
 }  // namespace lancer::test

@@ -8,7 +8,8 @@
 // a negative light),
 // the finishes (peak phong and specular, metallic, brilliance, albedo,
 // reflection metallic, exponent and fresnel, conserve_energy), gamma, and
-// a pre-3.7 scene's legacy gamma and `version`, POV's sizing of
+// a pre-3.7 scene's legacy gamma and `version` (also with no #version at
+// all, read as 3.62), POV's sizing of
 // orthographic views (also one looking straight down its sky), and the
 // shapes: cylinder, cone, torus, disc, quadric, polygon, poly, cubic,
 // quartic, superellipsoid, blob, prism, lathe, sor, text (POV's own fonts, from
@@ -82,7 +83,7 @@ TEST_P(PovReference, WhittedMatchesPovRay) {
 INSTANTIATE_TEST_SUITE_P(
     Scenes, PovReference,
     ::testing::Values("wall_point_light", "spotlights", "area_room", "area_circular", "cylinder_parallel",
-                      "looks_like_projected", "finishes", "gamma", "legacy_gamma", "area_illumination",
+                      "looks_like_projected", "finishes", "gamma", "legacy_gamma", "no_version", "area_illumination",
                       "orthographic_down", "orthographic_default_size", "quadric_family", "csg_solids", "csg_glass",
                       "polygons_polynomials", "superellipsoids", "blobs", "prisms", "lathes", "text", "sors", "ovus",
                       "sphere_sweeps", "bicubic_patches", "julia_fractals", "height_fields", "patterns_geometric",

@@ -10,7 +10,7 @@ using test::first_error;
 using test::parse_ok;
 
 std::string debug_output(const std::string& scene_text) {
-    ParseResult result = parse_scene_string(scene_text, "a.pov");
+    ParseResult result = test::parse_snippet(scene_text, "a.pov");
     EXPECT_TRUE(result.ok()) << test::all_diagnostics(result);
     std::string out;
     for (const auto& d : result.diagnostics)

@@ -85,7 +85,7 @@ TEST(ParserCurvedShapes, BicubicPatchKeywordsAndPointsWithoutCommas) {
 }
 
 TEST(ParserCurvedShapes, BicubicPatchPovRayOneNumbers) {
-    ParseResult result = parse_scene_string(R"(bicubic_patch { 1, 3, 2,
+    ParseResult result = test::parse_snippet(R"(bicubic_patch { 1, 3, 2,
         <0,0,0>,<1,0,0>,<2,0,0>,<3,0,0>,<0,1,0>,<1,1,0>,<2,1,0>,<3,1,0>,
         <0,2,0>,<1,2,0>,<2,2,0>,<3,2,0>,<0,3,0>,<1,3,0>,<2,3,0>,<3,3,0> })");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
@@ -186,7 +186,7 @@ TEST(ParserCurvedShapes, PatchObjectsAndEdgeValues) {
     // A negative sphere_sweep radius counts as its magnitude (POV does not check it).
     auto sweep = parse_ok("sphere_sweep { linear_spline 2, <0,0,0>, -0.5, <1,0,0>, 0.5 }");
     EXPECT_DOUBLE_EQ(std::get<sg::SphereSweep>(sweep.objects[0].shape).spheres[0].radius, 0.5);
-    ParseResult fine = parse_scene_string("julia_fractal { <0,0,0,0> precision 1e9 max_iteration -1e30 }");
+    ParseResult fine = test::parse_snippet("julia_fractal { <0,0,0,0> precision 1e9 max_iteration -1e30 }");
     ASSERT_TRUE(fine.ok()) << test::all_diagnostics(fine);
     const auto& julia = std::get<sg::JuliaFractal>(fine.scene->objects[0].shape);
     EXPECT_DOUBLE_EQ(julia.precision, 10000.0);  // one ray's cost bounded, with a warning

@@ -149,7 +149,7 @@ INSTANTIATE_TEST_SUITE_P(ParserDiagnostics, MalformedScene, ::testing::ValuesIn(
 
 TEST(ParserDiagnostics, SeveralSemanticErrorsAreCollected) {
     ParseResult result =
-        parse_scene_string("sphere { 0, -1 }\nsphere { 0, -2 }\nbox { 0, 1 translate rgb 1 }", "many.pov");
+        test::parse_snippet("sphere { 0, -1 }\nsphere { 0, -2 }\nbox { 0, 1 translate rgb 1 }", "many.pov");
     ASSERT_FALSE(result.ok());
     int errors = 0;
     for (const auto& d : result.diagnostics) errors += d.severity == Diagnostic::Severity::Error;
@@ -157,7 +157,7 @@ TEST(ParserDiagnostics, SeveralSemanticErrorsAreCollected) {
 }
 
 TEST(ParserDiagnostics, FormatShowsLineAndCaret) {
-    ParseResult result = parse_scene_string("sphere {\n\t0, Nope }", "caret.pov");
+    ParseResult result = test::parse_snippet("sphere {\n\t0, Nope }", "caret.pov");
     ASSERT_FALSE(result.ok());
     std::string text = format_diagnostic(result.diagnostics.front());
     EXPECT_EQ(text, "caret.pov:2:5: error: unknown identifier 'Nope' (expected a value)\n  \t0, Nope }\n  \t   ^\n");

@@ -591,19 +591,24 @@ void Evaluator::directive_version(const RawToken& d) {
 }
 
 // POV-Ray's end of parsing (parser.cpp): version-dependent defaults follow
-// the #version in force when the scene ends.
+// the #version in force when the scene ends. A scene with no #version at
+// all is 3.62 there (EffectiveLanguageVersion), though `version` reads 3.7.
 void Evaluator::settle_version_defaults() {
-    m_scene.global.language_version = m_language_version;
+    m_scene.global.language_version = m_saw_version ? m_language_version : 3.62;
     // POV compares whole hundredths: 3.7 is 370.
-    if (!m_saw_assumed_gamma && int(m_language_version * 100.0 + 0.5) < 370) {
+    const bool before_3_7 = int(m_scene.global.language_version * 100.0 + 0.5) < 370;
+    if (!m_saw_assumed_gamma && before_3_7) {
         m_scene.global.gamma_correction = false;
         sg::SourceLocation where;
         where.file = std::make_shared<const std::string>(m_scene.main_file);
         char version[32];
         std::snprintf(version, sizeof version, "%g", m_language_version);
-        warning(where, std::string("assumed_gamma not specified, so gamma correction is turned off for "
-                                   "compatibility with this pre-3.7 scene (#version ") +
-                           version + "): image files receive the colours unchanged, as POV-Ray 3.6 wrote them");
+        const std::string why = m_saw_version ? std::string("this pre-3.7 scene (#version ") + version + ")"
+                                              : std::string("a scene without #version, which POV-Ray reads as 3.62");
+        warning(where, "assumed_gamma not specified, so gamma correction is turned off for compatibility with " + why +
+                           ": image files receive the colours unchanged, as POV-Ray 3.6 wrote them (start the "
+                           "scene with #version 3.7; and global_settings { assumed_gamma 1 } for POV-Ray 3.7's "
+                           "gamma)");
     }
 }
 

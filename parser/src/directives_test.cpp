@@ -127,7 +127,7 @@ TEST(ParserDirectives, RecursiveMacroWithinDepth) {
 }
 
 TEST(ParserDirectives, DeclareWithoutSemicolonWarns) {
-    ParseResult result = parse_scene_string("#declare A = 1\n#declare B = A + 1;\nsphere { 0, B }", "s.pov");
+    ParseResult result = test::parse_snippet("#declare A = 1\n#declare B = A + 1;\nsphere { 0, B }", "s.pov");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     EXPECT_EQ(test::count_warnings(result), 1);
     EXPECT_DOUBLE_EQ(std::get<sg::Sphere>(result.scene->objects[0].shape).radius, 2.0);

@@ -595,7 +595,7 @@ class Evaluator {
         bool warned = false;
     };
     std::unordered_map<std::string, Deprecation> m_deprecated;
-    bool m_saw_version = false;
+    bool m_saw_version = false;  // a #version, or ParseOptions::language_version
     bool m_saw_assumed_gamma = false;
     std::size_t m_string_bytes = 0;                     // produced by concat() so far (ParseOptions::max_string_bytes)
     MemoryBudget m_memory{m_options.max_memory_bytes};  // ParseOptions::max_memory_bytes

@@ -55,7 +55,7 @@ TEST(ParserFog, DeclaredFogsAreEditedAndEveryFogApplies) {
 }
 
 TEST(ParserFog, UnnamedDistanceAndTranslationWarnAsInPov) {
-    ParseResult result = parse_scene_string("fog { 15 color rgb 1 translate <1, 2, 3> }", "f.pov");
+    ParseResult result = test::parse_snippet("fog { 15 color rgb 1 translate <1, 2, 3> }", "f.pov");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     EXPECT_DOUBLE_EQ(result.scene->fogs.at(0).distance, 15.0);
     EXPECT_EQ(test::count_warnings(result), 2) << test::all_diagnostics(result);

@@ -11,7 +11,7 @@ using test::parse_ok;
 
 // The value of a float #declare'd by the scene.
 double declared(const std::string& scene_text, const std::string& name) {
-    ParseResult result = parse_scene_string(scene_text + "\n#debug str(" + name + ", 0, 9)", "f.pov");
+    ParseResult result = test::parse_snippet(scene_text + "\n#debug str(" + name + ", 0, 9)", "f.pov");
     EXPECT_TRUE(result.ok()) << test::all_diagnostics(result);
     for (const auto& d : result.diagnostics)
         if (d.message.rfind("#debug: ", 0) == 0) return std::stod(d.message.substr(8));

@@ -67,7 +67,7 @@ TEST(ParserIsosurface, EverySettingInAnyOrder) {
 }
 
 TEST(ParserIsosurface, PovsFallbacksWarn) {
-    const ParseResult result = parse_scene_string(
+    const ParseResult result = test::parse_snippet(
         "isosurface { function { x } accuracy 0 max_gradient -2 }\n"
         "isosurface { function { x } max_trace 12 }\n"
         "isosurface { function { x } max_trace 0 }",

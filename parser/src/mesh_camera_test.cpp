@@ -87,14 +87,14 @@ TEST(ParserMeshCamera, MeshTriangleUvVectors) {
 
 TEST(ParserMeshCamera, WarningsForWhatPovIgnores) {
     const ParseResult extra_mesh =
-        parse_scene_string(std::string("camera { mesh_camera { 1 3 mesh { triangle { 0, x, y "
-                                       "uv_vectors 0, <1, 0>, <0, 1> } } mesh { ") +
-                               kTriangle + " } } }",
-                           "test.pov");
+        test::parse_snippet(std::string("camera { mesh_camera { 1 3 mesh { triangle { 0, x, y "
+                                        "uv_vectors 0, <1, 0>, <0, 1> } } mesh { ") +
+                                kTriangle + " } } }",
+                            "test.pov");
     ASSERT_TRUE(extra_mesh.ok()) << test::all_diagnostics(extra_mesh);
     EXPECT_NE(test::all_diagnostics(extra_mesh).find("first mesh only"), std::string::npos);
 
-    const ParseResult blurred = parse_scene_string(
+    const ParseResult blurred = test::parse_snippet(
         std::string("camera { mesh_camera { 1 0 mesh { ") + kTriangle + " } } aperture 0.5 blur_samples 8 }",
         "test.pov");
     ASSERT_TRUE(blurred.ok()) << test::all_diagnostics(blurred);

@@ -269,14 +269,14 @@ TEST(ParserObjects, TextLaysOutGlyphOutlines) {
 // lancer keeps them and says so where they are written. A negative light
 // (POV's documented trick for darkening) gets no warning.
 TEST(ParserMaterials, NegativeSurfaceColoursWarn) {
-    ParseResult result = parse_scene_string(
+    ParseResult result = test::parse_snippet(
         "light_source { <5, 5, -5> rgb -0.5 }\n"
         "sphere { 0, 1 pigment { rgb <-1, 0.5, 0.5> } finish { ambient -0.2 } }");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     EXPECT_EQ(test::count_warnings(result), 2) << test::all_diagnostics(result);
     EXPECT_EQ(std::get<sg::Sphere>(result.scene->objects[0].shape).radius, 1.0);
     for (const Diagnostic& d : result.diagnostics) EXPECT_EQ(d.location.line, 2);
-    EXPECT_EQ(test::count_warnings(parse_scene_string("sphere { 0, 1 pigment { rgb 0.5 } finish { ambient 0.1 } }")),
+    EXPECT_EQ(test::count_warnings(test::parse_snippet("sphere { 0, 1 pigment { rgb 0.5 } finish { ambient 0.1 } }")),
               0);
 }
 
@@ -396,7 +396,7 @@ TEST(ParserLights, ShadowlessIsKeptOnPointAndParallelLights) {
 }
 
 TEST(ParserLights, ShadowlessOnAPhysicalLampWarns) {
-    ParseResult result = parse_scene_string(
+    ParseResult result = test::parse_snippet(
         "light_source { <0, 5, 0> rgb 1 area_rectangle <1, 0, 0>, <0, 0, 1> shadowless }", "lamp.pov");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     EXPECT_FALSE(result.scene->lights[0].shadowless);
@@ -497,11 +497,11 @@ TEST(ParserLights, PointParallelAreaSphere) {
 }
 
 TEST(ParserLights, AreaLightModifiersAsPovRay) {
-    ParseResult result = parse_scene_string(R"(
+    ParseResult result = test::parse_snippet(R"(
         light_source { 0, 1 area_light x, z, 4, 4 orient area_illumination on }
         light_source { 0, 1 area_light x, 2*z, 4, 4 circular orient }
         light_source { 0, 1 jitter })",
-                                            "lights.pov");
+                                             "lights.pov");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     const auto& lights = result.scene->lights;
     ASSERT_EQ(lights.size(), 3u);
@@ -583,11 +583,11 @@ TEST(ParserCamera, FocalBlurSettingsThatDoNothingWarn) {
     for (const char* text :
          {"camera { aperture 1 }", "camera { blur_samples 10 }", "camera { orthographic aperture 1 blur_samples 10 }",
           "camera { aperture 1 blur_samples 10 confidence 1.5 }", "camera { bokeh { pigment { rgb 1 } } }"}) {
-        const ParseResult result = parse_scene_string(text, "w.pov");
+        const ParseResult result = test::parse_snippet(text, "w.pov");
         EXPECT_TRUE(result.ok()) << text;
         EXPECT_GE(test::count_warnings(result), 1) << text;
     }
-    EXPECT_EQ(test::count_warnings(parse_scene_string("camera { aperture 1 blur_samples 10 }", "w.pov")), 0);
+    EXPECT_EQ(test::count_warnings(test::parse_snippet("camera { aperture 1 blur_samples 10 }", "w.pov")), 0);
 }
 
 TEST(ParserCamera, BokehKeepsItsPigment) {
@@ -668,7 +668,7 @@ TEST(ParserExpressions, RandIsReproducible) {
 
 TEST(ParserObjects, NoShadowHollowAndIgnoredKeywordsWarn) {
     ParseResult result =
-        parse_scene_string("sphere { 0, 1 no_shadow hollow double_illuminate normal { bumps 0.5 } }", "w.pov");
+        test::parse_snippet("sphere { 0, 1 no_shadow hollow double_illuminate normal { bumps 0.5 } }", "w.pov");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     EXPECT_TRUE(result.scene->objects[0].no_shadow);
     EXPECT_TRUE(result.scene->objects[0].hollow);
@@ -680,7 +680,7 @@ TEST(ParserObjects, NoShadowHollowAndIgnoredKeywordsWarn) {
 }
 
 TEST(ParserObjects, ImageMapResolvesNextToTheScene) {
-    ParseResult result = parse_scene_string("sphere { 0, 1 pigment { image_map { png \"missing.png\" } } }", "i.pov");
+    ParseResult result = test::parse_snippet("sphere { 0, 1 pigment { image_map { png \"missing.png\" } } }", "i.pov");
     ASSERT_FALSE(result.ok());
     EXPECT_NE(test::all_diagnostics(result).find("cannot find image file \"missing.png\""), std::string::npos);
 }
@@ -752,7 +752,26 @@ TEST(ParserVersion, VersionIsReadBackAndSetsLegacyGamma) {
     expect_vec(centre, {3.5, 3.7, 0});
     EXPECT_TRUE(parse_ok("#version 3.6; global_settings { assumed_gamma 2.2 }").global.gamma_correction);
     EXPECT_TRUE(parse_ok("#version 3.7;").global.gamma_correction);
-    EXPECT_TRUE(parse_ok("sphere { 0, 1 }").global.gamma_correction);  // no #version: 3.7
+    // No #version at all (and no +MV): POV-Ray 3.7 reads `version` as 3.7
+    // but the scene as 3.62, so legacy gamma without assumed_gamma, and a
+    // warning that says why (measured: a lit box's bytes are POV's linear
+    // values, not sRGB-encoded ones).
+    const ParseResult bare = parse_scene_string("#declare V = version; sphere { V * x, 1 }", "bare.pov");
+    ASSERT_TRUE(bare.ok()) << test::all_diagnostics(bare);
+    EXPECT_FALSE(bare.scene->global.gamma_correction);
+    EXPECT_DOUBLE_EQ(bare.scene->global.language_version, 3.62);
+    expect_vec(std::get<sg::Sphere>(bare.scene->objects[0].shape).center, {3.7, 0, 0});
+    EXPECT_EQ(test::count_warnings(bare), 1);
+    EXPECT_NE(test::all_diagnostics(bare).find("without #version"), std::string::npos) << test::all_diagnostics(bare);
+    const ParseResult gamma_set = parse_scene_string("global_settings { assumed_gamma 1 } sphere { 0, 1 }");
+    ASSERT_TRUE(gamma_set.ok());
+    EXPECT_TRUE(gamma_set.scene->global.gamma_correction);
+    // POV's Version= (+MV) stands in for a #version until the scene has one.
+    ParseOptions as_3_5;
+    as_3_5.language_version = 3.5;
+    EXPECT_FALSE(parse_ok("#declare V = version; sphere { V * x, 1 }", as_3_5).global.gamma_correction);
+    EXPECT_TRUE(parse_ok("sphere { 0, 1 }").global.gamma_correction);  // the helpers' +MV3.7
+    EXPECT_TRUE(parse_ok("#version 3.7; sphere { 0, 1 }", as_3_5).global.gamma_correction);
     const Diagnostic bad = test::first_error("#version -1;");
     EXPECT_NE(bad.message.find("#version must be"), std::string::npos) << bad.message;
 }
@@ -768,11 +787,11 @@ TEST(ParserObjects, InsideVectorAndPatchObjectsInCsg) {
     EXPECT_EQ(*std::get<sg::MeshRef>(scene.objects[0].shape)->inside_vector, sg::Vec3(0, 0, 1));
     EXPECT_EQ(*std::get<sg::MeshRef>(scene.objects[1].shape)->inside_vector, sg::Vec3(0, 1, 0));  // normalised
 
-    ParseResult patch = parse_scene_string("difference { sphere { 0, 1 } triangle { 0, x, y } }");
+    ParseResult patch = test::parse_snippet("difference { sphere { 0, 1 } triangle { 0, x, y } }");
     ASSERT_TRUE(patch.ok()) << test::all_diagnostics(patch);
     EXPECT_NE(test::all_diagnostics(patch).find("has no inside"), std::string::npos);
     EXPECT_EQ(test::count_warnings(
-                  parse_scene_string("difference { sphere { 0, 1 } mesh { triangle { 0, x, y } inside_vector z } }")),
+                  test::parse_snippet("difference { sphere { 0, 1 } mesh { triangle { 0, x, y } inside_vector z } }")),
               0);
     const Diagnostic clip = test::first_error("sphere { 0, 1 clipped_by { triangle { 0, x, y } } }");
     EXPECT_NE(clip.message.find("cannot clip"), std::string::npos) << clip.message;
@@ -790,7 +809,7 @@ namespace {
 TEST(ParserIgnoredForms, QuickColourNoRadiosityAndMmPerUnitWarn) {
     // Forms from POV-Ray's samples (sunsethf, chess2, subsurface) that change
     // nothing lancer draws: accepted with a warning each.
-    const ParseResult result = parse_scene_string(
+    const ParseResult result = test::parse_snippet(
         "global_settings { mm_per_unit 10 }\n"
         "sphere { 0, 1 pigment { rgb 1 quick_colour red 0.7 green 0.7 blue 1.0 } no_radiosity }\n"
         "sphere { 0, 1 pigment { quick_color red 0.95 green 0.62 } }\n",

@@ -244,7 +244,7 @@ TEST(ParserTextures, BlocksEditWhatTheTextureHas) {
 TEST(ParserDirectives, DeclaringAnIgnoredBlockDeclaresNothingAndReadsNoFurther) {
     // An ignored block declared; the next statement must stay its own.
     ParseResult result =
-        parse_scene_string("#declare P = photons { spacing 0.1 }\n#declare A = 2;\nsphere { 0, A }", "s.pov");
+        test::parse_snippet("#declare P = photons { spacing 0.1 }\n#declare A = 2;\nsphere { 0, A }", "s.pov");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     ASSERT_EQ(result.scene->objects.size(), 1u);
     EXPECT_DOUBLE_EQ(std::get<sg::Sphere>(result.scene->objects[0].shape).radius, 2.0);
@@ -257,7 +257,7 @@ TEST(ParserDirectives, OldDefaultWithoutHashIsRead) {
 }
 
 TEST(ParserDirectives, DeprecatedDeclarationWarnsOnUse) {
-    ParseResult result = parse_scene_string(
+    ParseResult result = test::parse_snippet(
         "#declare deprecated once \"use T2\" T1 = texture { pigment { rgb 1 } }\n"
         "sphere { 0, 1 texture { T1 } }\nsphere { 0, 1 texture { T1 } }",
         "d.pov");
@@ -321,12 +321,12 @@ TEST(ParserPatterns, TilesIsACheckerOfLayeredTextures) {
     // povray shows tile2 where checker shows its first texture.
     EXPECT_EQ(m.block_textures[1]->layers_above.size(), 1u);
     EXPECT_EQ(m.block_textures[0]->pigment.color.rgb, sg::Vec3(0.0, 1.0, 0.0));
-    EXPECT_NE(
-        test::all_diagnostics(parse_scene_string("box { 0, 1 texture { tiles { texture { pigment { rgb x } } texture { "
-                                                 "pigment { rgbt 1 } } tile2 texture { pigment { rgb y } } } } }",
-                                                 "t.pov"))
-            .find("shows only its bottom layer"),
-        std::string::npos);
+    EXPECT_NE(test::all_diagnostics(
+                  test::parse_snippet("box { 0, 1 texture { tiles { texture { pigment { rgb x } } texture { "
+                                      "pigment { rgbt 1 } } tile2 texture { pigment { rgb y } } } } }",
+                                      "t.pov"))
+                  .find("shows only its bottom layer"),
+              std::string::npos);
     EXPECT_NE(first_error("box { 0, 1 texture { tiles { texture { pigment { rgb x } } } } }").message.find("tile2"),
               std::string::npos);
 }

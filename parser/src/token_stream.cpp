@@ -117,6 +117,10 @@ Evaluator::Evaluator(const ParseOptions& options) : m_options(options) {
             m_options.include_path.end())
             m_options.include_path.push_back(dir);
     }
+    if (m_options.language_version) {
+        m_language_version = *m_options.language_version;
+        m_saw_version = true;
+    }
 }
 
 Evaluator::Symbol Evaluator::make_symbol(Kind kind, const RawToken& raw, Value value) {

@@ -86,6 +86,11 @@ struct ParseOptions {
     // objects declared so far; null: such a call is a located error.
     const sg::GeometryQueries* geometry_queries = nullptr;
     AnimationFrame animation;
+    // POV-Ray's Version= (+MV): the language version before the scene's
+    // first #version. Unset: POV's rule, under which a scene with no
+    // #version at all is read as 3.62 (legacy gamma without assumed_gamma,
+    // pre-3.7 sky_sphere filter) while `version` still reads 3.7.
+    std::optional<double> language_version;
     // Declared before the scene's first line (a name that is not an
     // identifier, or is a reserved word, is an error).
     std::vector<CommandLineDeclaration> declarations;

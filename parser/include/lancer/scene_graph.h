@@ -874,11 +874,13 @@ struct Camera {
 struct GlobalSettings {
     double assumed_gamma = 1.0;
     Vec3 irid_wavelength{0.70, 0.52, 0.48};  // POV's default
-    // False in POV-Ray's legacy mode (a scene whose #version is below 3.7
-    // and which sets no assumed_gamma): image files receive the working
-    // values unchanged, as POV-Ray 3.6 wrote them.
+    // False in POV-Ray's legacy mode (a scene whose #version is below 3.7,
+    // or which has none, and which sets no assumed_gamma): image files
+    // receive the working values unchanged, as POV-Ray 3.6 wrote them.
     bool gamma_correction = true;
-    double language_version = 3.7;  // the #version in force when parsing ended
+    // The #version in force when parsing ended; 3.62 when the scene has no
+    // #version (POV-Ray's EffectiveLanguageVersion).
+    double language_version = 3.7;
     int max_trace_level = 5;
     Vec3 ambient_light{1.0};
     double adc_bailout = 1.0 / 255.0;
