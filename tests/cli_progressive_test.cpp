@@ -264,7 +264,9 @@ TEST_F(CliProgressive, ResumeAfterKillNineIsBitIdentical) {
     // passes are kept to the checkpoint interval), on two threads ...
     const std::string resumed = out("resumed.exr");
     const std::string checkpoint = resumed + ".lancer-checkpoint";
-    const std::vector<std::string> settings = {"--spp", "384", "--seed", "7", "--checkpoint", "0.2"};
+    // Enough samples (about 1 s on an idle 2-core machine) that the render
+    // cannot end between its first checkpoint and the kill.
+    const std::vector<std::string> settings = {"--spp", "1536", "--seed", "7", "--checkpoint", "0.2"};
     {
         Background lancer(render_arguments(resumed, settings), m_folder / "killed.log");
         ASSERT_TRUE(lancer.started());
@@ -277,8 +279,8 @@ TEST_F(CliProgressive, ResumeAfterKillNineIsBitIdentical) {
     EXPECT_FALSE(fs::exists(resumed));
 
     auto command = [&](const std::string& output, const std::string& extra) {
-        return "render scenes/cornell_box.pov -i path --width 32 --height 32 --spp 384 --checkpoint 0.2 -o '" + output +
-               "' " + extra;
+        return "render scenes/cornell_box.pov -i path --width 32 --height 32 --spp 1536 --checkpoint 0.2 -o '" +
+               output + "' " + extra;
     };
     // ... another seed is refused, naming what differs ...
     CommandResult result = run_lancer(command(resumed, "--seed 8 --resume -q"));
