@@ -20,7 +20,9 @@
 //     from the diffuse instead). A finish that reflects more than it
 //     receives stays finite: max_depth bounds every path.
 // Camera rays that hit a light see its emission; rays that escape see the
-// background (not importance sampled).
+// background. A sky_sphere is also a light for NEE, importance-sampled by
+// its brightness (lancer/shading/environment_light.h) and MIS-weighted
+// against BSDF sampling as every other light.
 //
 // Parameters: documented by `lancer plugins` / docs/integrators.md (from kParameters below).
 //
@@ -41,6 +43,7 @@
 
 #include <lancer/integrator.h>
 #include <lancer/shading/bsdf_sampling.h>
+#include <lancer/shading/environment_light.h>
 #include <lancer/shading/volume_tracking.h>
 
 namespace {
@@ -70,31 +73,45 @@ class PathIntegrator final : public Integrator {
     explicit PathIntegrator(const PathSettings& settings) : m_settings(settings) {}
 
     void prepare(const RenderScene& scene) override {
+        // The lights NEE draws from: the scene's, and a sky that varies.
+        m_environment.reset();
+        if (scene.background_varies()) m_environment = std::make_unique<EnvironmentLight>(scene);
+        m_lights = scene.lights();
+        if (m_environment) m_lights.push_back(m_environment.get());
         // Light selection probabilities: mostly by emitted power, with a
         // uniform share so a light whose power() underestimates it (or is 0)
-        // still gets sampled; uniform if any power is not finite.
-        const std::vector<const Light*>& lights = scene.lights();
+        // still gets sampled; uniform if any power is not finite. A sky has
+        // no power comparable with a POV light's (which does not fall off),
+        // so it takes half the draws when there are other lights.
+        const std::vector<const Light*>& lights = m_lights;
         m_prepared_for = &scene;
         m_light_probability.assign(lights.size(), 0.0f);
         m_light_cdf.clear();
         m_light_index.clear();
         if (lights.empty()) return;
+        const std::size_t others = lights.size() - (m_environment ? 1 : 0);
+        const float environment_share = !m_environment ? 0.0f : others == 0 ? 1.0f : 0.5f;
         const float uniform = 1.0f / float(lights.size());
         std::vector<double> power(lights.size(), 0.0);
         double total = 0.0;
         bool finite = true;
-        for (std::size_t i = 0; i < lights.size(); ++i) {
+        for (std::size_t i = 0; i < others; ++i) {
             // A negative light (valid POV) darkens as much as a positive
             // one lights: its magnitude sets how often it is sampled.
             power[i] = std::fabs(double(luminance(lights[i]->power())));
             finite = finite && std::isfinite(power[i]);
             total += power[i];
         }
-        for (std::size_t i = 0; i < lights.size(); ++i) {
-            if (m_settings.light_selection != LightSelection::Power || !finite || !(total > 0.0))
-                m_light_probability[i] = uniform;
-            else
-                m_light_probability[i] = float(0.9 * power[i] / total + 0.1 * uniform);
+        if (m_settings.light_selection != LightSelection::Power) {
+            m_light_probability.assign(lights.size(), uniform);
+        } else {
+            const float others_uniform = others > 0 ? 1.0f / float(others) : 0.0f;
+            for (std::size_t i = 0; i < others; ++i) {
+                const float share =
+                    !finite || !(total > 0.0) ? others_uniform : float(0.9 * power[i] / total + 0.1 * others_uniform);
+                m_light_probability[i] = (1.0f - environment_share) * share;
+            }
+            if (m_environment) m_light_probability.back() = environment_share;
         }
         m_light_index.clear();
         for (std::size_t i = 0; i < lights.size(); ++i) m_light_index[lights[i]] = i;
@@ -164,7 +181,16 @@ class PathIntegrator final : public Integrator {
                 }
             }
             if (!found) {
-                radiance += throughput * scene.background(ray);
+                // MIS-weighted against NEE when NEE could have drawn this
+                // direction from the sky.
+                float weight = 1.0f;
+                if (m_environment && !delta_bounce && &scene == m_prepared_for) {
+                    const float light_pdf =
+                        selection_probability(scene, m_environment.get()) * m_environment->pdf(ray.direction);
+                    if (m_settings.strategy == Strategy::Nee && light_pdf > 0.0f) weight = 0.0f;
+                    if (m_settings.strategy == Strategy::Mis) weight = power_heuristic(previous_pdf, light_pdf);
+                }
+                radiance += throughput * weight * scene.background(ray);
                 break;
             }
             const Vec3 wo = -ray.direction;
@@ -260,9 +286,7 @@ class PathIntegrator final : public Integrator {
     // Probability that NEE picks `light` (1 when every light is sampled).
     float selection_probability(const RenderScene& scene, const Light* light) const {
         if (m_settings.light_selection == LightSelection::All) return 1.0f;
-        const std::vector<const Light*>& lights = scene.lights();
-        if (&scene != m_prepared_for || m_light_probability.size() != lights.size())
-            return lights.empty() ? 0.0f : 1.0f / float(lights.size());
+        if (&scene != m_prepared_for) return scene.lights().empty() ? 0.0f : 1.0f / float(scene.lights().size());
         const auto found = m_light_index.find(light);
         // Not a light NEE knows: BSDF sampling takes full weight.
         return found == m_light_index.end() ? 0.0f : m_light_probability[found->second];
@@ -311,7 +335,7 @@ class PathIntegrator final : public Integrator {
     template <class Contribution>
     Color for_chosen_lights(const RenderScene& scene, float u_light, const Vec2& u_point, Sampler& sampler,
                             const Contribution& contribution) const {
-        const std::vector<const Light*>& lights = scene.lights();
+        const std::vector<const Light*>& lights = &scene == m_prepared_for ? m_lights : scene.lights();
         if (lights.empty()) return Color(0.0f);
         if (m_settings.light_selection == LightSelection::All) {
             Color sum(0.0f);
@@ -362,8 +386,11 @@ class PathIntegrator final : public Integrator {
     }
 
     PathSettings m_settings;
-    // Light selection, built in prepare() for one scene.
+    // Light selection, built in prepare() for one scene: its lights, then
+    // the sky's when it varies.
     const RenderScene* m_prepared_for = nullptr;
+    std::unique_ptr<EnvironmentLight> m_environment;
+    std::vector<const Light*> m_lights;
     std::vector<float> m_light_probability;
     std::vector<float> m_light_cdf;
     std::unordered_map<const Light*, std::size_t> m_light_index;

@@ -27,7 +27,7 @@ struct LightSample {
 
 class Light {
   public:
-    enum class Kind { Point, Directional, PovArea, Rectangle, Sphere, EmissiveShape };
+    enum class Kind { Point, Directional, PovArea, Rectangle, Sphere, EmissiveShape, Environment };
 
     virtual ~Light() = default;
     virtual Kind kind() const = 0;

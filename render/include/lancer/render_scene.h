@@ -60,6 +60,9 @@ class RenderScene {
     virtual const Camera& camera() const = 0;
     // Radiance of a ray that escapes the scene.
     virtual Color background(const Ray& ray) const = 0;
+    // Whether background() changes with the direction (a sky_sphere): worth
+    // importance sampling (lancer/shading/environment_light.h).
+    virtual bool background_varies() const { return false; }
     // The share of the background an image's alpha channel sees through
     // (POV's background transmit, with +UA): 0 is opaque.
     virtual float background_transparency() const { return 0.0f; }

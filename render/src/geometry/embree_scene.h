@@ -130,6 +130,7 @@ class EmbreeScene final : public RenderScene {
     Color background(const Ray& ray) const override {
         return m_data->sky ? m_data->sky->radiance(ray.direction) : m_data->background;
     }
+    bool background_varies() const override { return m_data->sky != nullptr; }
     const SceneOptions& options() const override { return m_data->options; }
     Bounds bounds() const override { return m_data->bounds; }
     bool has_media() const override { return m_data->has_media; }

@@ -37,6 +37,7 @@ class CountingScene final : public RenderScene {
     const std::vector<const Light*>& local_lights() const override { return m_inner.local_lights(); }
     const Camera& camera() const override { return m_inner.camera(); }
     Color background(const Ray& ray) const override { return m_inner.background(ray); }
+    bool background_varies() const override { return m_inner.background_varies(); }
     float background_transparency() const override { return m_inner.background_transparency(); }
     const SceneOptions& options() const override { return m_inner.options(); }
     Bounds bounds() const override { return m_inner.bounds(); }
