@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "lancer/scene_error.h"
+#include "materials/average_weights.h"
 #include "materials/blend_map.h"
 #include "materials/function_natives.h"
 #include "materials/pattern_space.h"
@@ -128,16 +129,12 @@ class AveragePigment final : public PointPigment {
   public:
     AveragePigment(const sg::Pigment& pigment, const MaterialBuild& build)
         : m_warps(compile_pattern(pigment.pattern, build)) {
-        // Normalised in double: a weight past float's range (fuzzing found
-        // 8.9e38) would otherwise make the mean inf/inf.
-        double total = 0.0;
-        for (const auto& entry : pigment.pigment_map) total += entry.value;
-        const bool normalise = total != 0.0 && std::isfinite(total);
+        std::vector<double> values;
         for (const auto& entry : pigment.pigment_map) {
-            const double weight = normalise ? entry.value / total : entry.value;
-            m_weights.push_back(float(std::clamp(weight, -1e30, 1e30)));
+            values.push_back(entry.value);
             m_pigments.push_back(make_point_pigment(*entry.pigment, build));
         }
+        for (double weight : average_weights(values)) m_weights.push_back(float(weight));
     }
     TextureSample at(const glm::dvec3& point, const PatternContext& context) const override {
         const glm::dvec3 inner = m_warps.pattern_point(point);

@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "lancer/scene_error.h"
+#include "materials/average_weights.h"
 #include "materials/blend_map.h"
 #include "materials/image_sampler.h"
 #include "materials/pattern.h"
@@ -132,11 +133,12 @@ class AverageNormalNode final : public NormalNode {
   public:
     AverageNormalNode(const sg::Normal& normal, const MaterialBuild& build)
         : m_warps(compile_pattern(normal.pattern, build)) {
+        std::vector<double> values;
         for (const auto& entry : normal.normal_map) {
-            m_weights.push_back(entry.value);
-            m_total += entry.value;
+            values.push_back(entry.value);
             m_normals.push_back(make_node(*entry.normal, build));
         }
+        m_weights = average_weights(values);
     }
     glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point) const override {
         const glm::dvec3 inner_normal = m_warps.normal_to_pattern_space(normal);
@@ -144,13 +146,12 @@ class AverageNormalNode final : public NormalNode {
         glm::dvec3 sum(0.0);
         for (std::size_t i = 0; i < m_normals.size(); ++i)
             sum += m_weights[i] * m_normals[i]->perturb(inner_normal, inner_point);
-        return m_warps.normal_from_pattern_space(m_total != 0.0 ? sum / m_total : sum);
+        return m_warps.normal_from_pattern_space(sum);
     }
 
   private:
-    CompiledPattern m_warps;  // its transforms and warps; the pattern is not used
-    std::vector<double> m_weights;
-    double m_total = 0.0;
+    CompiledPattern m_warps;        // its transforms and warps; the pattern is not used
+    std::vector<double> m_weights;  // average_weights: divided by their sum
     std::vector<std::unique_ptr<NormalNode>> m_normals;
 };
 

@@ -14,6 +14,7 @@
 // POV's picture; docs/scene-language.md lists the difference.
 #include <algorithm>
 
+#include "materials/average_weights.h"
 #include "materials/pattern_space.h"
 #include "materials/textures.h"
 
@@ -69,18 +70,17 @@ class LayeredTexture final : public Texture {
 // POV's average texture lights each entry and weighs the results; lancer
 // averages the pigments and normals and weighs the finishes alike, which
 // is the same picture where the entries' finishes agree.
-sg::Material average_of(const std::vector<sg::Material>& entries, const std::vector<float>& weights,
+sg::Material average_of(const std::vector<sg::Material>& entries, const std::vector<double>& values,
                         sg::Material result) {
+    const std::vector<double> weights = average_weights(values);
     result.pigment.kind = sg::Pigment::Kind::Average;
     result.pigment.location = result.location;
     std::vector<sg::Finish> finishes;
-    std::vector<double> finish_weights;
     for (std::size_t i = 0; i < entries.size(); ++i) {
         result.pigment.pigment_map.push_back({weights[i], std::make_shared<sg::Pigment>(entries[i].pigment)});
         finishes.push_back(entries[i].finish);
-        finish_weights.push_back(weights[i]);
     }
-    result.finish = blend_finishes(finishes, finish_weights);
+    result.finish = blend_finishes(finishes, weights);
     const bool any_normal =
         std::any_of(entries.begin(), entries.end(), [](const sg::Material& m) { return bool(m.normal); });
     if (any_normal) {
@@ -99,10 +99,10 @@ sg::Material average_of(const std::vector<sg::Material>& entries, const std::vec
 sg::Material flatten_patterned_texture(const sg::Material& texture) {
     if (!texture.pattern) return texture;
     std::vector<sg::MaterialRef> entries;
-    std::vector<float> values;
+    std::vector<double> values;
     for (const auto& entry : texture.texture_map) {
         entries.push_back(entry.texture);
-        values.push_back(float(entry.value));
+        values.push_back(entry.value);
     }
     for (const auto& block : texture.block_textures) entries.push_back(block);
     sg::Material result;
