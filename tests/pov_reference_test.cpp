@@ -9,7 +9,7 @@
 // the finishes (peak phong and specular, metallic, brilliance, albedo,
 // reflection metallic, exponent and fresnel, conserve_energy), gamma, and
 // a pre-3.7 scene's legacy gamma and `version` (also with no #version at
-// all, read as 3.62), POV's sizing of
+// all, read as 3.62) and its opacity of filtering surfaces, POV's sizing of
 // orthographic views (also one looking straight down its sky), and the
 // shapes: cylinder, cone, torus, disc, quadric, polygon, poly, cubic,
 // quartic, superellipsoid, blob, prism, lathe, sor, text (POV's own fonts, from
@@ -83,11 +83,11 @@ TEST_P(PovReference, WhittedMatchesPovRay) {
 INSTANTIATE_TEST_SUITE_P(
     Scenes, PovReference,
     ::testing::Values("wall_point_light", "spotlights", "area_room", "area_circular", "cylinder_parallel",
-                      "looks_like_projected", "finishes", "gamma", "legacy_gamma", "no_version", "area_illumination",
-                      "orthographic_down", "orthographic_default_size", "quadric_family", "csg_solids", "csg_glass",
-                      "polygons_polynomials", "superellipsoids", "blobs", "prisms", "lathes", "text", "sors", "ovus",
-                      "sphere_sweeps", "bicubic_patches", "julia_fractals", "height_fields", "patterns_geometric",
-                      "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
+                      "looks_like_projected", "finishes", "gamma", "legacy_gamma", "no_version", "legacy_opacity",
+                      "area_illumination", "orthographic_down", "orthographic_default_size", "quadric_family",
+                      "csg_solids", "csg_glass", "polygons_polynomials", "superellipsoids", "blobs", "prisms", "lathes",
+                      "text", "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals", "height_fields",
+                      "patterns_geometric", "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
                       "patterns_tilings_more", "normals", "textures", "tiles", "uv_mapping", "csg_meshes", "images",
                       "object_pattern", "irid_backside", "functions", "isosurfaces", "height_field_functions",
                       "camera_fisheye", "camera_fisheye_360", "camera_ultra_wide_angle", "camera_omnimax",

@@ -69,7 +69,7 @@ class DiffusePointLanes {
             px[k] = hit.position.x, py[k] = hit.position.y, pz[k] = hit.position.z;
             nx[k] = normal.x, ny[k] = normal.y, nz[k] = normal.z;
             red[k] = surface.pigment.r, green[k] = surface.pigment.g, blue[k] = surface.pigment.b;
-            opacity[k] = 1.0f - material.transparency(surface);
+            opacity[k] = material.opacity(surface);
             diffuse[k] = parameters.diffuse;
             Color sum = material.emitted(surface);
             if (m_with_ambient) sum += opacity[k] * material.ambient(surface, m_ambient_light);

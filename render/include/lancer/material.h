@@ -88,6 +88,10 @@ struct MaterialParameters {
     float irid_turbulence = 0.0f;
     Color irid_wavelengths{0.70f, 0.52f, 0.48f};  // global_settings irid_wavelength
     int noise_generator = 2;                      // global_settings noise_generator (irid's turbulence)
+    // POV-Ray before 3.7 (and a scene with no #version): a filtering
+    // surface's own light is scaled by 1 - (filter * max(pigment) +
+    // transmit) rather than 1 - filter - transmit (POV's LegacyOpacity).
+    bool legacy_opacity = false;
     float ior = 1.0f;
     // POV's interior fade (docs/scene-language.md): fade_distance 0 is none.
     float fade_distance = 0.0f;
@@ -135,6 +139,13 @@ class Material {
     float transparency(const SurfaceSample& surface) const {
         return glm::clamp(surface.filter + surface.transmit, 0.0f, 1.0f);
     }
+    // The share of the surface's own light it shows (diffuse, ambient):
+    // 1 - transparency, or POV 3.6's rule (MaterialParameters::legacy_opacity).
+    float opacity(const SurfaceSample& surface) const {
+        if (!m_params.legacy_opacity) return 1.0f - transparency(surface);
+        const float pigment_peak = glm::max(surface.pigment.r, glm::max(surface.pigment.g, surface.pigment.b));
+        return glm::clamp(1.0f - (surface.filter * pigment_peak + surface.transmit), 0.0f, 1.0f);
+    }
     // Colour of transmitted light per unit transparency: filter tints by the
     // pigment, transmit does not.
     Color transmission_tint(const SurfaceSample& surface) const;
@@ -154,7 +165,7 @@ class Material {
     Color diffuse_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const {
         const float cos_i = glm::dot(n, wi);
         if (!(cos_i > 0.0f) || m_params.diffuse == 0.0f) return Color(0.0f);
-        const float opacity = 1.0f - transparency(surface);
+        const float opacity = this->opacity(surface);
         float shape = 1.0f;
         if (m_params.brilliance != 1.0f) shape = std::pow(cos_i, m_params.brilliance - 1.0f);
         return diffuse_lobe_weight(m_params.diffuse, opacity, shape) * surface.pigment;
@@ -164,7 +175,7 @@ class Material {
     Color backside_diffuse_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wi) const {
         const float cos_i = -glm::dot(n, wi);
         if (!(cos_i > 0.0f) || m_params.diffuse_back == 0.0f) return Color(0.0f);
-        const float opacity = 1.0f - transparency(surface);
+        const float opacity = this->opacity(surface);
         float shape = 1.0f;
         if (m_params.brilliance != 1.0f) shape = std::pow(cos_i, m_params.brilliance - 1.0f);
         return diffuse_lobe_weight(m_params.diffuse_back, opacity, shape) * surface.pigment;

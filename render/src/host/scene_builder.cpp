@@ -227,6 +227,8 @@ class Builder {
         MaterialParameters parameters = to_parameters(source, m_data->textures.back().get(), normal);
         parameters.irid_wavelengths = Color(m_graph.global.irid_wavelength);
         parameters.noise_generator = m_graph.global.noise_generator;
+        // POV compares whole hundredths: 3.7 is 370.
+        parameters.legacy_opacity = int(m_graph.global.language_version * 100.0 + 0.5) < 370;
         parameters.hollow = hollow;
         // POV shows an interior's media only inside a hollow object.
         if (hollow && !source.interior.media.empty()) parameters.medium = make_medium(source.interior.media);

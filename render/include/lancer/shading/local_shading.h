@@ -176,7 +176,7 @@ inline Color surface_emission(const ShadingContext& at) {
 // light of a transparent surface is what passes through it, so a fully
 // transmitting object shows no ambient (nor diffuse, nor highlights).
 inline Color opaque_ambient(const Color& ambient_light, const ShadingContext& at) {
-    const float opacity = 1.0f - at.material.transparency(at.surface);
+    const float opacity = at.material.opacity(at.surface);
     return opacity * at.material.ambient(at.surface, ambient_light);
 }
 inline Color opaque_ambient(const RenderScene& scene, const ShadingContext& at) {
