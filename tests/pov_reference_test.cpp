@@ -9,7 +9,8 @@
 // the finishes (peak phong and specular, metallic, brilliance, albedo,
 // reflection metallic, exponent and fresnel, conserve_energy), gamma, and
 // a pre-3.7 scene's legacy gamma and `version` (also with no #version at
-// all, read as 3.62) and its opacity of filtering surfaces, POV's sizing of
+// all, read as 3.62) and its opacity of filtering surfaces, emission
+// scaled by opacity, POV's sizing of
 // orthographic views (also one looking straight down its sky), and the
 // shapes: cylinder, cone, torus, disc, quadric, polygon, poly, cubic,
 // quartic, superellipsoid, blob, prism, lathe, sor, text (POV's own fonts, from

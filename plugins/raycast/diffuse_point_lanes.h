@@ -71,7 +71,7 @@ class DiffusePointLanes {
             red[k] = surface.pigment.r, green[k] = surface.pigment.g, blue[k] = surface.pigment.b;
             opacity[k] = material.opacity(surface);
             diffuse[k] = parameters.diffuse;
-            Color sum = material.emitted(surface);
+            Color sum = opacity[k] * material.emitted(surface);  // POV scales emission by opacity
             if (m_with_ambient) sum += opacity[k] * material.ambient(surface, m_ambient_light);
             sum_r[k] = sum.r, sum_g[k] = sum.g, sum_b[k] = sum.b;
         }

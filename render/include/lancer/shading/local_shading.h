@@ -166,10 +166,13 @@ inline LobeRadiance simple_direct_light(const RenderScene& scene, const ShadingC
 }
 
 // Radiance the surface emits towards wo: the light's own emission when the
-// hit lies on an area light or emitter, else the material's.
+// hit lies on an area light or emitter, else the material's; scaled by the
+// surface's opacity as POV-Ray scales a finish's emission (a filtering or
+// transmitting surface shows that much less of its own light).
 inline Color surface_emission(const ShadingContext& at) {
-    if (at.hit.emitter != nullptr) return at.hit.emitter->emitted(at.hit, at.wo);
-    return at.material.emitted(at.surface);
+    const Color emitted =
+        at.hit.emitter != nullptr ? at.hit.emitter->emitted(at.hit, at.wo) : at.material.emitted(at.surface);
+    return at.material.opacity(at.surface) * emitted;
 }
 
 // POV's ambient term, scaled by the surface's opacity as POV-Ray does: the
