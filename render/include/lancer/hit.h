@@ -16,6 +16,7 @@ struct Hit {
     Vec3 geometric_normal{0.0f};  // unit, the surface's own orientation (not flipped)
     Vec3 shading_normal{0.0f};    // unit, interpolated (smooth meshes), same side as geometric
     Vec2 uv{0.0f};                // surface coordinates, see docs/scene-language.md per shape
+    Vec3 ray_direction{0.0f};     // of the ray that found it (POV's aoi pattern); 0 when unknown
     // Conservative bound on the absolute floating-point error of `position`
     // per axis; spawn_ray offsets by it so new rays never re-hit this surface.
     Vec3 position_error{0.0f};

@@ -232,9 +232,11 @@ void EmbreeScene::complete_packet(const Ray* rays, const PacketAnswers& answers,
     if (all_plain) {
         complete_plain_triangle_hits(plain_mesh, answers.tfar, answers.primitive, answers.u, answers.v, lanes, hits);
         for (int k = 0; k < lanes; ++k) found[k] = true;
-        return;
+    } else {
+        for (int k = 0; k < lanes; ++k) found[k] = complete_hit(rays[k], answers.lane(k), hits[k]);
     }
-    for (int k = 0; k < lanes; ++k) found[k] = complete_hit(rays[k], answers.lane(k), hits[k]);
+    for (int k = 0; k < lanes; ++k)
+        if (found[k]) hits[k].ray_direction = rays[k].direction;
 }
 
 const Instance* EmbreeScene::mesh_instance_of(const EmbreeHit& found) const {

@@ -61,6 +61,7 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
     const EmbreeHit found{rayhit.ray.tnear,     rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
                           rayhit.hit.instID[0], rayhit.hit.u,    rayhit.hit.v};
     if (!complete_hit(ray, found, hit)) return false;
+    hit.ray_direction = ray.direction;
     if (m_data->has_normal_perturbation) perturb_normal(hit, ray.direction);
     return true;
 }

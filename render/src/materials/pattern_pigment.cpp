@@ -4,6 +4,7 @@
 // parent's pattern point (after its transforms and warps), so nested maps
 // compose.
 #include <algorithm>
+#include <cmath>
 
 #include "lancer/scene_error.h"
 #include "materials/average_weights.h"
@@ -214,6 +215,8 @@ PatternContext surface_context(const Hit& hit) {
     PatternContext context;
     context.normal = glm::dvec3(hit.shading_normal);
     context.hit_point = glm::dvec3(hit.position);
+    const float along = glm::length(hit.ray_direction);
+    if (along > 0.0f && std::isfinite(along)) context.ray_direction = glm::dvec3(hit.ray_direction / along);
     return context;
 }
 
