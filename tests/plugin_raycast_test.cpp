@@ -241,5 +241,30 @@ TEST(RaycastIntegrator, AovsSeeTheSameSurface) {
     EXPECT_NEAR(render(graph, *scaled_depth, 5, 1).mean(2, 2).g, 0.5f, 0.025f);
 }
 
+// POV's light_group, on the lane-parallel path raycast takes for matte
+// walls under plain point lights as on the general one: the wall in a
+// group without lights and without global_lights is dark; with
+// global_lights the scene's light reaches it; a light of its group lights
+// it, and the same light in another group does not.
+TEST(RaycastIntegrator, LightGroupsDecideWhichLightsReachAWall) {
+    RaycastFixture raycast;
+    const double lit = render(wall_scene(2.0), *raycast.integrator, 8, 1).mean(4, 4).r;
+    ASSERT_GT(lit, 0.1);
+    for (const bool global : {false, true}) {
+        sg::SceneGraph graph = wall_scene(2.0);
+        graph.light_groups.push_back(sg::LightGroup{global});
+        graph.objects[0].light_group = 0;
+        EXPECT_NEAR(render(graph, *raycast.integrator, 8, 1).mean(4, 4).r, global ? lit : 0.0, 1e-6) << global;
+    }
+    for (const int light_group : {0, 1}) {
+        sg::SceneGraph graph = wall_scene(2.0);
+        graph.light_groups = {sg::LightGroup{}, sg::LightGroup{}};
+        graph.objects[0].light_group = 0;
+        graph.lights[0].light_group = light_group;
+        EXPECT_NEAR(render(graph, *raycast.integrator, 8, 1).mean(4, 4).r, light_group == 0 ? lit : 0.0, 1e-6)
+            << light_group;
+    }
+}
+
 }  // namespace
 }  // namespace lancer::test

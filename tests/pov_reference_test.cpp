@@ -17,7 +17,8 @@
 // Debian's fonts-povray), ovus, sphere_sweep, bicubic_patch, julia_fractal,
 // height_field (8- and 16-bit grey images), CSG (difference,
 // intersection, merge, inverse, clipped_by, textures per child; in glass,
-// refracting at every face a difference keeps), and the patterns (each on a
+// refracting at every face a difference keeps), light_group (with and
+// without global_lights), and the patterns (each on a
 // flat tile showing the pigment itself: the geometric (and aoi, seen in
 // perspective), block and noise
 // patterns, wave types, warps, colour and pigment maps, average, the
@@ -87,18 +88,19 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values("wall_point_light", "spotlights", "area_room", "area_circular", "cylinder_parallel",
                       "looks_like_projected", "finishes", "gamma", "legacy_gamma", "no_version", "legacy_opacity",
                       "area_illumination", "orthographic_down", "orthographic_default_size", "quadric_family",
-                      "csg_solids", "csg_glass", "polygons_polynomials", "superellipsoids", "blobs", "prisms", "lathes",
-                      "text", "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals", "height_fields",
-                      "patterns_geometric", "pattern_aoi", "patterns_blocks", "patterns_noise", "patterns_warps",
-                      "patterns_tilings", "patterns_tilings_more", "normals", "textures", "tiles", "uv_mapping",
-                      "csg_meshes", "images", "object_pattern", "irid_backside", "functions", "isosurfaces",
-                      "height_field_functions", "camera_fisheye", "camera_fisheye_360", "camera_ultra_wide_angle",
-                      "camera_omnimax", "camera_panoramic", "camera_cylinder_1", "camera_cylinder_2",
-                      "camera_cylinder_3", "camera_cylinder_4", "camera_spherical", "camera_spherical_narrow",
-                      "camera_transforms", "camera_orthographic_bare_angle", "camera_normal", "camera_mesh_per_pixel",
-                      "camera_mesh_side_by_side", "camera_mesh_uv_smooth", "camera_mesh_summed", "camera_mesh_averaged",
-                      "media_emission", "media_scattering", "media_absorbing_glass", "sky_layers", "sky_legacy",
-                      "sky_skies_inc", "fog_constant", "fog_ground", "fog_turbulent", "fog_hollow", "rainbow"),
+                      "csg_solids", "csg_glass", "light_groups", "polygons_polynomials", "superellipsoids", "blobs",
+                      "prisms", "lathes", "text", "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals",
+                      "height_fields", "patterns_geometric", "pattern_aoi", "patterns_blocks", "patterns_noise",
+                      "patterns_warps", "patterns_tilings", "patterns_tilings_more", "normals", "textures", "tiles",
+                      "uv_mapping", "csg_meshes", "images", "object_pattern", "irid_backside", "functions",
+                      "isosurfaces", "height_field_functions", "camera_fisheye", "camera_fisheye_360",
+                      "camera_ultra_wide_angle", "camera_omnimax", "camera_panoramic", "camera_cylinder_1",
+                      "camera_cylinder_2", "camera_cylinder_3", "camera_cylinder_4", "camera_spherical",
+                      "camera_spherical_narrow", "camera_transforms", "camera_orthographic_bare_angle", "camera_normal",
+                      "camera_mesh_per_pixel", "camera_mesh_side_by_side", "camera_mesh_uv_smooth",
+                      "camera_mesh_summed", "camera_mesh_averaged", "media_emission", "media_scattering",
+                      "media_absorbing_glass", "sky_layers", "sky_legacy", "sky_skies_inc", "fog_constant",
+                      "fog_ground", "fog_turbulent", "fog_hollow", "rainbow"),
     [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 // Isosurfaces of POV's internal functions (f_helix1, f_torus2, f_helix2,

@@ -145,6 +145,7 @@ class Evaluator {
     ShapePtr make_mesh2(const Edits<sg::TriangleMesh>& sections, const sg::SourceLocation& at);
     ShapePtr make_obj_mesh(const Value& file, const SourceRange& where, const sg::SourceLocation& at);
     ShapePtr make_union(const sg::SourceLocation& at);
+    ShapePtr make_light_group(const Edits<ShapeValue>& edits, const sg::SourceLocation& at);
     // cylinder { base, cap, radius } reads (base, radius, cap, radius).
     ShapePtr make_cone(const std::vector<Value>& values, const std::vector<SourceRange>& where, bool open,
                        const sg::SourceLocation& at, bool cylinder);

@@ -62,6 +62,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %token SPHERE "sphere" PLANE "plane" BOX "box" TRIANGLE "triangle" SMOOTH_TRIANGLE "smooth_triangle"
        MESH "mesh" MESH2 "mesh2" UNION "union" MERGE "merge" DIFFERENCE "difference"
        INTERSECTION "intersection" OBJECT "object" OBJ_MESH "obj_mesh"
+       LIGHT_GROUP "light_group" GLOBAL_LIGHTS "global_lights"
        LIGHT_SOURCE "light_source" CAMERA "camera" MESH_CAMERA "mesh_camera" BACKGROUND "background"
        SKY_SPHERE "sky_sphere" FOG "fog" FOG_TYPE "fog_type" FOG_OFFSET "fog_offset" FOG_ALT "fog_alt"
        TURB_DEPTH "turb_depth" DISTANCE "distance" RAINBOW "rainbow" WIDTH "width" ARC_ANGLE "arc_angle"
@@ -149,8 +150,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::vector<ArrayInit>> array_items
 %nterm <std::string> component param_name
 %nterm <ShapePtr> object object_ref
-%nterm <Edits<ShapeValue>> object_mods union_items mesh_items
-%nterm <std::function<void(ShapeValue&)>> object_mod union_item mesh_item
+%nterm <Edits<ShapeValue>> object_mods union_items mesh_items light_group_items
+%nterm <std::function<void(ShapeValue&)>> object_mod union_item mesh_item light_group_item
 %nterm <sg::Mat4> transform_item transform_block transform_items
 %nterm <std::shared_ptr<sg::Material>> texture material
 %nterm <Edits<sg::Material>> texture_items material_items
@@ -477,6 +478,8 @@ object
       { $$ = ev.make_obj_mesh($3, @3, LOC(@1)); ev.apply($$, $4); }
   | "union" "{" union_items "}"
       { $$ = ev.make_union(LOC(@1)); ev.apply($$, $3); }
+  | "light_group" "{" light_group_items "}"
+      { $$ = ev.make_light_group($3, LOC(@1)); }
   | "merge" "{" union_items "}"
       { $$ = ev.make_csg(sg::Object::Kind::Merge, LOC(@1)); ev.apply($$, $3); ev.finish_csg(*$$); }
   | "difference" "{" union_items "}"
@@ -707,6 +710,17 @@ union_item
   : object             { $$ = ev.child_edit($1); }
   | light              { sg::Light light = $1; $$ = [light](ShapeValue& s) { s.lights.push_back(light); }; }
   | object_mod         { $$ = std::move($1); }
+  ;
+
+/* light_group { objects, lights, [global_lights on] and transforms } */
+light_group_items
+  : %empty             {}
+  | light_group_items light_group_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+light_group_item
+  : union_item         { $$ = std::move($1); }
+  | "global_lights" opt_bool { bool on = $2; $$ = [on](ShapeValue& s) { s.global_lights = on; }; }
   ;
 
 /* mesh { triangle { a, b, c [texture { T }] } ... modifiers } */

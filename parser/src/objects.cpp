@@ -150,6 +150,19 @@ ShapePtr Evaluator::make_union(const sg::SourceLocation& at) {
     return shape;
 }
 
+// POV's light_group: a union whose lights light only its objects. Lights
+// and objects of a light_group inside it keep their own group.
+ShapePtr Evaluator::make_light_group(const Edits<ShapeValue>& edits, const sg::SourceLocation& at) {
+    ShapePtr shape = make_union(at);
+    apply(shape, edits);
+    const int group = int(m_scene.light_groups.size());
+    m_scene.light_groups.push_back(sg::LightGroup{shape->global_lights});
+    shape->object.light_group = group;
+    for (sg::Light& light : shape->lights)
+        if (light.light_group < 0) light.light_group = group;
+    return shape;
+}
+
 void Evaluator::apply(ShapePtr& shape, const Edits<ShapeValue>& edits) {
     for (const auto& edit : edits) edit(*shape);
 }

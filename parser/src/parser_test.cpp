@@ -818,5 +818,48 @@ TEST(ParserIgnoredForms, QuickColourNoRadiosityAndMmPerUnitWarn) {
     EXPECT_EQ(test::count_warnings(result), 4);
 }
 
+// POV's light_group: a union whose lights (moved with it) belong to the
+// group, as does the object; global_lights is off unless given; a group
+// inside keeps its own lights and objects.
+TEST(ParserObjects, LightGroupsTagTheirLightsAndObjects) {
+    const auto scene = parse_ok(R"(
+        light_source { <0, 10, 0> color rgb 1 }
+        light_group {
+          light_source { <1, 2, 3> color rgb 1 }
+          sphere { 0, 1 }
+          light_group { light_source { 0 color rgb 0.5 } box { -1, 1 } global_lights }
+          translate x * 10
+        }
+        #declare G = light_group { sphere { 0, 1 } global_lights off }
+        object { G })");
+    ASSERT_EQ(scene.light_groups.size(), 3u);
+    ASSERT_EQ(scene.lights.size(), 3u);
+    EXPECT_EQ(scene.lights[0].light_group, -1);
+    // The inner group is read first: it is group 0, the outer one group 1.
+    EXPECT_FALSE(scene.light_groups[1].global_lights);
+    EXPECT_TRUE(scene.light_groups[0].global_lights);
+    EXPECT_FALSE(scene.light_groups[2].global_lights);
+    int outer_lights = 0, inner_lights = 0;
+    for (const sg::Light& light : scene.lights) {
+        if (light.light_group == 1) {
+            ++outer_lights;
+            expect_vec(light.position, {11, 2, 3});
+        }
+        if (light.light_group == 0) {
+            ++inner_lights;
+            expect_vec(light.position, {10, 0, 0});
+        }
+    }
+    EXPECT_EQ(outer_lights, 1);
+    EXPECT_EQ(inner_lights, 1);
+    ASSERT_EQ(scene.objects.size(), 2u);
+    EXPECT_EQ(scene.objects[0].light_group, 1);
+    const auto& children = std::get<sg::Group>(scene.objects[0].shape).children;
+    ASSERT_EQ(children.size(), 2u);
+    EXPECT_EQ(children[0].light_group, -1);  // in the group through its parent
+    EXPECT_EQ(children[1].light_group, 0);
+    EXPECT_EQ(scene.objects[1].light_group, 2);
+}
+
 }  // namespace
 }  // namespace lancer

@@ -24,6 +24,7 @@ struct ShapeValue {
     // bounded_by's objects, in the object's space: a hint lancer does not
     // need, kept for `clipped_by { bounded_by }`.
     std::vector<sg::Object> bounded_by;
+    bool global_lights = false;  // a light_group's global_lights, while it is read
 };
 
 // A camera block's settings as written; resolved in POV's fixed order

@@ -310,7 +310,8 @@ class PathIntegrator final : public Integrator {
             scene, u_light, u_point, sampler, [&](const Light& light, float selection, const Vec2& u) {
                 const bool delta = light.is_delta();
                 if (!delta && m_settings.strategy == Strategy::Bsdf) return Color(0.0f);
-                if (!light.lights_media()) return Color(0.0f);  // POV's media_interaction off
+                if (!light.lights_media()) return Color(0.0f);              // POV's media_interaction off
+                if (delta && light.light_group() >= 0) return Color(0.0f);  // a light_group's: no medium
                 const LightSample incident = light.sample(at.point, u);
                 if (!(incident.pdf > 0.0f) || is_black(incident.radiance)) return Color(0.0f);
                 const float phase = at.medium->phase_pdf(glm::dot(direction, incident.wi));
@@ -363,6 +364,10 @@ class PathIntegrator final : public Integrator {
                              float selection, const Vec2& u, Sampler& sampler) const {
         const bool delta = light.is_delta();
         if (!delta && m_settings.strategy == Strategy::Bsdf) return Color(0.0f);
+        // POV's light_group, for POV's lights (only NEE reaches them); light
+        // from surfaces and the sky, which BSDF sampling finds too, reaches
+        // every object.
+        if (delta && !light_reaches(light, hit)) return Color(0.0f);
         const LightSample incident = light.sample(hit.position, u);
         if (!(incident.pdf > 0.0f) || is_black(incident.radiance)) return Color(0.0f);
         const Color f = bsdf.eval(incident.wi);

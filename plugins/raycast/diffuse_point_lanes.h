@@ -28,7 +28,8 @@ class DiffusePointLanes {
         m_usable = lights.size() <= std::size_t(kMaxLights);
         for (std::size_t i = 0; m_usable && i < lights.size(); ++i) {
             const auto* point = lights[i]->parameters<PointLightParameters>();
-            m_usable = point != nullptr && point->is_plain();
+            // A light_group's light reaches only its group: the general path.
+            m_usable = point != nullptr && point->is_plain() && lights[i]->light_group() < 0;
             if (!m_usable) break;
             m_position[i] = point->position;
             m_intensity[i] = point->intensity;
@@ -44,9 +45,10 @@ class DiffusePointLanes {
     // Whether `hit` is of the kind this path shades.
     static bool covers(const Hit& hit) {
         const Material& material = *hit.material;
-        return hit.emitter == nullptr && material.pigment_is_constant() && !material.has_glossy() &&
-               material.parameters().brilliance == 1.0f && material.parameters().diffuse_back == 0.0f &&
-               material.parameters().crand == 0.0f && !material.has_iridescence();
+        return hit.emitter == nullptr && hit.lit_by_global_lights && material.pigment_is_constant() &&
+               !material.has_glossy() && material.parameters().brilliance == 1.0f &&
+               material.parameters().diffuse_back == 0.0f && material.parameters().crand == 0.0f &&
+               !material.has_iridescence();
     }
 
     // Radiance towards rays[k] from hits[k] (covered hits), k < count <=

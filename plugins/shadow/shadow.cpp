@@ -61,6 +61,7 @@ class ShadowIntegrator final : public Integrator {
         Color radiance = surface_emission(at);
         if (m_with_ambient) radiance += opaque_ambient(scene, at);
         for (const Light* light : scene.lights()) {
+            if (!light_reaches(*light, hit)) continue;  // POV's light_group
             if (m_area_samples > 0 && !light->is_delta())
                 radiance += sampled_area_light(scene, at, *light, sampler);
             else

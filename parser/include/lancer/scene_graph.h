@@ -725,11 +725,21 @@ struct Object {
     bool inherits_material = false;  // `material` came from an enclosing group
     bool no_shadow = false;
     bool hollow = false;
+    // POV's light_group: an index into SceneGraph::light_groups (children
+    // without one of their own are in it too); -1: none.
+    int light_group = -1;
     std::string name;  // the #declare'd name it was instanced from, if any
     SourceLocation location;
 };
 
 // ------------------------------------------------------------------ lights
+
+// POV's light_group { objects lights [global_lights on] }: its lights
+// light only its objects, which the scene's other lights reach only with
+// global_lights on (off by default).
+struct LightGroup {
+    bool global_lights = false;
+};
 
 struct Object;
 
@@ -740,6 +750,10 @@ struct Light {
     // `area_sphere`): surfaces that rays hit and that emit.
     enum class Kind { Point, Directional, AreaRectangle, AreaSphere };
     Kind kind = Kind::Point;
+    // POV's light_group it belongs to (SceneGraph::light_groups): it lights
+    // only that group's objects. -1: a global light, which lights every
+    // object outside the groups and those of groups with global_lights.
+    int light_group = -1;
     Vec3 position{0.0};            // world space, transforms applied
     Vec3 color{1.0};               // see docs/scene-language.md for the unit
     Vec3 point_at{0.0, 0.0, 1.0};  // Directional: light travels position -> point_at
@@ -959,6 +973,7 @@ struct SceneGraph {
     std::optional<Camera> camera;  // absent: POV's default camera
     std::vector<Light> lights;
     std::vector<Object> objects;
+    std::vector<LightGroup> light_groups;
     Vec3 background{0.0};
     // The background statement's transmit: what an alpha channel sees
     // through where rays escape (POV's +UA), and the share of its colour

@@ -25,6 +25,10 @@ struct Hit {
     std::uint32_t object_id = 0;         // index of the world-space instance
     std::uint32_t primitive_id = 0;
     bool casts_shadow = true;  // false for no_shadow objects
+    // POV's light_group the surface is in (-1: none), and whether the
+    // scene's global lights reach it (light.h: light_reaches).
+    std::int16_t light_group = -1;
+    bool lit_by_global_lights = true;
 
     // Unit normals turned to face the side `toward` (e.g. -ray.direction):
     // POV-Ray surfaces are two-sided.

@@ -58,6 +58,9 @@ class Light {
     // the classic integrators dim it by the atmosphere on its way to a
     // surface (`path` always does, physically).
     bool lights_media() const { return m_lights_media; }
+    // POV's light_group it belongs to (-1: a global light); see light_reaches.
+    int light_group() const { return m_light_group; }
+    void set_light_group(int group) { m_light_group = group; }
     bool dimmed_by_atmosphere() const { return m_dimmed_by_atmosphere; }
     void set_media_interaction(bool lights_media, bool dimmed_by_atmosphere) {
         m_lights_media = lights_media;
@@ -92,7 +95,15 @@ class Light {
     bool m_casts_shadows = true;
     bool m_lights_media = true;
     bool m_dimmed_by_atmosphere = false;
+    int m_light_group = -1;
 };
+
+// POV's light_group rule: a group's lights light only the group's objects;
+// the scene's other lights light every object outside the groups, and
+// those of groups with global_lights on.
+inline bool light_reaches(const Light& light, const Hit& hit) {
+    return light.light_group() < 0 ? hit.lit_by_global_lights : light.light_group() == hit.light_group;
+}
 
 // How a point light's radiance changes with distance when it has no fade.
 enum class PointFalloff {

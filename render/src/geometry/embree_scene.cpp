@@ -143,7 +143,9 @@ void EmbreeScene::build() {
                                                        instance.material,
                                                        emitter_of(instance, instance.material),
                                                        index,
-                                                       instance.casts_shadow};
+                                                       instance.casts_shadow,
+                                                       instance.lit_by_global_lights,
+                                                       instance.light_group};
             }
             continue;
         }

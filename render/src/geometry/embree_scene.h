@@ -72,6 +72,8 @@ struct PlainTriangles {
     const Light* emitter = nullptr;
     std::uint32_t object_id = 0;
     bool casts_shadow = true;
+    bool lit_by_global_lights = true;
+    std::int16_t light_group = -1;
 };
 
 // One ray's answer from Embree.

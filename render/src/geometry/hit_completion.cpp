@@ -115,6 +115,8 @@ void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const flo
         hit.object_id = mesh.object_id;
         hit.primitive_id = primitive[k];
         hit.casts_shadow = mesh.casts_shadow;
+        hit.light_group = mesh.light_group;
+        hit.lit_by_global_lights = mesh.lit_by_global_lights;
     }
 }
 
@@ -254,6 +256,8 @@ void EmbreeScene::complete_instance_hit(std::uint32_t index, std::uint32_t leaf,
     complete_analytic_hit(surface, ray, t, face, hit);
     hit.object_id = leaf;
     hit.casts_shadow = instance.casts_shadow;
+    hit.light_group = instance.light_group;
+    hit.lit_by_global_lights = instance.lit_by_global_lights;
     hit.emitter = emitter_of(surface, hit.material);
 }
 
@@ -303,6 +307,8 @@ bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit)
     const Instance& instance = m_data->instances[index];
     hit.object_id = index;
     hit.casts_shadow = instance.casts_shadow;
+    hit.light_group = instance.light_group;
+    hit.lit_by_global_lights = instance.lit_by_global_lights;
     hit.emitter = emitter_of(instance, hit.material);
     return true;
 }

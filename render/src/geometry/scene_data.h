@@ -67,6 +67,8 @@ struct Instance {
     const Light* emitter = nullptr;               // for emissive materials
     const Light* light = nullptr;                 // the area light this surface is
     bool casts_shadow = true;
+    std::int16_t light_group = -1;                // POV's light_group (Hit::light_group)
+    bool lit_by_global_lights = true;             // false in a light_group without global_lights
     Vec3 bounds_lower{0.0f}, bounds_upper{0.0f};  // world, conservative
     sg::SourceLocation location;
 };

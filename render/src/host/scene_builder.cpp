@@ -97,6 +97,22 @@ void world_bounds(const Placement& placement, const DVec3& lower, const DVec3& u
     out_upper = Vec3(hi + slack);
 }
 
+// The light_group the objects being added are in: an object's own group
+// while its children are added, the enclosing one otherwise.
+class LightGroupScope {
+  public:
+    LightGroupScope(int& current, int own) : m_current(current), m_saved(current) {
+        if (own >= 0) current = own;
+    }
+    ~LightGroupScope() { m_current = m_saved; }
+    LightGroupScope(const LightGroupScope&) = delete;
+    LightGroupScope& operator=(const LightGroupScope&) = delete;
+
+  private:
+    int& m_current;
+    int m_saved;
+};
+
 class Builder {
   public:
     explicit Builder(sg::SceneGraph& graph) : m_graph(graph), m_data(std::make_unique<SceneData>()) {
@@ -367,6 +383,9 @@ class Builder {
     }
 
     std::uint32_t push_instance(Instance instance, const DMat4& texture_owner_from_world) {
+        instance.light_group = std::int16_t(m_light_group);
+        instance.lit_by_global_lights =
+            m_light_group < 0 || m_graph.light_groups[std::size_t(m_light_group)].global_lights;
         m_data->instances.push_back(std::move(instance));
         m_data->texture_spaces.push_back(texture_owner_from_world);
         return std::uint32_t(m_data->instances.size() - 1);
@@ -375,6 +394,7 @@ class Builder {
     void add_objects(const std::vector<sg::Object>& objects, const DMat4& world_from_parent,
                      const sg::MaterialRef& inherited, const DMat4& inherited_owner, bool no_shadow) {
         for (const sg::Object& object : objects) {
+            const LightGroupScope group(m_light_group, object.light_group);
             const DMat4 world_from_object = world_from_parent * object.parent_from_object;
             const sg::MaterialRef& material = object.material ? object.material : inherited;
             // POV: a texture follows the transforms applied after it, i.e. it
@@ -950,7 +970,10 @@ class Builder {
             projector.objects.push_back(*projected_through);
             light = std::make_unique<ProjectedLight>(std::move(light), compile_scene(std::move(projector)));
         }
-        if (source) light->set_media_interaction(source->media_interaction, source->media_attenuation);
+        if (source) {
+            light->set_media_interaction(source->media_interaction, source->media_attenuation);
+            light->set_light_group(source->light_group);
+        }
         m_data->lights.push_back(light.get());
         m_data->local_lights.push_back(&light->proxy());
         m_data->owned_lights.push_back(std::move(light));
@@ -1056,6 +1079,7 @@ class Builder {
 
     sg::SceneGraph& m_graph;
     std::unique_ptr<SceneData> m_data;
+    int m_light_group = -1;  // the light_group of the objects being added (LightGroupScope)
     std::map<const sg::TriangleMesh*, int> m_mesh_uses;
     std::map<std::tuple<const sg::Function*, const std::string*, int, int>, std::shared_ptr<IsosurfaceGradientRecord>>
         m_isosurface_records;

@@ -331,7 +331,9 @@ Color pov_media_radiance(const RenderScene& scene, const MediumRegion& region, c
     // Where each light that lights media reaches along the segment.
     std::vector<LightRange> lights;
     for (const Light* light : scene.lights()) {
-        if (!light->lights_media()) continue;
+        // A light_group's lights are not the scene's in POV-Ray: they light
+        // their group's objects and no medium.
+        if (!light->lights_media() || light->light_group() >= 0) continue;
         LightRange range{light, 0.0f, length};
         const PointLightParameters* point = simple_model_light(*light).parameters<PointLightParameters>();
         if (point && point->spot_axis != Vec3(0.0f) &&

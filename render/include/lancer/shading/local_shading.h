@@ -140,6 +140,7 @@ inline LobeRadiance reflect_pov_area_light(const RenderScene& scene, const Shadi
 // No shadow ray is cast for light the requested lobes do not reflect.
 inline LobeRadiance reflect_simple_light(const RenderScene& scene, const ShadingContext& at, const Light& light,
                                          Shadows shadows, Lobes lobes = Lobes::All) {
+    if (!light_reaches(light, at.hit)) return {};  // POV's light_group
     const Light& stand_in = simple_model_light(light);
     // Point and directional lights ignore u: one sample is exact.
     const LightSample sample = stand_in.sample(at.hit.position, Vec2(0.5f));
