@@ -155,6 +155,11 @@ ShapePtr Evaluator::make_union(const sg::SourceLocation& at) {
 ShapePtr Evaluator::make_light_group(const Edits<ShapeValue>& edits, const sg::SourceLocation& at) {
     ShapePtr shape = make_union(at);
     apply(shape, edits);
+    // Hits carry the group in 16 bits (lancer/hit.h).
+    if (m_scene.light_groups.size() >= std::size_t(sg::kMaxLightGroups)) {
+        error(at, "more than " + std::to_string(sg::kMaxLightGroups) + " light_groups in one scene");
+        return shape;
+    }
     const int group = int(m_scene.light_groups.size());
     m_scene.light_groups.push_back(sg::LightGroup{shape->global_lights});
     shape->object.light_group = group;

@@ -861,5 +861,15 @@ TEST(ParserObjects, LightGroupsTagTheirLightsAndObjects) {
     EXPECT_EQ(scene.objects[1].light_group, 2);
 }
 
+TEST(ParserObjects, LightGroupLimitsAndSyntax) {
+    const Diagnostic many = test::first_error("#for (I, 0, 40000) light_group { sphere { 0, 1 } } #end");
+    EXPECT_NE(many.message.find("more than 32767 light_groups"), std::string::npos) << many.message;
+    EXPECT_EQ(many.location.line, 1);
+    // global_lights belongs in a light_group only.
+    test::first_error("union { sphere { 0, 1 } global_lights on }");
+    const auto empty = parse_ok("light_group { }");
+    EXPECT_EQ(empty.light_groups.size(), 1u);
+}
+
 }  // namespace
 }  // namespace lancer

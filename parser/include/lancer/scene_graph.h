@@ -740,6 +740,7 @@ struct Object {
 struct LightGroup {
     bool global_lights = false;
 };
+inline constexpr int kMaxLightGroups = 32767;  // a scene's; more is an error
 
 struct Object;
 
