@@ -383,9 +383,11 @@ class Builder {
     }
 
     std::uint32_t push_instance(Instance instance, const DMat4& texture_owner_from_world) {
-        instance.light_group = std::int16_t(m_light_group);
-        instance.lit_by_global_lights =
-            m_light_group < 0 || m_graph.light_groups[std::size_t(m_light_group)].global_lights;
+        // A group the graph does not list (a hand-built graph) is no group.
+        const bool grouped = m_light_group >= 0 && std::size_t(m_light_group) < m_graph.light_groups.size() &&
+                             m_light_group <= sg::kMaxLightGroups;
+        instance.light_group = grouped ? std::int16_t(m_light_group) : std::int16_t(-1);
+        instance.lit_by_global_lights = !grouped || m_graph.light_groups[std::size_t(m_light_group)].global_lights;
         m_data->instances.push_back(std::move(instance));
         m_data->texture_spaces.push_back(texture_owner_from_world);
         return std::uint32_t(m_data->instances.size() - 1);
