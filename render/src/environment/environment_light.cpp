@@ -53,27 +53,22 @@ EnvironmentLight::EnvironmentLight(const RenderScene& scene, int columns, int ro
     : m_scene(scene), m_columns(std::max(1, columns)), m_rows(std::max(1, rows)) {
     const std::size_t cells = std::size_t(m_columns) * std::size_t(m_rows);
     std::vector<double> brightest(cells, 0.0);  // the brightest of the cell's probes
-    std::vector<Color> mean(cells, Color(0.0f));
     tbb::parallel_for(0, m_rows, [&](int row) {
+        // Probes stratified in cos(theta) and phi: equal solid angles.
+        const double z0 = row_cosine(row, 0.0, m_rows), z1 = row_cosine(row, 1.0, m_rows);
         for (int column = 0; column < m_columns; ++column) {
-            Color sum(0.0f);
             double most = 0.0;
             for (int a = 0; a < 2; ++a) {
                 for (int b = 0; b < 2; ++b) {
-                    // Stratified in cos(theta) and phi: equal solid angles.
-                    const double z0 = row_cosine(row, 0.0, m_rows), z1 = row_cosine(row, 1.0, m_rows);
                     const double z = z0 + (z1 - z0) * (a + 0.5) / 2.0;
                     const double phi = 2.0 * M_PI * (column + (b + 0.5) / 2.0) / m_columns;
                     Ray ray;
                     ray.direction = direction_from(z, phi);
                     const Color radiance = scene.background(ray);
                     most = std::max(most, brightness(radiance));
-                    if (std::isfinite(luminance(radiance))) sum += radiance;
                 }
             }
-            const std::size_t cell = std::size_t(row) * m_columns + column;
-            brightest[cell] = most;
-            mean[cell] = sum / 4.0f;
+            brightest[std::size_t(row) * m_columns + column] = most;
         }
     });
 
@@ -97,17 +92,13 @@ EnvironmentLight::EnvironmentLight(const RenderScene& scene, int columns, int ro
     // Solid angle of a cell in each row, and the sky's mean over the sphere.
     std::vector<double> solid_angle(std::size_t(m_rows), 0.0);
     double sphere_mean = 0.0;
-    glm::dvec3 mean_radiance(0.0);
     for (int row = 0; row < m_rows; ++row) {
         solid_angle[row] = 2.0 * M_PI / m_columns * (row_cosine(row, 0.0, m_rows) - row_cosine(row, 1.0, m_rows));
-        for (int column = 0; column < m_columns; ++column) {
-            const std::size_t cell = std::size_t(row) * m_columns + column;
-            sphere_mean += value[cell] * solid_angle[row];
-            mean_radiance += glm::dvec3(mean[cell]) * solid_angle[row];
-        }
+        for (int column = 0; column < m_columns; ++column)
+            sphere_mean += value[std::size_t(row) * m_columns + column] * solid_angle[row];
     }
     sphere_mean /= 4.0 * M_PI;
-    m_power = Color(mean_radiance);  // the sum over the sphere: 4 pi times the mean
+    m_power = Color(float(4.0 * M_PI * sphere_mean));
 
     // Every cell keeps a floor of 1% of the mean brightness, so detail the
     // 2x2 probes missed (a sun smaller than a cell) can still be drawn.

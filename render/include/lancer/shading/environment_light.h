@@ -33,8 +33,9 @@ class EnvironmentLight final : public Light {
     float pdf(const Vec3& p, const Vec3& wi, const Hit& light_hit) const override { return pdf(wi); }
     // Solid-angle density of sample() drawing the unit direction `wi`.
     float pdf(const Vec3& wi) const;
-    // The sky's mean radiance times 4 pi (its radiant intensity per unit
-    // area, as seen by a small sphere): only a scale for light selection.
+    // 4 pi times the table's mean brightness (grey): only a scale for
+    // light selection, which `path` does not use (the sky takes a fixed
+    // share of its draws).
     Color power() const override { return m_power; }
 
     static constexpr float kDistance = 2.0e10f;  // POV's BOUND_HUGE, as kMediaEscapeDistance
