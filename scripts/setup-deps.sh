@@ -9,6 +9,8 @@ packages=(
   flex bison
   libglm-dev libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools
+  # A palette PNG's indices (OpenImageIO gives only its colours).
+  libpng-dev
   libtinyobjloader-dev libcli11-dev libfreetype-dev fonts-povray
   povray-includes
   libgtest-dev libgmock-dev libbenchmark-dev

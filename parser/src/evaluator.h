@@ -385,6 +385,9 @@ class Evaluator {
     NormalEdit normal_pattern_edit(const PatternEdit& edit, const sg::SourceLocation& at);
     NormalEdit normal_accuracy(const Value& v, const SourceRange& where);
     sg::SlopeMapEntry slope_entry(const Value& value, const SourceRange& wv, const Value& slope, const SourceRange& ws);
+    // An image_map's `filter N, v` or `transmit N, v`.
+    sg::PaletteSetting palette_setting(bool transmit, const Value& index, const SourceRange& wi, const Value& value,
+                                       const SourceRange& wv);
     std::function<void(ShapeValue&)> normal_edit(const Edits<sg::Normal>& edits, const sg::SourceLocation& at);
     // A pigment, normal or finish block written in a texture or on an
     // object: edits of what the texture has (its top layer's).

@@ -1246,8 +1246,20 @@ image_items
   | image_items "map_type" expr { $$ = $1; $$.map_type = ev.map_type($3, @3); }
   | image_items "interpolate" expr { $$ = $1; $$.interpolate = ev.to_int($3, @3); }
   | image_items "once" { $$ = $1; $$.once = true; }
-  | image_items "filter" "all" expr { $$ = $1; $$.filter_all = ev.to_float($4, @4); }
-  | image_items "transmit" "all" expr { $$ = $1; $$.transmit_all = ev.to_float($4, @4); }
+  | image_items "gif"  { $$ = $1; $$.format = sg::ImageFormat::Gif; }
+  | image_items "bmp"  { $$ = $1; $$.format = sg::ImageFormat::Bmp; }
+  | image_items "ppm"  { $$ = $1; $$.format = sg::ImageFormat::Pnm; }
+  | image_items "pgm"  { $$ = $1; $$.format = sg::ImageFormat::Pnm; }
+  | image_items "iff"  { $$ = $1; $$.format = sg::ImageFormat::Iff; }
+  | image_items "sys"  { $$ = $1; $$.format = sg::ImageFormat::Png; }
+  | image_items "filter" "all" expr
+      { $$ = $1; $$.palette_settings.push_back({false, -1, ev.to_float($4, @4), LOC(@2)}); }
+  | image_items "transmit" "all" expr
+      { $$ = $1; $$.palette_settings.push_back({true, -1, ev.to_float($4, @4), LOC(@2)}); }
+  | image_items "filter" arith opt_comma arith
+      { $$ = $1; $$.palette_settings.push_back(ev.palette_setting(false, $3, @3, $5, @5)); }
+  | image_items "transmit" arith opt_comma arith
+      { $$ = $1; $$.palette_settings.push_back(ev.palette_setting(true, $3, @3, $5, @5)); }
   | image_items "gamma" expr { $$ = $1; $$.srgb = ev.to_float($3, @3) != 1.0; $$.gamma_given = true; }
   /* image_pattern's own item */
   | image_items "use_alpha" { $$ = $1; $$.use_alpha = true; $$.use_alpha_location = LOC(@2); }

@@ -867,6 +867,8 @@ void Evaluator::refuse_foreign_image_items(const sg::ImageMap& image, const char
         error(image.bump_item_location, "bump_size, use_color and use_index belong in a bump_map, not in " + name);
     if (name != "image_pattern" && image.use_alpha)
         error(image.use_alpha_location, "use_alpha belongs in an image_pattern, not in " + name);
+    if (name != "image_map" && !image.palette_settings.empty())
+        error(image.palette_settings.front().location, "filter and transmit belong in an image_map, not in " + name);
 }
 
 Evaluator::PatternEdit Evaluator::object_pattern(const std::shared_ptr<ShapeValue>& shape,
@@ -928,6 +930,23 @@ sg::SlopeMapEntry Evaluator::slope_entry(const Value& value, const SourceRange& 
     entry.height = pair.x;
     entry.slope = pair.y;
     return entry;
+}
+
+sg::PaletteSetting Evaluator::palette_setting(bool transmit, const Value& index, const SourceRange& wi,
+                                              const Value& value, const SourceRange& wv) {
+    sg::PaletteSetting setting;
+    setting.transmit = transmit;
+    setting.location = wi.begin;
+    // POV truncates the index after adding 0.01; whether it names an entry
+    // of the palette is known once the image is read.
+    const double number = to_float(index, wi, "a palette index");
+    if (!(number + 0.01 >= 0.0 && number + 0.01 < 256.0))
+        error(wi.begin, std::string("the palette index of ") + (transmit ? "transmit" : "filter") +
+                            " must be 0 to 255 (a palette has at most 256 entries)");
+    else
+        setting.index = int(number + 0.01);
+    setting.value = to_float(value, wv, transmit ? "a transmit amount" : "a filter amount");
+    return setting;
 }
 
 // ------------------------------------------------------ patterned textures

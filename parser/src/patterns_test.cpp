@@ -428,5 +428,40 @@ TEST(ParserPatterns, ImagePatternReadsItsImageAsStored) {
     fs::remove_all(dir);
 }
 
+// POV's `filter N, v` and `transmit N, v` set one palette entry, `... all v`
+// every entry, in the order written (checked against the image when it is
+// read: tests/reference/pov/image_palette.pov, Textures.Palette*).
+TEST(ParserPatterns, ImageMapPaletteSettingsKeepTheirOrder) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("lancer_image_palette_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string image = (dir / "palette.gif").string();
+    std::ofstream(image) << "x";
+    auto scene = parse_ok("plane { y, 0 pigment { image_map { gif \"" + image +
+                          "\" transmit 2, 1 filter all 0.25 transmit 3 0.5 filter 2.995, 0 } } }");
+    const sg::ImageMap& map = material_of(scene, 0).pigment.image;
+    EXPECT_EQ(map.format, sg::ImageFormat::Gif);
+    ASSERT_EQ(map.palette_settings.size(), 4u);
+    const sg::PaletteSetting& first = map.palette_settings[0];
+    EXPECT_TRUE(first.transmit);
+    EXPECT_EQ(first.index, 2);
+    EXPECT_DOUBLE_EQ(first.value, 1.0);
+    EXPECT_EQ(first.location.line, 1);
+    EXPECT_EQ(map.palette_settings[1].index, -1);  // all
+    EXPECT_DOUBLE_EQ(map.palette_settings[1].value, 0.25);
+    EXPECT_FALSE(map.palette_settings[1].transmit);
+    EXPECT_EQ(map.palette_settings[2].index, 3);
+    EXPECT_EQ(map.palette_settings[3].index, 3);  // POV adds 0.01 before truncating
+    EXPECT_FALSE(map.palette_settings[3].transmit);
+
+    EXPECT_NE(first_error("plane { y, 0 pigment { image_map { gif \"" + image + "\" filter 256, 0.5 } } }")
+                  .message.find("must be 0 to 255"),
+              std::string::npos);
+    EXPECT_NE(first_error("plane { y, 0 normal { bump_map { gif \"" + image + "\" transmit 1, 0.5 } } }")
+                  .message.find("filter and transmit belong in an image_map"),
+              std::string::npos);
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace lancer

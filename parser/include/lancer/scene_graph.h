@@ -48,7 +48,17 @@ namespace lancer::sg {
 
 // ---------------------------------------------------------------- textures
 
-enum class ImageFormat { Png, Jpeg, Exr, Hdr, Tga, Tiff, Unknown };
+enum class ImageFormat { Png, Jpeg, Exr, Hdr, Tga, Tiff, Gif, Bmp, Pnm, Iff, Unknown };
+
+// An image_map's `filter N, v`, `transmit N, v` (one palette entry) or
+// `filter all v`, `transmit all v` (every entry), in the order written:
+// POV-Ray sets them on a colour-mapped image's palette, one after another.
+struct PaletteSetting {
+    bool transmit = false;  // else filter
+    int index = -1;         // -1: all entries
+    double value = 0.0;
+    SourceLocation location;
+};
 
 // POV-Ray map_type values: 0 planar, 1 spherical, 2 cylindrical, 5 torus.
 enum class MapType { Planar = 0, Spherical = 1, Cylindrical = 2, Torus = 5, UV = 100 };
@@ -59,11 +69,10 @@ struct ImageMap {
     // POV-Ray's defaults: the planar projection and no interpolation. An
     // OBJ material's texture and uv_mapping take the surface's (u,v).
     MapType map_type = MapType::Planar;
-    int interpolate = 0;  // 0 none, 2 bilinear, 4 normalized distance (POV)
-    bool once = false;    // no repeat outside [0,1]^2
-    double filter_all = 0.0;
-    double transmit_all = 0.0;
-    bool srgb = true;  // 8-bit formats are sRGB-encoded; EXR/HDR are linear
+    int interpolate = 0;                           // 0 none, 2 bilinear, 4 normalized distance (POV)
+    bool once = false;                             // no repeat outside [0,1]^2
+    std::vector<PaletteSetting> palette_settings;  // and `filter all`, `transmit all`
+    bool srgb = true;                              // 8-bit formats are sRGB-encoded; EXR/HDR are linear
     // POV decodes an image_map's colours; a bump_map's or image_pattern's
     // values are read as stored unless `gamma` is given.
     bool gamma_given = false;

@@ -149,6 +149,14 @@ class Material {
     // Colour of transmitted light per unit transparency: filter tints by the
     // pigment, transmit does not.
     Color transmission_tint(const SurfaceSample& surface) const;
+    // POV-Ray's transmitted colour, filter * pigment + transmit: the same as
+    // transparency() * transmission_tint() while filter + transmit <= 1,
+    // and not scaled down beyond (POV passes more light than arrives where
+    // a scene asks for it, e.g. `filter all` on a palette image's clear
+    // entries). For the classic integrators; `path` keeps the scaled form.
+    Color pov_transmitted(const SurfaceSample& surface) const {
+        return glm::max(surface.filter * surface.pigment + Color(surface.transmit), Color(0.0f));
+    }
 
     // Radiance emitted towards the viewer (two-sided).
     Color emitted(const SurfaceSample& surface) const { return m_params.emission * surface.pigment; }

@@ -14,14 +14,12 @@
 //   - deeper colour images: the luminance 0.297 r + 0.589 g + 0.114 b.
 // The float arithmetic is POV's, step for step, so the 16-bit values come
 // out identical. `gamma` decodes the file's values first (POV decodes none
-// unless the scene says gamma). GIFs are decoded here: OpenImageIO would
-// give their colours, and the heights are their indices.
+// unless the scene says gamma). Palette files' indices come from
+// materials/palette_image.h: OpenImageIO gives their colours.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <fstream>
-#include <iterator>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -29,6 +27,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "geometry/height_field.h"
+#include "materials/palette_image.h"
 
 namespace lancer {
 namespace {
@@ -54,9 +53,11 @@ void check_size(const std::string& path, long long width, long long height) {
 }
 
 std::vector<unsigned char> read_bytes(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) fail(path, "the file cannot be opened");
-    return std::vector<unsigned char>(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+    try {
+        return read_file_bytes(path);
+    } catch (const std::runtime_error& error) {
+        fail(path, error.what());
+    }
 }
 
 // A 16-bit height as POV converts a float, which it truncates.
@@ -83,126 +84,16 @@ HeightFieldGrid grid_from_values(int width, int height, const std::vector<std::u
 
 namespace {
 
-// ---- GIF: the palette indices, LZW-decoded here ----
-
-std::vector<unsigned char> decode_gif_indices(const std::string& path, int& width, int& height) {
-    const std::vector<unsigned char> bytes = read_bytes(path);
-    std::size_t at = 0;
-    auto need = [&](std::size_t count) {
-        if (at + count > bytes.size()) fail(path, "the GIF file is truncated");
-    };
-    need(13);
-    if (std::memcmp(bytes.data(), "GIF", 3) != 0) fail(path, "it is not a GIF file");
-    const unsigned char screen_flags = bytes[10];
-    at = 13;
-    if (screen_flags & 0x80) {
-        need(3u << ((screen_flags & 7) + 1));
-        at += 3u << ((screen_flags & 7) + 1);
-    }
-    for (;;) {
-        need(1);
-        const unsigned char block = bytes[at++];
-        if (block == 0x21) {  // extension: label, then sub-blocks
-            need(1);
-            ++at;
-            for (;;) {
-                need(1);
-                const unsigned char length = bytes[at++];
-                if (length == 0) break;
-                need(length);
-                at += length;
-            }
-            continue;
-        }
-        if (block != 0x2C) fail(path, "the GIF file holds no image");
-        need(9);
-        width = bytes[at + 4] | (bytes[at + 5] << 8);
-        height = bytes[at + 6] | (bytes[at + 7] << 8);
-        const unsigned char image_flags = bytes[at + 8];
-        at += 9;
-        check_size(path, width, height);
-        // POV-Ray's reader refuses interlaced GIFs too.
-        if (image_flags & 0x40) fail(path, "interlaced GIF images are not supported for height fields");
-        if (image_flags & 0x80) {
-            need(3u << ((image_flags & 7) + 1));
-            at += 3u << ((image_flags & 7) + 1);
-        }
-        break;
-    }
-    need(1);
-    const int minimum_size = bytes[at++];
-    if (minimum_size < 1 || minimum_size > 11) fail(path, "the GIF data is corrupt");
-    // The sub-blocks joined into one code stream.
-    std::vector<unsigned char> stream;
-    for (;;) {
-        need(1);
-        const unsigned char length = bytes[at++];
-        if (length == 0) break;
-        need(length);
-        stream.insert(stream.end(), bytes.begin() + std::ptrdiff_t(at), bytes.begin() + std::ptrdiff_t(at + length));
-        at += length;
-    }
-    const std::size_t pixel_count = std::size_t(width) * height;
-    std::vector<unsigned char> indices;
-    indices.reserve(pixel_count);
-    const int clear = 1 << minimum_size, end_code = clear + 1;
-    std::vector<std::uint16_t> prefix(4096);
-    std::vector<unsigned char> suffix(4096), first(4096), string_stack(4097);
-    for (int code = 0; code < clear; ++code) suffix[code] = first[code] = (unsigned char)code;
-    int code_size = minimum_size + 1, next = clear + 2, previous = -1;
-    std::size_t bit = 0;
-    while (indices.size() < pixel_count) {
-        if (bit + code_size > stream.size() * 8) break;
-        int code = 0;
-        for (int i = 0; i < code_size; ++i, ++bit) code |= ((stream[bit >> 3] >> (bit & 7)) & 1) << i;
-        if (code == clear) {
-            code_size = minimum_size + 1;
-            next = clear + 2;
-            previous = -1;
-            continue;
-        }
-        if (code == end_code) break;
-        if (previous < 0) {
-            if (code >= clear) fail(path, "the GIF data is corrupt");
-            indices.push_back((unsigned char)code);
-            previous = code;
-            continue;
-        }
-        int walk;
-        if (code < next) {
-            walk = code;
-            if (next < 4096) {
-                prefix[next] = std::uint16_t(previous);
-                suffix[next] = first[code];
-                first[next] = first[previous];
-                ++next;
-            }
-        } else if (code == next && next < 4096) {
-            prefix[next] = std::uint16_t(previous);
-            suffix[next] = first[previous];
-            first[next] = first[previous];
-            ++next;
-            walk = code;
-        } else {
-            fail(path, "the GIF data is corrupt");
-        }
-        int depth = 0;
-        while (walk >= clear + 2 && depth < 4096) {
-            string_stack[std::size_t(depth++)] = suffix[std::size_t(walk)];
-            walk = prefix[std::size_t(walk)];
-        }
-        string_stack[std::size_t(depth++)] = suffix[std::size_t(walk)];
-        while (depth > 0 && indices.size() < pixel_count) indices.push_back(string_stack[std::size_t(--depth)]);
-        if (next == (1 << code_size) && code_size < 12) ++code_size;
-        previous = code;
-    }
-    if (indices.size() < pixel_count) fail(path, "the GIF file is truncated");
-    return indices;
-}
-
 HeightFieldGrid read_gif(const std::string& path, bool pot) {
-    int width = 0, height = 0;
-    const std::vector<unsigned char> indices = decode_gif_indices(path, width, height);
+    GifIndices gif;
+    try {
+        gif = decode_gif_indices(path);
+    } catch (const std::runtime_error& error) {
+        fail(path, error.what());
+    }
+    const int width = gif.width, height = gif.height;
+    check_size(path, width, height);
+    const std::vector<unsigned char>& indices = gif.indices;
     std::vector<std::uint16_t> values(indices.size());
     if (!pot) {
         for (std::size_t i = 0; i < indices.size(); ++i) values[i] = std::uint16_t(indices[i] * 256);
@@ -218,78 +109,6 @@ HeightFieldGrid read_gif(const std::string& path, bool pot) {
             values[std::size_t(row) * half + column] = std::uint16_t(indices[left] << 8 | indices[left + half]);
         }
     return grid_from_values(half, height, values);
-}
-
-// ---- Palettes of files OpenImageIO expands to colours ----
-
-struct PaletteEntry {
-    int red, green, blue;
-};
-
-// The palette of a palette PNG (empty if the PNG has none).
-std::vector<PaletteEntry> png_palette(const std::vector<unsigned char>& bytes) {
-    std::vector<PaletteEntry> palette;
-    if (bytes.size() < 33 || bytes[25] != 3) return palette;  // IHDR colour type 3: palette
-    std::size_t at = 8;
-    while (at + 8 <= bytes.size()) {
-        const std::size_t length =
-            std::size_t(bytes[at]) << 24 | std::size_t(bytes[at + 1]) << 16 | bytes[at + 2] << 8 | bytes[at + 3];
-        if (std::memcmp(&bytes[at + 4], "PLTE", 4) == 0) {
-            for (std::size_t i = 0; i + 2 < length && at + 8 + i + 2 < bytes.size(); i += 3)
-                palette.push_back({bytes[at + 8 + i], bytes[at + 9 + i], bytes[at + 10 + i]});
-            break;
-        }
-        if (std::memcmp(&bytes[at + 4], "IDAT", 4) == 0) break;
-        at += 12 + length;
-    }
-    return palette;
-}
-
-// The colour map of a colour-mapped TGA (empty otherwise).
-std::vector<PaletteEntry> tga_palette(const std::vector<unsigned char>& bytes) {
-    std::vector<PaletteEntry> palette;
-    if (bytes.size() < 18 || bytes[1] != 1 || (bytes[2] != 1 && bytes[2] != 9)) return palette;
-    const int first_index = bytes[3] | bytes[4] << 8, length = bytes[5] | bytes[6] << 8, bits = bytes[7];
-    const int entry_bytes = (bits + 7) / 8;
-    std::size_t at = 18 + std::size_t(bytes[0]);
-    palette.resize(std::size_t(first_index), PaletteEntry{-1, -1, -1});
-    for (int i = 0; i < length && at + std::size_t(entry_bytes) <= bytes.size(); ++i, at += std::size_t(entry_bytes)) {
-        if (entry_bytes >= 3) {
-            palette.push_back({bytes[at + 2], bytes[at + 1], bytes[at]});
-        } else {
-            // 15/16-bit entries: 5 bits a channel, as OpenImageIO widens them.
-            const int v = bytes[at] | bytes[at + 1] << 8;
-            auto widen = [](int five) { return (five << 3) | (five >> 2); };
-            palette.push_back({widen((v >> 10) & 31), widen((v >> 5) & 31), widen(v & 31)});
-        }
-    }
-    return palette;
-}
-
-// The colour table of a BMP of 8 bits a pixel or fewer (empty otherwise).
-std::vector<PaletteEntry> bmp_palette(const std::vector<unsigned char>& bytes) {
-    std::vector<PaletteEntry> palette;
-    if (bytes.size() < 54 || bytes[0] != 'B' || bytes[1] != 'M') return palette;
-    auto u32 = [&](std::size_t at) {
-        return std::size_t(bytes[at]) | std::size_t(bytes[at + 1]) << 8 | std::size_t(bytes[at + 2]) << 16 |
-               std::size_t(bytes[at + 3]) << 24;
-    };
-    const std::size_t header = u32(14);
-    const int bits = bytes[28] | bytes[29] << 8;
-    if (bits > 8 || header < 40) return palette;
-    std::size_t count = u32(46);
-    if (count == 0 || count > 256) count = std::size_t(1) << bits;
-    for (std::size_t i = 0, at = 14 + header; i < count && at + 3 < bytes.size(); ++i, at += 4)
-        palette.push_back({bytes[at + 2], bytes[at + 1], bytes[at]});
-    return palette;
-}
-
-// The first palette index with a pixel's colour (what POV's index was,
-// unless the palette repeats a colour).
-int palette_index(const std::vector<PaletteEntry>& palette, int red, int green, int blue) {
-    for (std::size_t i = 0; i < palette.size(); ++i)
-        if (palette[i].red == red && palette[i].green == green && palette[i].blue == blue) return int(i);
-    return 0;
 }
 
 // ---- POV-Ray's conversions ----
@@ -343,8 +162,21 @@ HeightFieldGrid read_height_field_image(const std::string& path, double gamma) {
     // Which of POV's conversions this file gets.
     std::vector<PaletteEntry> palette;
     if (format == "png" || format == "targa" || format == "bmp") {
-        const std::vector<unsigned char> bytes = read_bytes(path);
-        palette = format == "png" ? png_palette(bytes) : format == "targa" ? tga_palette(bytes) : bmp_palette(bytes);
+        palette = file_palette(format, read_bytes(path));
+    }
+    if (format == "png" && !palette.empty()) {
+        // libpng's indices: entries that share a colour stay apart.
+        std::optional<PaletteImage> image;
+        try {
+            image = read_palette_image(path);
+        } catch (const std::runtime_error& error) {
+            fail(path, error.what());
+        }
+        if (image) {
+            std::vector<std::uint16_t> values(image->indices.size());
+            for (std::size_t i = 0; i < values.size(); ++i) values[i] = std::uint16_t(image->indices[i] * 256);
+            return grid_from_values(image->width, image->height, values);
+        }
     }
     const bool grey = channels <= 2;
     Conversion conversion;

@@ -12,6 +12,7 @@
 
 #include "geometry/height_field.h"
 #include "geometry/shape_test_support.h"
+#include "materials/palette_png_test_support.h"
 
 namespace lancer {
 namespace {
@@ -332,6 +333,21 @@ TEST(HeightFieldImage, EightBitColourIsRedHighGreenLow) {
     EXPECT_NEAR(grid.heights[1] * 65536.0, 255, 1.0);
     EXPECT_NEAR(grid.heights[2] * 65536.0, 10 * 256 + 200, 1.0);
     EXPECT_NEAR(grid.heights[3] * 65536.0, 0, 1.0);
+}
+
+// A palette PNG's heights are its indices * 256, also where two entries
+// share a colour (POV keeps the file's indices).
+TEST(HeightFieldImage, PalettePngIsItsIndicesEvenWhereColoursRepeat) {
+    const std::string path = "/tmp/lancer_hf_test_palette.png";
+    // Entries 0, 2 and 3 alike; indices 2, 1 on the top row, 0, 3 below.
+    testing::write_palette_png(path, 2, 2, {9, 9, 9, 200, 0, 0, 9, 9, 9, 9, 9, 9}, {2, 1, 0, 3});
+    const HeightFieldGrid grid = read_height_field_image(path, NAN);
+    ASSERT_EQ(grid.columns, 2);
+    EXPECT_FLOAT_EQ(grid.heights[0] * 65536.0f, 0.0f);
+    EXPECT_FLOAT_EQ(grid.heights[1] * 65536.0f, 3 * 256.0f);
+    EXPECT_FLOAT_EQ(grid.heights[2] * 65536.0f, 2 * 256.0f);
+    EXPECT_FLOAT_EQ(grid.heights[3] * 65536.0f, 256.0f);
+    std::remove(path.c_str());
 }
 
 TEST(HeightFieldImage, BadFilesThrowOneLineErrors) {

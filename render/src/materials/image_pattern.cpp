@@ -13,7 +13,7 @@ namespace {
 class ImagePointPigment final : public PointPigment {
   public:
     ImagePointPigment(const sg::Pigment& pigment, const MaterialBuild& build)
-        : m_image(open_image(pigment.image, build)), m_map(pigment.image), m_warps(pigment.pattern, build.generator) {}
+        : m_image(open_image(pigment.image, build)), m_warps(pigment.pattern, build.generator) {}
 
     TextureSample at(const glm::dvec3& point, const PatternContext&) const override {
         // POV moves the point (transforms, turbulence, warp { }) before it
@@ -26,12 +26,11 @@ class ImagePointPigment final : public PointPigment {
 
   private:
     TextureSample sample(const Texel& texel) const {
-        return {texel.rgb, float(m_map.filter_all),
-                std::clamp(float(m_map.transmit_all) + (1.0f - texel.alpha), 0.0f, 1.0f)};
+        if (texel.from_palette) return {texel.rgb, texel.filter, texel.transmit};
+        return {texel.rgb, m_image.filter_all(), std::clamp(m_image.transmit_all() + (1.0f - texel.alpha), 0.0f, 1.0f)};
     }
 
     ImageSampler m_image;
-    sg::ImageMap m_map;
     CompiledPattern m_warps;  // the pigment's transforms and warps
 };
 

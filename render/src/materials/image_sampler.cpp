@@ -10,6 +10,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "lancer/scene_error.h"
+#include "materials/palette_image.h"
 
 namespace lancer {
 
@@ -86,6 +87,59 @@ double turn_in_xz(double x, double z) {
 
 }  // namespace
 
+// Each pixel's palette entry, and each entry's filter and transmit.
+struct PaletteTransparency {
+    int width = 1;
+    int height = 1;
+    std::vector<unsigned char> indices;  // row 0 at the top
+    float filter[256] = {};
+    float transmit[256] = {};
+};
+
+namespace {
+
+// POV-Ray sets `filter N, v` and `transmit N, v` (and, on a palette file,
+// `filter all`, `transmit all`) on the palette's entries in the order
+// written, starting from transmit = 1 - the entry's alpha.
+std::shared_ptr<const PaletteTransparency> read_palette_transparency(const sg::ImageMap& map) {
+    std::optional<PaletteImage> image;
+    try {
+        image = read_palette_image(map.path);
+    } catch (const std::runtime_error& error) {
+        throw SceneError(map.location, "cannot read image '" + map.path + "': " + one_line(error.what()));
+    }
+    auto keyword = [](const sg::PaletteSetting& setting) { return setting.transmit ? "transmit " : "filter "; };
+    if (!image) {
+        for (const sg::PaletteSetting& setting : map.palette_settings)
+            if (setting.index >= 0)
+                throw SceneError(setting.location,
+                                 keyword(setting) + std::to_string(setting.index) +
+                                     ", v changes an entry of a colour-mapped image's palette, and '" + map.path +
+                                     "' has no palette (filter all and transmit all apply to any image)");
+        return nullptr;
+    }
+    auto palette = std::make_shared<PaletteTransparency>();
+    palette->width = image->width;
+    palette->height = image->height;
+    const int entries = int(image->alpha_by_index.size());
+    palette->indices = std::move(image->indices);
+    for (unsigned char& index : palette->indices) index = (unsigned char)std::min(int(index), entries - 1);
+    for (int i = 0; i < entries; ++i) palette->transmit[i] = 1.0f - image->alpha_by_index[std::size_t(i)];
+    for (const sg::PaletteSetting& setting : map.palette_settings) {
+        if (setting.index >= entries)
+            throw SceneError(setting.location, keyword(setting) + std::to_string(setting.index) + ", v: '" + map.path +
+                                                   "' has " + std::to_string(entries) + " palette entries (0 to " +
+                                                   std::to_string(entries - 1) + ")");
+        float* values = setting.transmit ? palette->transmit : palette->filter;
+        const int first = setting.index < 0 ? 0 : setting.index;
+        const int last = setting.index < 0 ? entries - 1 : setting.index;
+        for (int i = first; i <= last; ++i) values[i] = float(setting.value);
+    }
+    return palette;
+}
+
+}  // namespace
+
 ImageSampler::ImageSampler(const sg::ImageMap& map, std::shared_ptr<ImageTextureSystem>& images)
     : m_map(map), m_filename(map.path) {
     if (!images) images = std::make_shared<ImageTextureSystem>();
@@ -121,6 +175,20 @@ ImageSampler::ImageSampler(const sg::ImageMap& map, std::shared_ptr<ImageTexture
     system.get_texture_info(m_filename, 0, OIIO::ustring("averagecolor"),
                             OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, m_channels), mean);
     m_average = decode(mean);
+    for (const sg::PaletteSetting& setting : m_map.palette_settings)
+        if (setting.index < 0) (setting.transmit ? m_transmit_all : m_filter_all) = float(setting.value);
+    if (!m_map.palette_settings.empty()) m_palette = read_palette_transparency(m_map);
+    if (m_palette) {
+        double filter = 0.0, transmit = 0.0;
+        for (const unsigned char index : m_palette->indices) {
+            filter += m_palette->filter[index];
+            transmit += m_palette->transmit[index];
+        }
+        const double count = double(std::max<std::size_t>(m_palette->indices.size(), 1));
+        m_average.from_palette = true;
+        m_average.filter = float(filter / count);
+        m_average.transmit = float(transmit / count);
+    }
 }
 
 std::optional<glm::dvec2> ImageSampler::project(const glm::dvec3& p) const {
@@ -167,7 +235,49 @@ Texel ImageSampler::lookup(double s, double t) const {
 Texel ImageSampler::at(const glm::dvec2& uv) const {
     // OpenImageIO's t runs down the image; v runs up.
     const double s = uv.x, t = 1.0 - uv.y;
-    if (!m_blend_decoded) return lookup(s, t);
+    Texel texel = m_blend_decoded ? blended(s, t) : lookup(s, t);
+    if (m_palette) add_palette_transparency(texel, s, t);
+    return texel;
+}
+
+// The entries' filter and transmit, at the texels the colour came from
+// and blended with the same weights.
+void ImageSampler::add_palette_transparency(Texel& texel, double s, double t) const {
+    const PaletteTransparency& palette = *m_palette;
+    auto entry = [&](double x, double y) {
+        // A `once` image takes its edge texels beyond it; others repeat.
+        const int columns = palette.width, rows = palette.height;
+        long long column = (long long)std::floor(x), row = (long long)std::floor(y);
+        if (m_map.once) {
+            column = std::clamp<long long>(column, 0, columns - 1);
+            row = std::clamp<long long>(row, 0, rows - 1);
+        } else {
+            column = ((column % columns) + columns) % columns;
+            row = ((row % rows) + rows) % rows;
+        }
+        return palette.indices[std::size_t(row) * std::size_t(columns) + std::size_t(column)];
+    };
+    texel.from_palette = true;
+    const double x = s * palette.width, y = t * palette.height;
+    if (m_map.interpolate == 0) {
+        const unsigned char index = entry(x, y);
+        texel.filter = palette.filter[index];
+        texel.transmit = palette.transmit[index];
+        return;
+    }
+    const double left = std::floor(x - 0.5), top = std::floor(y - 0.5);
+    const float fx = float(x - 0.5 - left), fy = float(y - 0.5 - top);
+    const unsigned char a = entry(left, top), b = entry(left + 1.0, top), c = entry(left, top + 1.0),
+                        d = entry(left + 1.0, top + 1.0);
+    auto blend = [&](const float* values) {
+        return (1.0f - fy) * ((1.0f - fx) * values[a] + fx * values[b]) +
+               fy * ((1.0f - fx) * values[c] + fx * values[d]);
+    };
+    texel.filter = blend(palette.filter);
+    texel.transmit = blend(palette.transmit);
+}
+
+Texel ImageSampler::blended(double s, double t) const {
     // POV decodes the texels before it blends them: blend the four nearest
     // texels' decoded values (texel centres at (i + 0.5) / width).
     const double x = s * m_width - 0.5, y = t * m_height - 0.5;

@@ -31,12 +31,21 @@ class ImageTextureSystem {
 struct Texel {
     Color rgb{0.0f};
     float alpha = 1.0f;
+    // A colour-mapped image given `filter N, v` or `transmit N, v`: its
+    // palette entries' filter and transmit, which stand in for the alpha
+    // and for the map's `filter all` and `transmit all`.
+    bool from_palette = false;
+    float filter = 0.0f;
+    float transmit = 0.0f;
 };
+
+struct PaletteTransparency;
 
 class ImageSampler {
   public:
     // Throws lancer::SceneError at the map's location when the file cannot
-    // be read, claims too many pixels, or holds NaN texels.
+    // be read, claims too many pixels, or holds NaN texels, and at a
+    // palette setting's when the file has no palette or no such entry.
     ImageSampler(const sg::ImageMap& map, std::shared_ptr<ImageTextureSystem>& images);
 
     // Where map_type puts a point of the image's space, as (u, v) with v
@@ -50,13 +59,20 @@ class ImageSampler {
     Texel at(const glm::dvec2& uv) const;
     Texel average() const { return m_average; }
 
+    // The map's last `filter all` and `transmit all` (0 without): what an
+    // image without a palette adds to every texel.
+    float filter_all() const { return m_filter_all; }
+    float transmit_all() const { return m_transmit_all; }
+
     int width() const { return m_width; }
     int height() const { return m_height; }
     bool has_alpha() const { return m_channels == 2 || m_channels == 4; }
 
   private:
     Texel decode(const float* texel) const;
-    Texel lookup(double s, double t) const;  // OpenImageIO's (s, t), t down
+    Texel lookup(double s, double t) const;   // OpenImageIO's (s, t), t down
+    Texel blended(double s, double t) const;  // four texels decoded, then blended
+    void add_palette_transparency(Texel& texel, double s, double t) const;
 
     std::shared_ptr<ImageTextureSystem> m_images;
     sg::ImageMap m_map;
@@ -68,6 +84,10 @@ class ImageSampler {
     bool m_decode_srgb = true;
     bool m_blend_decoded = false;  // interpolated here, after decoding
     Texel m_average;
+    float m_filter_all = 0.0f;
+    float m_transmit_all = 0.0f;
+    // Only for an image_map with palette settings on a colour-mapped file.
+    std::shared_ptr<const PaletteTransparency> m_palette;
 };
 
 // A sampler sharing the build's image cache.

@@ -8,6 +8,7 @@
 #include "lancer/host/scene_compiler.h"
 #include "lancer/render_scene.h"
 #include "lancer/scene_error.h"
+#include "materials/palette_png_test_support.h"
 #include "scene_test_helpers.h"
 
 namespace lancer {
@@ -80,6 +81,91 @@ TEST(Textures, ImageMapThroughUvDecodesSrgb) {
     EXPECT_NEAR(top_right.g, 1.0f, 1e-3f);
     EXPECT_NEAR(bottom_left.b, 1.0f, 1e-3f);
     EXPECT_NEAR(bottom_right.r, 0.5029f, 2e-3f);  // sRGB 188 decoded to linear
+    fs::remove_all(dir);
+}
+
+// A 2x2 palette PNG whose entries 0 and 2 are the same red: indices 2, 1
+// on the top row, 0, 3 on the bottom.
+std::string write_palette_png(const fs::path& dir) {
+    const std::string path = (dir / "palette.png").string();
+    testing::write_palette_png(path, 2, 2, {255, 0, 0, 0, 255, 0, 255, 0, 0, 0, 0, 255}, {2, 1, 0, 3});
+    return path;
+}
+
+struct PaletteSample {
+    SurfaceSample top_left, top_right, bottom_left, bottom_right, centre;
+};
+
+PaletteSample sample_palette(const std::string& path, std::vector<sg::PaletteSetting> settings, int interpolate = 0) {
+    auto m = std::make_shared<sg::Material>();
+    m->pigment.kind = sg::Pigment::Kind::Image;
+    m->pigment.image.path = path;
+    m->pigment.image.map_type = sg::MapType::UV;
+    m->pigment.image.interpolate = interpolate;
+    m->pigment.image.palette_settings = std::move(settings);
+    sg::SceneGraph graph;
+    graph.objects.push_back(plane_object({0, 1, 0}, 0.0, m));
+    auto scene = compile_scene(graph);
+    auto at = [&](float x, float z) {
+        Hit hit;
+        EXPECT_TRUE(scene->intersect(make_ray(Vec3(x, 1, z), Vec3(0, -1, 0)), hit));
+        return hit.material->sample_surface(hit);
+    };
+    return {at(0.25f, 0.75f), at(0.75f, 0.75f), at(0.25f, 0.25f), at(0.75f, 0.25f), at(0.5f, 0.5f)};
+}
+
+sg::PaletteSetting setting(bool transmit, int index, double value) {
+    sg::PaletteSetting s;
+    s.transmit = transmit;
+    s.index = index;
+    s.value = value;
+    s.location.line = 9;
+    s.location.column = 4;
+    return s;
+}
+
+// The entry a pixel uses decides its filter and transmit, even where two
+// entries share a colour; later settings override earlier ones.
+TEST(Textures, PaletteSettingsFollowTheIndexNotTheColour) {
+    const fs::path dir = fs::temp_directory_path() / ("lancer_palette_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string path = write_palette_png(dir);
+    const std::vector<sg::PaletteSetting> settings = {setting(true, 2, 1.0), setting(false, -1, 0.25),
+                                                      setting(true, 3, 0.5), setting(false, 3, 0.0)};
+    const PaletteSample nearest = sample_palette(path, settings);
+    EXPECT_NEAR(nearest.top_left.pigment.r, 1.0f, 1e-3f);  // entry 2: red, clear
+    EXPECT_FLOAT_EQ(nearest.top_left.transmit, 1.0f);
+    EXPECT_FLOAT_EQ(nearest.top_left.filter, 0.25f);
+    EXPECT_FLOAT_EQ(nearest.top_right.transmit, 0.0f);  // entry 1
+    EXPECT_FLOAT_EQ(nearest.top_right.filter, 0.25f);
+    EXPECT_NEAR(nearest.bottom_left.pigment.r, 1.0f, 1e-3f);  // entry 0: the same red, opaque
+    EXPECT_FLOAT_EQ(nearest.bottom_left.transmit, 0.0f);
+    EXPECT_FLOAT_EQ(nearest.bottom_right.transmit, 0.5f);  // entry 3
+    EXPECT_FLOAT_EQ(nearest.bottom_right.filter, 0.0f);
+    // Interpolated, the four entries blend at the image's centre.
+    const PaletteSample blended = sample_palette(path, settings, 2);
+    EXPECT_NEAR(blended.centre.transmit, (1.0f + 0.0f + 0.0f + 0.5f) / 4.0f, 1e-5f);
+    EXPECT_NEAR(blended.centre.filter, (0.25f * 3.0f) / 4.0f, 1e-5f);
+    fs::remove_all(dir);
+}
+
+TEST(Textures, PaletteSettingsNeedAPaletteAndAnEntry) {
+    const fs::path dir = fs::temp_directory_path() / ("lancer_palette_errors_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    auto expect_error = [](const std::string& path, const sg::PaletteSetting& s, const std::string& words) {
+        try {
+            sample_palette(path, {s});
+            ADD_FAILURE() << "expected a SceneError with '" << words << "'";
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.location().line, 9);
+            EXPECT_EQ(e.location().column, 4);
+            EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+        }
+    };
+    expect_error(write_palette_png(dir), setting(false, 4, 0.5), "has 4 palette entries (0 to 3)");
+    expect_error(write_test_png(dir), setting(true, 1, 0.5), "has no palette");
+    // `transmit all` needs no palette.
+    EXPECT_FLOAT_EQ(sample_palette(write_test_png(dir), {setting(true, -1, 0.5)}).top_left.transmit, 0.5f);
     fs::remove_all(dir);
 }
 

@@ -69,9 +69,8 @@ inline Color transmittance_to(const RenderScene& scene, const Hit& from, const V
         if (filters) {
             const Material& material = *blocker.material;
             const SurfaceSample surface = material.sample_surface(blocker);
-            const float transparency = material.transparency(surface);
-            if (!(transparency > 0.0f)) return Color(0.0f);
-            throughput *= transparency * material.transmission_tint(surface);
+            if (!(material.transparency(surface) > 0.0f)) return Color(0.0f);
+            throughput *= material.pov_transmitted(surface);
             if (lancer::is_black(throughput)) return throughput;
         }
         // The stretch just crossed ran inside this object: its media dim the

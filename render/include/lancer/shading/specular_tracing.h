@@ -64,13 +64,13 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
         const float ior = glm::max(at.material.parameters().ior, 1e-6f);
         const float eta = at.entering ? 1.0f / ior : ior;
         const bool refracts = refract(incident, at.normal, eta, split.refracted);
-        const Color tint = at.material.transmission_tint(at.surface);
+        const Color transmitted = at.material.pov_transmitted(at.surface);
         if (options.fresnel) {
             const float fresnel = refracts ? fresnel_dielectric(cos_i, eta) : 1.0f;
             split.reflection = glm::max(mirror, Color(transparency * fresnel));
-            if (refracts) split.transmission = transparency * (1.0f - fresnel) * tint;
+            if (refracts) split.transmission = (1.0f - fresnel) * transmitted;
         } else if (refracts) {
-            split.transmission = transparency * tint;
+            split.transmission = transmitted;
         } else {
             split.reflection = Color(1.0f);  // total internal reflection, as POV-Ray
         }
