@@ -47,21 +47,27 @@ sg::Vec3 rotate_degrees(const sg::Vec3& p, const sg::Vec3& degrees) {
 
 }  // namespace
 
+// POV-Ray 3.7's generator, so that a scene placing objects at random puts
+// them where POV-Ray does: a 32-bit linear congruential step (multiplier
+// 1812433253, increment 12345) whose state over 2^32 - 1 is the value, so
+// 1 itself can come out. seed(n) starts a stream at n truncated to an int
+// and taken modulo 2^32, and returns the stream's number, from 0.
 Value builtin_seed(Evaluator& ev, const std::vector<Value>& args, const SourceRange& where) {
-    double s = ev.to_float(args[0], where, "a float seed");
-    long id = static_cast<long>(ev.m_random_streams.size()) + 1;
-    ev.m_random_streams.emplace(id, std::mt19937(static_cast<unsigned>(static_cast<long long>(s))));
-    return Value::number(static_cast<double>(id));
+    const double s = ev.to_float(args[0], where, "a float seed");
+    const double truncated = std::isfinite(s) ? std::clamp(std::trunc(s), -2147483648.0, 2147483647.0) : 0.0;
+    ev.m_random_streams.push_back(std::uint32_t(std::int32_t(truncated)));
+    return Value::number(double(ev.m_random_streams.size() - 1));
 }
 
 Value builtin_rand(Evaluator& ev, const std::vector<Value>& args, const SourceRange& where) {
-    long id = static_cast<long>(ev.to_float(args[0], where, "a random stream from seed()"));
-    auto stream = ev.m_random_streams.find(id);
-    if (stream == ev.m_random_streams.end()) {
+    const double id = ev.to_float(args[0], where, "a random stream from seed()");
+    if (!(id >= 0.0 && id < double(ev.m_random_streams.size()))) {
         ev.error(where.begin, "rand() needs a stream made by seed(), e.g. #declare S = seed(42); rand(S)");
         return Value::number(0.0);
     }
-    return Value::number(std::uniform_real_distribution<double>(0.0, 1.0)(stream->second));
+    std::uint32_t& state = ev.m_random_streams[std::size_t(id)];
+    state = state * 1812433253u + 12345u;
+    return Value::number(double(state) / 4294967295.0);
 }
 
 Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>& args, const SourceRange& where) {

@@ -609,7 +609,9 @@ class Evaluator {
     double m_language_version = 3.7;  // POV-Ray's default without #version
     void settle_version_defaults();
     bool m_saw_camera = false;
-    std::map<long, std::mt19937> m_random_streams;
+    // seed()'s streams, numbered from 0 as POV-Ray numbers them: each one
+    // the 32-bit state of POV-Ray's generator (builtins.cpp).
+    std::vector<std::uint32_t> m_random_streams;
     std::vector<std::unique_ptr<Parser>> m_parsers;  // reused by nested parses, one per level
     size_t m_parser_depth = 0;
     std::string m_previous_word;             // the last word read, names the block a '{' opens
