@@ -247,6 +247,9 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %left "|"
 %left "&"
 %left "=" "!=" "<" "<=" ">" ">="
+/* rgb and its kin take the whole arithmetic expression after them, as
+ * POV-Ray's Parse_Colour does: `rgb 0.6 + 0.5 * x` is one grey. */
+%precedence COLOUR_KEYWORD
 %left "+" "-"
 %left "*" "/"
 %precedence UNARY
@@ -1554,14 +1557,14 @@ arith
   | "-" arith %prec UNARY { $$ = ev.negate($2, @2); }
   | "+" arith %prec UNARY { $$ = std::move($2); }
   | "!" arith %prec UNARY { $$ = Value::number(ev.to_float($2, @2, "an operand of '!'") == 0.0 ? 1.0 : 0.0); }
-  | "rgb" arith %prec UNARY    { $$ = ev.colour_keyword("rgb", $2, @2); }
-  | "rgbf" arith %prec UNARY   { $$ = ev.colour_keyword("rgbf", $2, @2); }
-  | "rgbt" arith %prec UNARY   { $$ = ev.colour_keyword("rgbt", $2, @2); }
-  | "rgbft" arith %prec UNARY  { $$ = ev.colour_keyword("rgbft", $2, @2); }
-  | "srgb" arith %prec UNARY   { $$ = ev.colour_keyword("srgb", $2, @2); }
-  | "srgbf" arith %prec UNARY  { $$ = ev.colour_keyword("srgbf", $2, @2); }
-  | "srgbt" arith %prec UNARY  { $$ = ev.colour_keyword("srgbt", $2, @2); }
-  | "srgbft" arith %prec UNARY { $$ = ev.colour_keyword("srgbft", $2, @2); }
+  | "rgb" arith %prec COLOUR_KEYWORD    { $$ = ev.colour_keyword("rgb", $2, @2); }
+  | "rgbf" arith %prec COLOUR_KEYWORD   { $$ = ev.colour_keyword("rgbf", $2, @2); }
+  | "rgbt" arith %prec COLOUR_KEYWORD   { $$ = ev.colour_keyword("rgbt", $2, @2); }
+  | "rgbft" arith %prec COLOUR_KEYWORD  { $$ = ev.colour_keyword("rgbft", $2, @2); }
+  | "srgb" arith %prec COLOUR_KEYWORD   { $$ = ev.colour_keyword("srgb", $2, @2); }
+  | "srgbf" arith %prec COLOUR_KEYWORD  { $$ = ev.colour_keyword("srgbf", $2, @2); }
+  | "srgbt" arith %prec COLOUR_KEYWORD  { $$ = ev.colour_keyword("srgbt", $2, @2); }
+  | "srgbft" arith %prec COLOUR_KEYWORD { $$ = ev.colour_keyword("srgbft", $2, @2); }
   ;
 
 postfix

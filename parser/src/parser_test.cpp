@@ -358,6 +358,33 @@ TEST(ParserMaterials, ColourForms) {
     expect_vec(scene.objects[4].material->pigment.color.rgb, {0.5, 0.5, 0.5});
 }
 
+// rgb takes the whole arithmetic after it, as POV-Ray's Parse_Colour does:
+// `rgb 0.6 + 0.3` is a grey of 0.9 with no filter or transmit (not rgb 0.6
+// plus 0.3 in all five channels), and a second colour keyword or a
+// channel name ends it.
+TEST(ParserMaterials, ColourKeywordTakesTheWholeSum) {
+    auto scene = parse_ok(R"(#declare X = 0.5;
+        sphere { 0, 1 pigment { color rgb 0.6 + 0.5 * X } }
+        sphere { 0, 1 pigment { rgbt <1, 0, 0, 0.2> * 0.5 + 0.25 } }
+        sphere { 0, 1 pigment { rgb 0.2 * 2 - 0.1 filter 0.3 } }
+        sphere { 0, 1 pigment { checker rgb 1 - X, rgb X + 0.25 } })");
+    const sg::Color& grey = scene.objects[0].material->pigment.color;
+    expect_vec(grey.rgb, {0.85, 0.85, 0.85});
+    EXPECT_DOUBLE_EQ(grey.filter, 0.0);
+    EXPECT_DOUBLE_EQ(grey.transmit, 0.0);
+    const sg::Color& sum = scene.objects[1].material->pigment.color;
+    expect_vec(sum.rgb, {0.75, 0.25, 0.25});
+    EXPECT_DOUBLE_EQ(sum.filter, 0.0);  // the sum has rgbt's four terms
+    EXPECT_DOUBLE_EQ(sum.transmit, 0.35);
+    const sg::Color& filtered = scene.objects[2].material->pigment.color;
+    expect_vec(filtered.rgb, {0.3, 0.3, 0.3});
+    EXPECT_DOUBLE_EQ(filtered.filter, 0.3);
+    const auto& blocks = scene.objects[3].material->pigment.block_pigments;
+    ASSERT_EQ(blocks.size(), 2u);
+    expect_vec(blocks[0]->color.rgb, {0.5, 0.5, 0.5});
+    expect_vec(blocks[1]->color.rgb, {0.75, 0.75, 0.75});
+}
+
 TEST(ParserMaterials, CheckerAndPatternTransformFollowsObject) {
     auto scene = parse_ok("plane { y, 0 pigment { checker rgb 1, rgb 0 scale 2 } translate x }");
     auto m = scene.objects[0].material;
@@ -664,6 +691,23 @@ TEST(ParserExpressions, RandIsReproducible) {
     EXPECT_NE(ca.x, ca.y);
     EXPECT_GE(ca.x, 0.0);
     EXPECT_LT(ca.x, 1.0);
+}
+
+// POV-Ray's own sequence, so objects placed at random land where POV-Ray
+// puts them. Printed by Debian's povray 3.7 with str(rand(S), 0, 12).
+TEST(ParserExpressions, RandIsPovRaysSequence) {
+    auto scene = parse_ok(
+        "#declare S1 = seed(1); #declare S2 = seed(12); #declare S3 = seed(-5.9);\n"
+        "sphere { <rand(S1), rand(S1), rand(S2)>, 1 }\n"
+        "sphere { <rand(S3), rand(S3), S2>, 1 }\n");
+    const sg::Vec3 first = std::get<sg::Sphere>(scene.objects[0].shape).center;
+    const sg::Vec3 second = std::get<sg::Sphere>(scene.objects[1].shape).center;
+    EXPECT_NEAR(first.x, 0.421992875268, 1e-12);
+    EXPECT_NEAR(first.y, 0.487121198207, 1e-12);
+    EXPECT_NEAR(first.z, 0.063882884817, 1e-12);
+    EXPECT_NEAR(second.x, 0.890052870123, 1e-12);  // seed -5.9 is -5, modulo 2^32
+    EXPECT_NEAR(second.y, 0.363776116018, 1e-12);
+    EXPECT_EQ(second.z, 1.0);  // streams are numbered from 0
 }
 
 TEST(ParserObjects, NoShadowHollowAndIgnoredKeywordsWarn) {
