@@ -107,7 +107,7 @@ bool Evaluator::read_array_indices(const ArrayData& data, const sg::SourceLocati
     return true;
 }
 
-Value Evaluator::array_element(const Value& array, const sg::SourceLocation& at) {
+Value Evaluator::array_element(const Value& array, const sg::SourceLocation& at, std::size_t* flat_index) {
     const std::shared_ptr<ArrayData> data = array.array;  // the element outlives a reassignment
     std::size_t flat = 0;
     std::vector<int> indices;
@@ -120,6 +120,7 @@ Value Evaluator::array_element(const Value& array, const sg::SourceLocation& at)
         abort_parse();
         return Value::number(0.0);
     }
+    if (flat_index) *flat_index = flat;
     return *data->elements[flat];
 }
 

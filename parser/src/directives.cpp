@@ -123,6 +123,7 @@ void Evaluator::directive_declare(const RawToken& d, bool local) {
         --m_frames.back()->position;
     }
     const std::size_t directive_depth = m_frames.size();
+    const std::size_t directive_scope = m_scopes.size() - 1;
     Value value = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
     if (m_aborted) return;
     // A value that a macro wrote (#local M = Matrix_Trans(…)) may end where
@@ -143,7 +144,9 @@ void Evaluator::directive_declare(const RawToken& d, bool local) {
     }
     // #declare B = A copies the array (a macro's argument stays A itself).
     if (value.kind == Value::Kind::Array && value.array) value.array = std::make_shared<ArrayData>(*value.array);
-    store(name, std::move(value), local, where);
+    // The ';' may close the value inside the macro (`Q;` as its last
+    // words): the name still belongs where the directive stands.
+    store(name, std::move(value), local, where, directive_scope);
     if (deprecation) m_deprecated[name] = *deprecation;
 }
 
@@ -154,8 +157,8 @@ void Evaluator::directive_undef(const RawToken& d) {
         return abort_parse();
     }
     m_macros.erase(name);
-    for (auto scope = m_scopes.rbegin(); scope != m_scopes.rend(); ++scope) {
-        if (scope->erase(name)) return;
+    for (std::size_t i = m_scopes.size(); i-- > 0;) {
+        if (m_references[i].erase(name) || m_scopes[i].erase(name)) return;
     }
 }
 
@@ -488,7 +491,7 @@ void Evaluator::expand_macro(const RawToken& name, const Macro& macro) {
     m_nested_arguments.reset();
     parse_nested(Parser::token::TOK_START_ARGS, name.location, true);
     if (m_aborted || !m_nested_arguments) return;
-    std::vector<Value> arguments = std::move(*m_nested_arguments);
+    std::vector<MacroArgument> arguments = std::move(*m_nested_arguments);
     m_nested_arguments.reset();
     if (arguments.size() != macro.parameters.size()) {
         error(name.location, "macro '" + macro.name + "' takes " + std::to_string(macro.parameters.size()) +
@@ -505,8 +508,13 @@ void Evaluator::expand_macro(const RawToken& name, const Macro& macro) {
     frame->name = macro.name;
     frame->called_from = name.location;
     m_frames.push_back(frame);
-    m_scopes.emplace_back();
-    for (size_t i = 0; i < arguments.size(); ++i) m_scopes.back()[macro.parameters[i]] = std::move(arguments[i]);
+    push_scope();
+    for (size_t i = 0; i < arguments.size(); ++i) {
+        if (arguments[i].reference)
+            m_references.back()[macro.parameters[i]] = std::move(*arguments[i].reference);
+        else
+            m_scopes.back()[macro.parameters[i]] = std::move(arguments[i].value);
+    }
     ++m_macro_depth;
 }
 

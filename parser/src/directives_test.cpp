@@ -121,6 +121,62 @@ TEST(ParserDirectives, MacrosProduceObjectsValuesAndModifiers) {
     EXPECT_DOUBLE_EQ(scene.objects[1].parent_from_object[3][1], 1.0);
 }
 
+// A macro whose value ends with its own ';' (`Q;` as its last words, as
+// language/tracevines.pov's FindTmp): the #local that called it still
+// declares its name where the directive stands, not in the macro's scope.
+TEST(ParserDirectives, LocalTakesAValueAMacroEndsWithASemicolon) {
+    auto scene = parse_ok(R"(
+        #macro Pick(A) #local Q = A * 2; #if (A.x > 0) Q; #else <0, 0, 0>; #end #end
+        #macro Twice(A) #local Q = A * 2; Q; #end
+        #macro Use(A) #local Inner = Twice(A) sphere { Inner, 1 } #end
+        #local N = Pick(<1, 2, 3>)
+        #local M = Twice(<0, 1, 0>)
+        sphere { N, 1 }
+        sphere { M, 1 }
+        Use(<3, 0, 0>)
+        #ifdef (Q) sphere { 0, 99 } #end
+        #ifdef (Inner) sphere { 0, 99 } #end)");
+    ASSERT_EQ(scene.objects.size(), 3u);  // Q and Inner stayed in their macros
+    EXPECT_EQ(std::get<sg::Sphere>(scene.objects[0].shape).center, sg::Vec3(2, 4, 6));
+    EXPECT_EQ(std::get<sg::Sphere>(scene.objects[1].shape).center, sg::Vec3(0, 2, 0));
+    EXPECT_EQ(std::get<sg::Sphere>(scene.objects[2].shape).center, sg::Vec3(6, 0, 0));
+}
+
+// POV-Ray passes an identifier (or an array element) given as a macro
+// argument by reference: the macro reads the variable itself, and its
+// #declare or #local of the parameter writes the variable. Anything else
+// (an expression, a parenthesised identifier) is passed by value. The
+// values are what Debian's povray 3.7 prints for the same text.
+TEST(ParserDirectives, IdentifierArgumentsArePassedByReference) {
+    auto scene = parse_ok(R"(
+        #macro SetLocal(P) #local P = 5; #end
+        #macro Increment(P) #declare P = P + 1; #end
+        #macro ReadAfterChange(P) #declare B = 3; sphere { 0, P } #end
+        #macro Outer() #local L = 1; SetLocal(L) sphere { 0, L } #end
+        #macro Forward(Q) SetLocal(Q) #end
+        #declare A = 1;
+        SetLocal(A)
+        sphere { 0, A }
+        Increment(A)
+        sphere { 0, A }
+        #declare B = 1;
+        ReadAfterChange(B)
+        Outer()
+        #declare Arr = array[2] {1, 2};
+        Increment(Arr[1])
+        sphere { 0, Arr[1] }
+        #declare C = 1;
+        Forward(C)
+        sphere { 0, C }
+        #declare D = 1;
+        SetLocal((D))
+        Increment(D + 0)
+        sphere { 0, D })");
+    std::vector<double> radii;
+    for (const auto& object : scene.objects) radii.push_back(std::get<sg::Sphere>(object.shape).radius);
+    EXPECT_EQ(radii, (std::vector<double>{5, 6, 3, 5, 3, 5, 1}));
+}
+
 TEST(ParserDirectives, RecursiveMacroWithinDepth) {
     auto scene = parse_ok("#macro Tree(N) #if (N > 0) sphere { <N, 0, 0>, 1 } Tree(N - 1) #end #end Tree(50)");
     EXPECT_EQ(sphere_count(scene), 50);

@@ -87,7 +87,10 @@ class Evaluator {
     // ---- token stream (token_stream.cpp)
     Symbol next_token();
     void finish_nested(Value value, const SourceRange& where, bool had_lookahead);
-    void finish_arguments(std::vector<Value> arguments);
+    void finish_arguments(std::vector<MacroArgument> arguments);
+    // A macro argument written at `where`: by reference when it is exactly
+    // the identifier (or array element) the token stream read last.
+    MacroArgument macro_argument(Value value, const SourceRange& where);
     void begin_value_barrier();
     void end_value_barrier();
 
@@ -356,7 +359,8 @@ class Evaluator {
     int array_size(const Value& size, const SourceRange& where);
     Value make_array(const std::vector<int>& sizes, const ArrayInit& init, const sg::SourceLocation& at);
     // The element named by the [i][j]… that follows in the token stream.
-    Value array_element(const Value& array, const sg::SourceLocation& at);
+    // `flat`, if given, receives the element's row-major index.
+    Value array_element(const Value& array, const sg::SourceLocation& at, std::size_t* flat_index = nullptr);
     // #declare A[i]… = value: reads the indices and the value, and stores it.
     void assign_array_element(const std::string& name, const RawToken& directive, bool local,
                               const sg::SourceLocation& where);
@@ -555,7 +559,11 @@ class Evaluator {
     bool expect_raw_punct(const char* punct, const std::string& context);
     std::string expect_raw_identifier(const std::string& context, sg::SourceLocation* where = nullptr);
     bool evaluate_condition(const RawToken& directive, const std::string& what);
-    void store(const std::string& name, Value value, bool local, const sg::SourceLocation& where);
+    // A #local goes to scope `local_scope` (an index into m_scopes; the
+    // innermost when absent): the scope where its directive stands, which
+    // a value written by a macro must not change.
+    void store(const std::string& name, Value value, bool local, const sg::SourceLocation& where,
+               std::optional<std::size_t> local_scope = std::nullopt);
     const Value* lookup(const std::string& name) const;
     // #ifdef's and defined()'s test: a declared identifier or macro, or for
     // Name[i]… an array element that has a value (the indices are read).
@@ -576,6 +584,20 @@ class Evaluator {
     std::vector<Pending> m_pending;
     std::optional<Pending> m_last_returned;
     std::vector<std::map<std::string, Value>> m_scopes;
+    // Per scope, the macro parameters that stand for a caller's variable.
+    std::vector<std::map<std::string, VariableReference>> m_references;
+    void push_scope();
+    void pop_scope();
+    // The variable a name (or a reference to one) resolves to, innermost first.
+    std::optional<VariableReference> variable_of(const std::string& name) const;
+    const Value* referenced_value(const VariableReference& reference) const;
+    void write_reference(const VariableReference& reference, Value value);
+    // The identifier token read last: where it stood and what it names.
+    struct IdentifierUse {
+        SourceRange range;
+        VariableReference variable;
+    };
+    std::optional<IdentifierUse> m_last_identifier;
     std::map<std::string, std::shared_ptr<const Macro>> m_macros;
     // Every inclusion gets its own label pointer; its include chain is kept here.
     std::map<const std::string*, std::vector<sg::SourceLocation>> m_include_chains;
@@ -588,7 +610,7 @@ class Evaluator {
     long m_tokens_read = 0;
     int m_macro_depth = 0;
     std::optional<Value> m_nested_result;
-    std::optional<std::vector<Value>> m_nested_arguments;
+    std::optional<std::vector<MacroArgument>> m_nested_arguments;
     bool m_nested_had_lookahead = false;
     std::string m_last_undeclared;
     sg::SourceLocation m_last_location;  // end of the last token read, for end-of-file errors

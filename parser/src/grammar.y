@@ -143,7 +143,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        RATIO "ratio" AA_LEVEL "aa_level" AA_THRESHOLD "aa_threshold" COLLECT "collect" DENSITY_MAP "density_map"
 
 %nterm <Value> declared_non_scalar declared_identifier array_scalar expr arith postfix primary colour colour_base declared_value string_value bare_colour
-%nterm <std::vector<Value>> arith_seq mesh2_items expr_list opt_args vector_items macro_args macro_arg_list macro_arg_list_plain macro_arg_list_object
+%nterm <std::vector<Value>> arith_seq mesh2_items expr_list opt_args vector_items
+%nterm <std::vector<MacroArgument>> macro_args macro_arg_list macro_arg_list_plain macro_arg_list_object
 %nterm <Value> macro_arg vector_item
 %nterm <std::vector<int>> array_sizes
 %nterm <ArrayInit> array_init array_item array_scalar_item
@@ -1664,15 +1665,15 @@ macro_arg_list
   ;
 
 macro_arg_list_plain
-  : macro_arg          { $$.push_back($1); }
-  | macro_arg_list "," macro_arg { $$ = std::move($1); $$.push_back($3); }
-  | macro_arg_list_object macro_arg { $$ = std::move($1); $$.push_back($2); }
+  : macro_arg          { $$.push_back(ev.macro_argument(std::move($1), @1)); }
+  | macro_arg_list "," macro_arg { $$ = std::move($1); $$.push_back(ev.macro_argument(std::move($3), @3)); }
+  | macro_arg_list_object macro_arg { $$ = std::move($1); $$.push_back(ev.macro_argument(std::move($2), @2)); }
   ;
 
 macro_arg_list_object
-  : object             { $$.push_back(ev.object_value($1)); }
-  | macro_arg_list "," object { $$ = std::move($1); $$.push_back(ev.object_value($3)); }
-  | macro_arg_list_object object { $$ = std::move($1); $$.push_back(ev.object_value($2)); }
+  : object             { $$.push_back(MacroArgument{ev.object_value($1), std::nullopt}); }
+  | macro_arg_list "," object { $$ = std::move($1); $$.push_back(MacroArgument{ev.object_value($3), std::nullopt}); }
+  | macro_arg_list_object object { $$ = std::move($1); $$.push_back(MacroArgument{ev.object_value($2), std::nullopt}); }
   ;
 
 macro_arg

@@ -110,7 +110,7 @@ bool is_reserved_word(const std::string& name) {
 }
 
 Evaluator::Evaluator(const ParseOptions& options) : m_options(options) {
-    m_scopes.emplace_back();  // the global scope
+    push_scope();  // the global scope
     // LANCER_INCLUDE_PATH and lancer's include/ are always searched last.
     for (const auto& dir : default_include_path()) {
         if (std::find(m_options.include_path.begin(), m_options.include_path.end(), dir) ==
@@ -159,7 +159,7 @@ bool Evaluator::push_file(const std::string& text, const std::string& label, con
     frame->name = label;
     frame->called_from = included_from;
     m_frames.push_back(frame);
-    m_scopes.emplace_back();
+    push_scope();
     return true;
 }
 
@@ -173,7 +173,7 @@ void Evaluator::pop_frame() {
                   (frame.is_macro ? " inside macro '" + frame.name + "'" : " before the end of the file"));
         abort_parse();
     }
-    if (frame.owns_scope && m_scopes.size() > 1) m_scopes.pop_back();
+    if (frame.owns_scope && m_scopes.size() > 1) pop_scope();
     if (frame.is_macro) --m_macro_depth;
     m_frames.pop_back();
 }
@@ -291,11 +291,15 @@ Evaluator::Symbol Evaluator::read_token() {
             if (const Value* named = lookup(raw->text); named && named->kind == Value::Kind::Array) {
                 const RawToken* next = peek_raw();
                 if (next && next->kind == RawKind::Punct && next->text == "[") {
-                    Value element = array_element(*named, raw->location);
+                    const std::shared_ptr<ArrayData> data = named->array;
+                    std::size_t flat = 0;
+                    Value element = array_element(*named, raw->location, &flat);
                     m_last_returned.reset();
                     if (m_aborted) continue;
                     m_previous_word = raw->text;
-                    return make_symbol(token_for_value(element), *raw, std::move(element));
+                    Symbol symbol = make_symbol(token_for_value(element), *raw, std::move(element));
+                    m_last_identifier = IdentifierUse{symbol.location, VariableReference{0, "", data, flat}};
+                    return symbol;
                 }
             }
             auto macro = m_macros.find(raw->text);
@@ -412,7 +416,10 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
         }
         Value copy = *value;
         copy.boolean_literal = false;
-        return make_symbol(token_for_value(copy), raw, std::move(copy));
+        Symbol symbol = make_symbol(token_for_value(copy), raw, std::move(copy));
+        if (std::optional<VariableReference> variable = variable_of(name))
+            m_last_identifier = IdentifierUse{symbol.location, std::move(*variable)};
+        return symbol;
     }
     if (unsupported_words().count(name)) {
         error(raw.location, "'" + name + "' is a POV-Ray feature that lancer does not support");
@@ -470,23 +477,70 @@ bool Evaluator::skip_ignored_block(const RawToken& keyword) {
     return true;
 }
 
+void Evaluator::push_scope() {
+    m_scopes.emplace_back();
+    m_references.emplace_back();
+}
+
+void Evaluator::pop_scope() {
+    m_scopes.pop_back();
+    m_references.pop_back();
+}
+
+std::optional<VariableReference> Evaluator::variable_of(const std::string& name) const {
+    for (std::size_t i = m_scopes.size(); i-- > 0;) {
+        if (auto reference = m_references[i].find(name); reference != m_references[i].end()) return reference->second;
+        if (m_scopes[i].count(name)) return VariableReference{i, name, nullptr, 0};
+    }
+    return std::nullopt;
+}
+
+const Value* Evaluator::referenced_value(const VariableReference& reference) const {
+    if (reference.array) {
+        if (reference.element >= reference.array->elements.size()) return nullptr;
+        const std::optional<Value>& element = reference.array->elements[reference.element];
+        return element ? &*element : nullptr;
+    }
+    if (reference.scope >= m_scopes.size()) return nullptr;
+    auto found = m_scopes[reference.scope].find(reference.name);
+    return found == m_scopes[reference.scope].end() ? nullptr : &found->second;
+}
+
+void Evaluator::write_reference(const VariableReference& reference, Value value) {
+    if (reference.array) {
+        if (reference.element < reference.array->elements.size())
+            reference.array->elements[reference.element] = std::move(value);
+        return;
+    }
+    if (reference.scope < m_scopes.size()) m_scopes[reference.scope][reference.name] = std::move(value);
+}
+
 const Value* Evaluator::lookup(const std::string& name) const {
-    for (auto scope = m_scopes.rbegin(); scope != m_scopes.rend(); ++scope) {
-        auto found = scope->find(name);
-        if (found != scope->end()) return &found->second;
+    for (std::size_t i = m_scopes.size(); i-- > 0;) {
+        if (auto reference = m_references[i].find(name); reference != m_references[i].end())
+            return referenced_value(reference->second);
+        auto found = m_scopes[i].find(name);
+        if (found != m_scopes[i].end()) return &found->second;
     }
     return nullptr;
 }
 
-void Evaluator::store(const std::string& name, Value value, bool local, const sg::SourceLocation& where) {
+void Evaluator::store(const std::string& name, Value value, bool local, const sg::SourceLocation& where,
+                      std::optional<std::size_t> local_scope) {
     m_macros.erase(name);
     if (local) {
-        m_scopes.back()[name] = std::move(value);
+        const std::size_t scope = local_scope ? std::min(*local_scope, m_scopes.size() - 1) : m_scopes.size() - 1;
+        if (auto reference = m_references[scope].find(name); reference != m_references[scope].end())
+            return write_reference(reference->second, std::move(value));
+        m_scopes[scope][name] = std::move(value);
         return;
     }
     // #declare updates the innermost existing local of that name (so a loop
-    // counter made with #local can be advanced with #declare), else the global.
+    // counter made with #local can be advanced with #declare), or the
+    // variable a macro parameter stands for; else the global.
     for (size_t i = m_scopes.size(); i-- > 1;) {
+        if (auto reference = m_references[i].find(name); reference != m_references[i].end())
+            return write_reference(reference->second, std::move(value));
         auto found = m_scopes[i].find(name);
         if (found != m_scopes[i].end()) {
             found->second = std::move(value);
@@ -533,9 +587,20 @@ void Evaluator::finish_nested(Value value, const SourceRange& where, bool had_lo
     }
 }
 
-void Evaluator::finish_arguments(std::vector<Value> arguments) {
+void Evaluator::finish_arguments(std::vector<MacroArgument> arguments) {
     m_nested_arguments = std::move(arguments);
     m_nested_result = Value::number(0.0);
+}
+
+MacroArgument Evaluator::macro_argument(Value value, const SourceRange& where) {
+    MacroArgument argument{std::move(value), std::nullopt};
+    auto same = [](const sg::SourceLocation& a, const sg::SourceLocation& b) {
+        return a.line == b.line && a.column == b.column && a.file == b.file;
+    };
+    if (m_last_identifier && same(m_last_identifier->range.begin, where.begin) &&
+        same(m_last_identifier->range.end, where.end))
+        argument.reference = m_last_identifier->variable;
+    return argument;
 }
 
 void Evaluator::begin_value_barrier() {

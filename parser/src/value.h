@@ -156,6 +156,24 @@ struct ArrayData {
     std::vector<std::optional<Value>> elements;
 };
 
+// A variable a macro parameter stands for: POV-Ray passes an identifier
+// (or an array element) given as a macro argument by reference, so the
+// macro reads the variable and its #declare or #local of the parameter
+// writes it.
+struct VariableReference {
+    std::size_t scope = 0;  // a named variable: the scope holding it
+    std::string name;
+    std::shared_ptr<ArrayData> array;  // or an array's element
+    std::size_t element = 0;
+};
+
+// A macro argument: its value, and the variable it names if it is one
+// identifier alone.
+struct MacroArgument {
+    Value value;
+    std::optional<VariableReference> reference;
+};
+
 // An array initializer as written: a value, or a braced list of them.
 struct ArrayInit {
     std::optional<Value> value;
