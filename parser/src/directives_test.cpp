@@ -177,6 +177,28 @@ TEST(ParserDirectives, IdentifierArgumentsArePassedByReference) {
     EXPECT_EQ(radii, (std::vector<double>{5, 6, 3, 5, 3, 5, 1}));
 }
 
+// A macro takes whatever a #declare can hold: an interior, a media, a
+// spline written in the call (advanced/mediasky.pov passes interior { }).
+TEST(ParserDirectives, MacroArgumentsMayBeBlocks) {
+    auto scene = parse_ok(R"(
+        #declare M = media { emission 0.1 }
+        #macro Shell(I) sphere { 0, 1 hollow interior { I } } #end
+        #macro WithMedia(Md) sphere { 0, 1 hollow interior { media { Md } } } #end
+        #macro At(Sp) sphere { Sp(0.5), 1 } #end
+        Shell(interior { ior 1.5 media { emission 0.2 } })
+        WithMedia(M)
+        WithMedia(media { emission 0.3 })
+        At(spline { linear_spline 0, <0, 0, 0> 1, <2, 4, 6> }))");
+    ASSERT_EQ(scene.objects.size(), 4u);
+    const sg::Interior& shell = scene.objects[0].material->interior;
+    EXPECT_DOUBLE_EQ(shell.ior, 1.5);
+    ASSERT_EQ(shell.media.size(), 1u);
+    EXPECT_DOUBLE_EQ(shell.media[0].emission.x, 0.2);
+    EXPECT_DOUBLE_EQ(scene.objects[1].material->interior.media.at(0).emission.x, 0.1);
+    EXPECT_DOUBLE_EQ(scene.objects[2].material->interior.media.at(0).emission.x, 0.3);
+    EXPECT_EQ(std::get<sg::Sphere>(scene.objects[3].shape).center, sg::Vec3(1, 2, 3));
+}
+
 TEST(ParserDirectives, RecursiveMacroWithinDepth) {
     auto scene = parse_ok("#macro Tree(N) #if (N > 0) sphere { <N, 0, 0>, 1 } Tree(N - 1) #end #end Tree(50)");
     EXPECT_EQ(sphere_count(scene), 50);

@@ -1706,6 +1706,23 @@ macro_arg
   | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
   | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
   | normal_map         { $$.kind = Value::Kind::NormalMap; $$.normal_map = $1; }
+  /* What a #declare may hold, a macro may be given (advanced/mediasky.pov:
+   * `SkyShell(1000, 1300, interior { media { … } })`). */
+  | interior           { $$.kind = Value::Kind::Interior; $$.interior = $1; }
+  | media              { $$.kind = Value::Kind::Media; $$.media = $1; }
+  | "density" "{" pigment_edits "}" { $$.kind = Value::Kind::Pigment; $$.pigment = ev.build_density($3, LOC(@1)); }
+  | material           { $$.kind = Value::Kind::Texture; $$.texture = $1; }
+  | sky_sphere         { $$.kind = Value::Kind::SkySphere; $$.sky_sphere = $1; }
+  | fog                { $$.kind = Value::Kind::Fog; $$.fog = $1; }
+  | rainbow            { $$.kind = Value::Kind::Rainbow; $$.rainbow = $1; }
+  | camera             { $$.kind = Value::Kind::Camera; $$.camera = std::make_shared<CameraSpec>($1); }
+  | "spline" "{" spline_kinds arith_seq opt_comma "}" { $$ = ev.make_spline({}, $3, $4, LOC(@1)); }
+  | "spline" "{" SPLINE_ID spline_kinds "}" { $$ = ev.make_spline($3.value, $4, {}, LOC(@1)); }
+  | "spline" "{" SPLINE_ID spline_kinds arith_seq opt_comma "}" { $$ = ev.make_spline($3.value, $4, $5, LOC(@1)); }
+  | MEDIA_ID           { $$ = std::move($1.value); }
+  | SKY_SPHERE_ID      { $$ = std::move($1.value); }
+  | FOG_ID             { $$ = std::move($1.value); }
+  | RAINBOW_ID         { $$ = std::move($1.value); }
   ;
 
 /* ------------------------------------------------------------------ lights */
