@@ -382,6 +382,8 @@ class Evaluator {
     Value pattern_function(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);
     Value pigment_function(const std::shared_ptr<sg::Pigment>& pigment, const sg::SourceLocation& at);
     Value transform_function(const sg::Mat4& transform, const sg::SourceLocation& at);
+    // function { spline { … } }: the spline called with the first argument.
+    Value spline_function(const Value& spline, const sg::SourceLocation& at);
     PatternEdit function_pattern(const Value& function, const sg::SourceLocation& at);
     // object { O [list] }: inside O (1) or outside (0), a block pattern of two.
     PatternEdit object_pattern(const std::shared_ptr<ShapeValue>& shape, const sg::SourceLocation& at);

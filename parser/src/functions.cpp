@@ -371,8 +371,12 @@ class FunctionCompiler {
         if (!m_failed && is_punct(".")) {
             fetch();
             channel = channel_of(m_token.text);
-            if (channel < 0 || (!callee->pigment && !callee->transform) || (callee->transform && channel > 2)) {
-                fail("'." + m_token.text + "' needs a pigment function (or .x, .y, .z of a transform function)");
+            const bool fits =
+                callee->pigment || (callee->transform && channel <= 2) || (callee->spline && channel <= 4);
+            if (channel < 0 || !fits) {
+                fail("'." + m_token.text +
+                     "' needs a pigment function (or .x, .y, .z of a transform function, .x to .t of a spline "
+                     "function)");
                 return;
             }
             fetch();
@@ -448,9 +452,11 @@ std::optional<Evaluator::Symbol> Evaluator::read_function(const RawToken& keywor
     }
     const RawToken* first = peek_raw();
     if (first && first->kind == RawKind::Identifier &&
-        (first->text == "pattern" || first->text == "pigment" || first->text == "transform") && default_parameters) {
-        // The grammar reads function { pattern { … } }, { pigment { … } }
-        // and { transform { … } }.
+        (first->text == "pattern" || first->text == "pigment" || first->text == "transform" ||
+         first->text == "spline") &&
+        default_parameters) {
+        // The grammar reads function { pattern { … } }, { pigment { … } },
+        // { transform { … } } and { spline { … } }.
         m_block_names.push_back("function");
         ++m_nesting;
         Value sized;
@@ -491,6 +497,13 @@ Value Evaluator::call_function(const Value& function, const std::vector<Value>& 
                 c[k] = sg::evaluate_function(f, numbers.data(), int(numbers.size()), nullptr, k);
             return Value::vector({c[0], c[1], c[2]});
         }
+        if (f.spline) {
+            Value result;
+            result.kind = Value::Kind::Vector;
+            result.size = f.spline_terms;
+            result.v = f.spline(numbers.empty() ? 0.0 : numbers[0]);
+            return result;
+        }
         return Value::number(sg::evaluate_function(f, numbers.data(), int(numbers.size()), m_options.function_natives));
     } catch (const sg::FunctionError& e) {
         error(where.begin, e.what());
@@ -513,6 +526,20 @@ Value Evaluator::pigment_function(const std::shared_ptr<sg::Pigment>& pigment, c
     auto f = std::make_shared<sg::Function>();
     f->parameters = {"x", "y", "z"};
     f->pigment = pigment;
+    return function_value(f, at);
+}
+
+Value Evaluator::spline_function(const Value& spline, const sg::SourceLocation& at) {
+    auto f = std::make_shared<sg::Function>();
+    f->parameters = {"x", "y", "z"};
+    if (spline.kind == Value::Kind::Spline && spline.spline && !spline.spline->entries.empty()) {
+        std::shared_ptr<const SplineData> data = spline.spline;
+        f->spline = [data](double t) { return spline_at(*data, data->kind, t); };
+        f->spline_terms = data->terms;
+    } else {
+        f->spline = [](double) { return std::array<double, 5>{}; };
+        f->spline_terms = 2;
+    }
     return function_value(f, at);
 }
 

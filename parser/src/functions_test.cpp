@@ -89,6 +89,29 @@ TEST(ParserFunctions, MacrosPassAndBuildFunctions) {
     EXPECT_DOUBLE_EQ(declared("#macro Sq(A) (A * A) #end\n#declare R = 1 + Sq(3);", "R"), 10.0);
 }
 
+// function { spline { } } (language/splinefunction.pov): the spline at the
+// first argument, a vector in the scene language and its .x to .t inside
+// functions.
+TEST(ParserFunctions, SplinesAsFunctions) {
+    const std::string spline =
+        "#declare S = function { spline { linear_spline 0, <0, 0, 0> 1, <2, 4, 6> } }\n"
+        "#declare V = S(0.5);\n";
+    EXPECT_DOUBLE_EQ(declared(spline + "#declare R = V.y;", "R"), 2.0);
+    EXPECT_DOUBLE_EQ(declared(spline + "#declare R = S(0.25).z;", "R"), 1.5);
+    EXPECT_DOUBLE_EQ(declared(spline + "#declare G = function { S(x).z * 2 + S(y).x }\n#declare R = G(0.5, 1);", "R"),
+                     6.0 + 2.0);
+    // A declared spline: past its last time it holds its end value; made
+    // a cubic_spline, two entries give 2 there (POV-Ray prints the same).
+    const std::string declared_spline = "#declare P = spline { 0, 1 1, 3 }\n";
+    EXPECT_DOUBLE_EQ(declared(declared_spline + "#declare S = function { spline { P } }\n#declare R = S(2).x;", "R"),
+                     3.0);
+    EXPECT_DOUBLE_EQ(
+        declared(declared_spline + "#declare S = function { spline { P cubic_spline } }\n#declare R = S(2).x;", "R"),
+        2.0);
+    EXPECT_NE(first_error(spline + "#declare G = function { S(x).gray }").message.find("of a spline function"),
+              std::string::npos);
+}
+
 // function { transform { } } moves a point: transforms.inc's vtransform
 // and vinv_transform, with the values POV-Ray 3.7 prints for them.
 TEST(ParserFunctions, TransformsAsFunctions) {

@@ -145,7 +145,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <Value> declared_non_scalar declared_identifier array_scalar expr arith postfix primary colour colour_base declared_value string_value bare_colour
 %nterm <std::vector<Value>> arith_seq mesh2_items expr_list opt_args vector_items
 %nterm <std::vector<MacroArgument>> macro_args macro_arg_list macro_arg_list_plain macro_arg_list_object
-%nterm <Value> macro_arg vector_item
+%nterm <Value> macro_arg vector_item spline_literal
 %nterm <std::vector<int>> array_sizes
 %nterm <ArrayInit> array_init array_item array_scalar_item
 %nterm <std::vector<ArrayInit>> array_items
@@ -372,13 +372,18 @@ declared_non_scalar
   | FUNCTION_OPEN "pattern" "{" pigment_edits "}" "}" { $$ = ev.pattern_function($4, LOC(@1)); }
   | FUNCTION_OPEN pigment "}" { $$ = ev.pigment_function($2, LOC(@1)); }
   | FUNCTION_OPEN transform_block "}" { $$ = ev.transform_function($2, LOC(@1)); }
-  | "spline" "{" spline_kinds arith_seq opt_comma "}" { $$ = ev.make_spline({}, $3, $4, LOC(@1)); }
-  | "spline" "{" SPLINE_ID spline_kinds "}" { $$ = ev.make_spline($3.value, $4, {}, LOC(@1)); }
-  | "spline" "{" SPLINE_ID spline_kinds arith_seq opt_comma "}" { $$ = ev.make_spline($3.value, $4, $5, LOC(@1)); }
+  | FUNCTION_OPEN spline_literal "}" { $$ = ev.spline_function($2, LOC(@1)); }
+  | spline_literal     { $$ = std::move($1); }
   | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
   | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
   | normal_map         { $$.kind = Value::Kind::NormalMap; $$.normal_map = $1; }
   | declared_identifier { $$ = std::move($1); }
+  ;
+
+spline_literal
+  : "spline" "{" spline_kinds arith_seq opt_comma "}" { $$ = ev.make_spline({}, $3, $4, LOC(@1)); }
+  | "spline" "{" SPLINE_ID spline_kinds "}" { $$ = ev.make_spline($3.value, $4, {}, LOC(@1)); }
+  | "spline" "{" SPLINE_ID spline_kinds arith_seq opt_comma "}" { $$ = ev.make_spline($3.value, $4, $5, LOC(@1)); }
   ;
 
 /* A declared non-scalar, one token: in an array it needs no comma. */
@@ -1702,6 +1707,7 @@ macro_arg
   | FUNCTION_OPEN "pattern" "{" pigment_edits "}" "}" { $$ = ev.pattern_function($4, LOC(@1)); }
   | FUNCTION_OPEN pigment "}" { $$ = ev.pigment_function($2, LOC(@1)); }
   | FUNCTION_OPEN transform_block "}" { $$ = ev.transform_function($2, LOC(@1)); }
+  | FUNCTION_OPEN spline_literal "}" { $$ = ev.spline_function($2, LOC(@1)); }
   | transform_block    { $$.kind = Value::Kind::Transform; $$.transform = $1; }
   | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
   | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
@@ -1716,9 +1722,7 @@ macro_arg
   | fog                { $$.kind = Value::Kind::Fog; $$.fog = $1; }
   | rainbow            { $$.kind = Value::Kind::Rainbow; $$.rainbow = $1; }
   | camera             { $$.kind = Value::Kind::Camera; $$.camera = std::make_shared<CameraSpec>($1); }
-  | "spline" "{" spline_kinds arith_seq opt_comma "}" { $$ = ev.make_spline({}, $3, $4, LOC(@1)); }
-  | "spline" "{" SPLINE_ID spline_kinds "}" { $$ = ev.make_spline($3.value, $4, {}, LOC(@1)); }
-  | "spline" "{" SPLINE_ID spline_kinds arith_seq opt_comma "}" { $$ = ev.make_spline($3.value, $4, $5, LOC(@1)); }
+  | spline_literal     { $$ = std::move($1); }
   | MEDIA_ID           { $$ = std::move($1.value); }
   | SKY_SPHERE_ID      { $$ = std::move($1.value); }
   | FOG_ID             { $$ = std::move($1.value); }

@@ -67,6 +67,8 @@ double natural(const std::vector<Entry>& e, const std::vector<double>& c, std::s
     return e[i].v[k] + d * (slope + d * (c[i] / 2.0 + d * (c[i + 1] - c[i]) / (6.0 * h)));
 }
 
+}  // namespace
+
 std::array<double, 5> spline_at(const SplineData& s, SplineData::Kind kind, double t) {
     const std::vector<Entry>& e = s.entries;
     const std::size_t last = e.size() - 1;
@@ -102,8 +104,6 @@ std::array<double, 5> spline_at(const SplineData& s, SplineData::Kind kind, doub
     }
     return v;
 }
-
-}  // namespace
 
 Value Evaluator::make_spline(const Value& base, const std::vector<int>& kinds, const std::vector<Value>& entries,
                              const sg::SourceLocation& at) {

@@ -78,6 +78,8 @@ struct SplineData {
     std::vector<Entry> entries;  // sorted by t, no two alike
     int terms = 2;               // components a call returns: the widest entry, at least 2
 };
+// The spline's value at t, evaluated as `kind` (splines.cpp).
+std::array<double, 5> spline_at(const SplineData& spline, SplineData::Kind kind, double t);
 
 struct Value {
     enum class Kind {

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -107,6 +108,11 @@ struct Function {
     // function { transform { … } }: the point moved by the transform, a
     // vector (.x .y .z; POV's vtransform in transforms.inc).
     std::shared_ptr<const glm::dmat4> transform;
+    // function { spline { … } }: the spline's value at the first argument,
+    // up to 5 components (.x .y .z .t and the fifth), `spline_terms` of them
+    // written. The parser keeps how splines are evaluated to itself.
+    std::function<std::array<double, 5>(double)> spline;
+    int spline_terms = 0;
     int stack_size = 0;
     std::string name;  // the #declare'd name, for messages
 };

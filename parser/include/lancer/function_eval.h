@@ -75,6 +75,7 @@ inline double evaluate_function(const Function& f, const double* arguments, int 
         const glm::dvec4 moved = *f.transform * glm::dvec4(argument(0), argument(1), argument(2), 1.0);
         return moved[std::clamp(channel, 0, 2)];
     }
+    if (f.spline) return f.spline(argument(0))[std::size_t(std::clamp(channel, 0, 4))];
     if (f.pigment) {
         if (!natives) throw FunctionError("a pigment function needs the renderer");
         const std::array<double, 5> c = natives->pigment(*f.pigment, glm::dvec3(argument(0), argument(1), argument(2)));
