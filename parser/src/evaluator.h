@@ -170,6 +170,10 @@ class Evaluator {
                         bool open, const sg::SourceLocation& at);
     ShapePtr make_lathe(const Edits<sg::Prism>& options, const Value& count, const SourceRange& wc,
                         const std::vector<Value>& points, const SourceRange& wp, const sg::SourceLocation& at);
+    // text { internal N … }: POV-Ray's built-in fonts, which it also ships
+    // as files in its include folder: 1 timrom, 2 cyrvetic, 3 crystal,
+    // any other number povlogo.
+    Value internal_font(const Value& number, const SourceRange& where);
     ShapePtr make_text(const Value& font, const SourceRange& wf, const Value& string, const SourceRange& ws,
                        const Value& thickness, const SourceRange& wt, const Value& offset, const SourceRange& wo,
                        const sg::SourceLocation& at);

@@ -104,7 +104,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        NOISE_GENERATOR "noise_generator" MAX_INTERSECTIONS "max_intersections"
        CONE "cone" TORUS "torus" DISC "disc" QUADRIC "quadric"
        POLYGON "polygon" POLY "poly" CUBIC "cubic" QUARTIC "quartic" SUPERELLIPSOID "superellipsoid"
-       TEXT "text" TTF "ttf" SOR "sor" LATHE "lathe" PRISM "prism" LINEAR_SWEEP "linear_sweep" CONIC_SWEEP "conic_sweep" LINEAR_SPLINE "linear_spline"
+       TEXT "text" TTF "ttf" INTERNAL "internal" SOR "sor" LATHE "lathe" PRISM "prism" LINEAR_SWEEP "linear_sweep" CONIC_SWEEP "conic_sweep" LINEAR_SPLINE "linear_spline"
        QUADRATIC_SPLINE "quadratic_spline" CUBIC_SPLINE "cubic_spline" BEZIER_SPLINE "bezier_spline"
        BLOB "blob" THRESHOLD "threshold" COMPONENT "component" STRENGTH "strength" HIERARCHY "hierarchy" OPEN "open" STURM "sturm"
        CLIPPED_BY "clipped_by" BOUNDED_BY "bounded_by"
@@ -440,6 +440,8 @@ object
       { $$ = ev.make_prism($3, {$4, $6, $8}, {@4, @6, @8}, $10, @10, $12, LOC(@1)); ev.apply($$, $13); }
   | "text" "{" "ttf" arith opt_comma arith opt_comma arith opt_comma arith object_mods "}"
       { $$ = ev.make_text($4, @4, $6, @6, $8, @8, $10, @10, LOC(@1)); ev.apply($$, $11); }
+  | "text" "{" "internal" arith opt_comma arith opt_comma arith opt_comma arith object_mods "}"
+      { $$ = ev.make_text(ev.internal_font($4, @4), @4, $6, @6, $8, @8, $10, @10, LOC(@1)); ev.apply($$, $11); }
   | "sor" "{" arith opt_comma arith_seq opt_comma opt_open object_mods "}"
       { $$ = ev.make_sor($3, @3, $5, @5, $7, LOC(@1)); ev.apply($$, $8); }
   | "lathe" "{" prism_options arith opt_comma arith_seq opt_comma object_mods "}"

@@ -265,6 +265,23 @@ TEST(ParserObjects, TextLaysOutGlyphOutlines) {
     EXPECT_EQ(missing.location.column, 12);
 }
 
+// text { internal N }: POV-Ray's built-in fonts by number (1 is timrom),
+// and a character a font lacks drawn as its glyph 0 (povlogo's logo), as
+// POV-Ray draws it. An empty text is an empty union, not an error.
+TEST(ParserObjects, TextInternalFontsAndMissingCharacters) {
+    auto segments = [](const std::string& text) {
+        return std::get<sg::Text>(parse_ok(text).objects[0].shape).segments.size();
+    };
+    EXPECT_EQ(segments(R"(text { internal 1 "Ho" 0.5, 0 })"), segments(R"(text { ttf "timrom.ttf" "Ho" 0.5, 0 })"));
+    const std::size_t logo = segments(R"(text { internal 0 "P" 0.5, 0 })");
+    EXPECT_GT(logo, 0u);
+    EXPECT_EQ(segments(R"(text { internal 0 "A" 0.5, 0 })"), logo);  // povlogo has no "A": its glyph 0 is the logo
+    ParseResult empty = test::parse_snippet(R"(text { internal 1 "   " 0.5, 0 })", "t.pov");
+    ASSERT_TRUE(empty.ok()) << test::all_diagnostics(empty);
+    EXPECT_EQ(empty.scene->objects.at(0).kind, sg::Object::Kind::Union);
+    EXPECT_EQ(test::count_warnings(empty), 1);
+}
+
 // POV-Ray accepts negative colours; on a surface they take light away, so
 // lancer keeps them and says so where they are written. A negative light
 // (POV's documented trick for darkening) gets no warning.

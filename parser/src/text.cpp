@@ -104,6 +104,40 @@ struct Library {
 
 }  // namespace
 
+namespace {
+
+// A character's glyph as POV-Ray 3.7 looks it up: in the font's Unicode
+// cmap, then its Macintosh Roman one, then its Microsoft Symbol one
+// (povlogo.ttf has only the last two: its logo is the "A" of the Roman
+// one).
+FT_UInt glyph_for(FT_Face face, unsigned code) {
+    static constexpr std::pair<FT_UShort, FT_UShort> kPreference[] = {{0, 3}, {3, 1}, {1, 0}, {3, 0}};
+    for (const auto& [platform, encoding] : kPreference) {
+        for (FT_Int i = 0; i < face->num_charmaps; ++i) {
+            FT_CharMap charmap = face->charmaps[i];
+            if (charmap->platform_id != platform || charmap->encoding_id != encoding) continue;
+            if (platform == 1 && code > 255) continue;  // a Roman table holds 256 codes
+            if (FT_Set_Charmap(face, charmap) != 0) continue;
+            if (const FT_UInt glyph = FT_Get_Char_Index(face, code)) return glyph;
+        }
+    }
+    // Beyond what POV-Ray 3.7 reads: a font whose only Unicode table is a
+    // full (UCS-4) one.
+    if (FT_Select_Charmap(face, FT_ENCODING_UNICODE) == 0) return FT_Get_Char_Index(face, code);
+    return 0;
+}
+
+}  // namespace
+
+Value Evaluator::internal_font(const Value& number, const SourceRange& where) {
+    switch (to_int(number, where)) {
+    case 1: return Value::string("timrom.ttf");
+    case 2: return Value::string("cyrvetic.ttf");
+    case 3: return Value::string("crystal.ttf");
+    default: return Value::string("povlogo.ttf");
+    }
+}
+
 ShapePtr Evaluator::make_text(const Value& font, const SourceRange& wf, const Value& string, const SourceRange& ws,
                               const Value& thickness, const SourceRange& wt, const Value& offset, const SourceRange& wo,
                               const sg::SourceLocation& at) {
@@ -165,11 +199,13 @@ ShapePtr Evaluator::make_text(const Value& font, const SourceRange& wf, const Va
         return shape;
     }
     for (unsigned code : codes) {
-        const FT_UInt glyph = FT_Get_Char_Index(ft.face, code);
-        if (glyph == 0) {
-            warning(ws.begin, "the font has no glyph for character " + std::to_string(code) + "; it is skipped");
-            continue;
-        }
+        // A character the font lacks is drawn as its glyph 0, the font's
+        // "missing character" shape, as POV-Ray draws it (povlogo.ttf's is
+        // the POV-Ray logo).
+        const FT_UInt glyph = glyph_for(ft.face, code);
+        if (glyph == 0)
+            warning(ws.begin, "the font has no glyph for character " + std::to_string(code) +
+                                  "; its missing-character glyph stands in, as in POV-Ray");
         if (FT_Load_Glyph(ft.face, glyph, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) != 0 ||
             ft.face->glyph->format != FT_GLYPH_FORMAT_OUTLINE) {
             warning(ws.begin, "the font has no outline for character " + std::to_string(code) + "; it is skipped");
@@ -198,7 +234,14 @@ ShapePtr Evaluator::make_text(const Value& font, const SourceRange& wf, const Va
         previous = glyph;
         first = false;
     }
-    if (text.segments.empty()) warning(at, "text has no visible glyph (an empty string, or only spaces)");
+    if (text.segments.empty()) {
+        // POV-Ray renders such a text as nothing; so does lancer: an empty
+        // union, which any CSG or object { } may still hold.
+        warning(at, "text has no visible glyph (an empty string, only spaces, or none the font has)");
+        shape->object.kind = sg::Object::Kind::Union;
+        shape->object.shape = sg::Group{};
+        return shape;
+    }
     shape->object.shape = std::move(text);
     return shape;
 }
