@@ -235,6 +235,8 @@ class Evaluator {
     Value object_value(const ShapePtr& shape);
 
     std::function<void(ShapeValue&)> transform_edit(const sg::Mat4& transform);
+    // An object's own uv_mapping, before its texture (POV-Ray's UV_FLAG).
+    std::function<void(ShapeValue&)> object_uv_mapping(const sg::SourceLocation& at);
     std::function<void(ShapeValue&)> texture_edit(std::shared_ptr<sg::Material> texture);
     std::function<void(ShapeValue&)> material_edit(std::shared_ptr<sg::Material> material);
     std::function<void(ShapeValue&)> pigment_edit(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);

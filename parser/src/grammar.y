@@ -522,6 +522,7 @@ object_mod
   | interior           { $$ = ev.interior_edit($1); }
   | material           { $$ = ev.material_edit($1); }
   | "no_shadow"        { $$ = [](ShapeValue& s) { s.object.no_shadow = true; }; }
+  | "uv_mapping"       { $$ = ev.object_uv_mapping(LOC(@1)); }
   | "hollow" opt_bool  { bool on = $2; $$ = [on](ShapeValue& s) { set_hollow(s.object, on); }; }
   | "double_illuminate" { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "double_illuminate"); }
   | "no_image"         { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_image"); }

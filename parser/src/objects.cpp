@@ -55,8 +55,22 @@ void drop_face_materials(sg::Object& object) {
 }
 
 // Attaches a material written in the space parent_from_object maps into.
+// A texture's uv_mapping reaches its pigment, normal, image and pattern.
+void map_by_uv(sg::Material& material) {
+    material.uv_mapping = true;
+    if (material.pattern) material.pattern->uv_mapping = true;
+    material.pigment.pattern.uv_mapping = true;
+    material.pigment.image.map_type = sg::MapType::UV;
+    if (material.normal) {
+        auto normal = std::make_shared<sg::Normal>(*material.normal);
+        normal->pattern.uv_mapping = true;
+        material.normal = normal;
+    }
+}
+
 void attach_in_parent_space(ShapeValue& shape, const sg::Material& material) {
     auto in_object = std::make_shared<sg::Material>(material);
+    if (shape.uv_mapping) map_by_uv(*in_object);
     move_patterns(*in_object, shape.object.parent_from_object);
     drop_face_materials(shape.object);
     give_material(shape.object, in_object);
@@ -185,6 +199,16 @@ std::function<void(ShapeValue&)> Evaluator::transform_edit(const sg::Mat4& trans
     return [transform](ShapeValue& s) { s.object.parent_from_object = transform * s.object.parent_from_object; };
 }
 
+std::function<void(ShapeValue&)> Evaluator::object_uv_mapping(const sg::SourceLocation& at) {
+    return [this, at](ShapeValue& s) {
+        if (s.object.material && !s.object.inherits_material) {
+            error(at, "uv_mapping must come before the object's texture (POV-Ray requires it there)");
+            return;
+        }
+        s.uv_mapping = true;
+    };
+}
+
 std::function<void(ShapeValue&)> Evaluator::texture_edit(std::shared_ptr<sg::Material> texture) {
     return [this, texture](ShapeValue& s) {
         // A second texture on the same object lies on top of the first
@@ -306,16 +330,7 @@ sg::Mat4 Evaluator::inverse(const sg::Mat4& m, const SourceRange& where) {
 std::shared_ptr<sg::Material> Evaluator::build_texture(const Edits<sg::Material>& edits, const sg::SourceLocation& at) {
     auto material = std::make_shared<sg::Material>(default_texture());
     for (const auto& edit : edits) edit(*material);
-    if (material->uv_mapping) {
-        if (material->pattern) material->pattern->uv_mapping = true;
-        material->pigment.pattern.uv_mapping = true;
-        material->pigment.image.map_type = sg::MapType::UV;
-        if (material->normal) {
-            auto normal = std::make_shared<sg::Normal>(*material->normal);
-            normal->pattern.uv_mapping = true;
-            material->normal = normal;
-        }
-    }
+    if (material->uv_mapping) map_by_uv(*material);
     material->location = at;
     return material;
 }

@@ -265,6 +265,23 @@ TEST(ParserObjects, TextLaysOutGlyphOutlines) {
     EXPECT_EQ(missing.location.column, 12);
 }
 
+// An object's own uv_mapping maps the texture written after it by (u, v)
+// (tests/reference/pov/uv_mapping_object.pov renders it); after the texture
+// it is an error, as in POV-Ray.
+TEST(ParserObjects, ObjectUvMappingComesBeforeItsTexture) {
+    auto scene = parse_ok("sphere { 0, 1 uv_mapping pigment { checker } normal { bumps 0.5 } translate x }");
+    const sg::Material& material = *scene.objects.at(0).material;
+    EXPECT_TRUE(material.uv_mapping);
+    EXPECT_TRUE(material.pigment.pattern.uv_mapping);
+    ASSERT_TRUE(material.normal);
+    EXPECT_TRUE(material.normal->pattern.uv_mapping);
+    // The pattern stays on the surface: the translate does not move it.
+    EXPECT_EQ(material.pigment.pattern.pattern_from_object, sg::Mat4(1.0));
+    EXPECT_NE(
+        test::first_error("sphere { 0, 1 pigment { checker } uv_mapping }").message.find("before the object's texture"),
+        std::string::npos);
+}
+
 // text { internal N }: POV-Ray's built-in fonts by number (1 is timrom),
 // and a character a font lacks drawn as its glyph 0 (povlogo's logo), as
 // POV-Ray draws it. An empty text is an empty union, not an error.

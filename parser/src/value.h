@@ -25,6 +25,9 @@ struct ShapeValue {
     // need, kept for `clipped_by { bounded_by }`.
     std::vector<sg::Object> bounded_by;
     bool global_lights = false;  // a light_group's global_lights, while it is read
+    // The object's own `uv_mapping`: textures given after it map by the
+    // surface's (u, v), as though each said uv_mapping itself.
+    bool uv_mapping = false;
 };
 
 // A camera block's settings as written; resolved in POV's fixed order
