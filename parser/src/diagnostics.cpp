@@ -177,9 +177,8 @@ bool Evaluator::add_diagnostic(Diagnostic::Severity severity, const sg::SourceLo
         auto chain = m_include_chains.find(where.file.get());
         if (chain != m_include_chains.end()) diagnostic.include_chain = chain->second;
         auto buffer = m_buffers.find(where.file.get());
-        if (buffer != m_buffers.end() && where.line >= 1 &&
-            where.line <= static_cast<int>(buffer->second->lines.size()))
-            diagnostic.source_line = buffer->second->lines[where.line - 1];
+        if (buffer != m_buffers.end() && where.line >= 1 && where.line <= buffer->second->line_count())
+            diagnostic.source_line = std::string(buffer->second->line(where.line));
     }
     m_diagnostics.push_back(std::move(diagnostic));
     if (m_warning_count == kMaxWarnings && severity != Diagnostic::Severity::Error) {

@@ -561,7 +561,8 @@ void Evaluator::directive_include(const RawToken& d) {
     }
     std::string text;
     if (!read_file(found.string(), d.location, "include file", text)) return abort_parse();
-    if (!push_file(text, found.lexically_normal().string(), found.string(), found.parent_path().string(), d.location)) {
+    if (!push_file(std::move(text), found.lexically_normal().string(), found.string(), found.parent_path().string(),
+                   d.location)) {
         abort_parse();
     }
 }

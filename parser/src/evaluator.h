@@ -260,6 +260,12 @@ class Evaluator {
     std::function<void(sg::TriangleMesh&)> mesh2_indices(const std::string& section, const Value& count,
                                                          const SourceRange& wc, const std::vector<Value>& items,
                                                          const SourceRange& wi, const sg::SourceLocation& at);
+    // A mesh2 section of literal data only, read without the grammar
+    // (mesh2_sections.cpp): the MESH2_SECTION token after its keyword, or
+    // nothing (the grammar reads it) when the section holds anything else.
+    static bool is_mesh2_section_name(const std::string& word);
+    std::optional<Symbol> read_literal_mesh2_section(const RawToken& keyword);
+    std::function<void(sg::TriangleMesh&)> literal_mesh2_section(const Value& handle, const sg::SourceLocation& at);
     // POV's inside_vector of a mesh or mesh2: normalised; none when zero.
     std::optional<sg::Vec3> inside_vector(const Value& vector, const SourceRange& where);
     std::function<void(ShapeValue&)> mesh_inside_vector_edit(const Value& vector, const SourceRange& where);
@@ -515,9 +521,11 @@ class Evaluator {
     };
     void rewind_lookahead();
     bool take_punct(const char* punct);
-    bool push_file(const std::string& text, const std::string& label, const std::string& path,
-                   const std::string& folder, const sg::SourceLocation& included_from);
+    bool push_file(std::string text, const std::string& label, const std::string& path, const std::string& folder,
+                   const sg::SourceLocation& included_from);
     Symbol classify(const RawToken& raw);
+    // The value of a RawKind::Vector token read from a file in m_buffers.
+    Value vector_literal(const RawToken& raw) const;
     // function [(params)] { … } read from the token stream (functions.cpp):
     // a FUNCTION_LITERAL, or FUNCTION_OPEN before a pattern, pigment or transform body.
     std::optional<Symbol> read_function(const RawToken& keyword);
@@ -610,8 +618,10 @@ class Evaluator {
     // Every inclusion gets its own label pointer; its include chain is kept here.
     std::map<const std::string*, std::vector<sg::SourceLocation>> m_include_chains;
     std::map<const std::string*, std::shared_ptr<const TokenBuffer>> m_buffers;
-    int m_barrier_depth = -1;   // directives in frames at or below this depth wait
-    int m_barrier_nesting = 0;  // the bracket nesting where the declared value began
+    struct Mesh2Section;
+    std::vector<Mesh2Section> m_mesh2_sections;  // read, waiting for their grammar rule
+    int m_barrier_depth = -1;                    // directives in frames at or below this depth wait
+    int m_barrier_nesting = 0;                   // the bracket nesting where the declared value began
     Parser::symbol_kind_type m_previous_kind = Parser::symbol_kind::S_YYEMPTY;
     int m_nested_base_depth = 0;
     int m_nesting = 0;  // open ( { [ in the token stream
@@ -666,6 +676,14 @@ struct Evaluator::Control {
     double end = 0.0, step = 1.0;
     double switch_value = 0.0;  // Switch
     bool case_matched = false;  // Switch: a #case ran, later ones are skipped
+};
+
+struct Evaluator::Mesh2Section {
+    std::string name;
+    std::shared_ptr<const TokenBuffer> buffer;
+    std::vector<std::uint32_t> where;  // per entry: its Vector token in buffer
+
+    const double* entry(std::size_t e) const { return buffer->components(buffer->tokens[where[e]]); }
 };
 
 struct Evaluator::Frame {

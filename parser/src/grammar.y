@@ -56,7 +56,8 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        FUNCTION_LITERAL "function definition" FUNCTION_ID "function identifier" SPLINE_ID "spline identifier" MEDIA_ID "media identifier"
        SKY_SPHERE_ID "sky_sphere identifier" FOG_ID "fog identifier" RAINBOW_ID "rainbow identifier"
        UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" FUNCTION_OPEN "function {"
-       UNSUPPORTED "unsupported keyword"
+       UNSUPPORTED "unsupported keyword" VECTOR_LITERAL "vector"
+       MESH2_SECTION "mesh2 data"
 
 /* Keywords: the alias is the spelling; token_stream.cpp (keyword_table) builds its table from these. */
 %token SPHERE "sphere" PLANE "plane" BOX "box" TRIANGLE "triangle" SMOOTH_TRIANGLE "smooth_triangle"
@@ -775,7 +776,13 @@ mesh2_sections
   ;
 
 mesh2_section
-  : "vertex_vectors" "{" arith mesh2_items "}" { $$ = ev.mesh2_vectors("vertex_vectors", $3, @3, $4, @4, LOC(@1)); }
+  : "vertex_vectors" MESH2_SECTION { $$ = ev.literal_mesh2_section($2.value, LOC(@1)); }
+  | "normal_vectors" MESH2_SECTION { $$ = ev.literal_mesh2_section($2.value, LOC(@1)); }
+  | "uv_vectors" MESH2_SECTION     { $$ = ev.literal_mesh2_section($2.value, LOC(@1)); }
+  | "face_indices" MESH2_SECTION   { $$ = ev.literal_mesh2_section($2.value, LOC(@1)); }
+  | "normal_indices" MESH2_SECTION { $$ = ev.literal_mesh2_section($2.value, LOC(@1)); }
+  | "uv_indices" MESH2_SECTION     { $$ = ev.literal_mesh2_section($2.value, LOC(@1)); }
+  | "vertex_vectors" "{" arith mesh2_items "}" { $$ = ev.mesh2_vectors("vertex_vectors", $3, @3, $4, @4, LOC(@1)); }
   | "normal_vectors" "{" arith mesh2_items "}" { $$ = ev.mesh2_vectors("normal_vectors", $3, @3, $4, @4, LOC(@1)); }
   | "uv_vectors" "{" arith mesh2_items "}"     { $$ = ev.mesh2_vectors("uv_vectors", $3, @3, $4, @4, LOC(@1)); }
   | "face_indices" "{" arith mesh2_items "}"   { $$ = ev.mesh2_indices("face_indices", $3, @3, $4, @4, LOC(@1)); }
@@ -1600,6 +1607,7 @@ primary
   | VALUE_ID           { $$ = std::move($1.value); }
   | UNDECLARED_ID      { ev.unknown_identifier($1.text, LOC(@1), "a value"); $$ = Value::number(0.0); }
   | "(" expr ")"       { $$ = std::move($2); $$.boolean_literal = false; }
+  | VECTOR_LITERAL     { $$ = std::move($1.value); }
   | "<" vector_items ">" { $$ = ev.make_vector($2, @$); }
   | "<" vector_items "," ">" { $$ = ev.make_vector($2, @$); }  /* POV's Parse_Comma after each */
   | BUILTIN "(" opt_args ")" { $$ = ev.call_builtin($1.text, $3, @$); }

@@ -3,8 +3,10 @@
 // vector so #while and #macro can replay token ranges by index.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "lancer/parser.h"
@@ -12,16 +14,22 @@
 
 namespace lancer::parse {
 
-enum class RawKind {
+enum class RawKind : std::uint8_t {
     Number,      // number holds the value
+    Vector,      // a literal <a, b, …> of 2 to 5 signed numbers: see RawToken
     String,      // text holds the decoded string
     Identifier,  // text: keyword or user name (classified later)
     Directive,   // text: the name after '#', e.g. "declare"
     Punct,       // text: one of { } ( ) [ ] < > <= >= = != + - * / , ; . ? : & | !
 };
 
+// A literal vector such as a mesh's `<0.25, -1, 3>` is one token, not seven:
+// mesh data is most of a big scene's text, and a token costs far more than
+// its numbers. Its text is "<"; its components are TokenBuffer::vector_components
+// from index `number`, `vector_size` of them.
 struct RawToken {
     RawKind kind = RawKind::Punct;
+    std::uint32_t vector_size = 0;
     std::string text;
     double number = 0.0;
     sg::SourceLocation location;
@@ -33,12 +41,22 @@ struct TokenBuffer {
     std::string path;                          // resolved path ("" for strings)
     std::string folder;                        // where relative paths resolve
     std::vector<RawToken> tokens;
-    std::vector<std::string> lines;
+    std::vector<double> vector_components;  // of the Vector tokens
+
+    const double* components(const RawToken& vector) const {
+        return vector_components.data() + static_cast<std::size_t>(vector.number);
+    }
+    // Line `line` (1-based) of the text, without its line break; empty past the end.
+    std::string_view line(int line) const;
+    int line_count() const { return static_cast<int>(line_starts.size()); }
+
+    std::string text;                      // as scanned, for diagnostics' caret lines
+    std::vector<std::size_t> line_starts;  // offset of each line in text
 };
 
 // Scans `text` into `buffer.tokens`. Invalid UTF-8, NUL bytes, unterminated
 // strings or comments and stray characters become located errors appended
 // to `diagnostics`; returns false if any error was found.
-bool scan_text(const std::string& text, TokenBuffer& buffer, std::vector<Diagnostic>& diagnostics);
+bool scan_text(std::string text, TokenBuffer& buffer, std::vector<Diagnostic>& diagnostics);
 
 }  // namespace lancer::parse

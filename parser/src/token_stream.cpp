@@ -69,7 +69,7 @@ const std::unordered_set<std::string>& unsupported_words() {
 }
 
 bool is_valued(Kind kind) {
-    return kind >= Parser::token::TOK_NUMBER && kind <= Parser::token::TOK_UNSUPPORTED;
+    return kind >= Parser::token::TOK_NUMBER && kind <= Parser::token::TOK_MESH2_SECTION;
 }
 
 const std::unordered_set<std::string>& constant_names() {
@@ -130,7 +130,7 @@ Evaluator::Symbol Evaluator::make_symbol(Kind kind, const RawToken& raw, Value v
     return Symbol(kind, range);
 }
 
-bool Evaluator::push_file(const std::string& text, const std::string& label, const std::string& path,
+bool Evaluator::push_file(std::string text, const std::string& label, const std::string& path,
                           const std::string& folder, const sg::SourceLocation& included_from) {
     auto buffer = std::make_shared<TokenBuffer>();
     buffer->label = std::make_shared<const std::string>(label);
@@ -145,7 +145,7 @@ bool Evaluator::push_file(const std::string& text, const std::string& label, con
     }
     m_include_chains[buffer->label.get()] = chain;
     size_t first_new = m_diagnostics.size();
-    bool scanned = scan_text(text, *buffer, m_diagnostics);
+    bool scanned = scan_text(std::move(text), *buffer, m_diagnostics);
     for (size_t i = first_new; i < m_diagnostics.size(); ++i) {
         m_diagnostics[i].include_chain = chain;
         if (m_diagnostics[i].severity == Diagnostic::Severity::Error) ++m_error_count;
@@ -302,6 +302,17 @@ Evaluator::Symbol Evaluator::read_token() {
                     return symbol;
                 }
             }
+            if (is_mesh2_section_name(raw->text) && !m_frames.empty() && frame == m_frames.back().get() &&
+                index + 1 == m_frames.back()->position && !lookup(raw->text)) {
+                if (std::optional<Symbol> section = read_literal_mesh2_section(*raw)) {
+                    m_last_location = section->location.end;
+                    m_last_location.column += 1;
+                    m_pending.push_back(
+                        Pending{nullptr, std::make_shared<const Symbol>(std::move(*section)), nullptr, 0, false});
+                    m_last_returned = Pending{raw, nullptr, frame, index, false};
+                    return classify(*raw);
+                }
+            }
             auto macro = m_macros.find(raw->text);
             if (macro != m_macros.end() && !lookup(raw->text)) {
                 if (macro_waits_for_value_end()) {
@@ -318,10 +329,22 @@ Evaluator::Symbol Evaluator::read_token() {
     }
 }
 
+Value Evaluator::vector_literal(const RawToken& raw) const {
+    Value result;
+    result.kind = Value::Kind::Vector;
+    result.size = static_cast<int>(raw.vector_size);
+    const auto buffer = m_buffers.find(raw.location.file.get());
+    if (buffer == m_buffers.end() || raw.vector_size < 2 || raw.vector_size > 5) return Value::vector({0, 0, 0});
+    const double* components = buffer->second->components(raw);
+    for (std::uint32_t i = 0; i < raw.vector_size; ++i) result.v[i] = components[i];
+    return result;
+}
+
 Evaluator::Symbol Evaluator::classify(const RawToken& raw) {
     switch (raw.kind) {
     case RawKind::Number: return make_symbol(Parser::token::TOK_NUMBER, raw, Value::number(raw.number));
     case RawKind::String: return make_symbol(Parser::token::TOK_STRING, raw, Value::string(raw.text));
+    case RawKind::Vector: return make_symbol(Parser::token::TOK_VECTOR_LITERAL, raw, vector_literal(raw));
     case RawKind::Punct: {
         if (raw.text == "{") m_block_names.push_back(m_previous_word);
         if (raw.text == "}" && !m_block_names.empty()) {

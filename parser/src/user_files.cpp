@@ -102,7 +102,7 @@ void Evaluator::directive_fopen(const RawToken& d) {
         file->data.label = std::make_shared<const std::string>(file->name);
         file->data.path = file->path;
         std::vector<Diagnostic> problems;
-        if (!scan_text(text, file->data, problems)) {
+        if (!scan_text(std::move(text), file->data, problems)) {
             for (Diagnostic& problem : problems) add_diagnostic(problem.severity, problem.location, problem.message);
             return abort_parse();
         }
@@ -248,6 +248,15 @@ std::optional<Value> Evaluator::read_user_value(UserFile& file) {
     if (first.kind == RawKind::String) {
         ++file.position;
         return Value::string(first.text);
+    }
+    if (first.kind == RawKind::Vector) {
+        ++file.position;
+        const double* components = file.data.components(first);
+        Value value;
+        value.kind = first.vector_size == 5 ? Value::Kind::Color : Value::Kind::Vector;
+        value.size = static_cast<int>(first.vector_size);
+        for (std::uint32_t i = 0; i < first.vector_size; ++i) value.v[i] = components[i];
+        return value;
     }
     if (punct("<")) {
         ++file.position;
