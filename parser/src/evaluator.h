@@ -260,11 +260,9 @@ class Evaluator {
     std::function<void(sg::TriangleMesh&)> mesh2_indices(const std::string& section, const Value& count,
                                                          const SourceRange& wc, const std::vector<Value>& items,
                                                          const SourceRange& wi, const sg::SourceLocation& at);
-    // A mesh2 section of literal data only, read without the grammar
-    // (mesh2_sections.cpp): the MESH2_SECTION token after its keyword, or
-    // nothing (the grammar reads it) when the section holds anything else.
-    static bool is_mesh2_section_name(const std::string& word);
-    std::optional<Symbol> read_literal_mesh2_section(const RawToken& keyword);
+    // A mesh2 section of literal data, scanned as one token (mesh2_sections.cpp):
+    // the token's value, then the section's edit of the mesh.
+    Value mesh2_section_token(const RawToken& raw);
     std::function<void(sg::TriangleMesh&)> literal_mesh2_section(const Value& handle, const sg::SourceLocation& at);
     // POV's inside_vector of a mesh or mesh2: normalised; none when zero.
     std::optional<sg::Vec3> inside_vector(const Value& vector, const SourceRange& where);
@@ -619,7 +617,7 @@ class Evaluator {
     std::map<const std::string*, std::vector<sg::SourceLocation>> m_include_chains;
     std::map<const std::string*, std::shared_ptr<const TokenBuffer>> m_buffers;
     struct Mesh2Section;
-    std::vector<Mesh2Section> m_mesh2_sections;  // read, waiting for their grammar rule
+    std::vector<Mesh2Section> m_mesh2_sections;  // the MESH2_SECTION tokens read
     int m_barrier_depth = -1;                    // directives in frames at or below this depth wait
     int m_barrier_nesting = 0;                   // the bracket nesting where the declared value began
     Parser::symbol_kind_type m_previous_kind = Parser::symbol_kind::S_YYEMPTY;
@@ -679,11 +677,10 @@ struct Evaluator::Control {
 };
 
 struct Evaluator::Mesh2Section {
-    std::string name;
     std::shared_ptr<const TokenBuffer> buffer;
-    std::vector<std::uint32_t> where;  // per entry: its Vector token in buffer
+    const RawToken* raw = nullptr;  // the RawKind::Mesh2Section token, in buffer
 
-    const double* entry(std::size_t e) const { return buffer->components(buffer->tokens[where[e]]); }
+    const double* entry(std::size_t e, std::size_t size) const { return buffer->components(*raw) + e * size; }
 };
 
 struct Evaluator::Frame {

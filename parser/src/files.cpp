@@ -128,13 +128,31 @@ bool Evaluator::read_file(const std::string& path, const sg::SourceLocation& whe
         error(where, "cannot read " + what + " \"" + path + "\"");
         return false;
     }
-    std::ostringstream out;
-    out << in.rdbuf();
+    // Read straight into a string of the file's size (a stream copy would
+    // grow and copy it several times), then whatever follows; the limit
+    // holds also for what has no size to ask first (a pipe, a device).
+    std::string content;
+    if (!ec) {
+        // Room for the two NULs scan_text appends, so it copies nothing.
+        content.reserve(static_cast<std::size_t>(size) + 2);
+        content.resize(static_cast<std::size_t>(size));
+        in.read(content.data(), static_cast<std::streamsize>(size));
+        content.resize(static_cast<std::size_t>(in.gcount()));
+    }
+    std::vector<char> chunk(1 << 16);
+    while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0) {
+        content.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+        if (content.size() > static_cast<std::size_t>(m_options.max_file_bytes)) {
+            error(where, what + " \"" + path + "\" is too large: over " + std::to_string(m_options.max_file_bytes) +
+                             " bytes (the limit)");
+            return false;
+        }
+    }
     if (in.bad()) {
         error(where, "cannot read " + what + " \"" + path + "\"");
         return false;
     }
-    text = std::move(out).str();
+    text = std::move(content);
     return true;
 }
 

@@ -57,7 +57,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        SKY_SPHERE_ID "sky_sphere identifier" FOG_ID "fog identifier" RAINBOW_ID "rainbow identifier"
        UNDECLARED_ID "undeclared identifier" DIRECTIVE "directive" FUNCTION_OPEN "function {"
        UNSUPPORTED "unsupported keyword" VECTOR_LITERAL "vector"
-       MESH2_SECTION "mesh2 data"
+       MESH2_SECTION "mesh2 section"
 
 /* Keywords: the alias is the spelling; token_stream.cpp (keyword_table) builds its table from these. */
 %token SPHERE "sphere" PLANE "plane" BOX "box" TRIANGLE "triangle" SMOOTH_TRIANGLE "smooth_triangle"
@@ -776,12 +776,7 @@ mesh2_sections
   ;
 
 mesh2_section
-  : "vertex_vectors" MESH2_SECTION { $$ = ev.literal_mesh2_section($2.value, LOC(@1)); }
-  | "normal_vectors" MESH2_SECTION { $$ = ev.literal_mesh2_section($2.value, LOC(@1)); }
-  | "uv_vectors" MESH2_SECTION     { $$ = ev.literal_mesh2_section($2.value, LOC(@1)); }
-  | "face_indices" MESH2_SECTION   { $$ = ev.literal_mesh2_section($2.value, LOC(@1)); }
-  | "normal_indices" MESH2_SECTION { $$ = ev.literal_mesh2_section($2.value, LOC(@1)); }
-  | "uv_indices" MESH2_SECTION     { $$ = ev.literal_mesh2_section($2.value, LOC(@1)); }
+  : MESH2_SECTION                    { $$ = ev.literal_mesh2_section($1.value, LOC(@1)); }
   | "vertex_vectors" "{" arith mesh2_items "}" { $$ = ev.mesh2_vectors("vertex_vectors", $3, @3, $4, @4, LOC(@1)); }
   | "normal_vectors" "{" arith mesh2_items "}" { $$ = ev.mesh2_vectors("normal_vectors", $3, @3, $4, @4, LOC(@1)); }
   | "uv_vectors" "{" arith mesh2_items "}"     { $$ = ev.mesh2_vectors("uv_vectors", $3, @3, $4, @4, LOC(@1)); }

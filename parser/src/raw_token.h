@@ -15,8 +15,13 @@
 namespace lancer::parse {
 
 enum class RawKind : std::uint8_t {
-    Number,      // number holds the value
-    Vector,      // a literal <a, b, …> of 2 to 5 signed numbers: see RawToken
+    Number,  // number holds the value
+    Vector,  // a literal <a, b, …> of 2 to 5 signed numbers: see RawToken
+    // A mesh2 section of literal data, keyword to '}' (`vertex_vectors { 3,
+    // <…>, <…>, <…> }`): text is the keyword; its vector_size entries (<u, v>
+    // in uv_vectors, else 3 numbers) are vector_components from `number`.
+    // Only a section the grammar would read without complaint is one token.
+    Mesh2Section,
     String,      // text holds the decoded string
     Identifier,  // text: keyword or user name (classified later)
     Directive,   // text: the name after '#', e.g. "declare"

@@ -302,17 +302,6 @@ Evaluator::Symbol Evaluator::read_token() {
                     return symbol;
                 }
             }
-            if (is_mesh2_section_name(raw->text) && !m_frames.empty() && frame == m_frames.back().get() &&
-                index + 1 == m_frames.back()->position && !lookup(raw->text)) {
-                if (std::optional<Symbol> section = read_literal_mesh2_section(*raw)) {
-                    m_last_location = section->location.end;
-                    m_last_location.column += 1;
-                    m_pending.push_back(
-                        Pending{nullptr, std::make_shared<const Symbol>(std::move(*section)), nullptr, 0, false});
-                    m_last_returned = Pending{raw, nullptr, frame, index, false};
-                    return classify(*raw);
-                }
-            }
             auto macro = m_macros.find(raw->text);
             if (macro != m_macros.end() && !lookup(raw->text)) {
                 if (macro_waits_for_value_end()) {
@@ -345,6 +334,7 @@ Evaluator::Symbol Evaluator::classify(const RawToken& raw) {
     case RawKind::Number: return make_symbol(Parser::token::TOK_NUMBER, raw, Value::number(raw.number));
     case RawKind::String: return make_symbol(Parser::token::TOK_STRING, raw, Value::string(raw.text));
     case RawKind::Vector: return make_symbol(Parser::token::TOK_VECTOR_LITERAL, raw, vector_literal(raw));
+    case RawKind::Mesh2Section: return make_symbol(Parser::token::TOK_MESH2_SECTION, raw, mesh2_section_token(raw));
     case RawKind::Punct: {
         if (raw.text == "{") m_block_names.push_back(m_previous_word);
         if (raw.text == "}" && !m_block_names.empty()) {
