@@ -495,7 +495,11 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
     std::vector<tinyobj::shape_t> obj_shapes;
     std::vector<tinyobj::material_t> obj_materials;
     std::string obj_warning, obj_error;
-    std::istringstream stream(text);
+    // Read in place: a string stream would copy the text.
+    struct TextBuffer : std::streambuf {
+        explicit TextBuffer(std::string& text) { setg(text.data(), text.data(), text.data() + text.size()); }
+    } buffer(text);
+    std::istream stream(&buffer);
     // Faces as written: tinyobjloader's triangulation takes time growing with
     // the square of a face's size; lancer's takes O(n log n).
     bool loaded = tinyobj::LoadObj(&attrib, &obj_shapes, &obj_materials, &obj_warning, &obj_error, &stream, &materials,
@@ -521,6 +525,9 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
             return shape;
         }
     }
+    std::string().swap(text);  // read: its memory is the mesh's now
+    mesh->positions.reserve(attrib.vertices.size() / 3);
+    mesh->faces.reserve(face_sizes.size());
     for (size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
         mesh->positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]);
     for (size_t i = 0; i + 2 < attrib.normals.size(); i += 3)
@@ -638,10 +645,9 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
                                        " refers to a vertex that does not exist");
                 return shape;
             }
+            static const PolygonTriangulation one_triangle{PolygonTriangulation::Kind::Convex, {{0, 1, 2}}};
             PolygonTriangulation triangulation;
-            if (count == 3) {
-                triangulation.triangles.push_back({0, 1, 2});
-            } else {
+            if (count != 3) {
                 corners.clear();
                 for (size_t k = 0; k < count; ++k) corners.push_back(mesh->positions[indices[offset + k].vertex_index]);
                 triangulation = triangulate_polygon(corners);
@@ -649,7 +655,7 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
                 if (triangulation.kind == PolygonTriangulation::Kind::NoArea) note(flat, f + 1, obj_shape.name);
             }
             const int material_id = f < obj_shape.mesh.material_ids.size() ? obj_shape.mesh.material_ids[f] : -1;
-            for (const auto& triangle : triangulation.triangles) {
+            for (const auto& triangle : (count == 3 ? one_triangle : triangulation).triangles) {
                 sg::TriangleMesh::Face face;
                 for (int i = 0; i < 3; ++i) {
                     const auto& index = indices[offset + triangle[i]];
