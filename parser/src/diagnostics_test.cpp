@@ -163,6 +163,24 @@ TEST(ParserDiagnostics, FormatShowsLineAndCaret) {
     EXPECT_EQ(text, "caret.pov:2:5: error: unknown identifier 'Nope' (expected a value)\n  \t0, Nope }\n  \t   ^\n");
 }
 
+// Bytes above 127 are scanned as themselves (flex's full tables are 7-bit
+// unless told otherwise): UTF-8 in comments and strings reads, and the
+// caret line of an error after them is the line as written, from the file's
+// line table.
+TEST(ParserDiagnostics, Utf8InCommentsAndStringsAndTheirCaretLines) {
+    const auto scene = test::parse_ok(
+        "// caf\xC3\xA9 \xE2\x80\xA6\n#declare S = \"na\xC3\xAFve \xE2\x86\x92\";\n"
+        "/* \xE2\x80\xA6 */ sphere { 0, 1 }");
+    EXPECT_EQ(scene.objects.size(), 1u);
+    ParseResult result =
+        test::parse_snippet("// \xE2\x80\xA6\r\nsphere {\r\n 0, Nope } // caf\xC3\xA9\r\n", "utf8.pov");
+    ASSERT_FALSE(result.ok());
+    const Diagnostic& error = result.diagnostics.front();
+    EXPECT_EQ(error.location.line, 3);
+    EXPECT_EQ(error.location.column, 5);
+    EXPECT_EQ(error.source_line, " 0, Nope } // caf\xC3\xA9");
+}
+
 TEST(ParserDiagnostics, MissingFileIsAnErrorNotAnException) {
     ParseResult result = parse_scene_file("/nonexistent/scene.pov");
     ASSERT_FALSE(result.ok());
