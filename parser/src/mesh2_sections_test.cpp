@@ -101,5 +101,21 @@ TEST(ParserMesh2Sections, LiteralVectorsReadAsInPovRay) {
     EXPECT_EQ(centre, sg::Vec3(2.0 + 2.0 + 5.0, -4.0 + 7.0, 6.0 + 9.0));
 }
 
+// After a keyword that takes a vector or colour a literal is one token too:
+// the same object as written with expressions.
+TEST(ParserMesh2Sections, LiteralVectorsAfterKeywords) {
+    const auto literal = parse_ok(
+        "sphere { 0, 1 pigment { color rgb <0.25, -0.5, 1e-1> } scale <1, 2, 3> rotate < -90, 0, 0>"
+        " translate <+1, - -2, 3> }");
+    const auto expression = parse_ok(
+        "sphere { 0, 1 pigment { color rgb <0.25+0, -0.5, 1e-1> } scale <1+0, 2, 3> rotate < -90+0, 0, 0>"
+        " translate <+1+0, - -2, 3> }");
+    ASSERT_EQ(literal.objects.size(), 1u);
+    ASSERT_EQ(expression.objects.size(), 1u);
+    EXPECT_EQ(literal.objects[0].parent_from_object, expression.objects[0].parent_from_object);
+    EXPECT_EQ(literal.objects[0].material->pigment.color.rgb, sg::Vec3(0.25, -0.5, 0.1));
+    EXPECT_EQ(literal.objects[0].parent_from_object * glm::dvec4(0, 0, 0, 1), glm::dvec4(1, 2, 3, 1));
+}
+
 }  // namespace
 }  // namespace lancer
