@@ -73,6 +73,8 @@ TEST(ParserMesh2Sections, ErrorsAreTheGrammarsErrors) {
          " uv_vectors { 1, <0,0,0> } }",
          "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 1, <0,1,2> }\n"
          " uv_vectors { 1, <0+0,0,0> } }"},
+        {"sphere { <1,\n  1e999, 0>, 1 }", "sphere { <1+0,\n  1e999, 0>, 1 }"},
+        {"mesh2 { vertex_vectors { 1, <0,\n 1e999, 0> } }", "mesh2 { vertex_vectors { 1, <0+0,\n 1e999, 0> } }"},
     };
     for (const auto& pair : cases) {
         const Diagnostic literal = first_error(pair[0]);
