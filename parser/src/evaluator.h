@@ -421,6 +421,11 @@ class Evaluator {
     // Patterned and layered textures (patterns.cpp).
     std::shared_ptr<sg::Material> layer_texture(std::shared_ptr<sg::Material> below,
                                                 const std::shared_ptr<sg::Material>& above);
+    // POV's material_map: the image's palette index (or its red, 0-255) at
+    // a point picks the texture, counted modulo the list.
+    std::function<void(sg::Material&)> material_map_edit(const sg::ImageMap& image,
+                                                         const std::vector<std::shared_ptr<sg::Material>>& textures,
+                                                         const sg::SourceLocation& at);
     std::function<void(sg::Material&)> texture_pattern(const PatternEdit& pattern,
                                                        const std::vector<std::shared_ptr<sg::Material>>& blocks,
                                                        const sg::SourceLocation& at);

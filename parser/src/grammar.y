@@ -117,7 +117,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        HEIGHT_FIELD "height_field" WATER_LEVEL "water_level" SMOOTH "smooth" PREMULTIPLIED "premultiplied"
        GIF "gif" PGM "pgm" PPM "ppm" BMP "bmp" SYS "sys" IFF "iff" POT "pot"
        POLYNOMIAL "polynomial" XYZ "xyz" HF_GRAY_16 "hf_gray_16"
-       UV_MAPPING "uv_mapping" PIGMENT_PATTERN "pigment_pattern" FADE_COLOR "fade_color" FADE_COLOUR "fade_colour" TEXTURE_MAP "texture_map" NORMAL "normal" COLOR_MAP "color_map" COLOUR_MAP "colour_map" PIGMENT_MAP "pigment_map"
+       UV_MAPPING "uv_mapping" PIGMENT_PATTERN "pigment_pattern" FADE_COLOR "fade_color" FADE_COLOUR "fade_colour" TEXTURE_MAP "texture_map" MATERIAL_MAP "material_map" NORMAL "normal" COLOR_MAP "color_map" COLOUR_MAP "colour_map" PIGMENT_MAP "pigment_map"
        NORMAL_MAP "normal_map" SLOPE_MAP "slope_map" BUMP_SIZE "bump_size" BUMP_MAP "bump_map"
        USE_COLOR "use_color" USE_COLOUR "use_colour" USE_INDEX "use_index" AVERAGE "average"
        AGATE "agate" AOI "aoi" BOXED "boxed" BOZO "bozo" SPOTTED "spotted" BUMPS "bumps" CELLS "cells"
@@ -872,6 +872,8 @@ texture_items
   | texture_items "tiles" "{" texture_layers layer_gap "tile2" texture_layers layer_gap "}"
       { $$ = std::move($1); $$.push_back(ev.texture_pattern(ev.pattern_kind(sg::Pattern::Kind::Checker), {$7, $4}, LOC(@2))); }
   | texture_items "texture_map" "{" texture_map_entries "}" { $$ = std::move($1); $$.push_back(ev.texture_map_edit($4, LOC(@2))); }
+  | texture_items "material_map" "{" image_items texture_seq "}"
+      { $$ = std::move($1); $$.push_back(ev.material_map_edit($4, $5, LOC(@2))); }
   | texture_items transform_item { $$ = std::move($1); sg::Mat4 t = $2;
                                $$.push_back([t](sg::Material& m) { transform_material(m, t); }); }
   ;

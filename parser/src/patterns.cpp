@@ -1011,6 +1011,27 @@ std::function<void(sg::Material&)> Evaluator::texture_pattern(const PatternEdit&
     };
 }
 
+std::function<void(sg::Material&)> Evaluator::material_map_edit(
+    const sg::ImageMap& image, const std::vector<std::shared_ptr<sg::Material>>& blocks, const sg::SourceLocation& at) {
+    auto map = std::make_shared<sg::ImageMap>(image);
+    finish_image_map(*map, at);
+    refuse_foreign_image_items(*map, "material_map");
+    // The file's values pick the textures: read as stored, not decoded.
+    if (!map->gamma_given) map->srgb = false;
+    if (blocks.empty()) error(at, "material_map needs a list of textures after its image");
+    std::vector<sg::MaterialRef> textures(blocks.begin(), blocks.end());
+    for (const auto& texture : textures) warn_if_layered_entry(texture, at);
+    return [map, textures, at](sg::Material& m) {
+        m.pattern = sg::Pattern{};
+        m.pattern->kind = PatternKind::ImagePattern;
+        m.pattern->image = map;
+        m.pattern->location = at;
+        m.texture_map.clear();
+        m.block_textures = textures;
+        if (m.block_textures.empty()) m.block_textures.push_back(std::make_shared<sg::Material>());
+    };
+}
+
 std::function<void(sg::Material&)> Evaluator::average_texture(const sg::SourceLocation& at) {
     return [at](sg::Material& m) {
         m.pattern = sg::Pattern{};

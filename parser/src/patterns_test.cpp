@@ -399,6 +399,38 @@ TEST(ParserPatterns, ObjectPatternIsAListOfTwo) {
               std::string::npos);
 }
 
+// material_map: an image pattern whose values pick among the textures
+// listed after it, read as stored; what belongs to other image blocks, or
+// no texture at all, is a located error.
+TEST(ParserPatterns, MaterialMapListsTexturesAfterItsImage) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("lancer_material_map_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string image = (dir / "map.png").string();
+    std::ofstream(image) << "x";
+    auto scene = parse_ok(
+        "#declare T = texture { pigment { rgb 1 } }\n"
+        "plane { y, 0 texture { material_map { png \"" +
+        image + "\" once map_type 0 texture { pigment { rgb x } } texture { T } } scale 2 } }");
+    const sg::Material& m = material_of(scene, 0);
+    ASSERT_TRUE(m.pattern);
+    EXPECT_EQ(m.pattern->kind, sg::Pattern::Kind::ImagePattern);
+    ASSERT_TRUE(m.pattern->image);
+    EXPECT_TRUE(m.pattern->image->once);
+    EXPECT_FALSE(m.pattern->image->srgb);
+    ASSERT_EQ(m.block_textures.size(), 2u);
+    EXPECT_EQ(m.block_textures[0]->pigment.color.rgb, sg::Vec3(1, 0, 0));
+    EXPECT_EQ(m.pattern->pattern_from_object, glm::inverse(glm::scale(sg::Mat4(1.0), sg::Vec3(2.0))));
+    const Diagnostic empty = first_error("plane { y, 0 texture { material_map { png \"" + image + "\" } } }");
+    EXPECT_NE(empty.message.find("material_map needs a list of textures"), std::string::npos) << empty.message;
+    EXPECT_EQ(empty.location.column, 24);
+    const Diagnostic alpha =
+        first_error("plane { y, 0 texture { material_map { png \"" + image + "\" use_alpha texture { } } } }");
+    EXPECT_NE(alpha.message.find("use_alpha belongs in an image_pattern, not in material_map"), std::string::npos)
+        << alpha.message;
+    fs::remove_all(dir);
+}
+
 TEST(ParserPatterns, ImagePatternReadsItsImageAsStored) {
     namespace fs = std::filesystem;
     const fs::path dir = fs::temp_directory_path() / ("lancer_image_pattern_" + std::to_string(::getpid()));

@@ -107,11 +107,11 @@ class PigmentMapPigment final : public PointPigment {
 class BlockPigment final : public PointPigment {
   public:
     BlockPigment(const sg::Pigment& pigment, const MaterialBuild& build)
-        : m_pattern(compile_pattern(pigment.pattern, build)) {
+        : m_pattern(compile_block_pattern(pigment.pattern, build)) {
         for (const auto& block : pigment.block_pigments) m_blocks.push_back(make_point_pigment(*block, build));
     }
     TextureSample at(const glm::dvec3& point, const PatternContext& context) const override {
-        const int index = std::clamp(m_pattern.block_index(point), 0, int(m_blocks.size()) - 1);
+        const int index = block_in_list(m_pattern.block_index(point), m_blocks.size());
         return m_blocks[index]->at(m_pattern.pattern_point(point), context);
     }
     TextureSample average() const override {

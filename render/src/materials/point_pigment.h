@@ -38,6 +38,12 @@ CompiledPattern::ValueSource image_pattern_source(const sg::Pattern& pattern, co
 // A pattern ready to evaluate, pigment_pattern included (its pigment's
 // grey is the value).
 CompiledPattern compile_pattern(const sg::Pattern& pattern, const MaterialBuild& build);
+// A pattern whose value is a block number (material_map.cpp): a block
+// pattern's, or a material_map image's; and a block number as an index
+// into a list of `count` blocks (a material_map's may be past its end).
+CompiledPattern::BlockSource material_map_source(const sg::Pattern& pattern, const MaterialBuild& build);
+CompiledPattern compile_block_pattern(const sg::Pattern& pattern, const MaterialBuild& build);
+int block_in_list(int index, std::size_t count);
 
 // Where a hit lies for a pattern (object space, or (u, v, 0) with
 // uv_mapping), and what slope and aoi read there (world space, as POV).

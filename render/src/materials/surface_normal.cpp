@@ -56,7 +56,8 @@ std::unique_ptr<NormalNode> make_node(const sg::Normal& normal, const MaterialBu
 class PatternNormalNode final : public NormalNode {
   public:
     PatternNormalNode(const sg::Normal& normal, const MaterialBuild& build)
-        : m_pattern(compile_pattern(normal.pattern, build)),
+        : m_pattern(normal.block_normals.empty() ? compile_pattern(normal.pattern, build)
+                                                 : compile_block_pattern(normal.pattern, build)),
           m_amount(normal.bump_size),
           m_accuracy(normal.accuracy),
           m_own_normal(m_pattern.has_own_normal()) {
@@ -92,7 +93,7 @@ class PatternNormalNode final : public NormalNode {
     }
 
     glm::dvec3 perturb_by_block(const glm::dvec3& normal, const glm::dvec3& point) const {
-        const int index = std::clamp(m_pattern.block_index(point), 0, int(m_blocks.size()) - 1);
+        const int index = block_in_list(m_pattern.block_index(point), m_blocks.size());
         const glm::dvec3 inner =
             m_blocks[index]->perturb(m_pattern.normal_to_pattern_space(normal), m_pattern.pattern_point(point));
         return m_pattern.normal_from_pattern_space(inner);
