@@ -260,6 +260,9 @@ class Evaluator {
     std::function<void(sg::TriangleMesh&)> mesh2_indices(const std::string& section, const Value& count,
                                                          const SourceRange& wc, const std::vector<Value>& items,
                                                          const SourceRange& wi, const sg::SourceLocation& at);
+    static std::string mesh2_index_out_of_range(const std::string& section, long long index, const char* what,
+                                                std::size_t size);
+    static std::string mesh2_indices_not_per_face(const std::string& section, std::size_t entries, std::size_t faces);
     // A mesh2 section of literal data, scanned as one token (mesh2_sections.cpp):
     // the token's value, then the section's edit of the mesh.
     Value mesh2_section_token(const RawToken& raw);

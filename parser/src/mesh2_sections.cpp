@@ -78,9 +78,7 @@ std::function<void(sg::TriangleMesh&)> Evaluator::literal_mesh2_section(const Va
         auto in_range = [&](double index, std::size_t size, const char* what, std::size_t entry) {
             if (index < double(size)) return true;
             ev->error(entry_location(*section->buffer, *section->raw, entry),
-                      name + " index " + std::to_string(static_cast<long long>(index)) + " is out of range: " + what +
-                          " has " + std::to_string(size) + " entries" +
-                          (size ? " (valid 0.." + std::to_string(size - 1) + ")" : ""));
+                      mesh2_index_out_of_range(name, static_cast<long long>(index), what, size));
             return false;
         };
         if (name == "face_indices") {
@@ -97,8 +95,7 @@ std::function<void(sg::TriangleMesh&)> Evaluator::literal_mesh2_section(const Va
         }
         const bool normals = name == "normal_indices";
         if (count != mesh.faces.size()) {
-            ev->error(at, name + " lists " + std::to_string(count) + " entries but face_indices has " +
-                              std::to_string(mesh.faces.size()) + " (it must come after face_indices, one per face)");
+            ev->error(at, mesh2_indices_not_per_face(name, count, mesh.faces.size()));
             return;
         }
         const std::size_t size = normals ? mesh.normals.size() : mesh.uvs.size();

@@ -305,6 +305,18 @@ bool whole_int(double x, int& out) {
 
 }  // namespace
 
+// Said alike whether the grammar or the scanner read the section (mesh2_sections.cpp).
+std::string Evaluator::mesh2_index_out_of_range(const std::string& section, long long index, const char* what,
+                                                std::size_t size) {
+    return section + " index " + std::to_string(index) + " is out of range: " + what + " has " + std::to_string(size) +
+           " entries" + (size ? " (valid 0.." + std::to_string(size - 1) + ")" : "");
+}
+
+std::string Evaluator::mesh2_indices_not_per_face(const std::string& section, std::size_t entries, std::size_t faces) {
+    return section + " lists " + std::to_string(entries) + " entries but face_indices has " + std::to_string(faces) +
+           " (it must come after face_indices, one per face)";
+}
+
 std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_indices(const std::string& section, const Value& count,
                                                                 const SourceRange& wc, const std::vector<Value>& items,
                                                                 const SourceRange& wi, const sg::SourceLocation& at) {
@@ -353,9 +365,7 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_indices(const std::strin
         if (!ok) return;
         auto check = [&](int index, size_t size, const char* what, const sg::SourceLocation& where) {
             if (index >= 0 && static_cast<size_t>(index) < size) return true;
-            ev->error(where, section + " index " + std::to_string(index) + " is out of range: " + what + " has " +
-                                 std::to_string(size) + " entries" +
-                                 (size ? " (valid 0.." + std::to_string(size - 1) + ")" : ""));
+            ev->error(where, mesh2_index_out_of_range(section, index, what, size));
             return false;
         };
         if (section == "face_indices") {
@@ -375,8 +385,7 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_indices(const std::strin
         }
         bool normals = section == "normal_indices";
         if (entries.size() != mesh.faces.size()) {
-            ev->error(at, section + " lists " + std::to_string(entries.size()) + " entries but face_indices has " +
-                              std::to_string(mesh.faces.size()) + " (it must come after face_indices, one per face)");
+            ev->error(at, mesh2_indices_not_per_face(section, entries.size(), mesh.faces.size()));
             return;
         }
         for (size_t f = 0; f < entries.size(); ++f) {

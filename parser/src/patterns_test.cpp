@@ -19,6 +19,21 @@ sg::Vec3 apply(const sg::Mat4& m, const sg::Vec3& p) {
     return sg::Vec3(m * glm::dvec4(p, 1.0));
 }
 
+// A file with an image's name and no image in it, in a folder of its own
+// removed afterwards: the parser checks that a named image exists, not
+// what it holds.
+struct PlaceholderImage {
+    std::filesystem::path dir;
+    std::string path;
+    PlaceholderImage(const std::string& tag, const std::string& name)
+        : dir(std::filesystem::temp_directory_path() / ("lancer_" + tag + "_" + std::to_string(::getpid()))),
+          path((dir / name).string()) {
+        std::filesystem::create_directories(dir);
+        std::ofstream(path) << "x";
+    }
+    ~PlaceholderImage() { std::filesystem::remove_all(dir); }
+};
+
 const sg::Material& material_of(const sg::SceneGraph& scene, std::size_t i = 0) {
     static const sg::Material none;
     if (i >= scene.objects.size() || !scene.objects[i].material) {
@@ -351,11 +366,8 @@ TEST(ParserPatterns, BlockPatternNormalsOnePerBlock) {
 }
 
 TEST(ParserPatterns, BumpMapTakesItsOwnItemsInsideTheBlock) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("lancer_bump_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const std::string image = (dir / "bumps.png").string();
-    std::ofstream(image) << "x";
+    const PlaceholderImage placeholder("bump", "bumps.png");
+    const std::string& image = placeholder.path;
     auto scene = parse_ok("sphere { 0, 1 normal { bump_map { png \"" + image +
                           "\" bump_size 10 use_color interpolate 2 once } } }\n"
                           "sphere { 0, 1 normal { bump_map { png \"" +
@@ -371,7 +383,6 @@ TEST(ParserPatterns, BumpMapTakesItsOwnItemsInsideTheBlock) {
     const Diagnostic in_image_map = first_error(before + "bump_size 2 } } }");
     EXPECT_NE(in_image_map.message.find("belong in a bump_map"), std::string::npos);
     EXPECT_EQ(in_image_map.location.column, before.size() + 1);
-    fs::remove_all(dir);
 }
 
 TEST(ParserPatterns, ObjectPatternIsAListOfTwo) {
@@ -403,11 +414,8 @@ TEST(ParserPatterns, ObjectPatternIsAListOfTwo) {
 // listed after it, read as stored; what belongs to other image blocks, or
 // no texture at all, is a located error.
 TEST(ParserPatterns, MaterialMapListsTexturesAfterItsImage) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("lancer_material_map_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const std::string image = (dir / "map.png").string();
-    std::ofstream(image) << "x";
+    const PlaceholderImage placeholder("material_map", "map.png");
+    const std::string& image = placeholder.path;
     auto scene = parse_ok(
         "#declare T = texture { pigment { rgb 1 } }\n"
         "plane { y, 0 texture { material_map { png \"" +
@@ -428,15 +436,11 @@ TEST(ParserPatterns, MaterialMapListsTexturesAfterItsImage) {
         first_error("plane { y, 0 texture { material_map { png \"" + image + "\" use_alpha texture { } } } }");
     EXPECT_NE(alpha.message.find("use_alpha belongs in an image_pattern, not in material_map"), std::string::npos)
         << alpha.message;
-    fs::remove_all(dir);
 }
 
 TEST(ParserPatterns, ImagePatternReadsItsImageAsStored) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("lancer_image_pattern_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const std::string image = (dir / "mask.png").string();
-    std::ofstream(image) << "x";
+    const PlaceholderImage placeholder("image_pattern", "mask.png");
+    const std::string& image = placeholder.path;
     auto scene =
         parse_ok("plane { y, 0 pigment { image_pattern { png \"" + image +
                  "\" use_alpha once } color_map { [0 rgb 0] [1 rgb 1] } } }\n"
@@ -457,18 +461,14 @@ TEST(ParserPatterns, ImagePatternReadsItsImageAsStored) {
     EXPECT_NE(first_error("plane { y, 0 pigment { image_map { png \"" + image + "\" use_alpha } } }")
                   .message.find("use_alpha belongs in an image_pattern"),
               std::string::npos);
-    fs::remove_all(dir);
 }
 
 // POV's `filter N, v` and `transmit N, v` set one palette entry, `... all v`
 // every entry, in the order written (checked against the image when it is
 // read: tests/reference/pov/image_palette.pov, Textures.Palette*).
 TEST(ParserPatterns, ImageMapPaletteSettingsKeepTheirOrder) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("lancer_image_palette_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const std::string image = (dir / "palette.gif").string();
-    std::ofstream(image) << "x";
+    const PlaceholderImage placeholder("image_palette", "palette.gif");
+    const std::string& image = placeholder.path;
     auto scene = parse_ok("plane { y, 0 pigment { image_map { gif \"" + image +
                           "\" transmit 2, 1 filter all 0.25 transmit 3 0.5 filter 2.995, 0 } } }");
     const sg::ImageMap& map = material_of(scene, 0).pigment.image;
@@ -492,7 +492,6 @@ TEST(ParserPatterns, ImageMapPaletteSettingsKeepTheirOrder) {
     EXPECT_NE(first_error("plane { y, 0 normal { bump_map { gif \"" + image + "\" transmit 1, 0.5 } } }")
                   .message.find("filter and transmit belong in an image_map"),
               std::string::npos);
-    fs::remove_all(dir);
 }
 
 }  // namespace
