@@ -272,6 +272,14 @@ int check_arguments(const RenderArguments& arguments) {
                     "': unknown image extension (use .png, .jpg, .exr, .hdr, .tif or .tiff)");
         return kExitUsage;
     }
+    // A format other than PNG needs the image module: loaded now, so that a
+    // --time budget counts its loading before the render, not after it.
+    try {
+        prepare_image_writer(arguments.output.empty() ? std::string("image.png") : arguments.output);
+    } catch (const std::runtime_error& error) {
+        print_error(error.what());
+        return kExitBadInput;
+    }
     return check_output_format(arguments);
 }
 

@@ -1,20 +1,17 @@
-// Writing films through OpenImageIO, atomically.
+// Writing films, atomically: PNG through libpng, the other formats through
+// the image module (OpenImageIO).
 #include "lancer/host/image_io.h"
 #include "lancer/host/temporary_file.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <vector>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include "film/file_extension.h"
+#include "film/image_codecs.h"
+#include "film/png_encoder.h"
 
 namespace lancer {
 namespace {
@@ -23,8 +20,6 @@ namespace fs = std::filesystem;
 
 enum class Encoding { Srgb8, Srgb16, LinearFloat };
 
-// A unique temporary name beside the target, keeping its extension so
-// OpenImageIO picks the same format.
 }  // namespace
 
 float linear_to_srgb(float linear) {
@@ -45,6 +40,10 @@ bool is_supported_image_extension(const std::string& path) {
            ext == ".jpeg";
 }
 
+void prepare_image_writer(const std::string& path) {
+    if (lower_extension(path) != ".png") image_codecs();
+}
+
 bool image_format_has_alpha(const std::string& path) {
     const std::string ext = lower_extension(path);
     return ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff";
@@ -59,8 +58,20 @@ namespace {
 // The pixels and header a file of `path`'s format receives. Throws as
 // write_image does.
 struct EncodedImage {
-    OIIO::ImageSpec spec;
+    bool png = false;
+    ImageFileWrite header;  // its `pixels` unset: the vector below may move
     std::vector<float> pixels;
+
+    PngPixels png_pixels() const {
+        PngPixels out;
+        out.width = header.width;
+        out.height = header.height;
+        out.channels = int(header.channel_names.size());
+        out.bits = header.file_type == SampleType::UInt16 ? 16 : 8;
+        out.samples = pixels.data();
+        out.text = header.text_attributes;
+        return out;
+    }
 };
 
 EncodedImage encode_for(const Film& film, const std::string& path, const ImageWriteOptions& options) {
@@ -94,7 +105,7 @@ EncodedImage encode_for(const Film& film, const std::string& path, const ImageWr
     if (sample_channel) names.push_back("samples");
     const int channels = int(names.size());
 
-    // Pixels in float, encoded as the format wants; OIIO quantises
+    // Pixels in float, encoded as the format wants; the writer quantises
     // (rounding to nearest) when the file is 8 or 16 bit. The film is
     // premultiplied: integer formats get the colour divided by alpha.
     const bool raw = encoding == Encoding::LinearFloat || !options.gamma_correction;
@@ -119,70 +130,66 @@ EncodedImage encode_for(const Film& film, const std::string& path, const ImageWr
             if (sample_channel) out[channel++] = float(film.sample_count(x, y));
         }
 
-    OIIO::TypeDesc format = encoding == Encoding::Srgb8    ? OIIO::TypeDesc::UINT8
-                            : encoding == Encoding::Srgb16 ? OIIO::TypeDesc::UINT16
-                                                           : OIIO::TypeDesc::FLOAT;
-    OIIO::ImageSpec spec(width, height, channels, format);
-    spec.channelnames = names;
-    spec.alpha_channel = has_alpha ? 3 : -1;
-    // Straight alpha as computed here: OIIO must not divide it again.
-    if (straight) spec.attribute("oiio:UnassociatedAlpha", 1);
+    EncodedImage encoded;
+    encoded.png = png;
+    ImageFileWrite& header = encoded.header;
+    header.width = width;
+    header.height = height;
+    header.channel_names = names;
+    header.alpha_channel = has_alpha ? 3 : -1;
+    header.file_type = encoding == Encoding::Srgb8    ? SampleType::UInt8
+                       : encoding == Encoding::Srgb16 ? SampleType::UInt16
+                                                      : SampleType::Float;
+    // Straight alpha as computed here: OpenImageIO must not divide it again.
+    if (straight && !png) header.integer_attributes.emplace_back("oiio:UnassociatedAlpha", 1);
     if (jpeg) {
         const int quality = std::clamp(options.jpeg_quality, 1, 100);
-        spec.attribute("Compression", "jpeg:" + std::to_string(quality));
-        spec.attribute("CompressionQuality", quality);
+        header.text_attributes.emplace_back("Compression", "jpeg:" + std::to_string(quality));
+        header.integer_attributes.emplace_back("CompressionQuality", quality);
         // Halving the colour's resolution costs more than the quality
         // asked for at 90 and above (a red edge bleeds a pixel).
-        if (quality >= 90) spec.attribute("jpeg:subsampling", "4:4:4");
+        if (quality >= 90) header.text_attributes.emplace_back("jpeg:subsampling", "4:4:4");
     }
-    spec.attribute("oiio:ColorSpace", encoding == Encoding::LinearFloat ? "Linear" : "sRGB");
-    spec.attribute("Software", "lancer");
-    for (const auto& [key, value] : options.metadata) spec.attribute("lancer:" + key, value);
-    return {std::move(spec), std::move(pixels)};
+    if (!png)
+        header.text_attributes.emplace_back("oiio:ColorSpace", encoding == Encoding::LinearFloat ? "Linear" : "sRGB");
+    header.text_attributes.emplace_back("Software", "lancer");
+    for (const auto& [key, value] : options.metadata) header.text_attributes.emplace_back("lancer:" + key, value);
+    encoded.pixels = std::move(pixels);
+    return encoded;
 }
 
 }  // namespace
 
 void write_image(const Film& film, const std::string& path, const ImageWriteOptions& options) {
-    const auto [spec, pixels] = encode_for(film, path, options);
+    EncodedImage encoded = encode_for(film, path, options);
     const fs::path target(path);
     std::error_code ignored;
     if (!target.parent_path().empty() && !fs::is_directory(target.parent_path(), ignored))
         throw std::runtime_error("cannot write '" + path + "': directory '" + target.parent_path().string() +
                                  "' does not exist");
     const fs::path temporary = temporary_path_for(target);
-    auto fail = [&](const std::string& why) {
-        fs::remove(temporary, ignored);
-        throw std::runtime_error("cannot write '" + path + "': " + why);
-    };
-    {
-        auto output = OIIO::ImageOutput::create(temporary.string());
-        if (!output) fail(OIIO::geterror());
-        if (!output->open(temporary.string(), spec)) fail(output->geterror());
-        if (!output->write_image(OIIO::TypeDesc::FLOAT, pixels.data())) {
-            const std::string why = output->geterror();
-            output->close();
-            fail(why);
+    try {
+        if (encoded.png) {
+            write_png_file(temporary.string(), encoded.png_pixels());
+        } else {
+            encoded.header.pixels = encoded.pixels.data();
+            image_codecs().write(temporary.string(), encoded.header);
         }
-        if (!output->close()) fail(output->geterror());
+    } catch (const std::runtime_error& error) {
+        fs::remove(temporary, ignored);
+        throw std::runtime_error("cannot write '" + path + "': " + error.what());
     }
     std::error_code renamed;
     fs::rename(temporary, target, renamed);
-    if (renamed) fail(renamed.message());
+    if (renamed) {
+        fs::remove(temporary, ignored);
+        throw std::runtime_error("cannot write '" + path + "': " + renamed.message());
+    }
 }
 
 std::vector<unsigned char> encode_png(const Film& film, const ImageWriteOptions& options) {
-    const auto [spec, pixels] = encode_for(film, "memory.png", options);
-    std::vector<unsigned char> bytes;
-    OIIO::Filesystem::IOVecOutput memory(bytes);
-    OIIO::ImageSpec with_proxy = spec;
-    OIIO::Filesystem::IOProxy* proxy = &memory;
-    with_proxy.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-    auto output = OIIO::ImageOutput::create("memory.png");
-    if (!output || !output->open("memory.png", with_proxy) ||
-        !output->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !output->close())
-        throw std::runtime_error("cannot encode a PNG in memory: " + (output ? output->geterror() : OIIO::geterror()));
-    return bytes;
+    const EncodedImage encoded = encode_for(film, "memory.png", options);
+    return encode_png_bytes(encoded.png_pixels());
 }
 
 }  // namespace lancer

@@ -24,8 +24,7 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
+#include "film/image_codecs.h"
 #include "geometry/height_field.h"
 #include "materials/palette_image.h"
 
@@ -137,26 +136,26 @@ HeightFieldGrid read_height_field_image(const std::string& path, double gamma) {
         extension = path.substr(dot + 1);
         for (char& c : extension) c = char(std::tolower((unsigned char)c));
     }
-    // Open with OpenImageIO first: it names what the file is.
+    // Open with the image module first: it names what the file is.
     // POV-Ray keeps a file's colours as stored, not multiplied by alpha.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto input = OIIO::ImageInput::open(path, &config);
-    if (!input) {
+    std::unique_ptr<ImageFileReader> input;
+    try {
+        input = image_codecs().open(path, true);
+    } catch (const std::runtime_error& error) {
         if (extension == "pot") return read_gif(path, true);
-        fail(path, OIIO::geterror());
+        fail(path, error.what());
     }
-    const OIIO::ImageSpec spec = input->spec();
-    const std::string format = input->format_name();
+    const ImageFileInfo& spec = input->info();
+    const std::string format = spec.format;
     if (format == "gif" || extension == "pot") {
-        input->close();
+        input.reset();
         return read_gif(path, extension == "pot");
     }
     check_size(path, spec.width, spec.height);
-    const int channels = spec.nchannels;
+    const int channels = spec.channels;
     if (channels < 1) fail(path, "it has no channels");
-    int bits = spec.get_int_attribute("oiio:BitsPerSample", int(spec.format.size()) * 8);
-    const bool floating = spec.format.is_floating_point();
+    int bits = spec.bits_per_sample;
+    const bool floating = spec.floating;
     if (!floating) bits = std::clamp(bits, 1, 16);
 
     // Which of POV's conversions this file gets.
@@ -203,27 +202,22 @@ HeightFieldGrid read_height_field_image(const std::string& path, double gamma) {
     std::vector<float> band;
     std::vector<std::uint16_t> band16;
     constexpr int kBandRows = 64;
-    const bool tiled = spec.tile_width > 0;
-    const int band_rows = tiled ? height : kBandRows;
     if (floating)
-        band.resize(std::size_t(width) * band_rows * channels);
+        band.resize(std::size_t(width) * kBandRows * channels);
     else
-        band16.resize(std::size_t(width) * band_rows * channels);
+        band16.resize(std::size_t(width) * kBandRows * channels);
     void* buffer = floating ? static_cast<void*>(band.data()) : static_cast<void*>(band16.data());
-    const OIIO::TypeDesc type = floating ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT16;
-    if (tiled && !input->read_image(0, 0, 0, channels, type, buffer)) fail(path, input->geterror());
+    const SampleType type = floating ? SampleType::Float : SampleType::UInt16;
     for (int y0 = 0; y0 < height; y0 += kBandRows) {
         const int y1 = std::min(y0 + kBandRows, height);
-        std::size_t band_start = 0;
-        if (!tiled) {
-            if (!input->read_scanlines(0, 0, spec.y + y0, spec.y + y1, 0, 0, channels, type, buffer))
-                fail(path, input->geterror());
-        } else {
-            band_start = std::size_t(y0) * width * channels;
+        try {
+            input->read_rows(y0, y1, type, buffer);
+        } catch (const std::runtime_error& error) {
+            fail(path, error.what());
         }
         for (int y = y0; y < y1; ++y)
             for (int x = 0; x < width; ++x) {
-                const std::size_t first = band_start + (std::size_t(y - y0) * width + x) * channels;
+                const std::size_t first = (std::size_t(y - y0) * width + x) * channels;
                 const float* pixel = floating ? band.data() + first : nullptr;
                 const std::uint16_t* pixel16 = floating ? nullptr : band16.data() + first;
                 if (floating) {
@@ -283,7 +277,6 @@ HeightFieldGrid read_height_field_image(const std::string& path, double gamma) {
                 values[std::size_t(y) * width + x] = value;
             }
     }
-    input->close();
     return grid_from_values(width, height, values);
 }
 

@@ -20,6 +20,7 @@
 #include <set>
 #include <sstream>
 
+#include "host/library_folder.h"
 #include "lancer/scene_error.h"
 
 #ifndef LANCER_PLUGIN_RELATIVE_DIR
@@ -46,18 +47,6 @@ std::string join(const std::vector<std::string>& items, const char* separator) {
         joined += item;
     }
     return joined;
-}
-
-// The folder holding the shared library this function was linked into:
-// liblancer.so's own folder in the build tree and in an installed prefix.
-std::string folder_of_this_library() {
-    Dl_info info{};
-    if (dladdr(reinterpret_cast<const void*>(&folder_of_this_library), &info) == 0 || info.dli_fname == nullptr) {
-        return {};
-    }
-    std::error_code error;
-    const fs::path library = fs::canonical(info.dli_fname, error);
-    return error ? fs::path(info.dli_fname).parent_path().string() : library.parent_path().string();
 }
 
 const char* expected_text(ParameterType type);
@@ -276,7 +265,7 @@ std::vector<std::string> plugin_search_path() {
             if (!folder.empty()) folders.push_back(folder);
         }
     }
-    const std::string library_folder = folder_of_this_library();
+    const std::string library_folder = folder_of_liblancer();
     if (!library_folder.empty()) {
         folders.push_back((fs::path(library_folder) / LANCER_PLUGIN_RELATIVE_DIR).string());
     }

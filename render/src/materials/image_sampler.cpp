@@ -1,5 +1,5 @@
 // POV-Ray's map_type projections (imageutil.cpp in POV-Ray 3.7, read for
-// its rules) and texel lookups through OpenImageIO's TextureSystem.
+// its rules) and texel lookups in the image's texels.
 #include "materials/image_sampler.h"
 
 #include <algorithm>
@@ -7,21 +7,10 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
 #include "lancer/scene_error.h"
 #include "materials/palette_image.h"
 
 namespace lancer {
-
-ImageTextureSystem::ImageTextureSystem() : m_system(OIIO::TextureSystem::create(false)) {
-    m_system->attribute("automip", 1);
-    m_system->attribute("max_memory_MB", 512.0f);
-}
-
-ImageTextureSystem::~ImageTextureSystem() {
-    OIIO::TextureSystem::destroy(m_system);
-}
 
 namespace {
 
@@ -37,46 +26,6 @@ std::string one_line(std::string text) {
     while (!text.empty() && text.back() == '\n') text.pop_back();
     for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at)) text.replace(at, 1, "; ");
     return text;
-}
-
-// Textures larger than this many pixels are refused before any decoding:
-// a file of a few hundred bytes can claim 100000 x 100000 in its header.
-constexpr double kMaxTexturePixels = 16384.0 * 16384.0;
-
-// Decodes the whole file once, a band of rows at a time (memory bounded by
-// the band), so a truncated or corrupt image is an error naming it rather
-// than a texture that reads black, and a float image holding NaN or
-// infinite texels is refused before it reaches the film.
-void verify_image_decodes(const std::string& path, const sg::ImageMap& map) {
-    auto fail = [&](const std::string& why) {
-        throw SceneError(map.location, "cannot read image '" + map.path + "': " + one_line(why));
-    };
-    auto input = OIIO::ImageInput::open(path);
-    if (!input) fail(OIIO::geterror());
-    const OIIO::ImageSpec spec = input->spec();
-    const int channels = spec.nchannels;
-    if (channels < 1 || spec.width < 1 || spec.height < 1) fail("it has no pixels");
-    const bool floating = spec.format.is_floating_point();
-    std::vector<float> values;
-    auto check = [&](std::size_t count) {
-        if (!floating) return;
-        for (std::size_t i = 0; i < count; ++i)
-            if (!std::isfinite(values[i])) fail("it holds texels that are NaN or infinite");
-    };
-    if (spec.tile_width > 0) {
-        values.resize(std::size_t(spec.width) * spec.height * std::max(spec.depth, 1) * channels);
-        if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, values.data())) fail(input->geterror());
-        check(values.size());
-        return;
-    }
-    constexpr int kBandRows = 64;
-    values.resize(std::size_t(spec.width) * kBandRows * channels);
-    for (int y = spec.y; y < spec.y + spec.height; y += kBandRows) {
-        const int end = std::min(y + kBandRows, spec.y + spec.height);
-        if (!input->read_scanlines(0, 0, y, end, 0, 0, channels, OIIO::TypeDesc::FLOAT, values.data()))
-            fail(input->geterror());
-        check(std::size_t(spec.width) * (end - y) * channels);
-    }
 }
 
 // The angle of (x, z) from +x towards +z, as a share of a turn in [0, 1).
@@ -140,40 +89,21 @@ std::shared_ptr<const PaletteTransparency> read_palette_transparency(const sg::I
 
 }  // namespace
 
-ImageSampler::ImageSampler(const sg::ImageMap& map, std::shared_ptr<ImageTextureSystem>& images)
-    : m_map(map), m_filename(map.path) {
-    if (!images) images = std::make_shared<ImageTextureSystem>();
-    m_images = images;
-    OIIO::TextureSystem& system = m_images->get();
-    OIIO::ImageSpec spec;
-    if (m_map.path.empty() || !system.get_imagespec(m_filename, 0, spec)) {
-        std::string why = system.geterror();
-        throw SceneError(m_map.location, "cannot read image '" + m_map.path + "'" +
-                                             (why.empty() ? std::string() : ": " + one_line(why)));
+ImageSampler::ImageSampler(const sg::ImageMap& map, ImageCache& images) : m_map(map) {
+    try {
+        m_texels = images.get(m_map.path);
+    } catch (const std::length_error& error) {
+        throw SceneError(m_map.location, "image '" + m_map.path + "' " + error.what());
+    } catch (const std::runtime_error& error) {
+        throw SceneError(m_map.location, "cannot read image '" + m_map.path + "': " + one_line(error.what()));
     }
-    if (double(spec.width) * double(spec.height) * double(std::max(spec.depth, 1)) > kMaxTexturePixels)
-        throw SceneError(m_map.location, "image '" + m_map.path + "' claims " + std::to_string(spec.width) + " x " +
-                                             std::to_string(spec.height) +
-                                             " pixels: more than lancer's limit of 16384 x 16384");
-    verify_image_decodes(m_filename.string(), m_map);
-    m_width = std::max(spec.width, 1);
-    m_height = std::max(spec.height, 1);
-    m_channels = std::clamp(spec.nchannels, 1, 4);
+    m_width = m_texels->width();
+    m_height = m_texels->height();
+    m_channels = std::min(m_texels->channels(), 4);
     // 8- and 16-bit files are display-encoded; float files are linear.
-    m_decode_srgb = m_map.srgb && !spec.format.is_floating_point();
-    // A `once` image is not repeated: POV takes the edge pixels for the
-    // samples an interpolation needs beyond it.
-    m_options.swrap = m_map.once ? OIIO::TextureOpt::WrapClamp : OIIO::TextureOpt::WrapPeriodic;
-    m_options.twrap = m_options.swrap;
-    m_options.interpmode = m_map.interpolate == 0 ? OIIO::TextureOpt::InterpClosest : OIIO::TextureOpt::InterpBilinear;
-    if (m_map.interpolate != 0 && m_decode_srgb) {
-        m_blend_decoded = true;
-        m_options.interpmode = OIIO::TextureOpt::InterpClosest;
-    }
-    m_options.mipmode = OIIO::TextureOpt::MipModeNoMIP;
+    m_decode_srgb = m_map.srgb && !m_texels->floating();
     float mean[4] = {0, 0, 0, 1};
-    system.get_texture_info(m_filename, 0, OIIO::ustring("averagecolor"),
-                            OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, m_channels), mean);
+    for (int c = 0; c < m_channels; ++c) mean[c] = m_texels->average()[std::size_t(c)];
     m_average = decode(mean);
     for (const sg::PaletteSetting& setting : m_map.palette_settings)
         if (setting.index < 0) (setting.transmit ? m_transmit_all : m_filter_all) = float(setting.value);
@@ -225,19 +155,44 @@ std::optional<glm::dvec2> ImageSampler::project(const glm::dvec3& p) const {
     return uv;
 }
 
-Texel ImageSampler::lookup(double s, double t) const {
-    float texel[4] = {0, 0, 0, 1};
-    OIIO::TextureOpt options = m_options;
-    m_images->get().texture(m_filename, options, float(s), float(t), 0.0f, 0.0f, 0.0f, 0.0f, m_channels, texel);
-    return decode(texel);
+glm::ivec2 ImageSampler::wrap(long long column, long long row, int columns, int rows) const {
+    // A `once` image is not repeated: POV takes the edge pixels for the
+    // samples an interpolation needs beyond it.
+    if (m_map.once)
+        return {int(std::clamp<long long>(column, 0, columns - 1)), int(std::clamp<long long>(row, 0, rows - 1))};
+    return {int(((column % columns) + columns) % columns), int(((row % rows) + rows) % rows)};
+}
+
+Texel ImageSampler::texel(long long column, long long row) const {
+    const glm::ivec2 at = wrap(column, row, m_width, m_height);
+    float values[4] = {0, 0, 0, 1};
+    for (int c = 0; c < m_channels; ++c) values[c] = m_texels->sample(at.x, at.y, c);
+    return decode(values);
 }
 
 Texel ImageSampler::at(const glm::dvec2& uv) const {
-    // OpenImageIO's t runs down the image; v runs up.
+    // Row 0 is the image's top; v runs up.
     const double s = uv.x, t = 1.0 - uv.y;
-    Texel texel = m_blend_decoded ? blended(s, t) : lookup(s, t);
-    if (m_palette) add_palette_transparency(texel, s, t);
-    return texel;
+    Texel result;
+    if (m_map.interpolate == 0) {
+        result = texel((long long)std::floor(s * m_width), (long long)std::floor(t * m_height));
+    } else {
+        // POV decodes the texels before it blends them: the four nearest
+        // texels' decoded values (texel centres at (i + 0.5) / width).
+        const double x = s * m_width - 0.5, y = t * m_height - 0.5;
+        const double left = std::floor(x), top = std::floor(y);
+        const float fx = float(x - left), fy = float(y - top);
+        const long long column = (long long)left, row = (long long)top;
+        const Texel a = texel(column, row), b = texel(column + 1, row), c = texel(column, row + 1),
+                    d = texel(column + 1, row + 1);
+        auto blend = [&](auto member) {
+            return (1.0f - fy) * ((1.0f - fx) * a.*member + fx * b.*member) +
+                   fy * ((1.0f - fx) * c.*member + fx * d.*member);
+        };
+        result = {blend(&Texel::rgb), blend(&Texel::alpha)};
+    }
+    if (m_palette) add_palette_transparency(result, s, t);
+    return result;
 }
 
 // The entries' filter and transmit, at the texels the colour came from
@@ -245,17 +200,8 @@ Texel ImageSampler::at(const glm::dvec2& uv) const {
 void ImageSampler::add_palette_transparency(Texel& texel, double s, double t) const {
     const PaletteTransparency& palette = *m_palette;
     auto entry = [&](double x, double y) {
-        // A `once` image takes its edge texels beyond it; others repeat.
-        const int columns = palette.width, rows = palette.height;
-        long long column = (long long)std::floor(x), row = (long long)std::floor(y);
-        if (m_map.once) {
-            column = std::clamp<long long>(column, 0, columns - 1);
-            row = std::clamp<long long>(row, 0, rows - 1);
-        } else {
-            column = ((column % columns) + columns) % columns;
-            row = ((row % rows) + rows) % rows;
-        }
-        return palette.indices[std::size_t(row) * std::size_t(columns) + std::size_t(column)];
+        const glm::ivec2 at = wrap((long long)std::floor(x), (long long)std::floor(y), palette.width, palette.height);
+        return palette.indices[std::size_t(at.y) * std::size_t(palette.width) + std::size_t(at.x)];
     };
     texel.from_palette = true;
     const double x = s * palette.width, y = t * palette.height;
@@ -277,22 +223,6 @@ void ImageSampler::add_palette_transparency(Texel& texel, double s, double t) co
     texel.transmit = blend(palette.transmit);
 }
 
-Texel ImageSampler::blended(double s, double t) const {
-    // POV decodes the texels before it blends them: blend the four nearest
-    // texels' decoded values (texel centres at (i + 0.5) / width).
-    const double x = s * m_width - 0.5, y = t * m_height - 0.5;
-    const double left = std::floor(x), top = std::floor(y);
-    const float fx = float(x - left), fy = float(y - top);
-    const double s0 = (left + 0.5) / m_width, s1 = (left + 1.5) / m_width;
-    const double t0 = (top + 0.5) / m_height, t1 = (top + 1.5) / m_height;
-    const Texel a = lookup(s0, t0), b = lookup(s1, t0), c = lookup(s0, t1), d = lookup(s1, t1);
-    auto blend = [&](auto member) {
-        return (1.0f - fy) * ((1.0f - fx) * a.*member + fx * b.*member) +
-               fy * ((1.0f - fx) * c.*member + fx * d.*member);
-    };
-    return {blend(&Texel::rgb), blend(&Texel::alpha)};
-}
-
 Texel ImageSampler::decode(const float* texel) const {
     Texel out;
     out.rgb = m_channels < 3 ? Color(texel[0]) : Color(texel[0], texel[1], texel[2]);
@@ -302,8 +232,12 @@ Texel ImageSampler::decode(const float* texel) const {
 }
 
 ImageSampler open_image(const sg::ImageMap& map, const MaterialBuild& build) {
-    std::shared_ptr<ImageTextureSystem> own;
-    return ImageSampler(map, build.images ? *build.images : own);
+    if (build.images == nullptr) {
+        ImageCache own;
+        return ImageSampler(map, own);
+    }
+    if (!*build.images) *build.images = std::make_shared<ImageCache>();
+    return ImageSampler(map, **build.images);
 }
 
 }  // namespace lancer

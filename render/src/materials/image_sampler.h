@@ -6,27 +6,14 @@
 #include <memory>
 #include <optional>
 
-#include <OpenImageIO/texture.h>
 #include <glm/glm.hpp>
 
 #include "lancer/ray.h"
 #include "lancer/scene_graph.h"
+#include "materials/image_texels.h"
 #include "materials/textures.h"
 
 namespace lancer {
-
-// Holds OpenImageIO's TextureSystem for the life of every image using it.
-class ImageTextureSystem {
-  public:
-    ImageTextureSystem();
-    ~ImageTextureSystem();
-    ImageTextureSystem(const ImageTextureSystem&) = delete;
-    ImageTextureSystem& operator=(const ImageTextureSystem&) = delete;
-    OIIO::TextureSystem& get() const { return *m_system; }
-
-  private:
-    OIIO::TextureSystem* m_system;
-};
 
 struct Texel {
     Color rgb{0.0f};
@@ -46,7 +33,7 @@ class ImageSampler {
     // Throws lancer::SceneError at the map's location when the file cannot
     // be read, claims too many pixels, or holds NaN texels, and at a
     // palette setting's when the file has no palette or no such entry.
-    ImageSampler(const sg::ImageMap& map, std::shared_ptr<ImageTextureSystem>& images);
+    ImageSampler(const sg::ImageMap& map, ImageCache& images);
 
     // Where map_type puts a point of the image's space, as (u, v) with v
     // up and one image per unit square; empty where a `once` image does
@@ -70,19 +57,18 @@ class ImageSampler {
 
   private:
     Texel decode(const float* texel) const;
-    Texel lookup(double s, double t) const;   // OpenImageIO's (s, t), t down
-    Texel blended(double s, double t) const;  // four texels decoded, then blended
+    // Texel (column, row) of an image columns x rows: clamped to the edges
+    // of a `once` image, else repeated.
+    glm::ivec2 wrap(long long column, long long row, int columns, int rows) const;
+    Texel texel(long long column, long long row) const;  // wrapped
     void add_palette_transparency(Texel& texel, double s, double t) const;
 
-    std::shared_ptr<ImageTextureSystem> m_images;
+    std::shared_ptr<const ImageTexels> m_texels;
     sg::ImageMap m_map;
-    OIIO::ustring m_filename;
-    OIIO::TextureOpt m_options;
     int m_width = 1;
     int m_height = 1;
-    int m_channels = 3;
+    int m_channels = 3;  // the first 4 of the file's at most
     bool m_decode_srgb = true;
-    bool m_blend_decoded = false;  // interpolated here, after decoding
     Texel m_average;
     float m_filter_all = 0.0f;
     float m_transmit_all = 0.0f;

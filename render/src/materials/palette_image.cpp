@@ -9,8 +9,9 @@
 #include <iterator>
 #include <stdexcept>
 
-#include <OpenImageIO/imageio.h>
 #include <png.h>
+
+#include "film/image_codecs.h"
 
 namespace lancer {
 namespace {
@@ -262,12 +263,9 @@ int palette_index(const std::vector<PaletteEntry>& palette, int red, int green, 
 
 std::optional<PaletteImage> read_palette_image(const std::string& path) {
     // POV-Ray keeps a file's colours as stored, not multiplied by alpha.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto input = OIIO::ImageInput::open(path, &config);
-    if (!input) fail(OIIO::geterror());
-    const OIIO::ImageSpec spec = input->spec();
-    const std::string format = input->format_name();
+    const std::unique_ptr<ImageFileReader> input = image_codecs().open(path, true);
+    const ImageFileInfo& spec = input->info();
+    const std::string& format = spec.format;
     check_size(spec.width, spec.height);
     PaletteImage image;
     image.width = spec.width;
@@ -275,12 +273,12 @@ std::optional<PaletteImage> read_palette_image(const std::string& path) {
     std::size_t palette_size = 0;
     std::vector<PaletteEntry> palette;
     if (format == "png") {
-        const int bits = spec.get_int_attribute("oiio:BitsPerSample", 8);
-        if (spec.nchannels != 1 || bits > 8) return read_png_indices(path);
+        const int bits = spec.bits_per_sample;
+        if (spec.channels != 1 || bits > 8) return read_png_indices(path);
         // POV reads a grey PNG of 8 bits or fewer as a palette of greys:
         // the index is the grey value.
         image.indices.resize(std::size_t(spec.width) * spec.height);
-        if (!input->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, image.indices.data())) fail(input->geterror());
+        input->read_rows(0, spec.height, SampleType::UInt8, image.indices.data());
         const int levels = 1 << bits;
         for (unsigned char& value : image.indices) value = (unsigned char)((value * (levels - 1) + 127) / 255);
         image.alpha_by_index.assign(std::size_t(levels), 1.0f);
@@ -297,7 +295,7 @@ std::optional<PaletteImage> read_palette_image(const std::string& path) {
         palette_size = palette.size();
         image.indices.resize(std::size_t(spec.width) * spec.height);
     }
-    const int channels = spec.nchannels;
+    const int channels = spec.channels;
     const bool has_alpha = channels == 2 || channels == 4;
     const bool grey = channels <= 2;
     image.alpha_by_index.assign(palette_size, has_alpha ? -1.0f : 1.0f);
@@ -307,8 +305,7 @@ std::optional<PaletteImage> read_palette_image(const std::string& path) {
     std::vector<unsigned char> band(std::size_t(spec.width) * kBandRows * channels);
     for (int y0 = 0; y0 < spec.height; y0 += kBandRows) {
         const int y1 = std::min(y0 + kBandRows, spec.height);
-        if (!input->read_scanlines(0, 0, spec.y + y0, spec.y + y1, 0, 0, channels, OIIO::TypeDesc::UINT8, band.data()))
-            fail(input->geterror());
+        input->read_rows(y0, y1, SampleType::UInt8, band.data());
         for (int y = y0; y < y1; ++y)
             for (int x = 0; x < spec.width; ++x) {
                 const unsigned char* pixel = band.data() + (std::size_t(y - y0) * spec.width + x) * channels;

@@ -19,9 +19,9 @@ namespace lancer {
 // applied after it). Owned by the render scene; textures only read it.
 using TextureSpaces = std::vector<glm::dmat4>;
 
-// Owns the OpenImageIO TextureSystem; created only when a scene has an
+// The scene's images, read once each; created only when a scene has an
 // image_map.
-class ImageTextureSystem;
+class ImageCache;
 class PointPigment;
 
 // POV's Inside_Object for the object pattern: whether a point of pattern
@@ -36,10 +36,10 @@ using InsideTestMaker = std::function<InsideTest(const sg::Object& object)>;
 // object pattern's inside tests (null: the object pattern is refused).
 struct MaterialBuild {
     MaterialBuild(NoiseGenerator noise = NoiseGenerator::RangeCorrected,
-                  std::shared_ptr<ImageTextureSystem>* image_cache = nullptr, const InsideTestMaker* solids = nullptr)
+                  std::shared_ptr<ImageCache>* image_cache = nullptr, const InsideTestMaker* solids = nullptr)
         : generator(noise), images(image_cache), inside_tests(solids) {}
     NoiseGenerator generator;
-    std::shared_ptr<ImageTextureSystem>* images;
+    std::shared_ptr<ImageCache>* images;
     const InsideTestMaker* inside_tests;
 };
 
@@ -68,7 +68,7 @@ class TextureFactory {
 
   private:
     const TextureSpaces& m_spaces;
-    std::shared_ptr<ImageTextureSystem> m_images;
+    std::shared_ptr<ImageCache> m_images;
     NoiseGenerator m_noise_generator = NoiseGenerator::RangeCorrected;
     InsideTestMaker m_inside_tests;
 

@@ -1,4 +1,4 @@
-// Writing the film through OpenImageIO, format chosen by file extension:
+// Writing the film, format chosen by file extension:
 // .png (sRGB, 8 or 16-bit, clamped), .jpg/.jpeg (sRGB, 8-bit, a quality),
 // .exr (linear float RGB, optional alpha and extra layers), .hdr (linear),
 // .tif/.tiff (sRGB 16-bit). Alpha is straight in PNG and TIFF and
@@ -50,6 +50,11 @@ void write_image(const Film& film, const std::string& path, const ImageWriteOpti
 
 // The PNG write_image would write, in memory (for a preview page).
 std::vector<unsigned char> encode_png(const Film& film, const ImageWriteOptions& options = {});
+
+// Loads what writing `path`'s format needs ahead of time: formats other
+// than PNG are written by the image module, which takes a fraction of a
+// second to load. Throws std::runtime_error when it cannot be loaded.
+void prepare_image_writer(const std::string& path);
 
 // True if the extension names a format write_image supports.
 bool is_supported_image_extension(const std::string& path);

@@ -1,6 +1,6 @@
 // A plain linear RGB image: what a finished render is once its samples are
-// averaged, and what image metrics, heat maps and caches work on. Reading
-// and writing go through OpenImageIO (PNG is sRGB-encoded, EXR is linear).
+// averaged, and what image metrics, heat maps and caches work on (PNG is
+// sRGB-encoded, EXR is linear).
 #pragma once
 
 #include <string>
