@@ -504,7 +504,11 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
         const CheckpointIdentity identity = checkpoint_identity(arguments, options, integrator_name, parameters);
         const JobScene scene = compile_job_scene(arguments.scene, std::move(*graph));
         graph.reset();
-        Film film(options.width, options.height);
+        // The budget is set below, once parsing's share of it is known; the
+        // film's storage only asks whether there is one.
+        RenderOptions as_planned = options;
+        if (arguments.time_option->count()) as_planned.time_budget_seconds = arguments.time_budget;
+        Film film(options.width, options.height, film_storage_for(*scene.scene, *integrator, as_planned));
         // A render killed before its first checkpoint has nothing to resume:
         // it starts over, so `--resume` after a kill at any moment works.
         // Only the process that writes the files resumes: the others' film

@@ -56,21 +56,7 @@ EOF
 triangles=$((2 * (columns - 1) * (rows - 1)))
 echo "scene: $triangles triangles, include of $(du -m "$work/big.inc" | cut -f1) MB; $runs runs each, medians"
 
-# Runs "$@" $runs times; prints the median wall s, CPU s and peak KB.
-measure() {
-  i=0
-  : > "$work/times"
-  while [ "$i" -lt "$runs" ]; do
-    /usr/bin/time -f "%e %U %S %M" -o "$work/one" "$@" > /dev/null 2>&1 || { echo "failed: $*" >&2; exit 1; }
-    cat "$work/one" >> "$work/times"
-    i=$((i + 1))
-  done
-  median() { sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
-  wall=$(awk '{ print $1 }' "$work/times" | median)
-  cpu=$(awk '{ print $2 + $3 }' "$work/times" | median)
-  peak=$(awk '{ print $4 }' "$work/times" | median)
-  echo "$wall $cpu $peak"
-}
+. "$(dirname "$0")/measure.sh"
 
 cd "$work"
 check=$(measure "$lancer" check big.pov)

@@ -131,9 +131,8 @@ CropWindow render_window(const RenderOptions& options, const Film& film) {
 std::vector<Accumulator> tile_pixels(const Film& film, const CropWindow& tile) {
     std::vector<Accumulator> pixels;
     pixels.reserve(std::size_t(tile.x1 - tile.x0) * std::size_t(tile.y1 - tile.y0));
-    const auto& all = film.accumulators();
     for (int y = tile.y0; y < tile.y1; ++y)
-        for (int x = tile.x0; x < tile.x1; ++x) pixels.push_back(all[std::size_t(y) * film.width() + x]);
+        for (int x = tile.x0; x < tile.x1; ++x) pixels.push_back(film.accumulator(std::size_t(y) * film.width() + x));
     return pixels;
 }
 

@@ -105,7 +105,8 @@ void write_checkpoint(const std::string& path, const CheckpointIdentity& identit
     bytes += text;
     put(bytes, std::int32_t(film.width()));
     put(bytes, std::int32_t(film.height()));
-    for (const Film::Accumulator& pixel : film.accumulators()) {
+    for (std::size_t index = 0; index < std::size_t(film.width()) * std::size_t(film.height()); ++index) {
+        const Film::Accumulator pixel = film.accumulator(index);
         for (int c = 0; c < 3; ++c) put(bytes, pixel.sum[c]);
         for (int c = 0; c < 3; ++c) put(bytes, pixel.sum_squares[c]);
         put(bytes, pixel.count);

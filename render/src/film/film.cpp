@@ -1,5 +1,6 @@
-// Per-pixel accumulation in double: sums stay exact enough for thousands of
-// samples and variance estimates.
+// Per-pixel accumulation: in double (Totals), so sums stay exact enough for
+// thousands of samples and variance estimates, or the colour alone
+// (MeanOnly) when a pixel takes one sample.
 #include "lancer/host/film.h"
 
 #include <algorithm>
@@ -9,20 +10,52 @@
 
 namespace lancer {
 
-Film::Film(int width, int height) : m_width(width), m_height(height) {
+Film::Film(int width, int height, Storage storage) : m_width(width), m_height(height), m_storage(storage) {
     if (width <= 0 || height <= 0) throw std::invalid_argument("film size must be positive");
-    m_pixels.resize(std::size_t(width) * std::size_t(height));
-    m_taken.resize(m_pixels.size(), 0);
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    if (storage == Storage::MeanOnly)
+        m_colour_sums.assign(pixels, Color(0.0f));
+    else
+        m_pixels.resize(pixels);
+    m_taken.resize(pixels, 0);
+}
+
+Film::Accumulator Film::accumulator(std::size_t index) const {
+    if (m_storage == Storage::Totals) return m_pixels[index];
+    Accumulator pixel;
+    const Color sum = m_colour_sums[index];
+    if (std::isnan(sum.r)) {
+        pixel.nonfinite = m_taken[index];
+        return pixel;
+    }
+    pixel.count = m_taken[index];
+    pixel.sum = glm::dvec3(sum);
+    pixel.sum_squares = pixel.sum * pixel.sum;
+    return pixel;
+}
+
+std::vector<Film::Accumulator> Film::accumulators() const {
+    std::vector<Accumulator> all(m_taken.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = accumulator(i);
+    return all;
 }
 
 Color Film::mean(int x, int y) const {
-    const Accumulator& pixel = at(x, y);
+    const std::size_t index = std::size_t(y) * m_width + x;
+    if (m_storage == Storage::MeanOnly) {
+        const Color sum = m_colour_sums[index];
+        const std::uint32_t count = m_taken[index];
+        if (count == 0 || std::isnan(sum.r)) return Color(0.0f);
+        return count == 1 ? sum : sum / float(count);
+    }
+    const Accumulator& pixel = m_pixels[index];
     if (pixel.count == 0) return Color(0.0f);
     return Color(pixel.sum / double(pixel.count));
 }
 
 Color Film::variance_of_mean(int x, int y) const {
-    const Accumulator& pixel = at(x, y);
+    if (m_storage == Storage::MeanOnly) return Color(0.0f);
+    const Accumulator& pixel = m_pixels[std::size_t(y) * m_width + x];
     if (pixel.count < 2) return Color(0.0f);
     const double n = double(pixel.count);
     const glm::dvec3 mean = pixel.sum / n;
@@ -31,14 +64,18 @@ Color Film::variance_of_mean(int x, int y) const {
 }
 
 std::uint32_t Film::sample_count(int x, int y) const {
-    return at(x, y).count;
+    const std::size_t index = std::size_t(y) * m_width + x;
+    if (m_storage == Storage::MeanOnly) return std::isnan(m_colour_sums[index].r) ? 0 : m_taken[index];
+    return m_pixels[index].count;
 }
 
 void Film::restore(std::vector<Accumulator> accumulators) {
-    if (accumulators.size() != m_pixels.size())
+    if (accumulators.size() != m_taken.size())
         throw std::invalid_argument("film restore: " + std::to_string(accumulators.size()) + " pixels for a " +
                                     std::to_string(m_width) + "x" + std::to_string(m_height) + " film");
     m_pixels = std::move(accumulators);
+    m_storage = Storage::Totals;
+    m_colour_sums = std::vector<Color>();
     std::uint64_t nonfinite = 0;
     for (std::size_t i = 0; i < m_pixels.size(); ++i) {
         nonfinite += m_pixels[i].nonfinite;
@@ -57,8 +94,11 @@ void Film::restore_region(int x0, int y0, int x1, int y1, const Accumulator* pix
     for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x, ++pixels) {
             const std::size_t i = std::size_t(y) * m_width + x;
-            nonfinite_change += std::int64_t(pixels->nonfinite) - std::int64_t(m_pixels[i].nonfinite);
-            m_pixels[i] = *pixels;
+            nonfinite_change += std::int64_t(pixels->nonfinite) - std::int64_t(accumulator(i).nonfinite);
+            if (m_storage == Storage::MeanOnly)
+                m_colour_sums[i] = pixels->nonfinite > 0 ? Color(std::nanf("")) : Color(pixels->sum);
+            else
+                m_pixels[i] = *pixels;
             m_taken[i] = pixels->count + pixels->nonfinite;
             any = any || m_taken[i] > 0;
         }

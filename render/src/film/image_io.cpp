@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -55,12 +56,13 @@ bool image_format_has_layers(const std::string& path) {
 
 namespace {
 
-// The pixels and header a file of `path`'s format receives. Throws as
-// write_image does.
+// The header a file of `path`'s format receives, and its rows of samples
+// made one at a time from the film (a PNG never holds the whole image in
+// float). Throws as write_image does.
 struct EncodedImage {
     bool png = false;
-    ImageFileWrite header;  // its `pixels` unset: the vector below may move
-    std::vector<float> pixels;
+    ImageFileWrite header;  // its `pixels` unset
+    std::function<void(int row, float* samples)> row;
 
     PngPixels png_pixels() const {
         PngPixels out;
@@ -68,9 +70,16 @@ struct EncodedImage {
         out.height = header.height;
         out.channels = int(header.channel_names.size());
         out.bits = header.file_type == SampleType::UInt16 ? 16 : 8;
-        out.samples = pixels.data();
+        out.rows = row;
         out.text = header.text_attributes;
         return out;
+    }
+    // Every row, for the writers that take a whole image.
+    std::vector<float> whole() const {
+        const std::size_t row_samples = std::size_t(header.width) * header.channel_names.size();
+        std::vector<float> samples(row_samples * std::size_t(header.height));
+        for (int y = 0; y < header.height; ++y) row(y, samples.data() + row_samples * std::size_t(y));
+        return samples;
     }
 };
 
@@ -110,8 +119,7 @@ EncodedImage encode_for(const Film& film, const std::string& path, const ImageWr
     // premultiplied: integer formats get the colour divided by alpha.
     const bool raw = encoding == Encoding::LinearFloat || !options.gamma_correction;
     const bool straight = has_alpha && encoding != Encoding::LinearFloat;
-    std::vector<float> pixels(pixel_count * std::size_t(channels));
-    for (int y = 0; y < height; ++y)
+    auto row = [&film, &options, has_alpha, straight, raw, sample_channel, width, channels](int y, float* samples) {
         for (int x = 0; x < width; ++x) {
             const std::size_t index = std::size_t(y) * width + x;
             const float alpha = has_alpha ? glm::clamp(options.alpha[index], 0.0f, 1.0f) : 1.0f;
@@ -120,7 +128,7 @@ EncodedImage encode_for(const Film& film, const std::string& path, const ImageWr
             if (options.gamma_correction && options.working_gamma != 1.0)
                 for (int k = 0; k < 3; ++k) c[k] = float(std::pow(std::max(double(c[k]), 0.0), options.working_gamma));
             if (has_alpha && !straight) c *= alpha;
-            float* out = &pixels[index * channels];
+            float* out = samples + std::size_t(x) * channels;
             int channel = 0;
             for (int k = 0; k < 3; ++k) out[channel++] = raw ? c[k] : linear_to_srgb(c[k]);
             if (has_alpha) out[channel++] = alpha;
@@ -129,6 +137,7 @@ EncodedImage encode_for(const Film& film, const std::string& path, const ImageWr
                     out[channel++] = layer.values[index * layer.channels.size() + k];
             if (sample_channel) out[channel++] = float(film.sample_count(x, y));
         }
+    };
 
     EncodedImage encoded;
     encoded.png = png;
@@ -154,14 +163,14 @@ EncodedImage encode_for(const Film& film, const std::string& path, const ImageWr
         header.text_attributes.emplace_back("oiio:ColorSpace", encoding == Encoding::LinearFloat ? "Linear" : "sRGB");
     header.text_attributes.emplace_back("Software", "lancer");
     for (const auto& [key, value] : options.metadata) header.text_attributes.emplace_back("lancer:" + key, value);
-    encoded.pixels = std::move(pixels);
+    encoded.row = std::move(row);
     return encoded;
 }
 
 }  // namespace
 
 void write_image(const Film& film, const std::string& path, const ImageWriteOptions& options) {
-    EncodedImage encoded = encode_for(film, path, options);
+    const EncodedImage encoded = encode_for(film, path, options);
     const fs::path target(path);
     std::error_code ignored;
     if (!target.parent_path().empty() && !fs::is_directory(target.parent_path(), ignored))
@@ -172,8 +181,10 @@ void write_image(const Film& film, const std::string& path, const ImageWriteOpti
         if (encoded.png) {
             write_png_file(temporary.string(), encoded.png_pixels());
         } else {
-            encoded.header.pixels = encoded.pixels.data();
-            image_codecs().write(temporary.string(), encoded.header);
+            const std::vector<float> samples = encoded.whole();
+            ImageFileWrite header = encoded.header;
+            header.pixels = samples.data();
+            image_codecs().write(temporary.string(), header);
         }
     } catch (const std::runtime_error& error) {
         fs::remove(temporary, ignored);

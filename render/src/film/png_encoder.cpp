@@ -44,6 +44,7 @@ struct EncodeJob {
     png_text* text;
     int text_count;
     unsigned char* row;
+    float* samples_row;                  // for pixels.rows
     std::FILE* file;                     // written through when given,
     std::vector<unsigned char>* memory;  // else appended to this
 };
@@ -64,7 +65,11 @@ bool run_libpng(png_structp png, png_infop info, const EncodeJob& job) {
     const unsigned top = pixels.bits == 8 ? 255u : 65535u;
     const std::size_t row_samples = std::size_t(pixels.width) * std::size_t(pixels.channels);
     for (int y = 0; y < pixels.height; ++y) {
-        const float* samples = pixels.samples + std::size_t(y) * row_samples;
+        const float* samples = job.samples_row;
+        if (pixels.rows)
+            pixels.rows(y, job.samples_row);
+        else
+            samples = pixels.samples + std::size_t(y) * row_samples;
         if (pixels.bits == 8) {
             for (std::size_t i = 0; i < row_samples; ++i) job.row[i] = (unsigned char)quantise(samples[i], top);
         } else {
@@ -85,6 +90,7 @@ void encode(const PngPixels& pixels, std::FILE* file, std::vector<unsigned char>
     if (pixels.bits != 8 && pixels.bits != 16) throw std::invalid_argument("PNG: 8 or 16 bits");
     std::vector<unsigned char> row(std::size_t(pixels.width) * std::size_t(pixels.channels) *
                                    std::size_t(pixels.bits / 8));
+    std::vector<float> samples_row(pixels.rows ? std::size_t(pixels.width) * std::size_t(pixels.channels) : 0);
     std::vector<png_text> text(pixels.text.size());
     for (std::size_t i = 0; i < text.size(); ++i) {
         text[i].compression = PNG_TEXT_COMPRESSION_NONE;
@@ -95,7 +101,7 @@ void encode(const PngPixels& pixels, std::FILE* file, std::vector<unsigned char>
     ErrorText error;
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_error, on_warning);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
-    const EncodeJob job{&pixels, text.data(), int(text.size()), row.data(), file, memory};
+    const EncodeJob job{&pixels, text.data(), int(text.size()), row.data(), samples_row.data(), file, memory};
     const bool written = info != nullptr && run_libpng(png, info, job);
     png_destroy_write_struct(&png, &info);
     if (!written) throw std::runtime_error(error.message.empty() ? "libpng cannot start" : error.message);

@@ -3,6 +3,7 @@
 // (internal to liblancer).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,7 +18,8 @@ struct PngPixels {
     int height = 0;
     int channels = 3;
     int bits = 8;
-    const float* samples = nullptr;
+    const float* samples = nullptr;                     // every row, row-major; or
+    std::function<void(int row, float* samples)> rows;  // fills one row when asked
     // tEXt chunks (keywords of 1 to 79 Latin-1 characters).
     std::vector<std::pair<std::string, std::string>> text;
 };

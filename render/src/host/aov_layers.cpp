@@ -69,7 +69,7 @@ class AlphaLayer final : public LayerIntegrator {
 };
 
 Film render_layer(const RenderScene& scene, const Integrator& layer, const RenderOptions& options) {
-    Film film(options.width, options.height);
+    Film film(options.width, options.height, film_storage_for(scene, layer, options));
     render_image(scene, layer, options, film);
     return film;
 }

@@ -92,8 +92,8 @@ class PassPlanner {
                         const std::uint32_t wanted =
                             m_mode == PassMode::Confidence
                                 ? m_confidence->wanted(taken,
-                                                       film.accumulators()[std::size_t(m_window.y0 + y) * film.width() +
-                                                                           std::size_t(m_window.x0 + x)])
+                                                       film.accumulator(std::size_t(m_window.y0 + y) * film.width() +
+                                                                        std::size_t(m_window.x0 + x)))
                                 : wanted_after(taken, x, y);
                         if (m_plans_per_pixel) m_wanted[i] = m_plan[i] = wanted;
                         sum.wanted += wanted;

@@ -449,8 +449,23 @@ class ImageRender {
 
 }  // namespace
 
+// At most one sample a pixel: a fixed count of 1 (a time budget or a noise
+// target adds samples, except to a deterministic integrator, which ignores
+// them) and no focal blur.
+bool takes_one_sample(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options) {
+    const bool fixed =
+        integrator.is_deterministic() || (options.time_budget_seconds <= 0.0 && options.noise_target <= 0.0);
+    return fixed && !scene.camera().has_focal_blur() && options.samples_per_pixel <= 1;
+}
+
+Film::Storage film_storage_for(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options) {
+    return takes_one_sample(scene, integrator, options) ? Film::Storage::MeanOnly : Film::Storage::Totals;
+}
+
 RenderStats render_image(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options,
                          Film& film) {
+    if (film.storage() == Film::Storage::MeanOnly && !takes_one_sample(scene, integrator, options))
+        film.restore(film.accumulators());
     return ImageRender(scene, integrator, options, film).run();
 }
 

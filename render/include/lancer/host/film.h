@@ -1,6 +1,7 @@
 // Accumulates linear RGB samples per pixel. Each pixel keeps its sum, sum of
 // squares (for variance estimates) and sample count; non-finite samples are
-// counted and dropped, never written.
+// counted and dropped, never written. A render whose pixels take one sample
+// each keeps only the colour and the count (Storage::MeanOnly).
 #pragma once
 
 #include <atomic>
@@ -23,7 +24,18 @@ class Film {
         std::uint32_t nonfinite = 0;  // dropped samples
     };
 
-    Film(int width, int height);
+    enum class Storage {
+        // Double sums and sums of squares: 60 bytes a pixel.
+        Totals,
+        // A float sum and the count, 16 bytes a pixel, for renders whose
+        // pixels take at most one sample (a variance needs two): exact for
+        // those. With more, a pixel keeps no variance, and one that meets a
+        // non-finite sample keeps none of its samples.
+        MeanOnly,
+    };
+
+    explicit Film(int width, int height, Storage storage = Storage::Totals);
+    Storage storage() const { return m_storage; }
 
     int width() const { return m_width; }
     int height() const { return m_height; }
@@ -32,14 +44,20 @@ class Film {
     // Inline: the host calls it once per sample.
     void add_sample(int x, int y, const Color& radiance) {
         const std::size_t index = std::size_t(y) * m_width + x;
-        Accumulator& pixel = m_pixels[index];
         ++m_taken[index];
         // Written once: afterwards every thread only reads the flag.
         if (!m_has_samples.value.load(std::memory_order_relaxed))
             m_has_samples.value.store(true, std::memory_order_relaxed);
-        if (!std::isfinite(radiance.r) || !std::isfinite(radiance.g) || !std::isfinite(radiance.b)) {
+        const bool finite = std::isfinite(radiance.r) && std::isfinite(radiance.g) && std::isfinite(radiance.b);
+        if (!finite) m_nonfinite_total.value.fetch_add(1, std::memory_order_relaxed);
+        if (m_storage == Storage::MeanOnly) {
+            // NaN marks a pixel whose samples were not all finite.
+            m_colour_sums[index] = finite ? m_colour_sums[index] + radiance : Color(std::nanf(""));
+            return;
+        }
+        Accumulator& pixel = m_pixels[index];
+        if (!finite) {
             ++pixel.nonfinite;
-            m_nonfinite_total.value.fetch_add(1, std::memory_order_relaxed);
             return;
         }
         const glm::dvec3 value(radiance);
@@ -54,6 +72,10 @@ class Film {
     // joins the batch, its totals have arrived by then.
     void prefetch(int x, int y) const {
         const std::size_t index = std::size_t(y) * m_width + x;
+        if (m_storage == Storage::MeanOnly) {
+            __builtin_prefetch(&m_colour_sums[index], 1);
+            return;
+        }
         const char* first = reinterpret_cast<const char*>(&m_pixels[index]);
         __builtin_prefetch(first, 1);
         __builtin_prefetch(first + sizeof(Accumulator) - 1, 1);
@@ -71,23 +93,29 @@ class Film {
     // none, and the host plans a first pass without sweeping the film.
     bool has_samples() const { return m_has_samples.value.load(std::memory_order_relaxed); }
 
-    // Every pixel's totals, row-major; for checkpoints.
-    const std::vector<Accumulator>& accumulators() const { return m_pixels; }
+    // One pixel's totals (index y * width + x), in either storage: for
+    // checkpoints and the processes of a distributed render. A MeanOnly
+    // pixel's sum of squares is its sum's square (exact for one sample).
+    Accumulator accumulator(std::size_t index) const;
+    std::vector<Accumulator> accumulators() const;  // every pixel, row-major
     // Replaces every pixel's totals; throws std::invalid_argument unless
-    // there are width x height of them.
+    // there are width x height of them. A MeanOnly film becomes Totals.
     void restore(std::vector<Accumulator> accumulators);
     // Replaces the totals of the pixels x0 <= x < x1, y0 <= y < y1 with
     // `pixels` (row-major over that rectangle) and leaves the others: a
-    // render spread over processes moves one tile's state at a time.
+    // render spread over processes moves one tile's state at a time. A
+    // MeanOnly film keeps its storage (the pixels' sums and counts).
     void restore_region(int x0, int y0, int x1, int y1, const Accumulator* pixels);
 
   private:
-    const Accumulator& at(int x, int y) const { return m_pixels[std::size_t(y) * m_width + x]; }
     int m_width;
     int m_height;
-    std::vector<Accumulator> m_pixels;
+    Storage m_storage;
+    std::vector<Accumulator> m_pixels;  // Totals
+    std::vector<Color> m_colour_sums;   // MeanOnly
     // Samples taken per pixel (count + nonfinite), apart from the totals:
-    // the host's sweeps over the film read 4 bytes a pixel, not 56.
+    // the host's sweeps over the film read 4 bytes a pixel, not 56. Both
+    // storages keep it.
     std::vector<std::uint32_t> m_taken;
     // A value threads update concurrently, copied along with the film.
     template <typename T>

@@ -104,9 +104,15 @@ struct RenderStats {
     bool interrupted = false;  // options.cancel stopped the render
 };
 
+// The film storage a render needs: MeanOnly when no pixel takes more than
+// one sample (fixed at 1 sample, no focal blur), which then needs no
+// variance; Totals otherwise.
+Film::Storage film_storage_for(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options);
+
 // Renders into `film` (of size width x height). Deterministic: the same
 // per-pixel sample counts give the same film bit for bit whatever the
-// thread count, tile size or pass schedule.
+// thread count, tile size or pass schedule. A MeanOnly film given a render
+// that takes more samples a pixel becomes a Totals film first.
 RenderStats render_image(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options,
                          Film& film);
 
