@@ -42,6 +42,7 @@
 #include <vector>
 
 #include <lancer/integrator.h>
+#include <lancer/light_tree.h>
 #include <lancer/shading/bsdf_sampling.h>
 #include <lancer/shading/environment_light.h>
 #include <lancer/shading/volume_tracking.h>
@@ -51,7 +52,7 @@ namespace {
 using namespace lancer;
 
 enum class SamplerKind { Independent, Sobol };
-enum class LightSelection { Power, Uniform, All };
+enum class LightSelection { Power, Uniform, All, Tree };
 enum class Strategy { Mis, Nee, Bsdf };
 
 // Bounce cap standing in for "unlimited": Russian roulette ends paths long
@@ -78,11 +79,22 @@ class PathIntegrator final : public Integrator {
         if (scene.background_varies()) m_environment = std::make_unique<EnvironmentLight>(scene);
         m_lights = scene.lights();
         if (m_environment) m_lights.push_back(m_environment.get());
-        // Light selection probabilities: mostly by emitted power, with a
-        // uniform share so a light whose power() underestimates it (or is 0)
-        // still gets sampled; uniform if any power is not finite. A sky has
-        // no power comparable with a POV light's (which does not fall off),
-        // so it takes half the draws when there are other lights.
+        // With the tree, the lights it can bound are chosen through it, and
+        // it stands in the list below as one entry (null) weighing what they
+        // weigh together; the others (no fall-off, the sky) stay as they are.
+        m_tree.reset();
+        m_tree_power = 0.0;
+        if (m_settings.light_selection == LightSelection::Tree) {
+            std::vector<const Light*> bounded, others;
+            for (const Light* light : m_lights)
+                (light != m_environment.get() && LightTree::can_bound(*light) ? bounded : others).push_back(light);
+            if (!bounded.empty()) {
+                m_tree = std::make_unique<LightTree>(bounded);
+                for (const Light* light : bounded) m_tree_power += std::fabs(double(luminance(light->power())));
+                others.insert(others.end() - (m_environment ? 1 : 0), nullptr);
+                m_lights = std::move(others);
+            }
+        }
         const std::vector<const Light*>& lights = m_lights;
         m_prepared_for = &scene;
         m_light_probability.assign(lights.size(), 0.0f);
@@ -98,11 +110,12 @@ class PathIntegrator final : public Integrator {
         for (std::size_t i = 0; i < others; ++i) {
             // A negative light (valid POV) darkens as much as a positive
             // one lights: its magnitude sets how often it is sampled.
-            power[i] = std::fabs(double(luminance(lights[i]->power())));
+            power[i] = lights[i] == nullptr ? m_tree_power : std::fabs(double(luminance(lights[i]->power())));
             finite = finite && std::isfinite(power[i]);
             total += power[i];
         }
-        if (m_settings.light_selection != LightSelection::Power) {
+        if (m_settings.light_selection == LightSelection::Uniform ||
+            m_settings.light_selection == LightSelection::All) {
             m_light_probability.assign(lights.size(), uniform);
         } else {
             const float others_uniform = others > 0 ? 1.0f / float(others) : 0.0f;
@@ -114,7 +127,11 @@ class PathIntegrator final : public Integrator {
             if (m_environment) m_light_probability.back() = environment_share;
         }
         m_light_index.clear();
-        for (std::size_t i = 0; i < lights.size(); ++i) m_light_index[lights[i]] = i;
+        for (std::size_t i = 0; i < lights.size(); ++i)
+            if (lights[i] != nullptr) m_light_index[lights[i]] = i;
+        m_tree_entry = lights.size();
+        for (std::size_t i = 0; i < lights.size(); ++i)
+            if (lights[i] == nullptr) m_tree_entry = i;
         m_light_cdf.assign(lights.size(), 0.0f);
         float running = 0.0f;
         for (std::size_t i = 0; i < lights.size(); ++i) m_light_cdf[i] = running += m_light_probability[i];
@@ -138,7 +155,8 @@ class PathIntegrator final : public Integrator {
         bool delta_bounce = true;   // the camera counts as a delta event
         float previous_pdf = 0.0f;  // solid-angle density of the last BSDF sample
         Vec3 previous_point(0.0f);
-        InteriorStack inside;  // objects the path is in (media only)
+        Vec3 previous_normal(0.0f);  // the normal NEE weighed lights with there (0 in a medium)
+        InteriorStack inside;        // objects the path is in (media only)
 
         for (int depth = 0;; ++depth) {
             Hit hit;
@@ -170,6 +188,7 @@ class PathIntegrator final : public Integrator {
                         delta_bounce = false;
                         previous_pdf = event.medium->phase_pdf(glm::dot(ray.direction, wi));
                         previous_point = event.point;
+                        previous_normal = Vec3(0.0f);
                         ray = Ray{event.point, wi};
                         if (depth + 1 >= m_settings.rr_depth) {
                             const float survive = std::min(1.0f, max_component(throughput) / radiance_scale);
@@ -186,7 +205,8 @@ class PathIntegrator final : public Integrator {
                 float weight = 1.0f;
                 if (m_environment && !delta_bounce && &scene == m_prepared_for) {
                     const float light_pdf =
-                        selection_probability(scene, m_environment.get()) * m_environment->pdf(ray.direction);
+                        selection_probability(scene, m_environment.get(), previous_point, previous_normal) *
+                        m_environment->pdf(ray.direction);
                     if (m_settings.strategy == Strategy::Nee && light_pdf > 0.0f) weight = 0.0f;
                     if (m_settings.strategy == Strategy::Mis) weight = power_heuristic(previous_pdf, light_pdf);
                 }
@@ -208,11 +228,12 @@ class PathIntegrator final : public Integrator {
                 if (!is_black(emitted)) {
                     float weight = 1.0f;
                     if (!delta_bounce && m_settings.strategy == Strategy::Nee &&
-                        selection_probability(scene, hit.emitter) > 0.0f)
+                        selection_probability(scene, hit.emitter, previous_point, previous_normal) > 0.0f)
                         weight = 0.0f;
                     if (!delta_bounce && m_settings.strategy == Strategy::Mis) {
-                        const float light_pdf = selection_probability(scene, hit.emitter) *
-                                                hit.emitter->pdf(previous_point, ray.direction, hit);
+                        const float light_pdf =
+                            selection_probability(scene, hit.emitter, previous_point, previous_normal) *
+                            hit.emitter->pdf(previous_point, ray.direction, hit);
                         weight = power_heuristic(previous_pdf, light_pdf);
                     }
                     radiance += throughput * weight * emitted;
@@ -253,6 +274,7 @@ class PathIntegrator final : public Integrator {
                 delta_bounce = scattered.is_delta;
                 previous_pdf = scattered.pdf;
                 previous_point = hit.position;
+                previous_normal = hit.shading_normal;
             }
             ray = hit.spawn_ray(scattered.wi);
 
@@ -283,20 +305,22 @@ class PathIntegrator final : public Integrator {
         return eta * eta;
     }
 
-    // Probability that NEE picks `light` (1 when every light is sampled).
-    float selection_probability(const RenderScene& scene, const Light* light) const {
+    // Probability that NEE at point p with normal n (0 in a medium) picks
+    // `light` (1 when every light is sampled).
+    float selection_probability(const RenderScene& scene, const Light* light, const Vec3& p, const Vec3& n) const {
         if (m_settings.light_selection == LightSelection::All) return 1.0f;
         if (&scene != m_prepared_for) return scene.lights().empty() ? 0.0f : 1.0f / float(scene.lights().size());
         const auto found = m_light_index.find(light);
-        // Not a light NEE knows: BSDF sampling takes full weight.
-        return found == m_light_index.end() ? 0.0f : m_light_probability[found->second];
+        if (found != m_light_index.end()) return m_light_probability[found->second];
+        if (m_tree) return m_light_probability[m_tree_entry] * m_tree->probability(p, n, light);
+        return 0.0f;  // not a light NEE knows: BSDF sampling takes full weight
     }
 
     // Light reaching `hit` straight from the lights, through the smooth
     // lobes of `bsdf`, MIS-weighted against BSDF sampling.
     Color direct_light(const RenderScene& scene, const Hit& hit, const Bsdf& bsdf, float u_light, const Vec2& u_point,
                        Sampler& sampler) const {
-        return for_chosen_lights(scene, u_light, u_point, sampler,
+        return for_chosen_lights(scene, u_light, u_point, hit.position, hit.shading_normal, sampler,
                                  [&](const Light& light, float selection, const Vec2& u) {
                                      return light_contribution(scene, hit, bsdf, light, selection, u, sampler);
                                  });
@@ -306,36 +330,39 @@ class PathIntegrator final : public Integrator {
     // against phase sampling; through media and index-matched surfaces.
     Color medium_direct_light(const RenderScene& scene, const MediumInteraction& at, const Vec3& direction,
                               float u_light, const Vec2& u_point, Sampler& sampler) const {
-        return for_chosen_lights(
-            scene, u_light, u_point, sampler, [&](const Light& light, float selection, const Vec2& u) {
-                const bool delta = light.is_delta();
-                if (!delta && m_settings.strategy == Strategy::Bsdf) return Color(0.0f);
-                if (!light.lights_media()) return Color(0.0f);              // POV's media_interaction off
-                if (delta && light.light_group() >= 0) return Color(0.0f);  // a light_group's: no medium
-                const LightSample incident = light.sample(at.point, u);
-                if (!(incident.pdf > 0.0f) || is_black(incident.radiance)) return Color(0.0f);
-                const float phase = at.medium->phase_pdf(glm::dot(direction, incident.wi));
-                if (!(phase > 0.0f)) return Color(0.0f);
-                Color visible(1.0f);
-                if (light.casts_shadows()) {
-                    Hit from;
-                    from.position = at.point;
-                    visible = shadow_transmittance(scene, from.spawn_ray_to(incident.point), &light, sampler);
-                    if (is_black(visible)) return Color(0.0f);
-                }
-                const float light_pdf = selection * incident.pdf;
-                float weight = 1.0f;
-                if (!incident.is_delta && m_settings.strategy == Strategy::Mis)
-                    weight = power_heuristic(light_pdf, phase);
-                return phase * incident.radiance * visible * (weight / light_pdf);
-            });
+        return for_chosen_lights(scene, u_light, u_point, at.point, Vec3(0.0f), sampler,
+                                 [&](const Light& light, float selection, const Vec2& u) {
+                                     const bool delta = light.is_delta();
+                                     if (!delta && m_settings.strategy == Strategy::Bsdf) return Color(0.0f);
+                                     if (!light.lights_media()) return Color(0.0f);  // POV's media_interaction off
+                                     if (delta && light.light_group() >= 0)
+                                         return Color(0.0f);  // a light_group's: no medium
+                                     const LightSample incident = light.sample(at.point, u);
+                                     if (!(incident.pdf > 0.0f) || is_black(incident.radiance)) return Color(0.0f);
+                                     const float phase = at.medium->phase_pdf(glm::dot(direction, incident.wi));
+                                     if (!(phase > 0.0f)) return Color(0.0f);
+                                     Color visible(1.0f);
+                                     if (light.casts_shadows()) {
+                                         Hit from;
+                                         from.position = at.point;
+                                         visible = shadow_transmittance(scene, from.spawn_ray_to(incident.point),
+                                                                        &light, sampler);
+                                         if (is_black(visible)) return Color(0.0f);
+                                     }
+                                     const float light_pdf = selection * incident.pdf;
+                                     float weight = 1.0f;
+                                     if (!incident.is_delta && m_settings.strategy == Strategy::Mis)
+                                         weight = power_heuristic(light_pdf, phase);
+                                     return phase * incident.radiance * visible * (weight / light_pdf);
+                                 });
     }
 
     // Sums contribution(light, selection probability, u) over the lights
-    // NEE picks: one by the selection distribution, or every one.
+    // NEE picks at point p with normal n: one by the selection
+    // distribution (through the tree when its entry is drawn), or every one.
     template <class Contribution>
-    Color for_chosen_lights(const RenderScene& scene, float u_light, const Vec2& u_point, Sampler& sampler,
-                            const Contribution& contribution) const {
+    Color for_chosen_lights(const RenderScene& scene, float u_light, const Vec2& u_point, const Vec3& p, const Vec3& n,
+                            Sampler& sampler, const Contribution& contribution) const {
         const std::vector<const Light*>& lights = &scene == m_prepared_for ? m_lights : scene.lights();
         if (lights.empty()) return Color(0.0f);
         if (m_settings.light_selection == LightSelection::All) {
@@ -352,6 +379,15 @@ class PathIntegrator final : public Integrator {
             index = std::size_t(std::upper_bound(m_light_cdf.begin(), m_light_cdf.end(), target) - m_light_cdf.begin());
             index = std::min(index, lights.size() - 1);
             probability = m_light_probability[index];
+            if (lights[index] == nullptr) {
+                // The tree's entry: u_light's place within it picks there.
+                const float lower = index == 0 ? 0.0f : m_light_cdf[index - 1];
+                const float width = m_light_cdf[index] - lower;
+                const float u = width > 0.0f ? std::clamp((target - lower) / width, 0.0f, 0x1.fffffep-1f) : 0.5f;
+                const LightTree::Choice choice = m_tree->sample(p, n, u);
+                if (choice.light == nullptr || !(probability > 0.0f)) return Color(0.0f);
+                return contribution(*choice.light, probability * choice.probability, u_point);
+            }
         } else {
             index = std::min(std::size_t(u_light * float(lights.size())), lights.size() - 1);
             probability = 1.0f / float(lights.size());
@@ -399,6 +435,11 @@ class PathIntegrator final : public Integrator {
     std::vector<float> m_light_probability;
     std::vector<float> m_light_cdf;
     std::unordered_map<const Light*, std::size_t> m_light_index;
+    // light_sampling "tree": the lights it chooses among, and its entry
+    // (null) in m_lights.
+    std::unique_ptr<LightTree> m_tree;
+    double m_tree_power = 0.0;
+    std::size_t m_tree_entry = 0;
 };
 
 const ParameterDecl kParameters[] = {
@@ -408,7 +449,8 @@ const ParameterDecl kParameters[] = {
     {"sampler", ParameterType::String, "independent",
      "\"independent\" or \"sobol\" (Owen-scrambled Sobol; best with 2^k samples)"},
     {"light_sampling", ParameterType::String, "power",
-     "light chosen per NEE: \"power\", \"uniform\", or \"all\" (every light each time)"},
+     "light chosen per NEE: \"power\", \"tree\" (by each light's bound on its contribution at the point, "
+     "through a tree of their bounds), \"uniform\", or \"all\" (every light each time)"},
     {"strategy", ParameterType::String, "mis",
      "\"mis\" (default), \"nee\" (light sampling only) or \"bsdf\" (BSDF sampling only)"},
     {"additive_reflection", ParameterType::Bool, "true",
@@ -436,8 +478,10 @@ std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
         settings.light_selection = LightSelection::Uniform;
     else if (selection == "all")
         settings.light_selection = LightSelection::All;
+    else if (selection == "tree")
+        settings.light_selection = LightSelection::Tree;
     else
-        throw std::invalid_argument("path: light_sampling must be \"power\", \"uniform\" or \"all\", not \"" +
+        throw std::invalid_argument("path: light_sampling must be \"tree\", \"power\", \"uniform\" or \"all\", not \"" +
                                     selection + "\"");
 
     settings.additive_reflection = parameters.get_bool("additive_reflection", true);

@@ -282,6 +282,52 @@ TEST_F(PathFixture, MisNeeAndBsdfSamplingAgree) {
     EXPECT_TRUE(ac.passed) << "mis vs bsdf: " << ac.summary;
 }
 
+// Every kind of light at once: lamps (spheres, a panel), an emitting box,
+// POV lights with fade (a point and a spotlight), and lights that do not
+// fall off (a POV point light, a parallel light, a sky), which the tree
+// leaves to the power distribution.
+sg::SceneGraph many_kinds_of_light_scene() {
+    ParseOptions options;
+    options.language_version = 3.7;
+    ParseResult parsed = parse_scene_string(R"(
+        camera { location <0, 3, -5> look_at <0, 0.4, 0> }
+        plane { y, 0 pigment { rgb 0.8 } finish { ambient 0 diffuse 1 phong 0.3 } }
+        sphere { <0, 0.6, 0>, 0.6 pigment { rgb <0.9, 0.5, 0.3> } finish { ambient 0 diffuse 1 } }
+        #for (I, 0, 11)
+          light_source { <3 * cos(I * pi / 6), 0.4 + 0.2 * mod(I, 3), 3 * sin(I * pi / 6)>
+                         rgb <1 + mod(I, 2), 1, 2 - mod(I, 2)> * 0.4 area_sphere 0.05 + 0.02 * mod(I, 4) }
+        #end
+        light_source { <0, 2.5, 1> rgb 0.6 area_rectangle <1, 0, 0>, <0, 0, 1> }
+        box { <-2.5, 0, 2>, <-2, 0.8, 2.5> pigment { rgb <0.5, 1, 0.5> } finish { ambient 0 diffuse 0 emission 1.5 } }
+        light_source { <2, 2, -1> rgb 0.5 fade_distance 1 fade_power 2 }
+        light_source { <-1, 3, -1> rgb 0.8 spotlight point_at <0, 0, 0> radius 10 falloff 20 fade_distance 2 fade_power 1 }
+        light_source { <1, 5, -4> rgb 0.15 }
+        light_source { <0, 10, 0> rgb 0.1 parallel point_at <0, 0, 0> }
+        sky_sphere { pigment { rgb <0.05, 0.07, 0.1> } }
+    )",
+                                            "many.pov", options);
+    EXPECT_TRUE(parsed.ok());
+    for (const auto& d : parsed.diagnostics) ADD_FAILURE() << format_diagnostic(d);
+    return parsed.ok() ? *parsed.scene : sg::SceneGraph{};
+}
+
+// Choosing through the tree changes the noise, not the image: it agrees
+// with lighting by every light at once, with MIS and with light sampling
+// alone.
+TEST_F(PathFixture, TreeLightSelectionAgreesWithEveryLight) {
+    const sg::SceneGraph graph = many_kinds_of_light_scene();
+    auto all = make_integrator(path, {"max_depth=2", "light_sampling=all"});
+    auto tree = make_integrator(path, {"max_depth=2", "light_sampling=tree"});
+    auto tree_nee = make_integrator(path, {"max_depth=2", "light_sampling=tree", "strategy=nee"});
+    const PixelStatistics a = PixelStatistics::from_film(render(graph, *all, 16, 12, 256, 11));
+    const PixelStatistics b = PixelStatistics::from_film(render(graph, *tree, 16, 12, 512, 12));
+    const PixelStatistics c = PixelStatistics::from_film(render(graph, *tree_nee, 16, 12, 512, 13));
+    const ImageComparison ab = compare_images(a, b, 0.01, 2);
+    const ImageComparison ac = compare_images(a, c, 0.01, 2);
+    EXPECT_TRUE(ab.passed) << "all vs tree: " << ab.summary;
+    EXPECT_TRUE(ac.passed) << "all vs tree, nee only: " << ac.summary;
+}
+
 TEST_F(PathFixture, SobolAndIndependentAgree) {
     const sg::SceneGraph graph = glossy_area_scene();
     auto independent = make_integrator(path, {"sampler=independent"});

@@ -74,7 +74,8 @@ class Light {
 
     // This light's parameters as `Parameters` (PointLightParameters,
     // DirectionalLightParameters, PovAreaLightParameters,
-    // RectangleLightParameters, SphereLightParameters, below), or null when the light is of another
+    // RectangleLightParameters, SphereLightParameters, EmissiveShapeParameters,
+    // below), or null when the light is of another
     // kind. For integrators that evaluate a kind of light themselves; new
     // kinds of light add a parameter struct, not a method.
     template <class Parameters>
@@ -200,6 +201,18 @@ struct SphereLightParameters {
     Vec3 center{0.0f};
     float radius = 0.0f;
     Color radiance{0.0f};
+};
+
+// An object whose material emits (EmissiveShapeLight): where it lies and
+// which way it emits, for light selection.
+struct EmissiveShapeParameters {
+    static constexpr Light::Kind kKind = Light::Kind::EmissiveShape;
+    Vec3 lower{0.0f};  // a world box holding the surface
+    Vec3 upper{0.0f};
+    // Flat: every point's normal is `normal`, emitting on both sides;
+    // otherwise it emits every way.
+    bool flat = false;
+    Vec3 normal{0.0f};
 };
 
 // A plain point light (no fade, no pattern) at squared distance d2 from the

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "geometry/shapes.h"
@@ -78,6 +79,16 @@ class PolygonSampler final : public SurfaceSampler {
         return true;
     }
     bool is_closed() const override { return m_closed; }
+    void bounds(DVec3& lower, DVec3& upper) const override {
+        lower = DVec3(std::numeric_limits<double>::infinity());
+        upper = -lower;
+        for (const Polygon& p : m_polygons)
+            for (const DVec3& corner : {p.origin, p.origin + p.edge1, p.origin + p.edge2,
+                                        p.origin + p.edge1 + (p.parallelogram ? p.edge2 : DVec3(0.0))}) {
+                lower = glm::min(lower, corner);
+                upper = glm::max(upper, corner);
+            }
+    }
 
   private:
     std::vector<Polygon> m_polygons;

@@ -100,6 +100,8 @@ class SurfaceSampler {
     virtual bool is_flat(DVec3& normal) const = 0;
     // Closed surfaces emit from one side only towards the outside world.
     virtual bool is_closed() const = 0;
+    // A world box holding every point sample() can return.
+    virtual void bounds(DVec3& lower, DVec3& upper) const = 0;
 };
 
 std::unique_ptr<SurfaceSampler> make_sphere_sampler(const AnalyticSphere& s, const Placement& placement,

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 
 namespace lancer {
 namespace {
@@ -113,6 +114,18 @@ class SphereSampler final : public SurfaceSampler {
     DVec3 centroid() const override { return m_placement.point_to_world(m_sphere.center); }
     bool is_flat(DVec3&) const override { return false; }
     bool is_closed() const override { return true; }
+    void bounds(DVec3& lower, DVec3& upper) const override {
+        // The object box's corners in the world: the transformed sphere lies
+        // inside the transformed box.
+        lower = DVec3(std::numeric_limits<double>::infinity());
+        upper = -lower;
+        for (int corner = 0; corner < 8; ++corner) {
+            const DVec3 offset((corner & 1) ? 1.0 : -1.0, (corner & 2) ? 1.0 : -1.0, (corner & 4) ? 1.0 : -1.0);
+            const DVec3 world = m_placement.point_to_world(m_sphere.center + m_sphere.radius * offset);
+            lower = glm::min(lower, world);
+            upper = glm::max(upper, world);
+        }
+    }
 
   private:
     AnalyticSphere m_sphere;

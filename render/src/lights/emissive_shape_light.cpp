@@ -26,6 +26,12 @@ EmissiveShapeLight::EmissiveShapeLight(std::unique_ptr<SurfaceSampler> surface, 
     const double sides = flat ? 2.0 : 1.0;
     m_power = float(sides * kPiD * area) * mean_radiance;
     const Vec3 centre(m_surface->centroid());
+    DVec3 lower, upper;
+    m_surface->bounds(lower, upper);
+    m_parameters.lower = Vec3(lower);
+    m_parameters.upper = Vec3(upper);
+    m_parameters.flat = flat;
+    if (flat) m_parameters.normal = Vec3(glm::normalize(flat_normal));
     if (flat)
         m_proxy = std::make_unique<PointLight>(PointLightParameters{
             .position = centre, .intensity = float(area) * mean_radiance, .pattern_axis = Vec3(flat_normal)});

@@ -200,8 +200,12 @@ class EmissiveShapeLight final : public Light {
     Color power() const override { return m_power; }
     const Light& proxy() const override { return *m_proxy; }
 
+  protected:
+    const void* parameters_of(Kind kind) const override { return parameters_if(kind, m_parameters); }
+
   private:
     Color radiance_at(const Hit& hit) const;
+    EmissiveShapeParameters m_parameters;
     std::unique_ptr<SurfaceSampler> m_surface;
     std::uint32_t m_object_id;
     const Material* m_material;
