@@ -79,22 +79,43 @@ class PathIntegrator final : public Integrator {
         if (scene.background_varies()) m_environment = std::make_unique<EnvironmentLight>(scene);
         m_lights = scene.lights();
         if (m_environment) m_lights.push_back(m_environment.get());
-        // With the tree, the lights it can bound are chosen through it, and
-        // it stands in the list below as one entry (null) weighing what they
-        // weigh together; the others (no fall-off, the sky) stay as they are.
-        m_tree.reset();
-        m_tree_power = 0.0;
+        // With the tree, the lights a tree can bound are chosen through it:
+        // one tree for lights that fall off with distance, one for POV's
+        // point lights without fade. Each stands in the list below as one
+        // entry (null) of their summed power; the others (parallel lights,
+        // the sky) stay as they are.
+        m_trees.clear();
+        m_tree_power.clear();
         if (m_settings.light_selection == LightSelection::Tree) {
-            std::vector<const Light*> bounded, others;
-            for (const Light* light : m_lights)
-                (light != m_environment.get() && LightTree::can_bound(*light) ? bounded : others).push_back(light);
-            if (!bounded.empty()) {
-                m_tree = std::make_unique<LightTree>(bounded);
-                for (const Light* light : bounded) m_tree_power += std::fabs(double(luminance(light->power())));
-                others.insert(others.end() - (m_environment ? 1 : 0), nullptr);
-                m_lights = std::move(others);
+            std::vector<const Light*> falling, steady, others;
+            for (const Light* light : m_lights) {
+                if (light != m_environment.get() && LightTree::can_bound(*light, LightTree::Falloff::InverseSquare))
+                    falling.push_back(light);
+                else if (light != m_environment.get() && LightTree::can_bound(*light, LightTree::Falloff::None))
+                    steady.push_back(light);
+                else
+                    others.push_back(light);
             }
+            auto add_tree = [&](const std::vector<const Light*>& members, LightTree::Falloff falloff) {
+                if (members.empty()) return;
+                m_trees.push_back(std::make_unique<LightTree>(members, falloff));
+                double power = 0.0;
+                for (const Light* light : members) power += std::fabs(double(luminance(light->power())));
+                m_tree_power.push_back(power);
+                others.insert(others.end() - (m_environment ? 1 : 0), nullptr);
+            };
+            add_tree(falling, LightTree::Falloff::InverseSquare);
+            add_tree(steady, LightTree::Falloff::None);
+            m_lights = std::move(others);
         }
+        // Entry i's tree (null for a light): the k-th null entry is tree k.
+        m_entry_tree.assign(m_lights.size(), nullptr);
+        std::vector<double> entry_tree_power(m_lights.size(), 0.0);
+        for (std::size_t i = 0, k = 0; i < m_lights.size(); ++i)
+            if (m_lights[i] == nullptr) {
+                m_entry_tree[i] = m_trees[k].get();
+                entry_tree_power[i] = m_tree_power[k++];
+            }
         const std::vector<const Light*>& lights = m_lights;
         m_prepared_for = &scene;
         m_light_probability.assign(lights.size(), 0.0f);
@@ -110,7 +131,7 @@ class PathIntegrator final : public Integrator {
         for (std::size_t i = 0; i < others; ++i) {
             // A negative light (valid POV) darkens as much as a positive
             // one lights: its magnitude sets how often it is sampled.
-            power[i] = lights[i] == nullptr ? m_tree_power : std::fabs(double(luminance(lights[i]->power())));
+            power[i] = lights[i] == nullptr ? entry_tree_power[i] : std::fabs(double(luminance(lights[i]->power())));
             finite = finite && std::isfinite(power[i]);
             total += power[i];
         }
@@ -129,9 +150,7 @@ class PathIntegrator final : public Integrator {
         m_light_index.clear();
         for (std::size_t i = 0; i < lights.size(); ++i)
             if (lights[i] != nullptr) m_light_index[lights[i]] = i;
-        m_tree_entry = lights.size();
-        for (std::size_t i = 0; i < lights.size(); ++i)
-            if (lights[i] == nullptr) m_tree_entry = i;
+
         m_light_cdf.assign(lights.size(), 0.0f);
         float running = 0.0f;
         for (std::size_t i = 0; i < lights.size(); ++i) m_light_cdf[i] = running += m_light_probability[i];
@@ -312,8 +331,13 @@ class PathIntegrator final : public Integrator {
         if (&scene != m_prepared_for) return scene.lights().empty() ? 0.0f : 1.0f / float(scene.lights().size());
         const auto found = m_light_index.find(light);
         if (found != m_light_index.end()) return m_light_probability[found->second];
-        if (m_tree) return m_light_probability[m_tree_entry] * m_tree->probability(p, n, light);
-        return 0.0f;  // not a light NEE knows: BSDF sampling takes full weight
+        // In a tree (probability 0 in the others), or not a light NEE knows:
+        // then BSDF sampling takes full weight.
+        float probability = 0.0f;
+        for (std::size_t i = 0; i < m_entry_tree.size(); ++i)
+            if (m_entry_tree[i] != nullptr)
+                probability += m_light_probability[i] * m_entry_tree[i]->probability(p, n, light);
+        return probability;
     }
 
     // Light reaching `hit` straight from the lights, through the smooth
@@ -380,11 +404,11 @@ class PathIntegrator final : public Integrator {
             index = std::min(index, lights.size() - 1);
             probability = m_light_probability[index];
             if (lights[index] == nullptr) {
-                // The tree's entry: u_light's place within it picks there.
+                // A tree's entry: u_light's place within it picks there.
                 const float lower = index == 0 ? 0.0f : m_light_cdf[index - 1];
                 const float width = m_light_cdf[index] - lower;
                 const float u = width > 0.0f ? std::clamp((target - lower) / width, 0.0f, 0x1.fffffep-1f) : 0.5f;
-                const LightTree::Choice choice = m_tree->sample(p, n, u);
+                const LightTree::Choice choice = m_entry_tree[index]->sample(p, n, u);
                 if (choice.light == nullptr || !(probability > 0.0f)) return Color(0.0f);
                 return contribution(*choice.light, probability * choice.probability, u_point);
             }
@@ -435,11 +459,11 @@ class PathIntegrator final : public Integrator {
     std::vector<float> m_light_probability;
     std::vector<float> m_light_cdf;
     std::unordered_map<const Light*, std::size_t> m_light_index;
-    // light_sampling "tree": the lights it chooses among, and its entry
-    // (null) in m_lights.
-    std::unique_ptr<LightTree> m_tree;
-    double m_tree_power = 0.0;
-    std::size_t m_tree_entry = 0;
+    // light_sampling "tree": the trees, their summed power, and for each
+    // entry of m_lights its tree (null: the entry is a light).
+    std::vector<std::unique_ptr<LightTree>> m_trees;
+    std::vector<double> m_tree_power;
+    std::vector<const LightTree*> m_entry_tree;
 };
 
 const ParameterDecl kParameters[] = {

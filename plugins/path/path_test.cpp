@@ -283,9 +283,9 @@ TEST_F(PathFixture, MisNeeAndBsdfSamplingAgree) {
 }
 
 // Every kind of light at once: lamps (spheres, a panel), an emitting box,
-// POV lights with fade (a point and a spotlight), and lights that do not
-// fall off (a POV point light, a parallel light, a sky), which the tree
-// leaves to the power distribution.
+// POV lights with fade (a point and a spotlight), which one tree holds, POV
+// lights without (points and a spotlight), which another holds, and a
+// parallel light and a sky, which stay with the power distribution.
 sg::SceneGraph many_kinds_of_light_scene() {
     ParseOptions options;
     options.language_version = 3.7;
@@ -302,6 +302,8 @@ sg::SceneGraph many_kinds_of_light_scene() {
         light_source { <2, 2, -1> rgb 0.5 fade_distance 1 fade_power 2 }
         light_source { <-1, 3, -1> rgb 0.8 spotlight point_at <0, 0, 0> radius 10 falloff 20 fade_distance 2 fade_power 1 }
         light_source { <1, 5, -4> rgb 0.15 }
+        light_source { <-3, 4, 2> rgb 0.1 }
+        light_source { <3, 2, 3> rgb 0.3 spotlight point_at <2, 0, 1> radius 15 falloff 25 }
         light_source { <0, 10, 0> rgb 0.1 parallel point_at <0, 0, 0> }
         sky_sphere { pigment { rgb <0.05, 0.07, 0.1> } }
     )",

@@ -6,9 +6,11 @@
 // Conty Estevez and Kulla, "Importance Sampling of Many Lights with
 // Adaptive Tree Splitting", 2018, in the form pbrt-v4 gives it).
 //
-// Lights whose light does not fall off with distance (POV-Ray's point and
-// parallel lights without fade, the sky) have no place in such a bound:
-// can_bound() says no and the caller chooses among those otherwise.
+// POV-Ray's point lights without fade light every distance alike and have
+// no finite power: a tree of its own holds them (Falloff::None), weighing
+// each by its colour and the cosines alone. Parallel lights and the sky
+// have no position: can_bound() says no, and the caller chooses among
+// those otherwise.
 //
 // Unbiased for a one-sample estimate: a light gets probability 0 at a
 // point only where its bounds show it sends nothing there (behind a
@@ -25,14 +27,19 @@ namespace lancer {
 
 class LightTree {
   public:
-    // Whether the tree can hold `light`: its light falls off with distance
-    // and it has a position or a box.
-    static bool can_bound(const Light& light);
+    enum class Falloff {
+        InverseSquare,  // lamps, emitters, POV lights with fade: weighed by power / distance^2
+        None,           // POV point lights without fade: by power alone
+    };
+    // Whether a tree of `falloff` can hold `light`: it has a position or a
+    // box, and its light falls off with distance (InverseSquare) or not at
+    // all (None).
+    static bool can_bound(const Light& light, Falloff falloff = Falloff::InverseSquare);
 
-    // `lights`: each one can_bound. Their power weighs them (90%, with 10%
-    // spread evenly, so a light whose power() underestimates it still gets
-    // chosen; evenly if a power is not finite).
-    explicit LightTree(const std::vector<const Light*>& lights);
+    // `lights`: each one can_bound with `falloff`. Their power weighs them
+    // (90%, with 10% spread evenly, so a light whose power() underestimates
+    // it still gets chosen; evenly if a power is not finite).
+    explicit LightTree(const std::vector<const Light*>& lights, Falloff falloff = Falloff::InverseSquare);
 
     bool empty() const { return m_nodes.empty(); }
 
@@ -57,7 +64,8 @@ class LightTree {
         bool two_sided = false;       // emits along -axis too
     };
     // A bound on what a node of these bounds sends to p (0: nothing).
-    static float importance(const Bounds& bounds, const Vec3& p, const Vec3& n);
+    static float importance(const Bounds& bounds, const Vec3& p, const Vec3& n,
+                            Falloff falloff = Falloff::InverseSquare);
 
   private:
     struct Node {
@@ -68,6 +76,7 @@ class LightTree {
     std::uint32_t build(std::vector<std::pair<const Light*, Bounds>>& lights, std::size_t begin, std::size_t end,
                         std::uint64_t trail, int depth);
 
+    Falloff m_falloff;
     std::vector<Node> m_nodes;  // the root first
     // Each light's path from the root: bit k says which child at depth k.
     struct Trail {

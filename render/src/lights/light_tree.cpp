@@ -59,12 +59,15 @@ LightTree::Bounds merged(const LightTree::Bounds& a, const LightTree::Bounds& b)
     return out;
 }
 
-bool falls_off(const PointLightParameters& point) {
-    return point.falloff == PointFalloff::InverseSquare || point.fade_power > 0.0f;
+bool falls_off(const PointLightParameters& point, LightTree::Falloff falloff) {
+    const bool fades = point.falloff == PointFalloff::InverseSquare || point.fade_power > 0.0f;
+    return fades == (falloff == LightTree::Falloff::InverseSquare);
 }
 
-// A light's bounds with its power left at 0 (the tree weighs it).
-bool bounds_of(const Light& light, LightTree::Bounds& bounds) {
+// A light's bounds with its power left at 0 (the tree weighs it), if a
+// tree of `falloff` can hold it.
+bool bounds_of(const Light& light, LightTree::Falloff falloff, LightTree::Bounds& bounds) {
+    const bool inverse_square = falloff == LightTree::Falloff::InverseSquare;
     auto around = [&](const Vec3& centre, float radius) {
         bounds.lower = centre - Vec3(radius);
         bounds.upper = centre + Vec3(radius);
@@ -84,14 +87,14 @@ bool bounds_of(const Light& light, LightTree::Bounds& bounds) {
     switch (light.kind()) {
     case Light::Kind::Point: {
         const auto* p = light.parameters<PointLightParameters>();
-        if (p == nullptr || !falls_off(*p)) return false;
+        if (p == nullptr || !falls_off(*p, falloff)) return false;
         around(p->position, 0.0f);
         point(*p);
         return true;
     }
     case Light::Kind::PovArea: {
         const auto* p = light.parameters<PovAreaLightParameters>();
-        if (p == nullptr || !falls_off(p->center)) return false;
+        if (p == nullptr || !falls_off(p->center, falloff)) return false;
         // `orient` may turn the axes: the sphere they sweep holds the grid.
         around(p->center.position, 0.5f * (glm::length(p->axis1) + glm::length(p->axis2)));
         point(p->center);
@@ -99,7 +102,7 @@ bool bounds_of(const Light& light, LightTree::Bounds& bounds) {
     }
     case Light::Kind::Rectangle: {
         const auto* p = light.parameters<RectangleLightParameters>();
-        if (p == nullptr) return false;
+        if (p == nullptr || !inverse_square) return false;
         const Vec3 half = 0.5f * (glm::abs(p->axis1) + glm::abs(p->axis2));
         bounds.lower = p->center - half;
         bounds.upper = p->center + half;
@@ -111,13 +114,13 @@ bool bounds_of(const Light& light, LightTree::Bounds& bounds) {
     }
     case Light::Kind::Sphere: {
         const auto* p = light.parameters<SphereLightParameters>();
-        if (p == nullptr) return false;
+        if (p == nullptr || !inverse_square) return false;
         around(p->center, p->radius);
         return true;
     }
     case Light::Kind::EmissiveShape: {
         const auto* p = light.parameters<EmissiveShapeParameters>();
-        if (p == nullptr) return false;
+        if (p == nullptr || !inverse_square) return false;
         bounds.lower = p->lower;
         bounds.upper = p->upper;
         if (p->flat && p->normal != Vec3(0.0f)) {
@@ -140,12 +143,12 @@ bool finite_box(const LightTree::Bounds& b) {
 
 }  // namespace
 
-bool LightTree::can_bound(const Light& light) {
+bool LightTree::can_bound(const Light& light, Falloff falloff) {
     Bounds bounds;
-    return bounds_of(light, bounds) && finite_box(bounds);
+    return bounds_of(light, falloff, bounds) && finite_box(bounds);
 }
 
-float LightTree::importance(const Bounds& b, const Vec3& p, const Vec3& n) {
+float LightTree::importance(const Bounds& b, const Vec3& p, const Vec3& n, Falloff falloff) {
     if (!(b.power > 0.0f)) return 0.0f;
     const Vec3 centre = 0.5f * (b.lower + b.upper);
     const Vec3 offset = p - centre;
@@ -153,7 +156,7 @@ float LightTree::importance(const Bounds& b, const Vec3& p, const Vec3& n) {
     const float radius = 0.5f * glm::length(b.upper - b.lower);
     // A point close to the box is weighed as if at its edge: the bound
     // below would otherwise grow without limit near a small light.
-    const float weighed2 = std::max({distance2, radius, 1e-12f});
+    const float weighed2 = falloff == Falloff::None ? 1.0f : std::max({distance2, radius, 1e-12f});
     const Vec3 wi = distance2 > 0.0f ? offset / std::sqrt(distance2) : Vec3(0.0f, 0.0f, 1.0f);
     // The angle the box subtends from p (every way from inside it).
     float cos_box = -1.0f;
@@ -178,13 +181,13 @@ float LightTree::importance(const Bounds& b, const Vec3& p, const Vec3& n) {
     return std::isfinite(value) ? std::max(value, 0.0f) : 0.0f;
 }
 
-LightTree::LightTree(const std::vector<const Light*>& lights) {
+LightTree::LightTree(const std::vector<const Light*>& lights, Falloff falloff) : m_falloff(falloff) {
     std::vector<std::pair<const Light*, Bounds>> items;
     double total = 0.0;
     bool finite = true;
     for (const Light* light : lights) {
         Bounds bounds;
-        if (light == nullptr || !bounds_of(*light, bounds) || !finite_box(bounds)) continue;
+        if (light == nullptr || !bounds_of(*light, falloff, bounds) || !finite_box(bounds)) continue;
         // A negative light (valid POV) darkens as much as a positive one
         // lights: its magnitude weighs it.
         const double power = std::fabs(double(luminance(light->power())));
@@ -243,8 +246,8 @@ LightTree::Choice LightTree::sample(const Vec3& p, const Vec3& n, float u) const
     float probability = 1.0f;
     while (m_nodes[index].light == nullptr) {
         const Node& node = m_nodes[index];
-        const float left = importance(m_nodes[node.children[0]].bounds, p, n);
-        const float right = importance(m_nodes[node.children[1]].bounds, p, n);
+        const float left = importance(m_nodes[node.children[0]].bounds, p, n, m_falloff);
+        const float right = importance(m_nodes[node.children[1]].bounds, p, n, m_falloff);
         if (!(left + right > 0.0f)) return choice;
         const float p_left = left / (left + right);
         // Reuse u: rescaled into the chosen child's share of [0, 1).
@@ -272,8 +275,8 @@ float LightTree::probability(const Vec3& p, const Vec3& n, const Light* light) c
     std::uint32_t index = 0;
     while (m_nodes[index].light == nullptr) {
         const Node& node = m_nodes[index];
-        const float left = importance(m_nodes[node.children[0]].bounds, p, n);
-        const float right = importance(m_nodes[node.children[1]].bounds, p, n);
+        const float left = importance(m_nodes[node.children[0]].bounds, p, n, m_falloff);
+        const float right = importance(m_nodes[node.children[1]].bounds, p, n, m_falloff);
         if (!(left + right > 0.0f)) return 0.0f;
         const int side = int(bits & 1u);
         probability *= (side == 0 ? left : right) / (left + right);

@@ -131,18 +131,23 @@ TEST(LightTree, EveryLightThatReachesAPointCanBeChosenThere) {
     EXPECT_GT(reaching, 1000);
 }
 
-TEST(LightTree, HoldsOnlyLightsThatFallOffWithDistance) {
+TEST(LightTree, EachTreeHoldsTheLightsOfItsFalloff) {
+    using Falloff = LightTree::Falloff;
     PointLightParameters pov;  // POV-Ray's point light: the same at every distance
     pov.falloff = PointFalloff::None;
     pov.intensity = Color(1.0f);
-    EXPECT_FALSE(LightTree::can_bound(PointLight(pov)));
+    EXPECT_FALSE(LightTree::can_bound(PointLight(pov), Falloff::InverseSquare));
+    EXPECT_TRUE(LightTree::can_bound(PointLight(pov), Falloff::None));
     pov.fade_distance = 2.0f;
     pov.fade_power = 1.0f;
-    EXPECT_TRUE(LightTree::can_bound(PointLight(pov)));
+    EXPECT_TRUE(LightTree::can_bound(PointLight(pov), Falloff::InverseSquare));
+    EXPECT_FALSE(LightTree::can_bound(PointLight(pov), Falloff::None));
     DirectionalLightParameters parallel;
     parallel.irradiance = Color(1.0f);
-    EXPECT_FALSE(LightTree::can_bound(DirectionalLight(parallel, 10.0f)));
-    EXPECT_TRUE(LightTree::can_bound(SphereLight(DVec3(0.0), 0.5, Color(1.0f))));
+    EXPECT_FALSE(LightTree::can_bound(DirectionalLight(parallel, 10.0f), Falloff::InverseSquare));
+    EXPECT_FALSE(LightTree::can_bound(DirectionalLight(parallel, 10.0f), Falloff::None));
+    EXPECT_TRUE(LightTree::can_bound(SphereLight(DVec3(0.0), 0.5, Color(1.0f)), Falloff::InverseSquare));
+    EXPECT_FALSE(LightTree::can_bound(SphereLight(DVec3(0.0), 0.5, Color(1.0f)), Falloff::None));
     // A light it cannot hold has probability 0 in it.
     const PointLight outside(PointLightParameters{});
     const Field field(4);
@@ -206,6 +211,32 @@ TEST(LightTree, EmittingShapesBoundWhatTheySample) {
                 }
             }
     }
+}
+
+// POV's point lights without fade: weighed by colour and cosines, not by
+// distance. Two equal lights, one near and one 100 times as far: the far
+// one keeps a share of the same order (by distance it would get 1/10000 of
+// the near one's; the node bounds make the shares unequal); a spotlight
+// turned away: none.
+TEST(LightTree, LightsWithoutFalloffAreWeighedWithoutDistance) {
+    PointLightParameters p;
+    p.falloff = PointFalloff::None;
+    p.intensity = Color(1.0f);
+    p.position = Vec3(0.0f, 1.0f, 0.0f);
+    const PointLight near(p);
+    p.position = Vec3(0.0f, 100.0f, 0.0f);
+    const PointLight far(p);
+    p.position = Vec3(5.0f, 5.0f, 0.0f);
+    p.spot_axis = Vec3(0.0f, 1.0f, 0.0f);  // pointing up, away from the floor
+    p.spot_cos_radius = std::cos(0.2f);
+    p.spot_cos_falloff = std::cos(0.3f);
+    const PointLight away(p);
+    const LightTree tree({&near, &far, &away}, LightTree::Falloff::None);
+    const Vec3 floor(0.0f), up(0.0f, 1.0f, 0.0f);
+    EXPECT_GT(tree.probability(floor, up, &near), 0.25f);
+    EXPECT_GT(tree.probability(floor, up, &far), 0.25f);
+    EXPECT_NEAR(tree.probability(floor, up, &near) + tree.probability(floor, up, &far), 1.0f, 1e-6f);
+    EXPECT_EQ(tree.probability(floor, up, &away), 0.0f);
 }
 
 }  // namespace
