@@ -64,7 +64,7 @@ struct PathSettings {
     int rr_depth = 3;
     float clamp = 0.0f;
     SamplerKind sampler = SamplerKind::Independent;
-    LightSelection light_selection = LightSelection::Tree;
+    LightSelection light_selection = LightSelection::Power;
     Strategy strategy = Strategy::Mis;
     bool additive_reflection = true;
 };
@@ -472,9 +472,9 @@ const ParameterDecl kParameters[] = {
     {"clamp", ParameterType::Float, "0", "cap on each sample's largest component (biased firefly control); 0: off"},
     {"sampler", ParameterType::String, "independent",
      "\"independent\" or \"sobol\" (Owen-scrambled Sobol; best with 2^k samples)"},
-    {"light_sampling", ParameterType::String, "tree",
-     "light chosen per NEE: \"tree\" (by each light's bound on its contribution at the point, through a tree of "
-     "their bounds), \"power\", \"uniform\", or \"all\" (every light each time)"},
+    {"light_sampling", ParameterType::String, "power",
+     "light chosen per NEE: \"power\", \"tree\" (by each light's bound on its contribution at the point, through a "
+     "tree of their bounds), \"uniform\", or \"all\" (every light each time)"},
     {"strategy", ParameterType::String, "mis",
      "\"mis\" (default), \"nee\" (light sampling only) or \"bsdf\" (BSDF sampling only)"},
     {"additive_reflection", ParameterType::Bool, "true",
@@ -495,7 +495,7 @@ std::unique_ptr<Integrator> create(const ParameterSet& parameters) {
     else
         throw std::invalid_argument("path: sampler must be \"independent\" or \"sobol\", not \"" + sampler + "\"");
 
-    const std::string selection = parameters.get_string("light_sampling", "tree");
+    const std::string selection = parameters.get_string("light_sampling", "power");
     if (selection == "power")
         settings.light_selection = LightSelection::Power;
     else if (selection == "uniform")

@@ -155,8 +155,12 @@ float LightTree::importance(const Bounds& b, const Vec3& p, const Vec3& n, Fallo
     const float distance2 = glm::dot(offset, offset);
     const float radius = 0.5f * glm::length(b.upper - b.lower);
     // A point close to the box is weighed as if at its edge: the bound
-    // below would otherwise grow without limit near a small light.
-    const float weighed2 = falloff == Falloff::None ? 1.0f : std::max({distance2, radius, 1e-12f});
+    // below would otherwise grow without limit near a small light. (pbrt-v4
+    // takes the larger of the squared distance and half the diagonal, which
+    // changes with the scene's unit; both squared here, so a scene scaled
+    // by any factor chooses the same lights.)
+    const float weighed2 =
+        falloff == Falloff::None ? 1.0f : std::max({distance2, radius * radius, std::numeric_limits<float>::min()});
     const Vec3 wi = distance2 > 0.0f ? offset / std::sqrt(distance2) : Vec3(0.0f, 0.0f, 1.0f);
     // The angle the box subtends from p (every way from inside it).
     float cos_box = -1.0f;

@@ -213,6 +213,20 @@ TEST(LightTree, EmittingShapesBoundWhatTheySample) {
     }
 }
 
+// The same scene in another unit chooses the same lights.
+TEST(LightTree, ScalingTheSceneChangesNoProbability) {
+    for (const double scale : {1e-4, 1e-2, 1e2, 1e4}) {
+        const SphereLight big(DVec3(0.0, 3.0, 0.0), 0.8, Color(1.0f)), small(DVec3(2.0, 1.0, 0.5), 0.1, Color(1.0f));
+        const SphereLight big_scaled(DVec3(0.0, 3.0, 0.0) * scale, 0.8 * scale, Color(1.0f));
+        const SphereLight small_scaled(DVec3(2.0, 1.0, 0.5) * scale, 0.1 * scale, Color(1.0f));
+        const LightTree tree({&big, &small}), scaled({&big_scaled, &small_scaled});
+        const Vec3 up(0.0f, 1.0f, 0.0f);
+        for (const Vec3& p : {Vec3(0.0f), Vec3(2.0f, 0.0f, 0.5f), Vec3(1.0f, 2.9f, 0.0f)})
+            EXPECT_NEAR(scaled.probability(p * float(scale), up, &big_scaled), tree.probability(p, up, &big), 1e-5)
+                << "scale " << scale;
+    }
+}
+
 // POV's point lights without fade: weighed by colour and cosines, not by
 // distance. Two equal lights, one near and one 100 times as far: the far
 // one keeps a share of the same order (by distance it would get 1/10000 of
