@@ -85,7 +85,7 @@ class PathIntegrator final : public Integrator {
         // entry (null) of their summed power; the others (parallel lights,
         // the sky) stay as they are.
         m_trees.clear();
-        m_tree_power.clear();
+        std::vector<double> tree_power;  // per tree: its lights' summed power
         if (m_settings.light_selection == LightSelection::Tree) {
             std::vector<const Light*> falling, steady, others;
             for (const Light* light : m_lights) {
@@ -101,7 +101,7 @@ class PathIntegrator final : public Integrator {
                 m_trees.push_back(std::make_unique<LightTree>(members, falloff));
                 double power = 0.0;
                 for (const Light* light : members) power += std::fabs(double(luminance(light->power())));
-                m_tree_power.push_back(power);
+                tree_power.push_back(power);
                 others.insert(others.end() - (m_environment ? 1 : 0), nullptr);
             };
             add_tree(falling, LightTree::Falloff::InverseSquare);
@@ -114,7 +114,7 @@ class PathIntegrator final : public Integrator {
         for (std::size_t i = 0, k = 0; i < m_lights.size(); ++i)
             if (m_lights[i] == nullptr) {
                 m_entry_tree[i] = m_trees[k].get();
-                entry_tree_power[i] = m_tree_power[k++];
+                entry_tree_power[i] = tree_power[k++];
             }
         const std::vector<const Light*>& lights = m_lights;
         m_prepared_for = &scene;
@@ -459,10 +459,9 @@ class PathIntegrator final : public Integrator {
     std::vector<float> m_light_probability;
     std::vector<float> m_light_cdf;
     std::unordered_map<const Light*, std::size_t> m_light_index;
-    // light_sampling "tree": the trees, their summed power, and for each
-    // entry of m_lights its tree (null: the entry is a light).
+    // light_sampling "tree": the trees, and for each entry of m_lights its
+    // tree (null: the entry is a light).
     std::vector<std::unique_ptr<LightTree>> m_trees;
-    std::vector<double> m_tree_power;
     std::vector<const LightTree*> m_entry_tree;
 };
 

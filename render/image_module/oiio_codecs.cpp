@@ -42,7 +42,7 @@ class OiioReader final : public ImageFileReader {
         m_info.channels = spec.nchannels;
         m_info.floating = spec.format.is_floating_point();
         m_info.bits_per_sample = spec.get_int_attribute("oiio:BitsPerSample", int(spec.format.size()) * 8);
-        m_info.tiled = spec.tile_width > 0 || spec.depth > 1;
+        m_tiled = spec.tile_width > 0 || spec.depth > 1;
     }
     const ImageFileInfo& info() const override { return m_info; }
 
@@ -50,7 +50,7 @@ class OiioReader final : public ImageFileReader {
         if (first < 0 || end > m_info.height || first > end)
             throw std::out_of_range("read_rows: rows outside the image");
         const std::size_t row_bytes = std::size_t(m_info.width) * std::size_t(m_info.channels) * bytes_of(type);
-        if (m_info.tiled) {
+        if (m_tiled) {
             // Tiles are read whole once, in the type asked first.
             if (m_whole.empty() || m_whole_type != type) {
                 m_whole.resize(row_bytes * std::size_t(m_info.height));
@@ -72,6 +72,7 @@ class OiioReader final : public ImageFileReader {
     std::unique_ptr<OIIO::ImageInput> m_input;
     ImageFileInfo m_info;
     int m_first_row = 0;
+    bool m_tiled = false;  // read whole once, then copied from
     std::vector<unsigned char> m_whole;
     SampleType m_whole_type = SampleType::Float;
 };

@@ -73,17 +73,17 @@ class LightTree {
         std::uint32_t children[2] = {0, 0};  // interior
         const Light* light = nullptr;        // leaf
     };
+    // The first child's share of a node's choice at p (-1: neither child
+    // can reach p); sample() and probability() both walk by it.
+    float left_share(const Node& node, const Vec3& p, const Vec3& n) const;
     std::uint32_t build(std::vector<std::pair<const Light*, Bounds>>& lights, std::size_t begin, std::size_t end,
                         std::uint64_t trail, int depth);
 
     Falloff m_falloff;
     std::vector<Node> m_nodes;  // the root first
-    // Each light's path from the root: bit k says which child at depth k.
-    struct Trail {
-        std::uint64_t bits = 0;
-        int depth = 0;
-    };
-    std::unordered_map<const Light*, Trail> m_trails;
+    // Each light's path from the root: bit k says which child at depth k
+    // (the walk ends at the light's leaf).
+    std::unordered_map<const Light*, std::uint64_t> m_trails;
 };
 
 }  // namespace lancer

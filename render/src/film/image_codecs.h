@@ -24,7 +24,6 @@ struct ImageFileInfo {
     int channels = 0;
     int bits_per_sample = 8;  // as stored in the file (1 to 32)
     bool floating = false;    // half or float samples
-    bool tiled = false;       // read_rows then reads the whole image first
     // The sample type that holds the file's values exactly (8-bit files as
     // bytes, 16-bit ones as UInt16, anything else as float).
     SampleType native_type() const {

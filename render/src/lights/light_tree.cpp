@@ -215,7 +215,7 @@ std::uint32_t LightTree::build(std::vector<std::pair<const Light*, Bounds>>& lig
     if (end - begin == 1) {  // halving: depth < 64 for any count that fits in memory
         m_nodes[index].bounds = lights[begin].second;
         m_nodes[index].light = lights[begin].first;
-        m_trails[lights[begin].first] = Trail{trail, depth};
+        m_trails[lights[begin].first] = trail;
         return index;
     }
     Bounds all;
@@ -243,6 +243,13 @@ std::uint32_t LightTree::build(std::vector<std::pair<const Light*, Bounds>>& lig
     return index;
 }
 
+float LightTree::left_share(const Node& node, const Vec3& p, const Vec3& n) const {
+    const float left = importance(m_nodes[node.children[0]].bounds, p, n, m_falloff);
+    const float right = importance(m_nodes[node.children[1]].bounds, p, n, m_falloff);
+    if (!(left + right > 0.0f)) return -1.0f;
+    return left / (left + right);
+}
+
 LightTree::Choice LightTree::sample(const Vec3& p, const Vec3& n, float u) const {
     Choice choice;
     if (m_nodes.empty()) return choice;
@@ -250,18 +257,16 @@ LightTree::Choice LightTree::sample(const Vec3& p, const Vec3& n, float u) const
     float probability = 1.0f;
     while (m_nodes[index].light == nullptr) {
         const Node& node = m_nodes[index];
-        const float left = importance(m_nodes[node.children[0]].bounds, p, n, m_falloff);
-        const float right = importance(m_nodes[node.children[1]].bounds, p, n, m_falloff);
-        if (!(left + right > 0.0f)) return choice;
-        const float p_left = left / (left + right);
+        const float p_left = left_share(node, p, n);
+        if (p_left < 0.0f) return choice;  // neither side can reach p
         // Reuse u: rescaled into the chosen child's share of [0, 1).
         if (u < p_left) {
             index = node.children[0];
-            probability *= left / (left + right);
+            probability *= p_left;
             u = std::min(u / p_left, 0x1.fffffep-1f);
         } else {
             index = node.children[1];
-            probability *= right / (left + right);  // as probability() computes it
+            probability *= 1.0f - p_left;
             u = std::min((u - p_left) / (1.0f - p_left), 0x1.fffffep-1f);
         }
     }
@@ -274,16 +279,15 @@ LightTree::Choice LightTree::sample(const Vec3& p, const Vec3& n, float u) const
 float LightTree::probability(const Vec3& p, const Vec3& n, const Light* light) const {
     const auto found = m_trails.find(light);
     if (found == m_trails.end()) return 0.0f;
-    std::uint64_t bits = found->second.bits;
+    std::uint64_t bits = found->second;
     float probability = 1.0f;
     std::uint32_t index = 0;
     while (m_nodes[index].light == nullptr) {
         const Node& node = m_nodes[index];
-        const float left = importance(m_nodes[node.children[0]].bounds, p, n, m_falloff);
-        const float right = importance(m_nodes[node.children[1]].bounds, p, n, m_falloff);
-        if (!(left + right > 0.0f)) return 0.0f;
+        const float p_left = left_share(node, p, n);
+        if (p_left < 0.0f) return 0.0f;
         const int side = int(bits & 1u);
-        probability *= (side == 0 ? left : right) / (left + right);
+        probability *= side == 0 ? p_left : 1.0f - p_left;  // as sample() computes it
         index = node.children[side];
         bits >>= 1;
     }

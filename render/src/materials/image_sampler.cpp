@@ -21,13 +21,6 @@ float srgb_decode(float encoded) {
     return std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
 
-// OpenImageIO's messages span lines; one diagnostic is one line.
-std::string one_line(std::string text) {
-    while (!text.empty() && text.back() == '\n') text.pop_back();
-    for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at)) text.replace(at, 1, "; ");
-    return text;
-}
-
 // The angle of (x, z) from +x towards +z, as a share of a turn in [0, 1).
 double turn_in_xz(double x, double z) {
     const double turn = std::atan2(z, x) / kTwoPi;
@@ -55,7 +48,7 @@ std::shared_ptr<const PaletteTransparency> read_palette_transparency(const sg::I
     try {
         image = read_palette_image(map.path);
     } catch (const std::runtime_error& error) {
-        throw SceneError(map.location, "cannot read image '" + map.path + "': " + one_line(error.what()));
+        throw SceneError(map.location, "cannot read image '" + map.path + "': " + error.what());
     }
     auto keyword = [](const sg::PaletteSetting& setting) { return setting.transmit ? "transmit " : "filter "; };
     if (!image) {
@@ -95,7 +88,7 @@ ImageSampler::ImageSampler(const sg::ImageMap& map, ImageCache& images) : m_map(
     } catch (const std::length_error& error) {
         throw SceneError(m_map.location, "image '" + m_map.path + "' " + error.what());
     } catch (const std::runtime_error& error) {
-        throw SceneError(m_map.location, "cannot read image '" + m_map.path + "': " + one_line(error.what()));
+        throw SceneError(m_map.location, "cannot read image '" + m_map.path + "': " + error.what());
     }
     m_width = m_texels->width();
     m_height = m_texels->height();
