@@ -1,6 +1,9 @@
 // The rule for every file `lancer render` writes: never the scene or a file
 // the scene read, never two outputs at one path, every output path checked
 // before rendering, so nothing a user owns is replaced by a render.
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -121,6 +124,26 @@ TEST_F(OutputFiles, TemporariesOfDeadRendersAreRemovedAtTheNextStart) {
     EXPECT_FALSE(fs::exists(dead));
     EXPECT_TRUE(fs::exists(alive));
     EXPECT_TRUE(fs::exists(other));
+}
+
+// A killed writer whose parent exited first stays a zombie where nothing
+// reaps orphans (a container's first process often does not): it answers
+// kill(pid, 0) yet writes nothing more.
+TEST_F(OutputFiles, TemporariesOfUnreapedDeadProcessesAreRemoved) {
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) ::_exit(0);
+    // Until the child has exited it is not a zombie yet.
+    for (int tries = 0; tries < 500; ++tries) {
+        siginfo_t info{};
+        if (::waitid(P_PID, id_t(child), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == child) break;
+        ::usleep(2000);
+    }
+    const std::string left = m_folder.write(".out.tmp" + std::to_string(child) + "-0.png", "a partial image");
+    const CommandResult result = render("-o '" + in_folder("out.png") + "'");
+    ::waitpid(child, nullptr, 0);
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_FALSE(fs::exists(left));
 }
 
 // lancer trade writes results.csv, index.html, plots and images into its

@@ -60,13 +60,13 @@ killed)
   [ -e k.exr.lancer-checkpoint ] || fail "no checkpoint appeared"
   # Rank 2 of this job: a lancer process working here (from /proc, as a
   # fresh Debian has no pgrep).
-  victim=""
+  victim="" ranks=()
   for proc in /proc/[0-9]*; do
     comm=""
     read -r comm <"$proc/comm" 2>/dev/null || true
-    [ "$comm" = lancer ] || continue
-    if tr '\0' '\n' <"$proc/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=2' &&
-      [ "$(readlink "$proc/cwd")" = "$work" ]; then victim=${proc#/proc/}; fi
+    [ "$comm" = lancer ] && [ "$(readlink "$proc/cwd")" = "$work" ] || continue
+    ranks+=("${proc#/proc/}")
+    if tr '\0' '\n' <"$proc/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=2'; then victim=${proc#/proc/}; fi
   done
   [ -n "$victim" ] || fail "rank 2 not found (did the render end before the kill?)"
   kill -9 "$victim"
@@ -83,6 +83,19 @@ killed)
   # next run removes what it left.
   leftovers=$(ls -A | grep -v -x -e k.exr.lancer-checkpoint -e run.log -e '\.k\.exr\.tmp.*' || true)
   [ -z "$leftovers" ] || fail "files left behind: $leftovers"
+  # mpirun may exit before the ranks it killed are gone: one blocked in a
+  # checkpoint's fsync dies only when that returns. A resume started before
+  # then would find its temporary still owned by a live process.
+  for _ in $(seq 500); do
+    alive=0
+    for pid in "${ranks[@]}"; do
+      state=$(sed -n 's/.*) \(.\).*/\1/p' "/proc/$pid/stat" 2>/dev/null || true)
+      [ -n "$state" ] && [ "$state" != Z ] && alive=1
+    done
+    [ $alive -eq 0 ] && break
+    sleep 0.02
+  done
+  [ $alive -eq 0 ] || fail "a rank of the killed job still runs 10 s after mpirun exited"
   # The checkpoint resumes with another number of processes and the result
   # is the uninterrupted one-process render.
   "${mpi[@]}" -np 2 "$lancer" "${common[@]}" --resume || fail "the resumed job exited with $?"

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <fstream>
 #include <string>
 
 namespace lancer {
@@ -14,6 +15,19 @@ namespace {
 
 std::string temporary_prefix(const fs::path& target) {
     return "." + target.stem().string() + ".tmp";
+}
+
+// A process that has exited but that no one has reaped yet (its parent
+// gone, in a container whose first process reaps no orphans) still answers
+// kill(pid, 0); its open files are closed all the same.
+bool is_running(long pid) {
+    if (::kill(pid_t(pid), 0) != 0) return errno != ESRCH;  // EPERM: someone else's, not ours to judge
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string line;
+    if (!std::getline(stat, line)) return true;
+    // pid (comm) state ...: comm may itself hold ") ".
+    const std::size_t end_of_name = line.rfind(") ");
+    return end_of_name == std::string::npos || end_of_name + 2 >= line.size() || line[end_of_name + 2] != 'Z';
 }
 
 }  // namespace
@@ -43,7 +57,7 @@ int remove_stale_temporaries(const fs::path& target) {
             continue;
         const long pid = std::stol(middle.substr(0, dash));
         if (pid == ::getpid()) continue;
-        if (::kill(pid_t(pid), 0) == 0 || errno != ESRCH) continue;  // still running, or not ours to judge
+        if (is_running(pid)) continue;
         std::error_code removing;
         if (fs::remove(it->path(), removing)) ++removed;
     }
