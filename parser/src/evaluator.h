@@ -215,16 +215,25 @@ class Evaluator {
     ShapePtr make_height_field(const Edits<sg::HeightField>& items, const sg::SourceLocation& at);
     std::function<void(sg::HeightField&)> height_field_function(const Value& function, const sg::SourceLocation& at);
     // ---- isosurface (isosurface.cpp)
-    std::function<void(sg::Isosurface&)> isosurface_box(const Value& a, const SourceRange& wa, const Value& b,
-                                                        const SourceRange& wb);
-    std::function<void(sg::Isosurface&)> isosurface_sphere(const Value& center, const SourceRange& wc,
-                                                           const Value& radius, const SourceRange& wr);
+    std::function<void(sg::FunctionContainer&)> container_box(const Value& a, const SourceRange& wa, const Value& b,
+                                                              const SourceRange& wb);
+    std::function<void(sg::FunctionContainer&)> container_sphere(const Value& center, const SourceRange& wc,
+                                                                 const Value& radius, const SourceRange& wr);
     std::function<void(sg::Isosurface&)> isosurface_number(const std::string& keyword, const Value& value,
                                                            const SourceRange& where);
     std::function<void(sg::Isosurface&)> isosurface_evaluate(const std::array<Value, 3>& values,
                                                              const std::array<SourceRange, 3>& where);
     ShapePtr make_isosurface(const Value& function, const SourceRange& where, const Edits<sg::Isosurface>& items,
                              const sg::SourceLocation& at);
+    // ---- parametric (parametric.cpp)
+    std::function<void(sg::Parametric&)> parametric_number(const std::string& keyword, const Value& value,
+                                                           const SourceRange& where);
+    std::function<void(sg::Parametric&)> parametric_precompute(const Value& depth, const SourceRange& where,
+                                                               const std::vector<std::string>& axes,
+                                                               const sg::SourceLocation& axes_at);
+    ShapePtr make_parametric(const std::array<Value, 3>& functions, const std::array<SourceRange, 3>& where,
+                             const Value& uv_min, const SourceRange& wmin, const Value& uv_max, const SourceRange& wmax,
+                             const Edits<sg::Parametric>& items, const sg::SourceLocation& at);
     // ---- CSG (csg.cpp)
     ShapePtr make_csg(sg::Object::Kind kind, const sg::SourceLocation& at);
     void finish_csg(ShapeValue& shape);

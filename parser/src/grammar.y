@@ -136,7 +136,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        NUMBER_OF_SIDES "number_of_sides" NUMBER_OF_TILES "number_of_tiles" ALTITUDE "altitude"
        DENSITY_FILE "density_file" DF3 "df3" PATTERN "pattern"
        ISOSURFACE "isosurface" CONTAINED_BY "contained_by" MAX_GRADIENT "max_gradient" EVALUATE "evaluate"
-       MAX_TRACE "max_trace" ALL_INTERSECTIONS "all_intersections"
+       MAX_TRACE "max_trace" ALL_INTERSECTIONS "all_intersections" PARAMETRIC "parametric" PRECOMPUTE "precompute"
        TRACE "trace" INSIDE "inside" MIN_EXTENT "min_extent" MAX_EXTENT "max_extent"
        SPLINE "spline" NATURAL_SPLINE "natural_spline"
        MEDIA "media" ABSORPTION "absorption" SCATTERING "scattering" ECCENTRICITY "eccentricity"
@@ -206,6 +206,10 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <Edits<sg::Isosurface>> isosurface_items
 %nterm <std::function<void(sg::Isosurface&)>> isosurface_item
 %nterm <Value> isosurface_function
+%nterm <std::function<void(sg::FunctionContainer&)>> contained_by
+%nterm <Edits<sg::Parametric>> parametric_items
+%nterm <std::function<void(sg::Parametric&)>> parametric_item
+%nterm <std::vector<std::string>> precompute_axes
 %nterm <std::string> trace_normal
 %nterm <int> spline_kind
 %nterm <std::vector<int>> spline_kinds
@@ -473,6 +477,9 @@ object
       { $$ = ev.make_height_field($3, LOC(@1)); ev.apply($$, $4); }
   | "isosurface" "{" isosurface_function isosurface_items object_mods "}"
       { $$ = ev.make_isosurface($3, @3, $4, LOC(@1)); ev.apply($$, $5); }
+  | "parametric" "{" isosurface_function opt_comma isosurface_function opt_comma isosurface_function
+    arith opt_comma arith parametric_items object_mods "}"
+      { $$ = ev.make_parametric({$3, $5, $7}, {@3, @5, @7}, $8, @8, $10, @10, $11, LOC(@1)); ev.apply($$, $12); }
   | "triangle" "{" arith opt_comma arith opt_comma arith object_mods "}"
       { $$ = ev.make_triangle({$3, $5, $7}, {@3, @5, @7}, LOC(@1)); ev.apply($$, $8); }
   | "smooth_triangle" "{" arith opt_comma arith opt_comma arith opt_comma arith opt_comma arith opt_comma arith object_mods "}"
@@ -665,10 +672,14 @@ isosurface_items
   | isosurface_items isosurface_item { $$ = std::move($1); $$.push_back($2); }
   ;
 
+contained_by
+  : "contained_by" "{" "}" { $$ = [](sg::FunctionContainer&) {}; }
+  | "contained_by" "{" "box" "{" arith opt_comma arith "}" "}" { $$ = ev.container_box($5, @5, $7, @7); }
+  | "contained_by" "{" "sphere" "{" arith opt_comma arith "}" "}" { $$ = ev.container_sphere($5, @5, $7, @7); }
+  ;
+
 isosurface_item
-  : "contained_by" "{" "}" { $$ = [](sg::Isosurface&) {}; }
-  | "contained_by" "{" "box" "{" arith opt_comma arith "}" "}" { $$ = ev.isosurface_box($5, @5, $7, @7); }
-  | "contained_by" "{" "sphere" "{" arith opt_comma arith "}" "}" { $$ = ev.isosurface_sphere($5, @5, $7, @7); }
+  : contained_by       { $$ = [container = $1](sg::Isosurface& i) { container(i); }; }
   | "threshold" expr %prec OPT_EMPTY { $$ = ev.isosurface_number("threshold", $2, @2); }
   | "accuracy" expr %prec OPT_EMPTY { $$ = ev.isosurface_number("accuracy", $2, @2); }
   | "max_gradient" expr %prec OPT_EMPTY { $$ = ev.isosurface_number("max_gradient", $2, @2); }
@@ -677,6 +688,26 @@ isosurface_item
       { $$ = ev.isosurface_evaluate({$2, $4, $6}, {@2, @4, @6}); }
   | "open"             { $$ = [](sg::Isosurface& i) { i.open = true; }; }
   | "all_intersections" { $$ = [](sg::Isosurface& i) { i.max_trace = 10; }; }
+  ;
+
+/* parametric { function { x(u, v) } [,] function { y(u, v) } [,] function { z(u, v) } <u1, v1> [,] <u2, v2>
+ *              [contained_by { box { … } | sphere { … } }] [max_gradient g] [accuracy a]
+ *              [precompute DEPTH [,] [x] [,] [y] [,] [z]] } (Parse_Parametric) */
+parametric_items
+  : %empty             {}
+  | parametric_items parametric_item { $$ = std::move($1); $$.push_back($2); }
+  ;
+
+parametric_item
+  : contained_by       { $$ = [container = $1](sg::Parametric& p) { container(p); }; }
+  | "accuracy" expr %prec OPT_EMPTY { $$ = ev.parametric_number("accuracy", $2, @2); }
+  | "max_gradient" expr %prec OPT_EMPTY { $$ = ev.parametric_number("max_gradient", $2, @2); }
+  | "precompute" expr precompute_axes { $$ = ev.parametric_precompute($2, @2, $3, LOC(@3)); }
+  ;
+
+precompute_axes
+  : %empty             {}
+  | precompute_axes opt_comma CONSTANT { $$ = std::move($1); $$.push_back($3.text); }
   ;
 
 /* height_field { [type] "file" [gamma g] [premultiplied b] [smooth] [water_level w] } */

@@ -1,6 +1,7 @@
-// POV-Ray's isosurface: its function, container and search settings as
-// POV-Ray 3.7 reads them (Parse_Isosurface in its parse.cpp), with POV's
-// warnings and fallbacks for values it cannot use.
+// POV-Ray's isosurface: its function and search settings as POV-Ray 3.7
+// reads them (Parse_Isosurface in its parse.cpp), with POV's warnings and
+// fallbacks for values it cannot use. Its contained_by is in
+// contained_by.cpp.
 #include <algorithm>
 #include <cmath>
 
@@ -13,39 +14,6 @@ namespace {
 constexpr int kMostTraces = 10;  // POV's ISOSURFACE_MAXTRACE
 
 }  // namespace
-
-std::function<void(sg::Isosurface&)> Evaluator::isosurface_box(const Value& a, const SourceRange& wa, const Value& b,
-                                                               const SourceRange& wb) {
-    const sg::Vec3 p = to_vec3(a, wa), q = to_vec3(b, wb);
-    const double corners[6] = {p.x, p.y, p.z, q.x, q.y, q.z};
-    if (!check_renderable(corners, 3, wa, "the container's corner") ||
-        !check_renderable(corners + 3, 3, wb, "the container's corner"))
-        return [](sg::Isosurface&) {};
-    return [p, q](sg::Isosurface& iso) {
-        iso.container = sg::Isosurface::Container::Box;
-        iso.box_corner1 = glm::min(p, q);
-        iso.box_corner2 = glm::max(p, q);
-    };
-}
-
-std::function<void(sg::Isosurface&)> Evaluator::isosurface_sphere(const Value& center, const SourceRange& wc,
-                                                                  const Value& radius, const SourceRange& wr) {
-    const sg::Vec3 c = to_vec3(center, wc);
-    const double r = to_float(radius, wr, "a float radius");
-    const double values[4] = {c.x, c.y, c.z, r};
-    if (!check_renderable(values, 3, wc, "the container's centre") ||
-        !check_renderable(values + 3, 1, wr, "the container's radius"))
-        return [](sg::Isosurface&) {};
-    if (!(r > 0.0)) {
-        error(wr.begin, "isosurface: the container sphere's radius must be positive");
-        return [](sg::Isosurface&) {};
-    }
-    return [c, r](sg::Isosurface& iso) {
-        iso.container = sg::Isosurface::Container::Sphere;
-        iso.sphere_center = c;
-        iso.sphere_radius = r;
-    };
-}
 
 std::function<void(sg::Isosurface&)> Evaluator::isosurface_number(const std::string& keyword, const Value& value,
                                                                   const SourceRange& where) {

@@ -44,6 +44,7 @@ const char* object_kind_name(sg::Object::Kind kind) {
     case sg::Object::Kind::JuliaFractal: return "julia_fractal";
     case sg::Object::Kind::HeightField: return "height_field";
     case sg::Object::Kind::Isosurface: return "isosurface";
+    case sg::Object::Kind::Parametric: return "parametric";
     }
     return "object";
 }

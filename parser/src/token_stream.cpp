@@ -63,8 +63,7 @@ const std::unordered_set<std::string>& ignored_blocks() {
 
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
-    static const std::unordered_set<std::string> names = {"parametric", "lemon", "layered", "interior_texture",
-                                                          "dictionary"};
+    static const std::unordered_set<std::string> names = {"lemon", "layered", "interior_texture", "dictionary"};
     return names;
 }
 

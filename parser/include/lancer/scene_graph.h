@@ -8,6 +8,7 @@
 // later stages can report errors where the user can act on them.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -610,13 +611,17 @@ struct JuliaFractal {
 // the threshold. The function's roots are found by subdividing the ray's
 // chord while max_gradient (a Lipschitz bound) allows a root between two
 // samples, down to intervals of `accuracy`.
-struct Isosurface {
-    FunctionRef function;
+// What an isosurface or a parametric is drawn inside (contained_by).
+struct FunctionContainer {
     enum class Container { Box, Sphere };
     Container container = Container::Box;
     Vec3 box_corner1{-1.0}, box_corner2{1.0};  // ordered per axis
     Vec3 sphere_center{0.0};
     double sphere_radius = 1.0;
+};
+
+struct Isosurface : FunctionContainer {
+    FunctionRef function;
     double threshold = 0.0;
     double accuracy = 0.001;
     double max_gradient = 1.1;
@@ -626,6 +631,24 @@ struct Isosurface {
     Vec3 evaluate_parameters{0.0};
     bool open = false;  // the container's surface is not part of the object
     int max_trace = 1;  // crossings looked for per ray; all_intersections: 10
+    SourceLocation location;
+};
+
+// POV's parametric: the surface (x(u, v), y(u, v), z(u, v)) for (u, v) in
+// [uv_min, uv_max], drawn only inside its container. POV-Ray finds a ray's
+// nearest crossing by halving the (u, v) rectangle while the box that
+// max_gradient bounds each coordinate in may still meet the ray, down to
+// `accuracy`. The functions read u and v (x and y). No inside: a patch.
+struct Parametric : FunctionContainer {
+    std::array<FunctionRef, 3> functions;
+    Vec2 uv_min{0.0}, uv_max{1.0};  // ordered per coordinate
+    double accuracy = 0.001;
+    double max_gradient = 1.0;
+    // precompute DEPTH, x, y, z: the coordinates whose bounds are computed
+    // before rendering for the first DEPTH levels of halving (bit 0 x,
+    // bit 1 y, bit 2 z).
+    int precompute_depth = 0;
+    int precompute_axes = 0;
     SourceLocation location;
 };
 
@@ -716,11 +739,13 @@ struct Object {
         BicubicPatch,
         JuliaFractal,
         HeightField,
-        Isosurface
+        Isosurface,
+        Parametric
     };
     Kind kind = Kind::Sphere;
     std::variant<Sphere, Plane, Box, MeshRef, Group, Cone, Torus, Disc, Quadric, Polygon, Polynomial, Superellipsoid,
-                 Blob, Prism, Lathe, Text, Sor, Ovus, SphereSweep, BicubicPatch, JuliaFractal, HeightField, Isosurface>
+                 Blob, Prism, Lathe, Text, Sor, Ovus, SphereSweep, BicubicPatch, JuliaFractal, HeightField, Isosurface,
+                 Parametric>
         shape;
     // POV's inverse: inside and outside swapped (what CSG and clipped_by see).
     bool inverse = false;

@@ -14,6 +14,7 @@
 #include "geometry/julia_fractal.h"
 #include "geometry/mesh_shape.h"
 #include "geometry/ovus.h"
+#include "geometry/parametric.h"
 #include "geometry/sphere_sweep.h"
 #include "lancer/host/scene_compiler.h"
 #include "lancer/scene_error.h"
@@ -457,8 +458,11 @@ class Builder {
             instance.kind = ShapeKind::Analytic;
             const auto* iso = std::get_if<sg::Isosurface>(&object.shape);
             const auto* field = std::get_if<sg::HeightField>(&object.shape);
+            const auto* parametric = std::get_if<sg::Parametric>(&object.shape);
             if (iso)
                 instance.shape = isosurface_shape(*iso, object.location);
+            else if (parametric)
+                instance.shape = parametric_shape(*parametric, object.location);
             else if (field && field->function)
                 instance.shape = function_height_field(*field);
             else
@@ -537,6 +541,29 @@ class Builder {
         }
         auto shape = make_isosurface_shape(parameters, records);
         if (!shape) throw SceneError(at, "isosurface: its container or settings are not finite");
+        return shape;
+    }
+
+    std::shared_ptr<const Shape> parametric_shape(const sg::Parametric& parametric, const sg::SourceLocation& at) {
+        ParametricParameters parameters;
+        for (std::size_t i = 0; i < 3; ++i) {
+            if (!parametric.functions[i]) throw SceneError(at, "parametric: it lacks a function");
+            parameters.functions[i] = parametric.functions[i];
+            parameters.natives[i] = m_data->texture_factory->function_natives(*parametric.functions[i]);
+        }
+        parameters.uv_min = parametric.uv_min;
+        parameters.uv_max = parametric.uv_max;
+        parameters.sphere_container = parametric.container == sg::FunctionContainer::Container::Sphere;
+        parameters.box_lower = parametric.box_corner1;
+        parameters.box_upper = parametric.box_corner2;
+        parameters.sphere_center = parametric.sphere_center;
+        parameters.sphere_radius = parametric.sphere_radius;
+        parameters.accuracy = parametric.accuracy;
+        parameters.max_gradient = parametric.max_gradient;
+        parameters.precompute_depth = parametric.precompute_depth;
+        parameters.precompute_axes = parametric.precompute_axes;
+        auto shape = make_parametric_shape(parameters);
+        if (!shape) throw SceneError(at, "parametric: its container, range or settings are not finite");
         return shape;
     }
 
