@@ -3,9 +3,10 @@
 // render-references.sh, the command that made them). Both trace every
 // pixel once through its centre at 160x120 and write 8-bit sRGB, so the
 // images should agree to the code value: the lights (point, fade,
-// shadowless, spot, cylinder, parallel, POV's area light with adaptive,
-// circular, orient and area_illumination, looks_like, projected_through,
-// a negative light),
+// shadowless (fill lights: no highlights; of shadowless, spotlight and
+// cylinder the last written wins), spot, cylinder, parallel, POV's area
+// light with adaptive, circular, orient and area_illumination, looks_like,
+// projected_through, a negative light),
 // the finishes (peak phong and specular, metallic, brilliance, albedo,
 // reflection metallic, exponent and fresnel, conserve_energy), gamma, and
 // a pre-3.7 scene's legacy gamma and `version` (also with no #version at
@@ -57,7 +58,7 @@ namespace fs = std::filesystem;
 // made (160x120, one sample through each pixel centre) and compares it
 // with POV-Ray's NAME.png; a failure leaves both and their difference in
 // the build tree.
-void expect_whitted_matches_pov(const std::string& name, double max_mean_difference) {
+void expect_whitted_matches_pov(const std::string& name, double max_mean_difference, double max_fraction_off = 0.005) {
     const std::string scene = test::source_path("tests/reference/pov/" + name + ".pov");
     const std::string reference = test::source_path("tests/reference/pov/" + name + ".png");
     test::TempFolder folder;
@@ -65,11 +66,11 @@ void expect_whitted_matches_pov(const std::string& name, double max_mean_differe
     const test::CommandResult result =
         test::run_lancer("render '" + scene + "' -i whitted --width 160 --height 120 --spp 1 -q -o '" + output + "'");
     ASSERT_EQ(result.exit_code, 0) << result.output;
-    constexpr long kMaxPixelsOff = 160 * 120 / 200;  // 0.5 %
+    const long max_pixels_off = long(160 * 120 * max_fraction_off);
     fs::create_directories(test::binary_path("pov_reference_failures"));
     std::string message;
     EXPECT_TRUE(testing::images_match(testing::load_image(output), testing::load_image(reference), max_mean_difference,
-                                      0.1, kMaxPixelsOff, test::binary_path("pov_reference_failures/" + name),
+                                      0.1, max_pixels_off, test::binary_path("pov_reference_failures/" + name),
                                       &message))
         << message;
 }
@@ -85,19 +86,20 @@ TEST_P(PovReference, WhittedMatchesPovRay) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, PovReference,
-    ::testing::Values("wall_point_light", "spotlights", "area_room", "area_circular", "cylinder_parallel",
-                      "looks_like_projected", "finishes", "gamma", "legacy_gamma", "no_version", "legacy_opacity",
-                      "area_illumination", "orthographic_down", "orthographic_default_size", "quadric_family",
-                      "csg_solids", "csg_glass", "light_groups", "polygons_polynomials", "superellipsoids", "blobs",
-                      "prisms", "lathes", "text", "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals",
-                      "height_fields", "patterns_geometric", "pattern_aoi", "patterns_blocks", "patterns_noise",
-                      "patterns_warps", "patterns_tilings", "patterns_tilings_more", "normals", "textures", "tiles",
-                      "uv_mapping", "uv_mapping_object", "csg_meshes", "images", "image_palette", "material_map",
-                      "object_pattern", "irid_backside", "spline_function", "text_internal", "functions", "isosurfaces",
-                      "height_field_functions", "camera_fisheye", "camera_fisheye_360", "camera_ultra_wide_angle",
-                      "camera_omnimax", "camera_panoramic", "camera_cylinder_1", "camera_cylinder_2",
-                      "camera_cylinder_3", "camera_cylinder_4", "camera_spherical", "camera_spherical_narrow",
-                      "camera_transforms", "camera_orthographic_bare_angle", "camera_normal", "camera_mesh_per_pixel",
+    ::testing::Values("wall_point_light", "spotlights", "fill_lights", "area_room", "area_circular",
+                      "cylinder_parallel", "looks_like_projected", "finishes", "gamma", "legacy_gamma", "no_version",
+                      "legacy_opacity", "area_illumination", "orthographic_down", "orthographic_default_size",
+                      "quadric_family", "csg_solids", "csg_glass", "light_groups", "polygons_polynomials",
+                      "superellipsoids", "blobs", "prisms", "lathes", "text", "sors", "ovus", "sphere_sweeps",
+                      "bicubic_patches", "julia_fractals", "height_fields", "patterns_geometric", "pattern_aoi",
+                      "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
+                      "patterns_tilings_more", "normals", "textures", "tiles", "uv_mapping", "uv_mapping_object",
+                      "csg_meshes", "images", "image_palette", "material_map", "object_pattern", "irid_backside",
+                      "spline_function", "text_internal", "functions", "isosurfaces", "height_field_functions",
+                      "camera_fisheye", "camera_fisheye_360", "camera_ultra_wide_angle", "camera_omnimax",
+                      "camera_panoramic", "camera_cylinder_1", "camera_cylinder_2", "camera_cylinder_3",
+                      "camera_cylinder_4", "camera_spherical", "camera_spherical_narrow", "camera_transforms",
+                      "camera_orthographic_bare_angle", "camera_normal", "camera_mesh_per_pixel",
                       "camera_mesh_side_by_side", "camera_mesh_uv_smooth", "camera_mesh_summed", "camera_mesh_averaged",
                       "media_emission", "media_scattering", "media_absorbing_glass", "sky_layers", "sky_legacy",
                       "sky_skies_inc", "fog_constant", "fog_ground", "fog_turbulent", "fog_hollow", "rainbow"),
@@ -113,6 +115,17 @@ INSTANTIATE_TEST_SUITE_P(
 // hence 0.003 here rather than 0.002.
 TEST(PovInternalFunctionIsosurfaces, WhittedMatchesPovRay) {
     expect_whitted_matches_pov("isosurface_internal_functions", 0.003);
+}
+
+// Parametric surfaces (a sphere uv-mapped in a sphere container with
+// precompute, a ribbon cut by its box, a torus of declared functions, a
+// relief whose max_gradient is too low). lancer searches them as POV-Ray
+// does, so the surfaces, their (u, v) and normals agree; single pixels
+// differ on silhouettes, shadow edges and the uv checker's edges, where
+// which piece of (u, v) a ray ends in turns on the last bits of the ray.
+// Measured when made: 0.0038 mean, 1.1 % of pixels off by more than 0.1.
+TEST(PovParametrics, WhittedMatchesPovRay) {
+    expect_whitted_matches_pov("parametrics", 0.005, 0.015);
 }
 
 // Focal blur: POV-Ray and lancer both sample the lens (POV with its

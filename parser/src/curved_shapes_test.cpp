@@ -10,12 +10,10 @@
 namespace lancer {
 namespace {
 
+using test::contains;
+
 using test::first_error;
 using test::parse_ok;
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
 
 TEST(ParserCurvedShapes, OvusRadiiAndRefusals) {
     auto scene = parse_ok("ovus { 1, 0.6 translate y }");

@@ -1797,14 +1797,17 @@ light_item
       { $$ = ev.area_rectangle($2, @2, $4, @4); }
   | "fade_distance" expr { double d = ev.to_float($2, @2); $$ = [d](sg::Light& l) { l.fade_distance = d; }; }
   | "fade_power" expr  { double p = ev.to_float($2, @2); $$ = [p](sg::Light& l) { l.fade_power = p; }; }
-  | "shadowless"       { $$ = [](sg::Light& l) { l.shadowless = true; }; }
+  /* POV-Ray keeps one light type: shadowless, spotlight and cylinder
+     replace one another, the last written wins (a spotlight made
+     shadowless lights every way). */
+  | "shadowless"       { $$ = [](sg::Light& l) { l.shadowless = true; l.spotlight = l.cylinder = false; l.spot_parameters_given = false; }; }
   | "area_illumination" opt_bool { bool on = $2; $$ = [on](sg::Light& l) { l.area_illumination = on; }; }
   | "media_interaction" opt_bool { bool on = $2; $$ = [on](sg::Light& l) { l.media_interaction = on; }; }
   | "media_attenuation" opt_bool { bool on = $2; $$ = [on](sg::Light& l) { l.media_attenuation = on; }; }
   | "looks_like" "{" object_ref object_mods "}" { $$ = ev.looks_like($3, $4); }
   | "projected_through" "{" object_ref object_mods "}" { $$ = ev.projected_through($3, $4); }
-  | "spotlight"        { $$ = [](sg::Light& l) { l.spotlight = true; l.cylinder = false; l.spot_radius = 30.0; l.spot_falloff = 45.0; l.tightness = 0.0; }; }
-  | "cylinder"         { $$ = [](sg::Light& l) { l.cylinder = true; l.spotlight = false; l.parallel = true; l.spot_radius = 0.75; l.spot_falloff = 1.0; l.tightness = 0.0; }; }
+  | "spotlight"        { $$ = [](sg::Light& l) { l.spotlight = true; l.cylinder = false; l.shadowless = false; l.spot_radius = 30.0; l.spot_falloff = 45.0; l.tightness = 0.0; }; }
+  | "cylinder"         { $$ = [](sg::Light& l) { l.cylinder = true; l.spotlight = false; l.shadowless = false; l.parallel = true; l.spot_radius = 0.75; l.spot_falloff = 1.0; l.tightness = 0.0; }; }
   | "radius" expr      { double r = ev.to_float($2, @2); $$ = [r](sg::Light& l) { l.spot_radius = r; l.spot_parameters_given = true; }; }
   | "falloff" expr     { double f = ev.to_float($2, @2); $$ = [f](sg::Light& l) { l.spot_falloff = f; l.spot_parameters_given = true; }; }
   | "tightness" expr   { double t = ev.to_float($2, @2); $$ = [t](sg::Light& l) { l.tightness = t; l.spot_parameters_given = true; }; }

@@ -6,12 +6,10 @@
 namespace lancer {
 namespace {
 
+using test::contains;
+
 using test::first_error;
 using test::parse_ok;
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
 
 const sg::Isosurface& isosurface_of(const sg::SceneGraph& scene, std::size_t i = 0) {
     return std::get<sg::Isosurface>(scene.objects.at(i).shape);

@@ -41,6 +41,10 @@ inline Diagnostic first_error(const std::string& text, ParseOptions options = {}
     return {};
 }
 
+inline bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
 inline int count_warnings(const ParseResult& result) {
     int n = 0;
     for (const auto& d : result.diagnostics) n += d.severity == Diagnostic::Severity::Warning;

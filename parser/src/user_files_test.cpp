@@ -13,11 +13,9 @@
 namespace lancer {
 namespace {
 
-namespace fs = std::filesystem;
+using test::contains;
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
+namespace fs = std::filesystem;
 
 class UserFileTest : public ::testing::Test {
   protected:

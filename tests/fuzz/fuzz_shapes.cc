@@ -14,6 +14,7 @@
 #include "geometry/isosurface.h"
 #include "geometry/julia_fractal.h"
 #include "geometry/ovus.h"
+#include "geometry/parametric.h"
 #include "geometry/shape.h"
 #include "geometry/sphere_sweep.h"
 
@@ -54,13 +55,13 @@ char g_parameters[256] = "";
 }
 
 std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
-    // 17 kinds: a regression file's first byte (below 16 for the first
-    // sixteen) keeps naming its shape.
+    // 18 kinds: a regression file's first byte (below 17 for the first
+    // seventeen) keeps naming its shape.
     static const char* const kinds[] = {"cone",          "torus",          "disc",         "quadric", "poly",
                                         "polygon",       "superellipsoid", "sphere",       "ovus",    "sphere_sweep",
                                         "bicubic_patch", "julia_fractal",  "height_field", "blob",    "lathe",
-                                        "sor",           "isosurface"};
-    const int kind = in.byte() % 17;
+                                        "sor",           "isosurface",     "parametric"};
+    const int kind = in.byte() % 18;
     g_kind = kinds[kind];
     g_parameters[0] = 0;
     switch (kind) {
@@ -213,6 +214,56 @@ std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
                       f->constants[0], f->constants[1], f->constants[2], f->constants[3], iso.accuracy,
                       iso.max_gradient);
         return lancer::make_isosurface_shape(iso);
+    }
+    case 17: {
+        using Op = lancer::sg::Function::Op;
+        // x = a sin(k u) v, y = b cos(v), z = c u: a wavy sheet whose
+        // bounds the fuzzer may make loose (max_gradient, range) or tight.
+        const double a = in.number(3), b = in.number(3), c = in.number(3), k = in.number(40);
+        const auto constant = [](double value) {
+            auto f = std::make_shared<lancer::sg::Function>();
+            f->parameters = {"x", "y", "z"};
+            f->constants = {value};
+            return f;
+        };
+        const auto op = [](Op code, int index = 0) {
+            lancer::sg::Function::Instruction instruction;
+            instruction.op = code;
+            instruction.index = index;
+            return instruction;
+        };
+        auto fx = constant(a), fy = constant(b), fz = constant(c);
+        fx->constants.push_back(k);
+        fx->code = {op(Op::Constant, 0),
+                    op(Op::Constant, 1),
+                    op(Op::Parameter, 0),
+                    op(Op::Multiply),
+                    op(Op::Math1, lancer::sg::Function::Sin),
+                    op(Op::Multiply),
+                    op(Op::Parameter, 1),
+                    op(Op::Multiply)};
+        fy->code = {op(Op::Constant, 0), op(Op::Parameter, 1), op(Op::Math1, lancer::sg::Function::Cos),
+                    op(Op::Multiply)};
+        fz->code = {op(Op::Constant, 0), op(Op::Parameter, 0), op(Op::Multiply)};
+        fx->stack_size = fy->stack_size = fz->stack_size = 3;
+        lancer::ParametricParameters parametric;
+        parametric.functions = {fx, fy, fz};
+        parametric.uv_min = {in.number(10), in.number(10)};
+        parametric.uv_max = {in.number(10), in.number(10)};
+        parametric.sphere_container = in.byte() & 1;
+        parametric.box_lower = in.vector(4);
+        parametric.box_upper = in.vector(4);
+        parametric.sphere_center = in.vector(4);
+        parametric.sphere_radius = std::fabs(in.number(4));
+        parametric.accuracy = std::fabs(in.number(0.1));
+        parametric.max_gradient = std::fabs(in.number(50));
+        if (in.byte() & 1) {
+            parametric.precompute_depth = 1 + in.byte() % 12;
+            parametric.precompute_axes = 1 + in.byte() % 7;
+        }
+        std::snprintf(g_parameters, sizeof g_parameters, "a %g b %g c %g k %g accuracy %g max_gradient %g", a, b, c, k,
+                      parametric.accuracy, parametric.max_gradient);
+        return lancer::make_parametric_shape(parametric);
     }
     }
 }

@@ -203,7 +203,7 @@ def main() -> None:
     for case in OBJ_CASES:
         save(obj_dir, case)
     shapes_dir = out / "shapes"
-    for kind in range(17):
+    for kind in range(18):
         stream = bytes((kind * 37 + 11 * i) % 256 for i in range(400))
         save(shapes_dir, bytes([kind]) + stream)
     for path in sorted(regressions.glob("*.shapes")):

@@ -16,7 +16,8 @@
 // - The normal is the cross product of the forward differences one
 //   accuracy step along u and along v at the piece's lower corner.
 //
-// One crossing per ray, as POV-Ray reports one. A piece is named by its
+// One crossing per ray, as POV-Ray reports one; a search stops after
+// kMostPiecesPerSearch pieces with the nearest crossing found so far. A piece is named by its
 // place in the halving (1 the whole rectangle, 2n and 2n + 1 the lower and
 // upper halves of piece n): that number is the crossing's face, from which
 // surface() finds the piece's corner again.
@@ -35,6 +36,11 @@ constexpr double kParallel = 1e-10;  // POV's EPSILON: a direction component thi
 // Pieces are halved at most this often (a piece number then still fits a
 // face number); POV-Ray's own stack holds 32.
 constexpr int kDeepestLevel = 30;
+// A ray's search gives up after looking at this many pieces (POV-Ray has
+// no limit): bounds that stay loose (a huge max_gradient over a wide range
+// of (u, v)) would otherwise have it visit millions of pieces per ray. A
+// sphere at the default accuracy takes about a thousand.
+constexpr long kMostPiecesPerSearch = 1L << 16;
 
 struct Range {
     double low = 0.0, high = 0.0;
@@ -77,7 +83,7 @@ class ParametricShape final : public Shape {
         Piece stack[kDeepestLevel + 2];
         int top = 0;
         stack[0] = {m_p.uv_min, m_p.uv_max, 1};
-        while (top >= 0) {
+        for (long visited = 0; top >= 0 && visited < kMostPiecesPerSearch; ++visited) {
             const Piece piece = stack[top];
             const glm::dvec2 size = piece.high - piece.low;
             double length = size.x;
@@ -143,11 +149,15 @@ class ParametricShape final : public Shape {
         const double h = m_p.accuracy;
         const DVec3 along_u = position(uv + glm::dvec2(h, 0.0)) - here;
         const DVec3 along_v = position(uv + glm::dvec2(0.0, h)) - here;
-        const DVec3 normal = glm::cross(along_u, along_v);
+        DVec3 normal = glm::cross(along_u, along_v);
+        // Scaled first, so tiny or huge differences still normalise.
+        const double largest = std::max({std::fabs(normal.x), std::fabs(normal.y), std::fabs(normal.z)});
+        if (largest > 0.0 && std::isfinite(largest)) normal /= largest;
         const double length = glm::length(normal);
         SurfaceGeometry g;
         g.point = p;
-        g.normal = length > 0.0 && std::isfinite(length) ? normal / length : DVec3(0.0, 1.0, 0.0);
+        g.normal =
+            largest > 0.0 && std::isfinite(largest) && std::isfinite(length) ? normal / length : DVec3(0.0, 1.0, 0.0);
         g.uv = Vec2(float(uv.x), float(uv.y));
         return g;
     }

@@ -131,6 +131,7 @@ inline LobeRadiance reflect_pov_area_light(const RenderScene& scene, const Shadi
         reflected = reflect_light_sample(at, centre);
     }
     if (lobes == Lobes::GlossyOnly) reflected.diffuse = Color(0.0f);
+    if (!light.casts_shadows()) reflected.glossy = Color(0.0f);  // see reflect_simple_light
     if (shadows == Shadows::Hard && light.casts_shadows() && !reflected.is_black())
         reflected *= PovAreaShadow(scene, at.hit, light, area, centre.wi, colour).visibility();
     return reflected;
@@ -148,6 +149,9 @@ inline LobeRadiance reflect_simple_light(const RenderScene& scene, const Shading
         return reflect_pov_area_light(scene, at, stand_in, *area, sample, shadows, lobes);
     LobeRadiance reflected = reflect_light_sample(at, sample);
     if (lobes == Lobes::GlossyOnly) reflected.diffuse = Color(0.0f);
+    // POV-Ray's shadowless light is a fill light: it makes no highlights
+    // (no phong, no specular).
+    if (!light.casts_shadows()) reflected.glossy = Color(0.0f);
     if (shadows == Shadows::Hard && light.casts_shadows() && !reflected.is_black())
         reflected *= transmittance_to(scene, at.hit, sample.point, &light);
     return reflected;
