@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <unordered_map>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -43,6 +45,26 @@ sg::Vec3 rotate_degrees(const sg::Vec3& p, const sg::Vec3& degrees) {
     m = glm::rotate(sg::Mat4(1.0), glm::radians(degrees.y), sg::Vec3(0, 1, 0)) * m;
     m = glm::rotate(sg::Mat4(1.0), glm::radians(degrees.z), sg::Vec3(0, 0, 1)) * m;
     return sg::Vec3(m * glm::dvec4(p, 0.0));
+}
+
+// POV-Ray's limit on datetime()'s format and text.
+constexpr std::size_t kLongestDatetimeText = 200;
+
+// POV's datetime(days, format): `days` since 2000-01-01 00:00 UTC (what
+// `now` gives), rounded to the second, as strftime writes it in UTC (an
+// empty text when strftime cannot: the text would be too long). None for
+// a year outside 1400..9999, which POV-Ray's calendar refuses.
+std::optional<std::string> datetime_text(double days, const std::string& format) {
+    constexpr double kDaysFrom1970To2000 = 365.0 * 30 + 7;
+    constexpr double kSecondsFrom1970To10000 = 253402300800.0, kSecondsFrom1400To1970 = 17987443200.0;
+    const double seconds = std::floor((days + kDaysFrom1970To2000) * 86400.0 + 0.5);
+    if (!(seconds >= -kSecondsFrom1400To1970 && seconds < kSecondsFrom1970To10000)) return std::nullopt;
+    const std::time_t stamp = static_cast<std::time_t>(seconds);
+    std::tm broken{};
+    if (!gmtime_r(&stamp, &broken)) return std::nullopt;
+    char text[kLongestDatetimeText + 1];
+    const std::size_t length = std::strftime(text, sizeof text - 1, format.c_str(), &broken);
+    return std::string(text, length);
 }
 
 }  // namespace
@@ -86,7 +108,8 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         {"strlen", {1, 1}},        {"substr", {3, 3}},      {"chr", {1, 1}},          {"val", {1, 1}},
         {"strupr", {1, 1}},        {"strlwr", {1, 1}},      {"vstr", {5, 5}},         {"asc", {1, 1}},
         {"bitwise_and", {2, 99}},  {"bitwise_or", {2, 99}}, {"file_exists", {1, 1}},  {"dimensions", {1, 1}},
-        {"dimension_size", {2, 2}}, {"vturbulence", {4, 4}}};
+        {"dimension_size", {2, 2}}, {"vturbulence", {4, 4}},  {"bitwise_xor", {2, 99}}, {"strcmp", {2, 2}},
+        {"datetime", {1, 2}}};
     // clang-format on
     auto expected = arity.find(name);
     if (expected == arity.end()) {
@@ -194,10 +217,12 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         if (args.size() == 3) return s < 0 ? args[1] : args[2];
         return s < 0 ? args[1] : s == 0 ? args[2] : args[3];
     }
-    if (name == "bitwise_and" || name == "bitwise_or") {
+    if (name == "bitwise_and" || name == "bitwise_or" || name == "bitwise_xor") {
         long r = static_cast<long>(c.f(0));
-        for (size_t i = 1; i < args.size(); ++i)
-            r = name == "bitwise_and" ? r & static_cast<long>(c.f(i)) : r | static_cast<long>(c.f(i));
+        for (size_t i = 1; i < args.size(); ++i) {
+            const long operand = static_cast<long>(c.f(i));
+            r = name == "bitwise_and" ? r & operand : name == "bitwise_or" ? r | operand : r ^ operand;
+        }
         return number(static_cast<double>(r));
     }
     if (name == "seed") return builtin_seed(*this, args, where);
@@ -312,6 +337,28 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         std::string s = c.s(0);
         for (auto& ch : s) ch = name == "strupr" ? std::toupper(ch) : std::tolower(ch);
         return Value::string(s);
+    }
+    if (name == "strcmp") {
+        // POV's: the difference of the first characters that differ (here
+        // bytes of the UTF-8 text), 0 when equal.
+        const std::string a = c.s(0), b = c.s(1);
+        std::size_t i = 0;
+        while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
+        const int left = i < a.size() ? static_cast<unsigned char>(a[i]) : 0;
+        const int right = i < b.size() ? static_cast<unsigned char>(b[i]) : 0;
+        return number(static_cast<double>(left - right));
+    }
+    if (name == "datetime") {
+        const std::string format = args.size() > 1 ? c.s(1) : "%Y-%m-%d %H:%M:%SZ";
+        if (format.empty() || format.size() > kLongestDatetimeText) {
+            c.domain(format.empty() ? "the format is empty"
+                                    : "the format is longer than POV-Ray's " + std::to_string(kLongestDatetimeText) +
+                                          " characters");
+            return Value::string("");
+        }
+        const std::optional<std::string> text = datetime_text(c.f(0), format);
+        if (!text) c.domain("the date is outside the years 1400 to 9999 (POV-Ray's range)");
+        return Value::string(text.value_or(""));
     }
     if (name == "file_exists") {
         std::error_code ec;

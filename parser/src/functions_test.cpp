@@ -77,6 +77,39 @@ TEST(ParserExpressions, StringsCompareAsStrcmp) {
                      7.0);
 }
 
+// POV-Ray keeps a line break inside a string; a backslash ending the line
+// there is its "unterminated string literal".
+TEST(ParserExpressions, StringsMaySpanLines) {
+    EXPECT_DOUBLE_EQ(declared("#declare S = \"two\nlines\";\n#declare R = strlen(S) + 10 * (S = \"two\\nlines\");\n"
+                              "sphere { 0, R }",
+                              "R"),
+                     19.0);
+    const Diagnostic backslash = test::first_error("#declare S = \"one \\\n two\";");
+    EXPECT_EQ(backslash.location.line, 1);
+    EXPECT_EQ(backslash.location.column, 19);
+    EXPECT_NE(backslash.message.find("backslash"), std::string::npos) << backslash.message;
+}
+
+// Values measured with POV-Ray 3.7 (#debug of the same expressions).
+TEST(ParserExpressions, StrcmpBitwiseXorDatetimeAndNow) {
+    EXPECT_DOUBLE_EQ(declared("#declare R = strcmp(\"abc\", \"abd\");", "R"), -1.0);
+    EXPECT_DOUBLE_EQ(declared("#declare R = strcmp(\"b\", \"abc\");", "R"), 1.0);
+    EXPECT_DOUBLE_EQ(declared("#declare R = strcmp(\"ab\", \"abc\");", "R"), -99.0);
+    EXPECT_DOUBLE_EQ(declared("#declare R = strcmp(\"same\", \"same\");", "R"), 0.0);
+    EXPECT_DOUBLE_EQ(declared("#declare R = bitwise_xor(12, 10, 1);", "R"), 7.0);
+    EXPECT_DOUBLE_EQ(declared("#declare R = (datetime(0) = \"2000-01-01 00:00:00Z\") + "
+                              "2 * (datetime(366.5, \"%A %d %B %Y %H:%M\") = \"Monday 01 January 2001 12:00\") + "
+                              "4 * (datetime(-10957.25) = \"1969-12-31 18:00:00Z\");",
+                              "R"),
+                     7.0);
+    // now: days since 2000 (9000 days is 2024-08-23).
+    EXPECT_GT(declared("#declare R = now;", "R"), 9000.0);
+    const Diagnostic far = test::first_error("#declare S = datetime(1e12);");
+    EXPECT_NE(far.message.find("1400 to 9999"), std::string::npos) << far.message;
+    const Diagnostic empty = test::first_error("#declare S = datetime(0, \"\");");
+    EXPECT_NE(empty.message.find("format is empty"), std::string::npos) << empty.message;
+}
+
 TEST(ParserFunctions, MacrosPassAndBuildFunctions) {
     EXPECT_DOUBLE_EQ(declared("#declare G = function { x + 1 }\n"
                               "#macro Twice(F) function { F(x, y, z) * 2 } #end\n"

@@ -2,6 +2,8 @@
 // order, directives executed on the way, identifiers resolved to typed
 // tokens. See evaluator.h for why the directive layer sits here.
 #include <algorithm>
+#include <chrono>
+#include <cstdint>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -49,7 +51,8 @@ const std::unordered_set<std::string>& builtin_names() {
         "int",         "div",          "radians",     "degrees",    "vlength",       "vnormalize", "vcross", "vdot",
         "vrotate",     "vaxis_rotate", "seed",        "rand",       "select",        "concat",     "str",    "strlen",
         "substr",      "chr",          "val",         "strupr",     "strlwr",        "vstr",       "asc",    "sqr",
-        "bitwise_and", "bitwise_or",   "file_exists", "dimensions", "dimension_size", "vturbulence"};
+        "bitwise_and", "bitwise_or",   "file_exists", "dimensions", "dimension_size", "vturbulence",
+        "bitwise_xor", "strcmp",       "datetime"};
     // clang-format on
     return names;
 }
@@ -90,6 +93,7 @@ const std::unordered_set<std::string>& constant_names() {
                                                           "clock_delta",
                                                           "frame_number",
                                                           "clock_on",
+                                                          "now",
                                                           "initial_clock",
                                                           "final_clock",
                                                           "initial_frame",
@@ -397,6 +401,13 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
         if (name == "final_frame") return constant(Value::number(a.final_frame));
         if (name == "initial_clock") return constant(Value::number(a.initial_clock));
         if (name == "final_clock") return constant(Value::number(a.final_clock));
+    }
+    if (name == "now") {
+        // POV's: days since 2000-01-01 00:00 UTC, to the microsecond.
+        constexpr std::int64_t kMicrosecondsFrom1970To2000 = 946684800LL * 1000000;
+        const auto since_1970 =
+            std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch());
+        return constant(Value::number(double(since_1970.count() - kMicrosecondsFrom1970To2000) * 1e-6 / 86400.0));
     }
     if (name == "version") return constant(Value::number(m_language_version));
     if (name == "image_width" || name == "image_height") {
