@@ -60,7 +60,7 @@ Value function_value(const sg::FunctionRef& f, const sg::SourceLocation& at) {
 // one token of lookahead.
 class FunctionCompiler {
   public:
-    FunctionCompiler(Evaluator& ev, sg::Function& f) : m_ev(ev), m_f(f) {}
+    FunctionCompiler(Evaluator& ev, sg::Function& f) : m_ev(ev), m_f(&f) {}
 
     // Reads the body after its "{" through the matching "}".
     bool compile(const sg::SourceLocation& at) {
@@ -79,7 +79,7 @@ class FunctionCompiler {
         if (!is_punct("(")) return fail("expected internal(number)");
         fetch();
         if (m_token.kind != RawKind::Number) return fail("expected internal(number)");
-        m_f.internal = int(m_token.number);
+        m_f->internal = int(m_token.number);
         fetch();
         if (!is_punct(")")) return fail("expected ) after internal(number");
         fetch();
@@ -123,14 +123,14 @@ class FunctionCompiler {
     }
 
     int parameter_index(const std::string& name) const {
-        for (std::size_t i = 0; i < m_f.parameters.size(); ++i)
-            if (m_f.parameters[i] == name) return int(i);
+        for (std::size_t i = 0; i < m_f->parameters.size(); ++i)
+            if (m_f->parameters[i] == name) return int(i);
         return -1;
     }
     bool is_parameter(const std::string& name) const { return parameter_index(name) >= 0; }
 
     void emit(Op op, int index = 0, int count = 0, int channel = 0) {
-        m_f.code.push_back({op, index, count, channel});
+        m_f->code.push_back({op, index, count, channel});
         // Track the deepest the stack gets.
         switch (op) {
         case Op::Constant:
@@ -144,11 +144,11 @@ class FunctionCompiler {
         case Op::Call: m_depth -= count - 1; break;
         default: --m_depth; break;
         }
-        m_f.stack_size = std::max(m_f.stack_size, m_depth + 1);
+        m_f->stack_size = std::max(m_f->stack_size, m_depth + 1);
     }
     void constant(double value) {
-        m_f.constants.push_back(value);
-        emit(Op::Constant, int(m_f.constants.size()) - 1);
+        m_f->constants.push_back(value);
+        emit(Op::Constant, int(m_f->constants.size()) - 1);
     }
 
     // POV's function language has no ?: (select() does that).
@@ -316,6 +316,7 @@ class FunctionCompiler {
             emit(name == "min" ? Op::Minimum : Op::Maximum, 0, count);
             return;
         }
+        if ((name == "sum" || name == "prod") && !m_ev.lookup(name)) return sequence(name);
         if (name == "select" && !m_ev.lookup(name)) {
             const int count = arguments(name);
             if (count != 3 && count != 4) {
@@ -365,6 +366,56 @@ class FunctionCompiler {
         m_failed = true;
     }
 
+    // POV's sum(i, b, e, expr) and prod(…): expr for i = b, b + 1, … while
+    // i <= e, added or multiplied. The body is a function of this one's
+    // parameters and i, called once per step.
+    void sequence(const std::string& name) {
+        if (!is_punct("(")) {
+            fail("expected ( after " + name);
+            return;
+        }
+        fetch();
+        if (m_token.kind != RawKind::Identifier || is_parameter(m_token.text)) {
+            fail(name + "(): its first argument names the new loop variable, e.g. " + name + "(i, 1, 10, x * i)");
+            return;
+        }
+        const std::string variable = m_token.text;
+        fetch();
+        for (int bound = 0; bound < 2 && !m_failed; ++bound) {
+            if (!is_punct(",")) {
+                fail(name + "() takes four arguments: a variable, its first and last values and an expression");
+                return;
+            }
+            fetch();
+            expression();
+        }
+        if (m_failed) return;
+        if (!is_punct(",")) {
+            fail(name + "() takes four arguments: a variable, its first and last values and an expression");
+            return;
+        }
+        fetch();
+        auto body = std::make_shared<sg::Function>();
+        body->parameters = m_f->parameters;
+        body->parameters.push_back(variable);
+        body->name = m_f->name;
+        sg::Function* const outer = m_f;
+        const int outer_depth = m_depth;
+        m_f = body.get();
+        m_depth = 0;
+        expression();
+        m_f = outer;
+        m_depth = outer_depth;
+        if (m_failed) return;
+        if (!is_punct(")")) {
+            fail(name + "() takes four arguments: a variable, its first and last values and an expression");
+            return;
+        }
+        fetch();
+        m_f->callees.push_back(body);
+        emit(name == "sum" ? Op::Sum : Op::Product, int(m_f->callees.size()) - 1, int(outer->parameters.size()));
+    }
+
     void call(const sg::FunctionRef& callee, const std::string& name) {
         const int count = arguments(name);
         int channel = 0;
@@ -381,8 +432,8 @@ class FunctionCompiler {
             }
             fetch();
         }
-        m_f.callees.push_back(callee);
-        emit(Op::Call, int(m_f.callees.size()) - 1, count, channel);
+        m_f->callees.push_back(callee);
+        emit(Op::Call, int(m_f->callees.size()) - 1, count, channel);
     }
 
   public:
@@ -390,7 +441,7 @@ class FunctionCompiler {
 
   private:
     Evaluator& m_ev;
-    sg::Function& m_f;
+    sg::Function* m_f;  // the function being written: a sum's or prod's body while it is read
     RawToken m_token;
     sg::SourceLocation m_at;
     bool m_failed = false;

@@ -90,6 +90,24 @@ TEST(ParserExpressions, StringsMaySpanLines) {
     EXPECT_NE(backslash.message.find("backslash"), std::string::npos) << backslash.message;
 }
 
+// POV's sum(i, b, e, expr) and prod(…): i from b by 1 while i <= e; the
+// body reads the function's parameters; sums nest. Values from POV-Ray 3.7.
+TEST(ParserFunctions, SumAndProd) {
+    EXPECT_DOUBLE_EQ(declared("#declare F = function { sum(i, 1, 10, i) }\n#declare R = F(0, 0, 0);", "R"), 55.0);
+    EXPECT_DOUBLE_EQ(declared("#declare F = function { prod(k, 1, 5, k) }\n#declare R = F(0, 0, 0);", "R"), 120.0);
+    EXPECT_DOUBLE_EQ(declared("#declare F = function(x) { sum(i, 1, 3, x * i) }\n#declare R = F(2);", "R"), 12.0);
+    EXPECT_DOUBLE_EQ(
+        declared("#declare F = function { sum(i, 1, 3, sum(j, 1, i, j * y)) }\n#declare R = F(0, 2, 0);", "R"), 20.0);
+    EXPECT_DOUBLE_EQ(declared("#declare F = function { sum(i, 2.5, 1, 7) + prod(i, 0.5, 2.6, i) }\n"
+                              "#declare R = F(0, 0, 0);",
+                              "R"),
+                     1.875);
+    const Diagnostic variable = test::first_error("#declare F = function { sum(x, 1, 3, x) }");
+    EXPECT_NE(variable.message.find("loop variable"), std::string::npos) << variable.message;
+    const Diagnostic three = test::first_error("#declare F = function { prod(i, 1, 3) }");
+    EXPECT_NE(three.message.find("four arguments"), std::string::npos) << three.message;
+}
+
 // Values measured with POV-Ray 3.7 (#debug of the same expressions).
 TEST(ParserExpressions, StrcmpBitwiseXorDatetimeAndNow) {
     EXPECT_DOUBLE_EQ(declared("#declare R = strcmp(\"abc\", \"abd\");", "R"), -1.0);

@@ -62,6 +62,9 @@ struct Function {
         Maximum,  // count operands
         Select,   // count 3 or 4: POV's select(a, b, c [, d])
         Call,     // callees[index] with count arguments (a pigment function: its `channel`)
+        Sum,      // POV's sum(i, b, e, body): callees[index] (the body) with this function's first count
+                  // arguments and i, added for i = b, b + 1, … up to e (b and e on the stack)
+        Product,  // POV's prod(…): the same, multiplied
     };
     enum Math1Code {
         Abs,

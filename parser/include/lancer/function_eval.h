@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <vector>
 
 #include "lancer/internal_functions.h"
 
@@ -10,6 +11,9 @@ namespace lancer::sg {
 namespace function_detail {
 
 constexpr double kPi = 3.14159265358979323846;
+// The most steps of one sum() or prod(); the parser's #while loops stop at
+// the same count (ParseOptions).
+constexpr long kMostSequenceSteps = 1000000;
 
 inline double math1(int code, double a) {
     switch (code) {
@@ -179,6 +183,25 @@ inline double evaluate_function(const Function& f, const double* arguments, int 
             top -= in.count;
             const double value = evaluate_function(*f.callees[in.index], stack + top, in.count, natives, in.channel);
             stack[top++] = value;
+            break;
+        }
+        case Op::Sum:
+        case Op::Product: {
+            top -= 2;
+            const double first = stack[top], last = stack[top + 1];
+            std::vector<double> values(std::size_t(in.count) + 1, 0.0);
+            for (int i = 0; i < in.count; ++i) values[std::size_t(i)] = argument(i);
+            const bool sum = in.op == Op::Sum;
+            double total = sum ? 0.0 : 1.0;
+            // Bounded as the parser's loops are: a sum over 10^12 steps in
+            // a pattern would otherwise never end.
+            long steps = 0;
+            for (double i = first; i <= last && steps < function_detail::kMostSequenceSteps; i += 1.0, ++steps) {
+                values.back() = i;
+                const double term = evaluate_function(*f.callees[in.index], values.data(), in.count + 1, natives, 0);
+                total = sum ? total + term : total * term;
+            }
+            stack[top++] = total;
             break;
         }
         }
