@@ -536,6 +536,10 @@ class Evaluator {
     };
     void rewind_lookahead();
     bool take_punct(const char* punct);
+    // Whether the next raw token is `text` of that kind; take_raw takes it
+    // if so.
+    bool next_is_raw(RawKind kind, std::string_view text);
+    bool take_raw(RawKind kind, std::string_view text);
     bool push_file(std::string text, const std::string& label, const std::string& path, const std::string& folder,
                    const sg::SourceLocation& included_from);
     Symbol classify(const RawToken& raw);
@@ -580,6 +584,8 @@ class Evaluator {
     void directive_fclose(const RawToken& directive);
     void directive_read(const RawToken& directive);
     void directive_write(const RawToken& directive);
+    int take_binary_type();  // an index of user_files.cpp's binary types, or -1
+    void write_binary_values(const RawToken& directive, int type, std::string& out);
     std::shared_ptr<UserFile> user_file_argument(const RawToken& directive, bool reading, std::string& handle);
     void close_user_file(const std::string& handle);
     std::optional<Value> read_user_value(UserFile& file);

@@ -651,21 +651,22 @@ void Evaluator::rewind_lookahead() {
 }
 
 bool Evaluator::take_punct(const char* punct) {
+    return take_raw(RawKind::Punct, punct);
+}
+
+bool Evaluator::next_is_raw(RawKind kind, std::string_view text) {
     rewind_lookahead();
-    if (!m_pending.empty()) {
-        const Pending& top = m_pending.back();
-        if (top.raw && top.raw->kind == RawKind::Punct && top.raw->text == punct) {
-            m_pending.pop_back();
-            return true;
-        }
-        return false;
-    }
-    const RawToken* next = peek_raw();
-    if (next && next->kind == RawKind::Punct && next->text == punct) {
+    const RawToken* next = m_pending.empty() ? peek_raw() : m_pending.back().raw;
+    return next && next->kind == kind && next->text == text;
+}
+
+bool Evaluator::take_raw(RawKind kind, std::string_view text) {
+    if (!next_is_raw(kind, text)) return false;
+    if (!m_pending.empty())
+        m_pending.pop_back();
+    else
         ++m_frames.back()->position;
-        return true;
-    }
-    return false;
+    return true;
 }
 
 std::string Evaluator::expect_raw_identifier(const std::string& context, sg::SourceLocation* where) {

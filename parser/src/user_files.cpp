@@ -157,6 +157,10 @@ void Evaluator::directive_write(const RawToken& d) {
     while (!m_aborted) {
         if (take_punct(")")) break;
         if (take_punct(",")) continue;
+        if (const int type = take_binary_type(); type >= 0) {
+            write_binary_values(d, type, text);
+            continue;
+        }
         Value item = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
         if (m_aborted) return;
         if (item.kind == Value::Kind::String) {
@@ -177,6 +181,75 @@ void Evaluator::directive_write(const RawToken& d) {
     if (!file->out) {
         error(d.location, "cannot write to user file \"" + file->name + "\"");
         return abort_parse();
+    }
+}
+
+namespace {
+
+// POV-Ray's binary items of #write: `uint8 v`, `sint16le <a, b>` … write
+// each number rounded and clamped to the type, in its byte order.
+struct BinaryTypeSpec {
+    const char* name;
+    long lowest, highest;
+    int bytes;
+    bool big_endian;
+};
+constexpr BinaryTypeSpec kBinaryTypes[] = {
+    {"sint8", -128, 127, 1, false},
+    {"uint8", 0, 255, 1, false},
+    {"sint16le", -32768, 32767, 2, false},
+    {"sint16be", -32768, 32767, 2, true},
+    {"uint16le", 0, 65535, 2, false},
+    {"uint16be", 0, 65535, 2, true},
+    {"sint32le", -2147483648L, 2147483647L, 4, false},
+    {"sint32be", -2147483648L, 2147483647L, 4, true},
+};
+
+}  // namespace
+
+int Evaluator::take_binary_type() {
+    for (std::size_t i = 0; i < std::size(kBinaryTypes); ++i)
+        if (take_raw(RawKind::Identifier, kBinaryTypes[i].name)) return int(i);
+    return -1;
+}
+
+// After a binary type, numbers and vectors up to the next `,` or `)`, each
+// component in that type.
+void Evaluator::write_binary_values(const RawToken& d, int type_index, std::string& out) {
+    const BinaryTypeSpec& type = kBinaryTypes[type_index];
+    int written = 0;
+    while (!m_aborted) {
+        if (next_is_raw(RawKind::Punct, ",") || next_is_raw(RawKind::Punct, ")")) break;
+        const Value item = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
+        if (m_aborted) return;
+        int terms = 0;
+        if (item.kind == Value::Kind::Float)
+            terms = 1;
+        else if (item.kind == Value::Kind::Vector)
+            terms = item.size;
+        else if (item.kind == Value::Kind::Color)
+            terms = 5;
+        if (terms < 1 || terms > 5) {
+            error(d.location,
+                  std::string("#write: ") + type.name + " writes numbers and vectors, not " + describe(item));
+            return abort_parse();
+        }
+        for (int i = 0; i < terms; ++i) {
+            const double x = item.v[std::size_t(i)];
+            const long value = x <= double(type.lowest)    ? type.lowest
+                               : x >= double(type.highest) ? type.highest
+                               : x == x                    ? long(std::floor(x + 0.5))
+                                                           : 0;
+            for (int byte = 0; byte < type.bytes; ++byte) {
+                const int shift = (type.big_endian ? type.bytes - 1 - byte : byte) * 8;
+                out += char((value >> shift) & 0xFF);
+            }
+        }
+        ++written;
+    }
+    if (written == 0 && !m_aborted) {
+        error(d.location, std::string("#write: ") + type.name + " needs a number or vector after it");
+        abort_parse();
     }
 }
 

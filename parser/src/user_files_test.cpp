@@ -55,6 +55,29 @@ TEST_F(UserFileTest, WritesAsPovRayWrites) {
     EXPECT_EQ(read("data.txt"), "1.5, <1,2,3> ,\"hello\",-2e-07\n");
 }
 
+// #write's binary items: each number after the type rounded, clamped to it
+// and written in its byte order, up to the next comma ("300 -4" is one
+// number, 296). The bytes POV-Ray 3.7 writes for the same line.
+TEST_F(UserFileTest, WritesBinaryItemsAsPovRay) {
+    const ParseResult result =
+        parse("#fopen Out \"" + path("bin.dat") +
+              "\" write\n"
+              "#write (Out, uint8 65 300 -4, sint16be <258, -2>, \",\", uint16le 70000.7, sint32le -1.5, "
+              "sint8 2.5 -2.5, sint32be 1e10, uint16be <1,2,3,4,5>, \"|\", 7)\n"
+              "#fclose Out\n");
+    ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
+    const std::string expected(
+        "\x41\xff\x01\x02\xff\xfe\x2c\xff\xff\xff\xff\xff\xff\x00\x7f\xff\xff\xff"
+        "\x00\x01\x00\x02\x00\x03\x00\x04\x00\x05\x7c\x37",
+        30);
+    EXPECT_EQ(read("bin.dat"), expected);
+    const ParseResult text = parse("#fopen F \"" + path("t.dat") + "\" write\n#write (F, uint8 \"a\")\n");
+    EXPECT_TRUE(contains(test::all_diagnostics(text), "uint8 writes numbers and vectors"))
+        << test::all_diagnostics(text);
+    const ParseResult nothing = parse("#fopen F \"" + path("n.dat") + "\" write\n#write (F, sint8, 1)\n");
+    EXPECT_TRUE(contains(test::all_diagnostics(nothing), "needs a number")) << test::all_diagnostics(nothing);
+}
+
 TEST_F(UserFileTest, AppendAddsToTheEnd) {
     write("log.txt", "first\n");
     const ParseResult result =
