@@ -33,7 +33,8 @@
 // perspective camera, an orthographic `angle` without a value, a camera
 // normal; mesh_camera's distribution types 0 to 3, with smooth, several
 // rays per pixel and meshes of camera_mesh_grid.inc), all looking at
-// camera_world.inc; and participating media (absorbing glass, emitting
+// camera_world.inc; fake caustics (interior { caustics }); and
+// participating media (absorbing glass, emitting
 // and scattering media with densities, several media per interior), and
 // sky_spheres (layered pigments over the background, 3.7's and 3.6's
 // compositing, emission, transforms, skies.inc, seen in mirrors) and fog
@@ -86,23 +87,22 @@ TEST_P(PovReference, WhittedMatchesPovRay) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, PovReference,
-    ::testing::Values("wall_point_light", "spotlights", "fill_lights", "area_room", "area_circular",
-                      "cylinder_parallel", "looks_like_projected", "finishes", "gamma", "legacy_gamma", "no_version",
-                      "legacy_opacity", "area_illumination", "orthographic_down", "orthographic_default_size",
-                      "quadric_family", "csg_solids", "csg_glass", "light_groups", "polygons_polynomials",
-                      "superellipsoids", "blobs", "prisms", "lathes", "text", "sors", "ovus", "sphere_sweeps",
-                      "bicubic_patches", "julia_fractals", "height_fields", "patterns_geometric", "pattern_aoi",
-                      "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
-                      "patterns_tilings_more", "normals", "textures", "tiles", "uv_mapping", "uv_mapping_object",
-                      "csg_meshes", "images", "image_palette", "material_map", "object_pattern", "irid_backside",
-                      "spline_function", "text_internal", "functions", "isosurfaces", "height_field_functions",
-                      "camera_fisheye", "camera_fisheye_360", "camera_ultra_wide_angle", "camera_omnimax",
-                      "camera_panoramic", "camera_cylinder_1", "camera_cylinder_2", "camera_cylinder_3",
-                      "camera_cylinder_4", "camera_spherical", "camera_spherical_narrow", "camera_transforms",
-                      "camera_orthographic_bare_angle", "camera_normal", "camera_mesh_per_pixel",
-                      "camera_mesh_side_by_side", "camera_mesh_uv_smooth", "camera_mesh_summed", "camera_mesh_averaged",
-                      "media_emission", "media_scattering", "media_absorbing_glass", "sky_layers", "sky_legacy",
-                      "sky_skies_inc", "fog_constant", "fog_ground", "fog_turbulent", "fog_hollow", "rainbow"),
+    ::testing::Values(
+        "wall_point_light", "spotlights", "fill_lights", "area_room", "area_circular", "cylinder_parallel",
+        "looks_like_projected", "finishes", "gamma", "legacy_gamma", "no_version", "legacy_opacity",
+        "area_illumination", "orthographic_down", "orthographic_default_size", "quadric_family", "csg_solids",
+        "csg_glass", "light_groups", "polygons_polynomials", "superellipsoids", "blobs", "prisms", "lathes", "text",
+        "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals", "height_fields", "patterns_geometric",
+        "pattern_aoi", "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
+        "patterns_tilings_more", "normals", "textures", "tiles", "uv_mapping", "uv_mapping_object", "csg_meshes",
+        "images", "image_palette", "material_map", "object_pattern", "irid_backside", "spline_function",
+        "text_internal", "functions", "isosurfaces", "height_field_functions", "camera_fisheye", "camera_fisheye_360",
+        "camera_ultra_wide_angle", "camera_omnimax", "camera_panoramic", "camera_cylinder_1", "camera_cylinder_2",
+        "camera_cylinder_3", "camera_cylinder_4", "camera_spherical", "camera_spherical_narrow", "camera_transforms",
+        "camera_orthographic_bare_angle", "camera_normal", "camera_mesh_per_pixel", "camera_mesh_side_by_side",
+        "camera_mesh_uv_smooth", "camera_mesh_summed", "camera_mesh_averaged", "media_emission", "media_scattering",
+        "media_absorbing_glass", "fake_caustics", "sky_layers", "sky_legacy", "sky_skies_inc", "fog_constant",
+        "fog_ground", "fog_turbulent", "fog_hollow", "rainbow"),
     [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 // Isosurfaces of POV's internal functions (f_helix1, f_torus2, f_helix2,

@@ -1405,7 +1405,8 @@ interior_items
                                  $$.push_back([i](sg::Interior& target) { target = *i; }); }
   | interior_items "ior" expr { $$ = std::move($1); double v = ev.positive($3, @3, "ior");
                                 $$.push_back([v](sg::Interior& i) { i.ior = v; }); }
-  | interior_items "caustics" expr   { $$ = std::move($1); ev.ignored(LOC(@2), "caustics"); }
+  | interior_items "caustics" expr { $$ = std::move($1); double v = ev.to_float($3, @3, "a caustics value");
+                                     $$.push_back([v](sg::Interior& i) { i.caustics = v; }); }
   | interior_items "dispersion" expr { $$ = std::move($1); ev.ignored(LOC(@2), "dispersion"); }
   | interior_items "fade_distance" expr { $$ = std::move($1); double v = ev.to_float($3, @3, "a fade_distance");
                                           $$.push_back([v](sg::Interior& i) { i.fade_distance = v; }); }

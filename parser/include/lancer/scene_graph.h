@@ -382,6 +382,9 @@ struct Interior {
     double fade_distance = 0.0;
     double fade_power = 0.0;
     Vec3 fade_color{0.0};
+    // POV's fake caustics: shadows through the object brighten where the
+    // shadow ray meets its surface head on (0: none; POV's range 0..1).
+    double caustics = 0.0;
     // POV's media in the interior; seen only when the object is `hollow`,
     // as in POV-Ray (scene_media.h).
     std::vector<Media> media;

@@ -93,6 +93,10 @@ struct MaterialParameters {
     // transmit) rather than 1 - filter - transmit (POV's LegacyOpacity).
     bool legacy_opacity = false;
     float ior = 1.0f;
+    // POV's fake caustics, as the exponent it uses: 45 times the
+    // interior's `caustics` (0: none). A shadow ray crossing the surface
+    // at cosine c to its normal carries 1 + c^caustics times the light.
+    float caustics = 0.0f;
     // POV's interior fade (docs/scene-language.md): fade_distance 0 is none.
     float fade_distance = 0.0f;
     float fade_power = 0.0f;

@@ -49,6 +49,7 @@ MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment, 
     p.irid_thickness = float(m.finish.irid_thickness);
     p.irid_turbulence = float(m.finish.irid_turbulence);
     p.ior = float(m.interior.ior);
+    p.caustics = float(45.0 * m.interior.caustics);  // POV-Ray's scale (Parse_Interior)
     p.fade_distance = float(m.interior.fade_distance);
     p.fade_power = float(m.interior.fade_power);
     p.fade_color = Color(m.interior.fade_color);

@@ -71,6 +71,10 @@ inline Color transmittance_to(const RenderScene& scene, const Hit& from, const V
             const SurfaceSample surface = material.sample_surface(blocker);
             if (!(material.transparency(surface) > 0.0f)) return Color(0.0f);
             throughput *= material.pov_transmitted(surface);
+            if (const float caustics = material.parameters().caustics; caustics != 0.0f) {
+                const float cosine = glm::dot(blocker.shading_normal, ray.direction) / glm::length(ray.direction);
+                throughput *= 1.0f + std::pow(std::fabs(cosine), caustics);
+            }
             if (lancer::is_black(throughput)) return throughput;
         }
         // The stretch just crossed ran inside this object: its media dim the
