@@ -128,8 +128,10 @@ class GatherIntegrator final : public Integrator {
     static Color seen_by_simple_model(const RenderScene& scene, const Ray& ray) {
         Hit hit;
         if (!scene.intersect(ray, hit)) return scene.background(ray);
-        const ShadingContext at = make_shading_context(hit, ray);
-        return surface_emission(at) + simple_direct_light(scene, at, Shadows::None).total();
+        return shade_blended(hit, [&](const Hit& entry) {
+            const ShadingContext at = make_shading_context(entry, ray);
+            return surface_emission(at) + simple_direct_light(scene, at, Shadows::None).total();
+        });
     }
 
     int m_point_count;

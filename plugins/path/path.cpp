@@ -45,6 +45,7 @@
 #include <lancer/light_tree.h>
 #include <lancer/shading/bsdf_sampling.h>
 #include <lancer/shading/environment_light.h>
+#include <lancer/shading/material_blend.h>
 #include <lancer/shading/volume_tracking.h>
 
 namespace {
@@ -232,6 +233,9 @@ class PathIntegrator final : public Integrator {
                 radiance += throughput * weight * scene.background(ray);
                 break;
             }
+            // Between two texture_map entries, one entry with its weight's
+            // probability: the mean of the two, as POV-Ray blends them.
+            if (hit.blend_material != nullptr) hit = chosen_entry(hit, sampler.next_1d());
             const Vec3 wo = -ray.direction;
             const Material& material = *hit.material;
             // POV's interior fade on the stretch just travelled inside an

@@ -169,6 +169,29 @@ TEST_F(PathFixture, ConstantSkyIsAnEnvironmentLight) {
     }
 }
 
+// A ball between two texture_map entries of albedo 1 and 0.2, blended
+// half and half, under the same constant sky: path follows one entry per
+// path with its weight's probability, so the ball converges to the mean of
+// what each reflects, 0.7 * 0.6 (one material with either finish would
+// give 0.7 or 0.14).
+TEST_F(PathFixture, TextureMapEntriesAreLitEachWithItsOwnFinish) {
+    ParseOptions options;
+    options.language_version = 3.7;
+    // Entries far apart: the value over the ball is 0.5 to within 0.001.
+    ParseResult parsed = parse_scene_string(R"(
+        camera { location <0, 0, -3> direction <0, 0, 4> right x up y look_at 0 }
+        sphere { 0, 1 texture { gradient x texture_map {
+            [-1000 pigment { rgb 1 } finish { ambient 0 diffuse 1 }]
+            [1000 pigment { rgb 1 } finish { ambient 0 diffuse 0.2 }] } } }
+        sky_sphere { pigment { rgb 0.7 } }
+    )",
+                                            "blend.pov", options);
+    ASSERT_TRUE(parsed.ok());
+    auto integrator = make_integrator(path);
+    const Film film = render(*parsed.scene, *integrator, 4, 4, 4096);
+    EXPECT_LT(max_deviation(film, 0.7 * 0.6), 0.02) << "image mean " << image_mean(film);
+}
+
 // A matte floor and ball under a sky_sphere whose sun (a disc of 0.1 rad
 // radius, 250 times the rest of the sky) gives most of the light. NEE draws
 // the sun from the sky's table, so the image converges to what BSDF

@@ -22,6 +22,7 @@
 
 #include <lancer/integrator.h>
 #include <lancer/shading/local_shading.h>
+#include <lancer/shading/material_blend.h>
 #include <lancer/shading/pov_media.h>
 #include "diffuse_point_lanes.h"
 
@@ -91,15 +92,16 @@ class RaycastIntegrator final : public Integrator {
     Color surface_radiance(const Ray& ray, const Hit* found, const RenderScene& scene,
                            const SceneLighting& lighting) const {
         if (!found) return scene.background(ray);
-        const Hit& hit = *found;
         // The same local model as shadow/whitted/gather (local_shading.h),
         // without shadow rays, so the integrators agree where nothing occludes.
-        const ShadingContext at = make_shading_context(hit, ray);
-        Color radiance = surface_emission(at);
-        if (m_with_ambient) radiance += opaque_ambient(lighting.ambient_light, at);
-        const LobeRadiance reflected = simple_direct_light(scene, lighting.lights, at, Shadows::None);
-        radiance += m_with_specular ? reflected.total() : reflected.diffuse;
-        return radiance;
+        return shade_blended(*found, [&](const Hit& hit) {
+            const ShadingContext at = make_shading_context(hit, ray);
+            Color radiance = surface_emission(at);
+            if (m_with_ambient) radiance += opaque_ambient(lighting.ambient_light, at);
+            const LobeRadiance reflected = simple_direct_light(scene, lighting.lights, at, Shadows::None);
+            radiance += m_with_specular ? reflected.total() : reflected.diffuse;
+            return radiance;
+        });
     }
 
     bool m_with_ambient;

@@ -34,6 +34,7 @@
 
 #include <lancer/integrator.h>
 #include <lancer/shading/local_shading.h>
+#include <lancer/shading/material_blend.h>
 #include <lancer/shading/pov_media.h>
 
 namespace {
@@ -55,19 +56,19 @@ class ShadowIntegrator final : public Integrator {
   private:
     Color surface_radiance(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler& sampler) const {
         if (!found) return scene.background(ray);
-        const Hit& hit = *found;
-        const ShadingContext at = make_shading_context(hit, ray);
-
-        Color radiance = surface_emission(at);
-        if (m_with_ambient) radiance += opaque_ambient(scene, at);
-        for (const Light* light : scene.lights()) {
-            if (!light_reaches(*light, hit)) continue;  // POV's light_group
-            if (m_area_samples > 0 && !light->is_delta())
-                radiance += sampled_area_light(scene, at, *light, sampler);
-            else
-                radiance += reflect_simple_light(scene, at, *light, Shadows::Hard).total();
-        }
-        return radiance;
+        return shade_blended(*found, [&](const Hit& hit) {
+            const ShadingContext at = make_shading_context(hit, ray);
+            Color radiance = surface_emission(at);
+            if (m_with_ambient) radiance += opaque_ambient(scene, at);
+            for (const Light* light : scene.lights()) {
+                if (!light_reaches(*light, hit)) continue;  // POV's light_group
+                if (m_area_samples > 0 && !light->is_delta())
+                    radiance += sampled_area_light(scene, at, *light, sampler);
+                else
+                    radiance += reflect_simple_light(scene, at, *light, Shadows::Hard).total();
+            }
+            return radiance;
+        });
     }
 
     // Mean over area_samples points of the light's surface, each behind its

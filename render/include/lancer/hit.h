@@ -21,8 +21,16 @@ struct Hit {
     // per axis; spawn_ray offsets by it so new rays never re-hit this surface.
     Vec3 position_error{0.0f};
     const Material* material = nullptr;  // never null for a hit the scene returns
-    const Light* emitter = nullptr;      // area light or emissive object, else null
-    std::uint32_t object_id = 0;         // index of the world-space instance
+    // POV-Ray's texture_map between two of its entries: the surface shows
+    // (1 - blend_weight) of `material` and blend_weight of blend_material,
+    // each lit with its own finish (blend_shading_normal is the second's
+    // bumped normal), the lit colours blended (lancer/shading/material_blend.h).
+    // Null where one material holds, as everywhere outside a texture_map.
+    const Material* blend_material = nullptr;
+    float blend_weight = 0.0f;
+    Vec3 blend_shading_normal{0.0f};
+    const Light* emitter = nullptr;  // area light or emissive object, else null
+    std::uint32_t object_id = 0;     // index of the world-space instance
     std::uint32_t primitive_id = 0;
     bool casts_shadow = true;  // false for no_shadow objects
     // POV's light_group the surface is in (-1: none), and whether the

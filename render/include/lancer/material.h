@@ -32,6 +32,7 @@
 namespace lancer {
 
 class Medium;
+class MaterialEntries;
 
 // Everything a material needs to know about one hit, with the pigment
 // already looked up.
@@ -106,6 +107,10 @@ struct MaterialParameters {
     // (lancer/medium.h); null: none.
     bool hollow = false;
     const Medium* medium = nullptr;
+    // A texture_map or a block pattern's list of textures: the scene picks
+    // the entries that hold at each hit (internal to the scene; a hit an
+    // integrator sees never has a material with one).
+    const MaterialEntries* entries = nullptr;
 };
 
 // The share of light a highlight of peak 1 reflects at normal incidence
@@ -209,6 +214,7 @@ class Material {
     Color mirror_reflectance(const SurfaceSample& surface, float cos_i, bool entering) const;
     bool has_mirror() const;
     const NormalPerturbation* normal_perturbation() const { return m_params.normal; }
+    const MaterialEntries* entries() const { return m_params.entries; }
     // POV's interior fade over a distance travelled inside the object: what
     // light leaving through (or totally reflected at) a back face is
     // multiplied by. 1 when the interior has no fade.

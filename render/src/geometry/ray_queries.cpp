@@ -37,13 +37,24 @@ void fill_embree_ray(const Ray& ray, RTCRay& out) {
 // POV's normal { }: every integrator sees the bent normal. POV bends the
 // normal turned towards the ray (a bump seen from behind stays a bump);
 // the hit keeps it on the side its own shading normal was on.
-inline void perturb_normal(Hit& hit, const Vec3& ray_direction) {
-    const NormalPerturbation* normal = hit.material ? hit.material->normal_perturbation() : nullptr;
-    if (!normal) return;
+inline Vec3 perturbed_normal(const Hit& hit, const Material* material, const Vec3& ray_direction) {
+    const NormalPerturbation* normal = material ? material->normal_perturbation() : nullptr;
+    if (!normal) return hit.shading_normal;
     const bool behind = glm::dot(hit.geometric_normal, ray_direction) > 0.0f;
     const Vec3 towards_ray = behind ? -hit.shading_normal : hit.shading_normal;
     const Vec3 bent = normal->perturb(hit, towards_ray);
-    hit.shading_normal = behind ? -bent : bent;
+    return behind ? -bent : bent;
+}
+
+// A texture_map's entries at the hit (materials/material_entries.h), then
+// the normal of each.
+inline void finish_surface(Hit& hit, const Vec3& ray_direction, const SceneData& data) {
+    if (data.has_material_entries)
+        if (const MaterialEntries* entries = hit.material ? hit.material->entries() : nullptr) entries->select(hit);
+    if (hit.blend_material) hit.blend_shading_normal = hit.shading_normal;
+    if (!data.has_normal_perturbation) return;
+    if (hit.blend_material) hit.blend_shading_normal = perturbed_normal(hit, hit.blend_material, ray_direction);
+    hit.shading_normal = perturbed_normal(hit, hit.material, ray_direction);
 }
 
 }  // namespace
@@ -62,7 +73,7 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
                           rayhit.hit.instID[0], rayhit.hit.u,    rayhit.hit.v};
     if (!complete_hit(ray, found, hit)) return false;
     hit.ray_direction = ray.direction;
-    if (m_data->has_normal_perturbation) perturb_normal(hit, ray.direction);
+    finish_surface(hit, ray.direction, *m_data);
     return true;
 }
 
@@ -171,9 +182,9 @@ void EmbreeScene::intersect_batch(const Ray* rays, int count, Hit* hits, bool* f
             complete_packet(rays + ready * kPacketLanes, answers[ready % kDepth], lanes_of(ready),
                             hits + ready * kPacketLanes, found + ready * kPacketLanes);
     }
-    if (m_data->has_normal_perturbation)
+    if (m_data->has_normal_perturbation || m_data->has_material_entries)
         for (int i = 0; i < count; ++i)
-            if (found[i]) perturb_normal(hits[i], rays[i].direction);
+            if (found[i]) finish_surface(hits[i], rays[i].direction, *m_data);
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {

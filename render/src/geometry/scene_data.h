@@ -19,6 +19,7 @@
 #include "lancer/render_scene.h"
 #include "lancer/scene_graph.h"
 #include "lights/lights.h"
+#include "materials/material_entries.h"
 #include "materials/textures.h"
 
 namespace lancer {
@@ -82,6 +83,9 @@ struct SceneData {
     std::vector<std::unique_ptr<Texture>> textures;
     std::vector<std::unique_ptr<NormalPerturbation>> normals;  // a scene without normal { } pays nothing
     bool has_normal_perturbation = false;
+    // texture_maps lit entry by entry (materials/material_entries.h).
+    std::vector<std::unique_ptr<MaterialEntries>> material_entries;
+    bool has_material_entries = false;
     std::vector<std::unique_ptr<Material>> materials;
     // Participating media: interiors' (of hollow objects) and the atmosphere's.
     std::vector<std::unique_ptr<Medium>> media;

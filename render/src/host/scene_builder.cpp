@@ -216,6 +216,10 @@ class Builder {
     }
 
     const Material* make_material(const sg::Material& written, bool hollow = false) {
+        return build_material(written, hollow, material_entries(written, written.interior, hollow, {}));
+    }
+
+    const Material* build_material(const sg::Material& written, bool hollow, const MaterialEntries* entries) {
         sg::Material source = flatten_patterned_texture(written);
         sg::NormalRef surface_normal = source.normal;
         if (written.layers_above.empty()) {
@@ -250,8 +254,67 @@ class Builder {
         parameters.hollow = hollow;
         // POV shows an interior's media only inside a hollow object.
         if (hollow && !source.interior.media.empty()) parameters.medium = make_medium(source.interior.media);
+        parameters.entries = entries;
         m_data->materials.push_back(std::make_unique<Material>(parameters));
         return m_data->materials.back().get();
+    }
+
+    // A texture_map's or a block list's entries, each a material of its own
+    // (POV lights each with its own finish), with pigment and normal read at
+    // the map's pattern point: `outer` holds the patterns of the maps this
+    // one is an entry of, outermost first. Null for other materials, an
+    // `average` (lit as one material, texture_layers.cpp) and a layered
+    // texture. Every entry takes the object's interior, as in POV-Ray.
+    const MaterialEntries* material_entries(const sg::Material& written, const sg::Interior& interior, bool hollow,
+                                            std::vector<sg::Pattern> outer) {
+        if (!written.pattern || written.average || !written.layers_above.empty()) return nullptr;
+        const bool blocks = !written.block_textures.empty();
+        std::vector<sg::MaterialRef> entries;
+        std::vector<float> values;
+        for (const auto& entry : written.texture_map) {
+            entries.push_back(entry.texture);
+            values.push_back(float(entry.value));
+        }
+        for (const auto& block : written.block_textures) entries.push_back(block);
+        if (entries.empty()) return nullptr;
+        outer.push_back(*written.pattern);
+        std::vector<const Material*> materials;
+        for (const auto& entry : entries) materials.push_back(entry_material(*entry, interior, hollow, outer));
+        m_data->material_entries.push_back(m_data->texture_factory->make_material_entries(
+            *written.pattern, blocks, blocks ? std::vector<float>{} : values, std::move(materials)));
+        m_data->has_material_entries = true;
+        return m_data->material_entries.back().get();
+    }
+
+    // One entry of a map whose patterns (outermost first) are `maps`: its
+    // pigment and normal read where the innermost map reads its entries.
+    const Material* entry_material(const sg::Material& entry, const sg::Interior& interior, bool hollow,
+                                   const std::vector<sg::Pattern>& maps) {
+        const sg::Material flat = flatten_patterned_texture(entry);
+        sg::Material own;
+        own.finish = flat.finish;
+        own.interior = interior;
+        own.name = flat.name;
+        own.location = flat.location;
+        own.pigment = flat.pigment;
+        own.normal = flat.normal;
+        for (auto pattern = maps.rbegin(); pattern != maps.rend(); ++pattern) {
+            sg::Pigment pigment;
+            pigment.kind = sg::Pigment::Kind::Average;
+            pigment.pattern = *pattern;
+            pigment.location = own.location;
+            pigment.pigment_map.push_back({1.0, std::make_shared<sg::Pigment>(std::move(own.pigment))});
+            own.pigment = std::move(pigment);
+            if (own.normal) {
+                auto normal = std::make_shared<sg::Normal>();
+                normal->kind = sg::Normal::Kind::Average;
+                normal->pattern = *pattern;
+                normal->location = own.normal->location;
+                normal->normal_map.push_back({1.0, own.normal});
+                own.normal = normal;
+            }
+        }
+        return build_material(own, hollow, material_entries(entry, interior, hollow, maps));
     }
 
     // Media (lancer/medium.h) from the scene graph's: densities become

@@ -3,6 +3,7 @@
 
 #include "lancer/scene_error.h"
 #include "materials/function_natives.h"
+#include "materials/material_entries.h"
 #include "materials/pattern_space.h"
 #include "materials/point_pigment.h"
 
@@ -49,6 +50,14 @@ std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
 
 std::unique_ptr<NormalPerturbation> TextureFactory::make_normal(const sg::Normal& normal) {
     return make_surface_normal(normal, m_spaces, build());
+}
+
+std::unique_ptr<MaterialEntries> TextureFactory::make_material_entries(const sg::Pattern& pattern, bool blocks,
+                                                                       std::vector<float> values,
+                                                                       std::vector<const Material*> materials) {
+    CompiledPattern compiled = blocks ? compile_block_pattern(pattern, build()) : compile_pattern(pattern, build());
+    return std::make_unique<MaterialEntries>(std::move(compiled), std::move(values), std::move(materials), m_spaces,
+                                             pattern.uv_mapping);
 }
 
 std::unique_ptr<PointPigment> TextureFactory::make_point_pigment(const sg::Pigment& pigment) {

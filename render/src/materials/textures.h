@@ -23,6 +23,7 @@ using TextureSpaces = std::vector<glm::dmat4>;
 // image_map.
 class ImageCache;
 class PointPigment;
+class MaterialEntries;
 
 // POV's Inside_Object for the object pattern: whether a point of pattern
 // space lies in the object's solid. The scene builder makes them (this
@@ -58,6 +59,11 @@ class TextureFactory {
     // cannot be read, and at a pattern's when lancer cannot evaluate it.
     std::unique_ptr<Texture> make(const sg::Pigment& pigment);
     std::unique_ptr<NormalPerturbation> make_normal(const sg::Normal& normal);
+    // A patterned texture's entries, picked by `pattern` at each hit: by
+    // block, or by the map's `values` (materials/material_entries.h).
+    std::unique_ptr<MaterialEntries> make_material_entries(const sg::Pattern& pattern, bool blocks,
+                                                           std::vector<float> values,
+                                                           std::vector<const Material*> materials);
     // A pigment read at points of its own space, not at hits (the sky).
     std::unique_ptr<PointPigment> make_point_pigment(const sg::Pigment& pigment);
     // A constant colour (default black pigment, light materials).
@@ -87,8 +93,8 @@ std::unique_ptr<Texture> make_pattern_texture(const sg::Pigment& pigment, const 
                                               const MaterialBuild& build);
 // A patterned texture (texture_map, a block list of textures) as one
 // material: the map of its entries' pigments and normals, the first
-// entry's finish (texture_layers.cpp says why). Others are returned as
-// they are.
+// entry's finish (texture_layers.cpp says where it stands for the entries,
+// each lit on its own). Others are returned as they are.
 sg::Material flatten_patterned_texture(const sg::Material& texture);
 // Layers' pigments composited as POV composites layered textures, bottom
 // first.

@@ -17,6 +17,8 @@
 #include <array>
 #include <cmath>
 
+#include "lancer/shading/material_blend.h"
+
 namespace lancer {
 
 namespace {
@@ -165,7 +167,9 @@ Color segment_transmittance(const SegmentMedia& media, const Vec3& origin, const
     }
 }
 
-Color pass_through_weight(const Hit& hit) {
+namespace {
+
+Color entry_pass_through_weight(const Hit& hit) {
     const Material& material = *hit.material;
     const MaterialParameters& p = material.parameters();
     if (std::abs(p.ior - 1.0f) >= 1e-6f && p.ior > 0.0f) return Color(0.0f);
@@ -178,6 +182,12 @@ Color pass_through_weight(const Hit& hit) {
         weight *= glm::clamp(Color(1.0f) - material.mirror_reflectance(surface, cos_i, true), Color(0.0f), Color(1.0f));
     }
     return weight;
+}
+
+}  // namespace
+
+Color pass_through_weight(const Hit& hit) {
+    return shade_blended(hit, entry_pass_through_weight);
 }
 
 Color shadow_transmittance(const RenderScene& scene, const Ray& shadow_ray, const Light* own_light, Sampler& sampler) {

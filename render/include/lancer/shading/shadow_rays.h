@@ -11,6 +11,7 @@
 
 #include "lancer/area_light_grid.h"
 #include "lancer/render_scene.h"
+#include "lancer/shading/material_blend.h"
 #include "lancer/shading/point_hash.h"
 #include "lancer/shading/pov_media.h"
 
@@ -67,14 +68,19 @@ inline Color transmittance_to(const RenderScene& scene, const Hit& from, const V
         if (!scene.intersect(ray, blocker)) return throughput;
         const bool filters = blocker.casts_shadow && (own_light == nullptr || blocker.emitter != own_light);
         if (filters) {
-            const Material& material = *blocker.material;
-            const SurfaceSample surface = material.sample_surface(blocker);
-            if (!(material.transparency(surface) > 0.0f)) return Color(0.0f);
-            throughput *= material.pov_transmitted(surface);
-            if (const float caustics = material.parameters().caustics; caustics != 0.0f) {
-                const float cosine = glm::dot(blocker.shading_normal, ray.direction) / glm::length(ray.direction);
-                throughput *= 1.0f + std::pow(std::fabs(cosine), caustics);
-            }
+            // Between two texture_map entries, what each lets through, blended.
+            throughput *= shade_blended(blocker, [&ray](const Hit& surface_hit) {
+                const Material& material = *surface_hit.material;
+                const SurfaceSample surface = material.sample_surface(surface_hit);
+                if (!(material.transparency(surface) > 0.0f)) return Color(0.0f);
+                Color passed = material.pov_transmitted(surface);
+                if (const float caustics = material.parameters().caustics; caustics != 0.0f) {
+                    const float cosine =
+                        glm::dot(surface_hit.shading_normal, ray.direction) / glm::length(ray.direction);
+                    passed *= 1.0f + std::pow(std::fabs(cosine), caustics);
+                }
+                return passed;
+            });
             if (lancer::is_black(throughput)) return throughput;
         }
         // The stretch just crossed ran inside this object: its media dim the

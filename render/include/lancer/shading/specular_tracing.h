@@ -28,6 +28,7 @@
 
 #include "lancer/sampler.h"
 #include "lancer/shading/local_shading.h"
+#include "lancer/shading/material_blend.h"
 #include "lancer/shading/pov_media.h"
 
 namespace lancer {
@@ -97,14 +98,12 @@ template <class LocalTerm>
 Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
                      const LocalTerm& local_term, int level = 1, float weight = 1.0f, const InteriorStack& inside = {});
 
-// trace_specular() for a ray whose nearest hit is known (null: it escaped),
-// such as a camera ray the host traced.
+// The light leaving one material's hit towards the ray: emission, the local
+// term, and what it reflects and refracts.
 template <class LocalTerm>
-Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler& sampler,
-                     const SpecularOptions& options, const LocalTerm& local_term, int level = 1, float weight = 1.0f,
-                     const InteriorStack& inside = {}) {
-    if (found == nullptr) return seen_through_media(scene, ray, nullptr, scene.background(ray), sampler, inside);
-    const Hit& hit = *found;
+Color specular_surface_radiance(const Ray& ray, const Hit& hit, const RenderScene& scene, Sampler& sampler,
+                                const SpecularOptions& options, const LocalTerm& local_term, int level, float weight,
+                                const InteriorStack& inside) {
     const ShadingContext at = make_shading_context(hit, ray);
     const SpecularSplit split = split_specular(at, options, hit.t * glm::length(ray.direction));
 
@@ -125,6 +124,22 @@ Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene,
     };
     follow(split.reflection, split.reflected, at.material.parameters().reflection_exponent, false);
     follow(split.transmission, split.refracted, 1.0f, true);
+    return radiance;
+}
+
+// trace_specular() for a ray whose nearest hit is known (null: it escaped),
+// such as a camera ray the host traced.
+template <class LocalTerm>
+Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler& sampler,
+                     const SpecularOptions& options, const LocalTerm& local_term, int level = 1, float weight = 1.0f,
+                     const InteriorStack& inside = {}) {
+    if (found == nullptr) return seen_through_media(scene, ray, nullptr, scene.background(ray), sampler, inside);
+    // Between two texture_map entries each is lit and followed with its
+    // own finish; as in POV-Ray, the blend does not lower the weight that
+    // adc_bailout compares.
+    const Color radiance = shade_blended(*found, [&](const Hit& hit) {
+        return specular_surface_radiance(ray, hit, scene, sampler, options, local_term, level, weight, inside);
+    });
     return seen_through_media(scene, ray, found, radiance, sampler, inside);
 }
 
