@@ -323,7 +323,6 @@ class Evaluator {
     using PatternEdit = std::function<void(sg::Pattern&)>;
     using PigmentEdit = std::function<void(sg::Pigment&)>;
     PatternEdit pattern_kind(sg::Pattern::Kind kind);
-    void warn_if_layered_entry(const sg::MaterialRef& texture, const sg::SourceLocation& at);
     PatternEdit gradient_pattern(const Value& v, const SourceRange& where);
     PatternEdit spiral_pattern(sg::Pattern::Kind kind, const Value& arms, const SourceRange& where);
     PatternEdit tiling_pattern(const Value& v, const SourceRange& where);
@@ -430,7 +429,12 @@ class Evaluator {
     void settle_pigment(sg::Pigment& pigment, const sg::SourceLocation& at);
     void settle_normal(sg::Normal& normal, const sg::SourceLocation& at);
     void settle_finish(sg::Finish& finish, const sg::SourceLocation& at);
-    // Patterned and layered textures (patterns.cpp).
+    // Patterned and layered textures (patterns.cpp). POV-Ray layers only
+    // over a plain texture, and never a patterned one.
+    static bool top_layer_is_patterned(const sg::Material& texture);
+    // An error, and true, when an object's pigment, normal or finish would
+    // lie over its patterned texture (objects.cpp).
+    bool refuse_layer_over_pattern(const ShapeValue& s, const sg::SourceLocation& at);
     std::shared_ptr<sg::Material> layer_texture(std::shared_ptr<sg::Material> below,
                                                 const std::shared_ptr<sg::Material>& above);
     // POV's material_map: the image's palette index (or its red, 0-255) at

@@ -228,9 +228,21 @@ std::function<void(ShapeValue&)> Evaluator::material_edit(std::shared_ptr<sg::Ma
     return [material](ShapeValue& s) { attach_in_parent_space(s, *material); };
 }
 
+// POV-Ray lays a pigment, normal or finish written on an object with a
+// texture over that texture as a layer of its own, which a patterned
+// texture does not take.
+bool Evaluator::refuse_layer_over_pattern(const ShapeValue& s, const sg::SourceLocation& at) {
+    if (!s.object.material || s.object.inherits_material || !top_layer_is_patterned(*s.object.material)) return false;
+    error(at,
+          "cannot layer over a patterned texture (POV-Ray refuses it too): a pigment, normal or finish on an "
+          "object whose texture is patterned; put it in the texture's entries");
+    return true;
+}
+
 std::function<void(ShapeValue&)> Evaluator::pigment_edit(const Edits<sg::Pigment>& edits,
                                                          const sg::SourceLocation& at) {
-    return [change = material_pigment_edit(edits, at), fallback = default_texture()](ShapeValue& s) {
+    return [this, at, change = material_pigment_edit(edits, at), fallback = default_texture()](ShapeValue& s) {
+        if (refuse_layer_over_pattern(s, at)) return;
         sg::Material material = current_in_parent_space(s, fallback);
         change(material);
         attach_in_parent_space(s, material);
@@ -238,7 +250,8 @@ std::function<void(ShapeValue&)> Evaluator::pigment_edit(const Edits<sg::Pigment
 }
 
 std::function<void(ShapeValue&)> Evaluator::finish_edit(const Edits<sg::Finish>& edits, const sg::SourceLocation& at) {
-    return [change = material_finish_edit(edits, at), fallback = default_texture()](ShapeValue& s) {
+    return [this, at, change = material_finish_edit(edits, at), fallback = default_texture()](ShapeValue& s) {
+        if (refuse_layer_over_pattern(s, at)) return;
         sg::Material material = current_in_parent_space(s, fallback);
         change(material);
         attach_in_parent_space(s, material);
@@ -246,7 +259,8 @@ std::function<void(ShapeValue&)> Evaluator::finish_edit(const Edits<sg::Finish>&
 }
 
 std::function<void(ShapeValue&)> Evaluator::normal_edit(const Edits<sg::Normal>& edits, const sg::SourceLocation& at) {
-    return [change = material_normal_edit(edits, at), fallback = default_texture()](ShapeValue& s) {
+    return [this, at, change = material_normal_edit(edits, at), fallback = default_texture()](ShapeValue& s) {
+        if (refuse_layer_over_pattern(s, at)) return;
         sg::Material material = current_in_parent_space(s, fallback);
         change(material);
         attach_in_parent_space(s, material);

@@ -961,12 +961,25 @@ sg::Material Evaluator::default_texture() const {
     return texture;
 }
 
+bool Evaluator::top_layer_is_patterned(const sg::Material& texture) {
+    const sg::Material& top = texture.layers_above.empty() ? texture : *texture.layers_above.back();
+    return top.pattern.has_value();
+}
+
+// POV-Ray's Link_Textures: a layer lies over a plain texture, and a
+// patterned texture is never a layer (each entry of its map may be layered).
 std::shared_ptr<sg::Material> Evaluator::layer_texture(std::shared_ptr<sg::Material> below,
                                                        const std::shared_ptr<sg::Material>& above) {
-    if (below->pattern || above->pattern)
-        warning(above->location,
-                "a layer over or of a patterned texture: lancer blends only the layers' pigments "
-                "(docs/scene-language.md)");
+    if (top_layer_is_patterned(*below)) {
+        error(above->location,
+              "cannot layer over a patterned texture (POV-Ray refuses it too; layer the textures of its map "
+              "instead)");
+        return below;
+    }
+    if (top_layer_is_patterned(*above)) {
+        error(above->location, "cannot layer a patterned texture over another (POV-Ray refuses it too)");
+        return below;
+    }
     auto top = std::make_shared<sg::Material>(*above);
     top->layers_above.clear();
     below->layers_above.push_back(top);
@@ -974,20 +987,10 @@ std::shared_ptr<sg::Material> Evaluator::layer_texture(std::shared_ptr<sg::Mater
     return below;
 }
 
-// The render flattens a patterned texture into one pigment, which has no
-// place for a layered entry's upper layers: say so rather than drop them.
-void Evaluator::warn_if_layered_entry(const sg::MaterialRef& texture, const sg::SourceLocation& at) {
-    if (texture && !texture->layers_above.empty())
-        warning(at,
-                "a layered texture inside a texture pattern shows only its bottom layer in lancer (POV-Ray "
-                "shows them all)");
-}
-
 std::function<void(sg::Material&)> Evaluator::texture_pattern(const PatternEdit& pattern,
                                                               const std::vector<std::shared_ptr<sg::Material>>& blocks,
                                                               const sg::SourceLocation& at) {
     std::vector<sg::MaterialRef> textures(blocks.begin(), blocks.end());
-    for (const auto& texture : textures) warn_if_layered_entry(texture, at);
     return [this, pattern, textures, at](sg::Material& m) {
         m.pattern = sg::Pattern{};
         pattern(*m.pattern);
@@ -1020,7 +1023,6 @@ std::function<void(sg::Material&)> Evaluator::material_map_edit(
     if (!map->gamma_given) map->srgb = false;
     if (blocks.empty()) error(at, "material_map needs a list of textures after its image");
     std::vector<sg::MaterialRef> textures(blocks.begin(), blocks.end());
-    for (const auto& texture : textures) warn_if_layered_entry(texture, at);
     return [map, textures, at](sg::Material& m) {
         m.pattern = sg::Pattern{};
         m.pattern->kind = PatternKind::ImagePattern;
@@ -1044,7 +1046,6 @@ std::function<void(sg::Material&)> Evaluator::average_texture(const sg::SourceLo
 
 std::function<void(sg::Material&)> Evaluator::texture_map_edit(const std::vector<sg::TextureMapEntry>& entries,
                                                                const sg::SourceLocation& at) {
-    for (const auto& entry : entries) warn_if_layered_entry(entry.texture, at);
     return [this, entries, at](sg::Material& m) {
         if (!m.pattern) {
             error(at, "texture_map needs a pattern before it (texture { gradient x texture_map { ... } })");

@@ -287,17 +287,28 @@ class Builder {
     }
 
     // One entry of a map whose patterns (outermost first) are `maps`: its
-    // pigment and normal read where the innermost map reads its entries.
+    // pigment and normal (and its layers') read where the innermost map
+    // reads its entries.
     const Material* entry_material(const sg::Material& entry, const sg::Interior& interior, bool hollow,
                                    const std::vector<sg::Pattern>& maps) {
-        const sg::Material flat = flatten_patterned_texture(entry);
-        sg::Material own;
-        own.finish = flat.finish;
+        sg::Material own = read_through_maps(flatten_patterned_texture(entry), maps);
         own.interior = interior;
-        own.name = flat.name;
-        own.location = flat.location;
-        own.pigment = flat.pigment;
-        own.normal = flat.normal;
+        own.layers_above.clear();
+        for (const auto& layer : entry.layers_above)
+            own.layers_above.push_back(std::make_shared<sg::Material>(read_through_maps(*layer, maps)));
+        return build_material(own, hollow, material_entries(entry, interior, hollow, maps));
+    }
+
+    // A plain texture whose pigment and normal are read at the point the
+    // innermost of `maps` gives its entries (each map's transforms and warps,
+    // outermost first, as POV's Warp_EPoint).
+    static sg::Material read_through_maps(const sg::Material& texture, const std::vector<sg::Pattern>& maps) {
+        sg::Material own;
+        own.finish = texture.finish;
+        own.name = texture.name;
+        own.location = texture.location;
+        own.pigment = texture.pigment;
+        own.normal = texture.normal;
         for (auto pattern = maps.rbegin(); pattern != maps.rend(); ++pattern) {
             sg::Pigment pigment;
             pigment.kind = sg::Pigment::Kind::Average;
@@ -314,7 +325,7 @@ class Builder {
                 own.normal = normal;
             }
         }
-        return build_material(own, hollow, material_entries(entry, interior, hollow, maps));
+        return own;
     }
 
     // Media (lancer/medium.h) from the scene graph's: densities become
