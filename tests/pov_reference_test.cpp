@@ -25,8 +25,9 @@
 // patterns, wave types, warps, colour and pigment maps, average, the
 // tilings 1 to 27 and pavements of squares, triangles and hexagons) and
 // normals (own normals, slopes of values, slope_map, normal_map), layered
-// and patterned textures (each texture_map or block list entry lit with its
-// own finish and normal, nested maps too), #default and interior fade, uv_mapping, and
+// and patterned textures (each texture_map or block list entry, and each
+// layer of a layered texture, lit with its own finish and normal, nested
+// maps and stones.inc's layers too), #default and interior fade, uv_mapping, and
 // images (image_map's projections, image_pattern, bump_map) and the object
 // pattern, irid and diffuse backside, user functions as patterns and
 // isosurfaces; and every POV camera type (fisheye, ultra_wide_angle,
@@ -88,22 +89,24 @@ TEST_P(PovReference, WhittedMatchesPovRay) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, PovReference,
-    ::testing::Values(
-        "wall_point_light", "spotlights", "fill_lights", "area_room", "area_circular", "cylinder_parallel",
-        "looks_like_projected", "finishes", "gamma", "legacy_gamma", "no_version", "legacy_opacity",
-        "area_illumination", "orthographic_down", "orthographic_default_size", "quadric_family", "csg_solids",
-        "csg_glass", "light_groups", "polygons_polynomials", "superellipsoids", "blobs", "prisms", "lathes", "text",
-        "sors", "ovus", "sphere_sweeps", "bicubic_patches", "julia_fractals", "height_fields", "patterns_geometric",
-        "pattern_aoi", "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
-        "patterns_tilings_more", "normals", "textures", "texture_map_finishes", "tiles", "uv_mapping",
-        "uv_mapping_object", "csg_meshes", "images", "image_palette", "material_map", "object_pattern", "irid_backside",
-        "spline_function", "text_internal", "functions", "isosurfaces", "height_field_functions", "camera_fisheye",
-        "camera_fisheye_360", "camera_ultra_wide_angle", "camera_omnimax", "camera_panoramic", "camera_cylinder_1",
-        "camera_cylinder_2", "camera_cylinder_3", "camera_cylinder_4", "camera_spherical", "camera_spherical_narrow",
-        "camera_transforms", "camera_orthographic_bare_angle", "camera_normal", "camera_mesh_per_pixel",
-        "camera_mesh_side_by_side", "camera_mesh_uv_smooth", "camera_mesh_summed", "camera_mesh_averaged",
-        "media_emission", "media_scattering", "media_absorbing_glass", "fake_caustics", "sky_layers", "sky_legacy",
-        "sky_skies_inc", "fog_constant", "fog_ground", "fog_turbulent", "fog_hollow", "rainbow"),
+    ::testing::Values("wall_point_light", "spotlights", "fill_lights", "area_room", "area_circular",
+                      "cylinder_parallel", "looks_like_projected", "finishes", "gamma", "legacy_gamma", "no_version",
+                      "legacy_opacity", "area_illumination", "orthographic_down", "orthographic_default_size",
+                      "quadric_family", "csg_solids", "csg_glass", "light_groups", "polygons_polynomials",
+                      "superellipsoids", "blobs", "prisms", "lathes", "text", "sors", "ovus", "sphere_sweeps",
+                      "bicubic_patches", "julia_fractals", "height_fields", "patterns_geometric", "pattern_aoi",
+                      "patterns_blocks", "patterns_noise", "patterns_warps", "patterns_tilings",
+                      "patterns_tilings_more", "normals", "textures", "texture_map_finishes", "layered_finishes",
+                      "tiles", "uv_mapping", "uv_mapping_object", "csg_meshes", "images", "image_palette",
+                      "material_map", "object_pattern", "irid_backside", "spline_function", "text_internal",
+                      "functions", "isosurfaces", "height_field_functions", "camera_fisheye", "camera_fisheye_360",
+                      "camera_ultra_wide_angle", "camera_omnimax", "camera_panoramic", "camera_cylinder_1",
+                      "camera_cylinder_2", "camera_cylinder_3", "camera_cylinder_4", "camera_spherical",
+                      "camera_spherical_narrow", "camera_transforms", "camera_orthographic_bare_angle", "camera_normal",
+                      "camera_mesh_per_pixel", "camera_mesh_side_by_side", "camera_mesh_uv_smooth",
+                      "camera_mesh_summed", "camera_mesh_averaged", "media_emission", "media_scattering",
+                      "media_absorbing_glass", "fake_caustics", "sky_layers", "sky_legacy", "sky_skies_inc",
+                      "fog_constant", "fog_ground", "fog_turbulent", "fog_hollow", "rainbow"),
     [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 // Isosurfaces of POV's internal functions (f_helix1, f_torus2, f_helix2,

@@ -128,10 +128,12 @@ class GatherIntegrator final : public Integrator {
     static Color seen_by_simple_model(const RenderScene& scene, const Ray& ray) {
         Hit hit;
         if (!scene.intersect(ray, hit)) return scene.background(ray);
-        return shade_blended(hit, [&](const Hit& entry) {
-            const ShadingContext at = make_shading_context(entry, ray);
+        const auto own_light = [&](const Hit& seen) {
+            const ShadingContext at = make_shading_context(seen, ray);
             return surface_emission(at) + simple_direct_light(scene, at, Shadows::None).total();
-        });
+        };
+        const float bailout = scene.options().adc_bailout;
+        return shade_blended(hit, [&](const Hit& entry) { return shade_layers(entry, ray, bailout, own_light); });
     }
 
     int m_point_count;

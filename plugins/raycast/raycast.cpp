@@ -23,6 +23,7 @@
 #include <lancer/integrator.h>
 #include <lancer/shading/local_shading.h>
 #include <lancer/shading/material_blend.h>
+#include <lancer/shading/material_layers.h>
 #include <lancer/shading/pov_media.h>
 #include "diffuse_point_lanes.h"
 
@@ -94,14 +95,16 @@ class RaycastIntegrator final : public Integrator {
         if (!found) return scene.background(ray);
         // The same local model as shadow/whitted/gather (local_shading.h),
         // without shadow rays, so the integrators agree where nothing occludes.
-        return shade_blended(*found, [&](const Hit& hit) {
+        const auto own_light = [&](const Hit& hit) {
             const ShadingContext at = make_shading_context(hit, ray);
             Color radiance = surface_emission(at);
             if (m_with_ambient) radiance += opaque_ambient(lighting.ambient_light, at);
             const LobeRadiance reflected = simple_direct_light(scene, lighting.lights, at, Shadows::None);
             radiance += m_with_specular ? reflected.total() : reflected.diffuse;
             return radiance;
-        });
+        };
+        const float bailout = scene.options().adc_bailout;
+        return shade_blended(*found, [&](const Hit& hit) { return shade_layers(hit, ray, bailout, own_light); });
     }
 
     bool m_with_ambient;

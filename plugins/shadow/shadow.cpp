@@ -35,6 +35,7 @@
 #include <lancer/integrator.h>
 #include <lancer/shading/local_shading.h>
 #include <lancer/shading/material_blend.h>
+#include <lancer/shading/material_layers.h>
 #include <lancer/shading/pov_media.h>
 
 namespace {
@@ -56,7 +57,7 @@ class ShadowIntegrator final : public Integrator {
   private:
     Color surface_radiance(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler& sampler) const {
         if (!found) return scene.background(ray);
-        return shade_blended(*found, [&](const Hit& hit) {
+        const auto own_light = [&](const Hit& hit) {
             const ShadingContext at = make_shading_context(hit, ray);
             Color radiance = surface_emission(at);
             if (m_with_ambient) radiance += opaque_ambient(scene, at);
@@ -68,7 +69,9 @@ class ShadowIntegrator final : public Integrator {
                     radiance += reflect_simple_light(scene, at, *light, Shadows::Hard).total();
             }
             return radiance;
-        });
+        };
+        const float bailout = scene.options().adc_bailout;
+        return shade_blended(*found, [&](const Hit& hit) { return shade_layers(hit, ray, bailout, own_light); });
     }
 
     // Mean over area_samples points of the light's surface, each behind its

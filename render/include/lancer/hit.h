@@ -29,6 +29,9 @@ struct Hit {
     const Material* blend_material = nullptr;
     float blend_weight = 0.0f;
     Vec3 blend_shading_normal{0.0f};
+    // The shading normal before any normal { } bent it, for the layers of a
+    // layered texture, each bent by its own normal (zero: as shading_normal).
+    Vec3 unbumped_normal{0.0f};
     const Light* emitter = nullptr;  // area light or emissive object, else null
     std::uint32_t object_id = 0;     // index of the world-space instance
     std::uint32_t primitive_id = 0;

@@ -24,6 +24,7 @@
 #pragma once
 
 #include <cmath>
+#include <vector>
 
 #include "lancer/hit.h"
 #include "lancer/ray.h"
@@ -33,6 +34,13 @@ namespace lancer {
 
 class Medium;
 class MaterialEntries;
+class Material;
+
+// POV-Ray's layered texture: its layers, top first, each a material of its
+// own, lit one by one (lancer/shading/material_layers.h).
+struct MaterialLayers {
+    std::vector<const Material*> top_first;
+};
 
 // Everything a material needs to know about one hit, with the pigment
 // already looked up.
@@ -111,6 +119,9 @@ struct MaterialParameters {
     // the entries that hold at each hit (internal to the scene; a hit an
     // integrator sees never has a material with one).
     const MaterialEntries* entries = nullptr;
+    // A layered texture: this material is the layers composited into one
+    // (for what cannot light each: path, an emitter); null: not layered.
+    const MaterialLayers* layers = nullptr;
 };
 
 // The share of light a highlight of peak 1 reflects at normal incidence
@@ -215,6 +226,7 @@ class Material {
     bool has_mirror() const;
     const NormalPerturbation* normal_perturbation() const { return m_params.normal; }
     const MaterialEntries* entries() const { return m_params.entries; }
+    const MaterialLayers* layers() const { return m_params.layers; }
     // POV's interior fade over a distance travelled inside the object: what
     // light leaving through (or totally reflected at) a back face is
     // multiplied by. 1 when the interior has no fade.

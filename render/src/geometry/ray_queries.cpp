@@ -53,6 +53,7 @@ inline void finish_surface(Hit& hit, const Vec3& ray_direction, const SceneData&
         if (const MaterialEntries* entries = hit.material ? hit.material->entries() : nullptr) entries->select(hit);
     if (hit.blend_material) hit.blend_shading_normal = hit.shading_normal;
     if (!data.has_normal_perturbation) return;
+    hit.unbumped_normal = hit.shading_normal;
     if (hit.blend_material) hit.blend_shading_normal = perturbed_normal(hit, hit.blend_material, ray_direction);
     hit.shading_normal = perturbed_normal(hit, hit.material, ray_direction);
 }

@@ -86,6 +86,7 @@ struct SceneData {
     // texture_maps lit entry by entry (materials/material_entries.h).
     std::vector<std::unique_ptr<MaterialEntries>> material_entries;
     bool has_material_entries = false;
+    std::vector<std::unique_ptr<MaterialLayers>> material_layers;  // layered textures' (lancer/material.h)
     std::vector<std::unique_ptr<Material>> materials;
     // Participating media: interiors' (of hollow objects) and the atmosphere's.
     std::vector<std::unique_ptr<Medium>> media;

@@ -255,8 +255,25 @@ class Builder {
         // POV shows an interior's media only inside a hollow object.
         if (hollow && !source.interior.media.empty()) parameters.medium = make_medium(source.interior.media);
         parameters.entries = entries;
+        if (!written.layers_above.empty()) parameters.layers = material_layers(written, hollow);
         m_data->materials.push_back(std::make_unique<Material>(parameters));
         return m_data->materials.back().get();
+    }
+
+    // A layered texture's layers, top first, each a material of its own with
+    // the object's interior (lancer/shading/material_layers.h lights them).
+    const MaterialLayers* material_layers(const sg::Material& written, bool hollow) {
+        auto layers = std::make_unique<MaterialLayers>();
+        for (auto layer = written.layers_above.rbegin(); layer != written.layers_above.rend(); ++layer) {
+            sg::Material own = **layer;
+            own.interior = written.interior;
+            layers->top_first.push_back(make_material(own, hollow));
+        }
+        sg::Material bottom = written;
+        bottom.layers_above.clear();
+        layers->top_first.push_back(make_material(bottom, hollow));
+        m_data->material_layers.push_back(std::move(layers));
+        return m_data->material_layers.back().get();
     }
 
     // A texture_map's or a block list's entries, each a material of its own

@@ -3,15 +3,16 @@
 //
 // POV lights every texture of a map or a layer with its own finish and
 // normal and blends the lit colours. lancer does so for the entries of a
-// map (materials/material_entries.h); the one material built here is what
+// map (materials/material_entries.h) and the layers of a layered texture
+// (lancer/shading/material_layers.h); the one material built here is what
 // the object is made of where one material must stand for all (the light
-// an emitting object becomes, `average`, layered textures). It is the map
-// of the entries' pigments (a pigment_map over the same pattern) and of
-// their normals, with the first entry's finish; a layered texture's
-// pigments are composited as POV composites its layers (each layer's
-// filter and transmit let the layers below show through), with the layers'
-// finishes blended by how much of each shows on average and the topmost
-// normal. Where the layers' finishes agree, which is the usual case, this
+// an emitting object becomes, `average`, a layered texture in `path`). It
+// is the map of the entries' pigments (a pigment_map over the same
+// pattern) and of their normals, with the first entry's finish; a layered
+// texture's pigments are composited as POV composites its layers (each
+// layer's filter and transmit let the layers below show through), with the
+// layers' finishes blended by how much of each shows on average and the
+// topmost normal. Where the layers' finishes agree, which is the usual case, this
 // is POV's picture; docs/scene-language.md lists the difference.
 #include <algorithm>
 

@@ -69,7 +69,7 @@ inline Color transmittance_to(const RenderScene& scene, const Hit& from, const V
         const bool filters = blocker.casts_shadow && (own_light == nullptr || blocker.emitter != own_light);
         if (filters) {
             // Between two texture_map entries, what each lets through, blended.
-            throughput *= shade_blended(blocker, [&ray](const Hit& surface_hit) {
+            const auto passes = [&ray](const Hit& surface_hit) {
                 const Material& material = *surface_hit.material;
                 const SurfaceSample surface = material.sample_surface(surface_hit);
                 if (!(material.transparency(surface) > 0.0f)) return Color(0.0f);
@@ -80,7 +80,19 @@ inline Color transmittance_to(const RenderScene& scene, const Hit& from, const V
                     passed *= 1.0f + std::pow(std::fabs(cosine), caustics);
                 }
                 return passed;
-            });
+            };
+            // A layered texture: every layer dims it (POV's ComputeShadowTexture).
+            const auto layers_pass = [&](const Hit& surface_hit) {
+                const MaterialLayers* layers = layers_to_light(surface_hit);
+                if (layers == nullptr) return passes(surface_hit);
+                Color passed(1.0f);
+                for (const Material* layer : layers->top_first) {
+                    passed *= passes(layer_hit(surface_hit, *layer, ray.direction));
+                    if (lancer::is_black(passed)) break;
+                }
+                return passed;
+            };
+            throughput *= shade_blended(blocker, layers_pass);
             if (lancer::is_black(throughput)) return throughput;
         }
         // The stretch just crossed ran inside this object: its media dim the

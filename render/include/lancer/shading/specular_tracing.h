@@ -29,6 +29,7 @@
 #include "lancer/sampler.h"
 #include "lancer/shading/local_shading.h"
 #include "lancer/shading/material_blend.h"
+#include "lancer/shading/material_layers.h"
 #include "lancer/shading/pov_media.h"
 
 namespace lancer {
@@ -47,11 +48,16 @@ struct SpecularSplit {
     Color transmission{0.0f};   // weight of the radiance seen along `refracted`
     Vec3 reflected{0.0f};
     Vec3 refracted{0.0f};
+    bool total_internal_reflection = false;  // the surface transmits, but the ray cannot leave
 };
 
 // `depth`: how far the ray travelled to the hit (for POV's interior fade,
-// applied to what leaves through a back face).
-inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOptions& options, float depth = 0.0f) {
+// applied to what leaves through a back face). `layers_passed`: for the top
+// layer of a layered texture, what passes all its layers, which is
+// refracted in place of this layer's own transmitted colour; null: the
+// material alone.
+inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOptions& options, float depth = 0.0f,
+                                    const Color* layers_passed = nullptr) {
     SpecularSplit split;
     const Vec3 incident = -at.wo;
     const float cos_i = glm::dot(at.normal, at.wo);
@@ -59,13 +65,18 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
     if (!options.additive_reflection) split.diffuse_scale = glm::max(Color(1.0f) - mirror, Color(0.0f));
     split.reflection = mirror;
 
-    const float transparency = at.material.transparency(at.surface);
+    float transparency = at.material.transparency(at.surface);
+    if (layers_passed)
+        transparency = layers_pass_enough(*layers_passed, options.min_weight)
+                           ? std::min(1.0f, std::fabs(pov_grey(*layers_passed)))
+                           : 0.0f;
     if (transparency > 0.0f) {
         // Relative index: outside is ior 1; a ray on the back face leaves the object.
         const float ior = glm::max(at.material.parameters().ior, 1e-6f);
         const float eta = at.entering ? 1.0f / ior : ior;
         const bool refracts = refract(incident, at.normal, eta, split.refracted);
-        const Color transmitted = at.material.pov_transmitted(at.surface);
+        split.total_internal_reflection = !refracts;
+        const Color transmitted = layers_passed ? *layers_passed : at.material.pov_transmitted(at.surface);
         if (options.fresnel) {
             const float fresnel = refracts ? fresnel_dielectric(cos_i, eta) : 1.0f;
             split.reflection = glm::max(mirror, Color(transparency * fresnel));
@@ -75,8 +86,9 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
         } else {
             split.reflection = Color(1.0f);  // total internal reflection, as POV-Ray
         }
-        // POV's conserve_energy: what the finish reflects is not transmitted.
-        if (at.material.parameters().conserve_energy)
+        // POV's conserve_energy: what the finish reflects is not transmitted
+        // (each layer's is in layers_passed already).
+        if (at.material.parameters().conserve_energy && !layers_passed)
             split.transmission *= glm::clamp(Color(1.0f) - mirror, Color(0.0f), Color(1.0f));
         // POV's interior fade: light that crossed the inside to leave here
         // (or to be totally reflected back in) is dimmed by the distance.
@@ -98,32 +110,84 @@ template <class LocalTerm>
 Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
                      const LocalTerm& local_term, int level = 1, float weight = 1.0f, const InteriorStack& inside = {});
 
+// Follows `direction` from `hit` with `path_weight` (black: not at all):
+// the radiance seen there, raised to `exponent` (POV's reflection
+// exponent) and weighted.
+template <class LocalTerm>
+Color follow_specular(const Hit& hit, bool entering, const Color& path_weight, const Vec3& direction, float exponent,
+                      bool transmitted, const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
+                      const LocalTerm& local_term, int level, float weight, const InteriorStack& inside) {
+    if (is_black(path_weight)) return Color(0.0f);
+    const float next_weight = weight * max_component(path_weight);
+    if (level + 1 > options.max_depth || next_weight < options.min_weight) return Color(0.0f);
+    // A transmitted ray enters or leaves the object (media see it).
+    const bool crosses = transmitted && (scene.has_media() || scene.fog() || scene.rainbows());
+    Color seen = trace_specular(hit.spawn_ray(direction), scene, sampler, options, local_term, level + 1, next_weight,
+                                crosses ? inside.crossed(hit, entering) : inside);
+    if (exponent != 1.0f) seen = glm::pow(glm::max(seen, Color(0.0f)), Color(exponent));
+    return path_weight * seen;
+}
+
+// A layered texture's hit (lancer/shading/material_layers.h): each layer's
+// own light dimmed by the layers above, each layer's mirror undimmed, and
+// what passes every layer refracted through the top layer. On total
+// internal reflection the layers whose normal is the top's reflect
+// nothing more (the internal reflection is their mirror), as in POV-Ray.
+template <class LocalTerm>
+Color layered_surface_radiance(const Ray& ray, const Hit& hit, const MaterialLayers& layers, const RenderScene& scene,
+                               Sampler& sampler, const SpecularOptions& options, const LocalTerm& local_term, int level,
+                               float weight, const InteriorStack& inside) {
+    // What passes every layer the light reaches.
+    Color passed(1.0f);
+    std::size_t reached = 0;
+    for (const Material* layer : layers.top_first) {
+        if (!layers_pass_enough(passed, options.min_weight)) break;
+        passed *= layer_passes(make_shading_context(layer_hit(hit, *layer, ray.direction), ray));
+        ++reached;
+    }
+    const Hit top = layer_hit(hit, *layers.top_first.front(), ray.direction);
+    const ShadingContext top_at = make_shading_context(top, ray);
+    const SpecularSplit top_split = split_specular(top_at, options, hit.t * glm::length(ray.direction), &passed);
+
+    Color radiance(0.0f), above(1.0f);
+    for (std::size_t k = 0; k < reached; ++k) {
+        const Hit seen = k == 0 ? top : layer_hit(hit, *layers.top_first[k], ray.direction);
+        const ShadingContext at = make_shading_context(seen, ray);
+        const SpecularSplit split = k == 0 ? top_split : split_specular(at, options);
+        const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
+        radiance += above * (surface_emission(at) + split.diffuse_scale * local.diffuse + local.glossy);
+        const bool reflects =
+            k == 0 || !top_split.total_internal_reflection || seen.shading_normal != top.shading_normal;
+        if (reflects)
+            radiance += follow_specular(seen, at.entering, split.reflection, split.reflected,
+                                        at.material.parameters().reflection_exponent, false, scene, sampler, options,
+                                        local_term, level, weight, inside);
+        above *= layer_passes(at);
+    }
+    radiance += follow_specular(top, top_at.entering, top_split.transmission, top_split.refracted, 1.0f, true, scene,
+                                sampler, options, local_term, level, weight, inside);
+    return radiance;
+}
+
 // The light leaving one material's hit towards the ray: emission, the local
 // term, and what it reflects and refracts.
 template <class LocalTerm>
 Color specular_surface_radiance(const Ray& ray, const Hit& hit, const RenderScene& scene, Sampler& sampler,
                                 const SpecularOptions& options, const LocalTerm& local_term, int level, float weight,
                                 const InteriorStack& inside) {
+    if (const MaterialLayers* layers = layers_to_light(hit))
+        return layered_surface_radiance(ray, hit, *layers, scene, sampler, options, local_term, level, weight, inside);
     const ShadingContext at = make_shading_context(hit, ray);
     const SpecularSplit split = split_specular(at, options, hit.t * glm::length(ray.direction));
 
     const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
     Color radiance = surface_emission(at) + split.diffuse_scale * local.diffuse + local.glossy;
 
-    const auto follow = [&](const Color& path_weight, const Vec3& direction, float exponent, bool transmitted) {
-        if (is_black(path_weight)) return;
-        const float next_weight = weight * max_component(path_weight);
-        if (level + 1 > options.max_depth || next_weight < options.min_weight) return;
-        // A transmitted ray enters or leaves the object (media see it).
-        const bool crosses = transmitted && (scene.has_media() || scene.fog() || scene.rainbows());
-        Color seen = trace_specular(hit.spawn_ray(direction), scene, sampler, options, local_term, level + 1,
-                                    next_weight, crosses ? inside.crossed(hit, at.entering) : inside);
-        // POV's reflection exponent raises the reflected colour to a power.
-        if (exponent != 1.0f) seen = glm::pow(glm::max(seen, Color(0.0f)), Color(exponent));
-        radiance += path_weight * seen;
-    };
-    follow(split.reflection, split.reflected, at.material.parameters().reflection_exponent, false);
-    follow(split.transmission, split.refracted, 1.0f, true);
+    radiance += follow_specular(hit, at.entering, split.reflection, split.reflected,
+                                at.material.parameters().reflection_exponent, false, scene, sampler, options,
+                                local_term, level, weight, inside);
+    radiance += follow_specular(hit, at.entering, split.transmission, split.refracted, 1.0f, true, scene, sampler,
+                                options, local_term, level, weight, inside);
     return radiance;
 }
 
