@@ -132,8 +132,7 @@ class GatherIntegrator final : public Integrator {
             const ShadingContext at = make_shading_context(seen, ray);
             return surface_emission(at) + simple_direct_light(scene, at, Shadows::None).total();
         };
-        const float bailout = scene.options().adc_bailout;
-        return shade_blended(hit, [&](const Hit& entry) { return shade_layers(entry, ray, bailout, own_light); });
+        return shade_own_light(hit, ray, scene, own_light);
     }
 
     int m_point_count;

@@ -233,9 +233,13 @@ class PathIntegrator final : public Integrator {
                 radiance += throughput * weight * scene.background(ray);
                 break;
             }
-            // Between two texture_map entries, one entry with its weight's
-            // probability: the mean of the two, as POV-Ray blends them.
-            if (hit.blend_material != nullptr) hit = chosen_entry(hit, sampler.next_1d());
+            // Next-event estimation's first number, drawn here: between two
+            // texture_map entries it first picks one with its weight's
+            // probability (the mean of the two, as POV-Ray blends them) and
+            // is rescaled for NEE, so every bounce still draws the same
+            // dimensions.
+            float u_light = sampler.next_1d();
+            if (hit.blend_material != nullptr) hit = chosen_entry(hit, u_light);
             const Vec3 wo = -ray.direction;
             const Material& material = *hit.material;
             // POV's interior fade on the stretch just travelled inside an
@@ -274,7 +278,6 @@ class PathIntegrator final : public Integrator {
             // Next-event estimation. The dimensions are drawn even when
             // unused so every bounce consumes the same ones (keeps Sobol
             // dimensions aligned across samples).
-            const float u_light = sampler.next_1d();
             const Vec2 u_light_point = sampler.next_2d();
             if (bsdf.has_smooth())
                 radiance += throughput * direct_light(scene, hit, bsdf, u_light, u_light_point, sampler);

@@ -22,7 +22,6 @@
 
 #include <lancer/integrator.h>
 #include <lancer/shading/local_shading.h>
-#include <lancer/shading/material_blend.h>
 #include <lancer/shading/material_layers.h>
 #include <lancer/shading/pov_media.h>
 #include "diffuse_point_lanes.h"
@@ -103,8 +102,7 @@ class RaycastIntegrator final : public Integrator {
             radiance += m_with_specular ? reflected.total() : reflected.diffuse;
             return radiance;
         };
-        const float bailout = scene.options().adc_bailout;
-        return shade_blended(*found, [&](const Hit& hit) { return shade_layers(hit, ray, bailout, own_light); });
+        return shade_own_light(*found, ray, scene, own_light);
     }
 
     bool m_with_ambient;

@@ -34,7 +34,6 @@
 
 #include <lancer/integrator.h>
 #include <lancer/shading/local_shading.h>
-#include <lancer/shading/material_blend.h>
 #include <lancer/shading/material_layers.h>
 #include <lancer/shading/pov_media.h>
 
@@ -70,8 +69,7 @@ class ShadowIntegrator final : public Integrator {
             }
             return radiance;
         };
-        const float bailout = scene.options().adc_bailout;
-        return shade_blended(*found, [&](const Hit& hit) { return shade_layers(hit, ray, bailout, own_light); });
+        return shade_own_light(*found, ray, scene, own_light);
     }
 
     // Mean over area_samples points of the light's surface, each behind its

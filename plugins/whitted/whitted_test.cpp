@@ -64,6 +64,38 @@ sg::SceneGraph mirror_facing_wall(sg::MaterialRef mirror) {
 }
 const Ray kDownAt45 = ray_towards(Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 0.0f, 1.0f));
 
+// A layered texture, lit as POV-Ray lights one: the top layer (pigment
+// <1, 0.5, 0> filter 0.5, ambient 0.2) shows 0.5 * 0.2 * pigment of its
+// own and passes filter * pigment = <0.5, 0.25, 0> of the layer below
+// (pigment <0.4, 1, 1>, ambient 1: <0.2, 0.25, 0>), so <0.3, 0.3, 0>;
+// the bottom layer's mirror (0.5) is added undimmed by the layer above.
+// raycast shows the layers' own light, whitted the mirror too. One
+// material with a blended finish would give neither.
+TEST(WhittedIntegrator, LayeredTextureLightsEachLayerWithItsOwnFinish) {
+    auto layered = std::make_shared<sg::Material>(*material([](sg::Material& m) {
+        m.pigment.color.rgb = {0.4, 1.0, 1.0};
+        m.finish.ambient = sg::Vec3(1.0);
+        m.finish.diffuse = 0.0;
+        m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.5);
+    }));
+    layered->layers_above.push_back(material([](sg::Material& m) {
+        m.pigment.color.rgb = {1.0, 0.5, 0.0};
+        m.pigment.color.filter = 0.5;
+        m.finish.ambient = sg::Vec3(0.2);
+        m.finish.diffuse = 0.0;
+    }));
+    const auto scene = compile_scene(mirror_facing_wall(layered));
+    const Color own(0.3f, 0.3f, 0.0f);
+    const auto raycast = load_integrator("raycast", *scene);
+    const Color raycast_seen = mean_radiance(*raycast, *scene, kDownAt45);
+    const auto whitted = load_integrator("whitted", *scene);
+    const Color whitted_seen = mean_radiance(*whitted, *scene, kDownAt45);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(raycast_seen[c], own[c], 1e-5f) << "channel " << c;
+        EXPECT_NEAR(whitted_seen[c], own[c] + 0.5f * float(kWallColour[c]), 1e-5f) << "channel " << c;
+    }
+}
+
 TEST(WhittedIntegrator, MirrorShowsWallColourTimesReflectance) {
     const auto scene = compile_scene(mirror_facing_wall(material([](sg::Material& m) {
         m.finish.diffuse = 0.0;

@@ -23,12 +23,11 @@ struct Hit {
     const Material* material = nullptr;  // never null for a hit the scene returns
     // POV-Ray's texture_map between two of its entries: the surface shows
     // (1 - blend_weight) of `material` and blend_weight of blend_material,
-    // each lit with its own finish (blend_shading_normal is the second's
-    // bumped normal), the lit colours blended (lancer/shading/material_blend.h).
-    // Null where one material holds, as everywhere outside a texture_map.
+    // each lit with its own finish and normal, the lit colours blended
+    // (lancer/shading/material_blend.h). Null where one material holds, as
+    // everywhere outside a texture_map.
     const Material* blend_material = nullptr;
     float blend_weight = 0.0f;
-    Vec3 blend_shading_normal{0.0f};
     // The shading normal before any normal { } bent it, for the layers of a
     // layered texture, each bent by its own normal (zero: as shading_normal).
     Vec3 unbumped_normal{0.0f};

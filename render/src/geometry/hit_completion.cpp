@@ -112,6 +112,7 @@ void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const flo
         hit.uv = Vec2(u[k], v[k]);
         hit.material = mesh.material;
         hit.blend_material = nullptr;
+        hit.unbumped_normal = Vec3(0.0f);
         hit.emitter = mesh.emitter;
         hit.object_id = mesh.object_id;
         hit.primitive_id = primitive[k];

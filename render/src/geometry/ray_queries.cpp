@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "geometry/embree_scene.h"
+#include "lancer/shading/material_blend.h"
 
 namespace lancer::embree {
 namespace {
@@ -34,28 +35,15 @@ void fill_embree_ray(const Ray& ray, RTCRay& out) {
     out.flags = 0;
 }
 
-// POV's normal { }: every integrator sees the bent normal. POV bends the
-// normal turned towards the ray (a bump seen from behind stays a bump);
-// the hit keeps it on the side its own shading normal was on.
-inline Vec3 perturbed_normal(const Hit& hit, const Material* material, const Vec3& ray_direction) {
-    const NormalPerturbation* normal = material ? material->normal_perturbation() : nullptr;
-    if (!normal) return hit.shading_normal;
-    const bool behind = glm::dot(hit.geometric_normal, ray_direction) > 0.0f;
-    const Vec3 towards_ray = behind ? -hit.shading_normal : hit.shading_normal;
-    const Vec3 bent = normal->perturb(hit, towards_ray);
-    return behind ? -bent : bent;
-}
-
-// A texture_map's entries at the hit (materials/material_entries.h), then
-// the normal of each.
+// A texture_map's entries at the hit (materials/material_entries.h; a
+// light's surface keeps the one material its light was made from), then
+// POV's normal { }: every integrator sees the bent normal.
 inline void finish_surface(Hit& hit, const Vec3& ray_direction, const SceneData& data) {
-    if (data.has_material_entries)
+    if (data.has_material_entries && hit.emitter == nullptr)
         if (const MaterialEntries* entries = hit.material ? hit.material->entries() : nullptr) entries->select(hit);
-    if (hit.blend_material) hit.blend_shading_normal = hit.shading_normal;
     if (!data.has_normal_perturbation) return;
     hit.unbumped_normal = hit.shading_normal;
-    if (hit.blend_material) hit.blend_shading_normal = perturbed_normal(hit, hit.blend_material, ray_direction);
-    hit.shading_normal = perturbed_normal(hit, hit.material, ray_direction);
+    hit.shading_normal = bent_normal(hit, hit.material, hit.shading_normal, ray_direction);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "lancer/host/scene_compiler.h"
 #include "lancer/material.h"
 #include "lancer/render_scene.h"
+#include "lancer/shading/material_blend.h"
 #include "scene_test_helpers.h"
 
 namespace lancer {
@@ -56,7 +57,8 @@ TEST(MaterialEntries, MapBlendsTheTwoEntriesAroundTheValueHeavierFirst) {
     EXPECT_FLOAT_EQ(diffuse_of(most.blend_material), 0.2f);
     EXPECT_NEAR(most.blend_weight, 0.125f, 1e-6f);
     // Without bumps the second entry keeps the surface's own normal.
-    EXPECT_EQ(most.blend_shading_normal, most.shading_normal);
+    EXPECT_EQ(second_entry(most).shading_normal, most.shading_normal);
+    EXPECT_FLOAT_EQ(diffuse_of(second_entry(most).material), 0.2f);
 }
 
 TEST(MaterialEntries, BlockListPicksOneEntryPerBlock) {

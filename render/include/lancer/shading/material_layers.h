@@ -43,4 +43,13 @@ Color shade_layers(const Hit& hit, const Ray& ray, float bailout, const OwnLight
     return radiance;
 }
 
+// A hit's own light (no mirror, no refraction) as POV-Ray shows it, for
+// integrators that light a hit by own_light(hit) alone: blended between
+// two texture_map entries, summed over a layered texture's layers.
+template <class OwnLight>
+Color shade_own_light(const Hit& hit, const Ray& ray, const RenderScene& scene, const OwnLight& own_light) {
+    const float bailout = scene.options().adc_bailout;
+    return shade_blended(hit, [&](const Hit& entry) { return shade_layers(entry, ray, bailout, own_light); });
+}
+
 }  // namespace lancer

@@ -51,6 +51,17 @@ struct SpecularSplit {
     bool total_internal_reflection = false;  // the surface transmits, but the ray cannot leave
 };
 
+// The mirror alone: what a layer below the top of a layered texture
+// reflects (POV-Ray refracts only through the top layer).
+inline SpecularSplit split_mirror(const ShadingContext& at, const SpecularOptions& options) {
+    SpecularSplit split;
+    const Color mirror = at.material.mirror_reflectance(at.surface, glm::dot(at.normal, at.wo), at.entering);
+    if (!options.additive_reflection) split.diffuse_scale = glm::max(Color(1.0f) - mirror, Color(0.0f));
+    split.reflection = mirror;
+    if (!is_black(split.reflection)) split.reflected = reflect(-at.wo, at.normal);
+    return split;
+}
+
 // `depth`: how far the ray travelled to the hit (for POV's interior fade,
 // applied to what leaves through a back face). `layers_passed`: for the top
 // layer of a layered texture, what passes all its layers, which is
@@ -58,12 +69,10 @@ struct SpecularSplit {
 // material alone.
 inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOptions& options, float depth = 0.0f,
                                     const Color* layers_passed = nullptr) {
-    SpecularSplit split;
+    SpecularSplit split = split_mirror(at, options);
     const Vec3 incident = -at.wo;
     const float cos_i = glm::dot(at.normal, at.wo);
-    const Color mirror = at.material.mirror_reflectance(at.surface, cos_i, at.entering);
-    if (!options.additive_reflection) split.diffuse_scale = glm::max(Color(1.0f) - mirror, Color(0.0f));
-    split.reflection = mirror;
+    const Color mirror = split.reflection;
 
     float transparency = at.material.transparency(at.surface);
     if (layers_passed)
@@ -153,15 +162,17 @@ Color layered_surface_radiance(const Ray& ray, const Hit& hit, const MaterialLay
     for (std::size_t k = 0; k < reached; ++k) {
         const Hit seen = k == 0 ? top : layer_hit(hit, *layers.top_first[k], ray.direction);
         const ShadingContext at = make_shading_context(seen, ray);
-        const SpecularSplit split = k == 0 ? top_split : split_specular(at, options);
+        const SpecularSplit split = k == 0 ? top_split : split_mirror(at, options);
         const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
         radiance += above * (surface_emission(at) + split.diffuse_scale * local.diffuse + local.glossy);
         const bool reflects =
             k == 0 || !top_split.total_internal_reflection || seen.shading_normal != top.shading_normal;
+        // POV weighs a layer's reflected ray by the light reaching the layer.
+        const float reaching = std::min(1.0f, std::fabs(pov_grey(above)));
         if (reflects)
             radiance += follow_specular(seen, at.entering, split.reflection, split.reflected,
                                         at.material.parameters().reflection_exponent, false, scene, sampler, options,
-                                        local_term, level, weight, inside);
+                                        local_term, level, weight * reaching, inside);
         above *= layer_passes(at);
     }
     radiance += follow_specular(top, top_at.entering, top_split.transmission, top_split.refracted, 1.0f, true, scene,
