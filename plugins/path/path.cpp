@@ -239,7 +239,7 @@ class PathIntegrator final : public Integrator {
             // is rescaled for NEE, so every bounce still draws the same
             // dimensions.
             float u_light = sampler.next_1d();
-            if (hit.blend_material != nullptr) hit = chosen_entry(hit, u_light);
+            if (hit.mix != nullptr) hit = chosen_entry(hit, u_light);
             const Vec3 wo = -ray.direction;
             const Material& material = *hit.material;
             // POV's interior fade on the stretch just travelled inside an

@@ -45,7 +45,7 @@ class DiffusePointLanes {
     // Whether `hit` is of the kind this path shades.
     static bool covers(const Hit& hit) {
         const Material& material = *hit.material;
-        return hit.emitter == nullptr && hit.blend_material == nullptr && material.layers() == nullptr &&
+        return hit.emitter == nullptr && hit.mix == nullptr && material.layers() == nullptr &&
                hit.lit_by_global_lights && material.pigment_is_constant() && !material.has_glossy() &&
                material.parameters().brilliance == 1.0f && material.parameters().diffuse_back == 0.0f &&
                material.parameters().crand == 0.0f && !material.has_iridescence();

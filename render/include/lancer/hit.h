@@ -8,6 +8,7 @@
 namespace lancer {
 
 class Material;
+class MaterialMix;
 class Light;
 
 struct Hit {
@@ -21,13 +22,12 @@ struct Hit {
     // per axis; spawn_ray offsets by it so new rays never re-hit this surface.
     Vec3 position_error{0.0f};
     const Material* material = nullptr;  // never null for a hit the scene returns
-    // POV-Ray's texture_map between two of its entries: the surface shows
-    // (1 - blend_weight) of `material` and blend_weight of blend_material,
-    // each lit with its own finish and normal, the lit colours blended
-    // (lancer/shading/material_blend.h). Null where one material holds, as
-    // everywhere outside a texture_map.
-    const Material* blend_material = nullptr;
-    float blend_weight = 0.0f;
+    // POV-Ray's patterned textures where more than one entry holds (between
+    // two entries of a texture_map, an `average`): the entries and their
+    // shares, each lit with its own finish and normal and the lit colours
+    // blended (lancer/shading/material_blend.h); `material` is the heaviest.
+    // Null where one material holds, as everywhere outside a texture_map.
+    const MaterialMix* mix = nullptr;
     // The shading normal before any normal { } bent it, for the layers of a
     // layered texture, each bent by its own normal (zero: as shading_normal).
     Vec3 unbumped_normal{0.0f};

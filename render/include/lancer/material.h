@@ -33,8 +33,27 @@
 namespace lancer {
 
 class Medium;
-class MaterialEntries;
 class Material;
+
+// POV-Ray's patterned textures (texture_map, a block pattern's list of
+// textures, material_map, average): each entry is a material of its own,
+// and the scene picks those that hold at a hit. Where more than one does,
+// the hit keeps the mix (lancer/hit.h) and an integrator lights each entry
+// (lancer/shading/material_blend.h).
+class MaterialMix {
+  public:
+    struct Part {
+        const Material* material = nullptr;
+        float weight = 0.0f;
+    };
+    // Nested maps and `average` may mix more; the lightest then give way.
+    static constexpr int kMostParts = 32;
+    virtual ~MaterialMix() = default;
+    // The entries at the hit (its unbent shading normal read by patterns
+    // such as slope), heaviest first, shares summing to 1; their number,
+    // at least 1.
+    virtual int parts(const Hit& hit, Part* out) const = 0;
+};
 
 // POV-Ray's layered texture: its layers, top first, each a material of its
 // own, lit one by one (lancer/shading/material_layers.h).
@@ -115,10 +134,11 @@ struct MaterialParameters {
     // (lancer/medium.h); null: none.
     bool hollow = false;
     const Medium* medium = nullptr;
-    // A texture_map or a block pattern's list of textures: the scene picks
-    // the entries that hold at each hit (internal to the scene; a hit an
-    // integrator sees never has a material with one).
-    const MaterialEntries* entries = nullptr;
+    // A patterned texture: the scene picks the entries that hold at each
+    // hit (a hit an integrator sees never has a material with entries,
+    // except on a light's surface, which keeps the one material its light
+    // was made from).
+    const MaterialMix* entries = nullptr;
     // A layered texture: this material is the layers composited into one
     // (for what cannot light each: path, an emitter); null: not layered.
     const MaterialLayers* layers = nullptr;
@@ -225,7 +245,7 @@ class Material {
     Color mirror_reflectance(const SurfaceSample& surface, float cos_i, bool entering) const;
     bool has_mirror() const;
     const NormalPerturbation* normal_perturbation() const { return m_params.normal; }
-    const MaterialEntries* entries() const { return m_params.entries; }
+    const MaterialMix* entries() const { return m_params.entries; }
     const MaterialLayers* layers() const { return m_params.layers; }
     // POV's interior fade over a distance travelled inside the object: what
     // light leaving through (or totally reflected at) a back face is

@@ -111,7 +111,7 @@ void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const flo
         hit.geometric_normal = hit.shading_normal = Vec3(surfaces.nx[k], surfaces.ny[k], surfaces.nz[k]);
         hit.uv = Vec2(u[k], v[k]);
         hit.material = mesh.material;
-        hit.blend_material = nullptr;
+        hit.mix = nullptr;
         hit.unbumped_normal = Vec3(0.0f);
         hit.emitter = mesh.emitter;
         hit.object_id = mesh.object_id;

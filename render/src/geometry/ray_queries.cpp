@@ -40,7 +40,12 @@ void fill_embree_ray(const Ray& ray, RTCRay& out) {
 // POV's normal { }: every integrator sees the bent normal.
 inline void finish_surface(Hit& hit, const Vec3& ray_direction, const SceneData& data) {
     if (data.has_material_entries && hit.emitter == nullptr)
-        if (const MaterialEntries* entries = hit.material ? hit.material->entries() : nullptr) entries->select(hit);
+        if (const MaterialMix* entries = hit.material ? hit.material->entries() : nullptr) {
+            MaterialMix::Part parts[MaterialMix::kMostParts];
+            const int count = entries->parts(hit, parts);
+            hit.material = parts[0].material;
+            hit.mix = count > 1 ? entries : nullptr;
+        }
     if (!data.has_normal_perturbation) return;
     hit.unbumped_normal = hit.shading_normal;
     hit.shading_normal = bent_normal(hit, hit.material, hit.shading_normal, ray_direction);

@@ -18,6 +18,7 @@
 #include "geometry/sphere_sweep.h"
 #include "lancer/host/scene_compiler.h"
 #include "lancer/scene_error.h"
+#include "materials/average_weights.h"
 #include "materials/point_pigment.h"
 
 namespace lancer {
@@ -276,16 +277,19 @@ class Builder {
         return m_data->material_layers.back().get();
     }
 
-    // A texture_map's or a block list's entries, each a material of its own
-    // (POV lights each with its own finish), with pigment and normal read at
-    // the map's pattern point: `outer` holds the patterns of the maps this
-    // one is an entry of, outermost first. Null for other materials, an
-    // `average` (lit as one material, texture_layers.cpp) and a layered
-    // texture. Every entry takes the object's interior, as in POV-Ray.
+    // A texture_map's, a block list's or an average's entries, each a
+    // material of its own (POV lights each with its own finish), with
+    // pigment and normal read at the map's pattern point: `outer` holds the
+    // patterns of the maps this one is an entry of, outermost first. Null
+    // for other materials. Every entry takes the object's interior, as in
+    // POV-Ray.
     const MaterialEntries* material_entries(const sg::Material& written, const sg::Interior& interior, bool hollow,
                                             std::vector<sg::Pattern> outer) {
-        if (!written.pattern || written.average || !written.layers_above.empty()) return nullptr;
+        if (!written.pattern || !written.layers_above.empty()) return nullptr;
         const bool blocks = !written.block_textures.empty();
+        const auto pick = written.average ? MaterialEntries::Pick::Average
+                          : blocks        ? MaterialEntries::Pick::Blocks
+                                          : MaterialEntries::Pick::Map;
         std::vector<sg::MaterialRef> entries;
         std::vector<float> values;
         for (const auto& entry : written.texture_map) {
@@ -297,8 +301,14 @@ class Builder {
         outer.push_back(*written.pattern);
         std::vector<const Material*> materials;
         for (const auto& entry : entries) materials.push_back(entry_material(*entry, interior, hollow, outer));
+        if (pick == MaterialEntries::Pick::Average) {
+            const std::vector<double> written_weights(values.begin(), values.end());
+            const std::vector<double> shares = average_weights(written_weights);
+            values.assign(shares.begin(), shares.end());
+        }
+        if (pick == MaterialEntries::Pick::Blocks) values.clear();
         m_data->material_entries.push_back(m_data->texture_factory->make_material_entries(
-            *written.pattern, blocks, blocks ? std::vector<float>{} : values, std::move(materials)));
+            *written.pattern, int(pick), std::move(values), std::move(materials)));
         m_data->has_material_entries = true;
         return m_data->material_entries.back().get();
     }

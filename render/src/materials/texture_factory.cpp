@@ -52,12 +52,14 @@ std::unique_ptr<NormalPerturbation> TextureFactory::make_normal(const sg::Normal
     return make_surface_normal(normal, m_spaces, build());
 }
 
-std::unique_ptr<MaterialEntries> TextureFactory::make_material_entries(const sg::Pattern& pattern, bool blocks,
+std::unique_ptr<MaterialEntries> TextureFactory::make_material_entries(const sg::Pattern& pattern, int pick,
                                                                        std::vector<float> values,
                                                                        std::vector<const Material*> materials) {
-    CompiledPattern compiled = blocks ? compile_block_pattern(pattern, build()) : compile_pattern(pattern, build());
-    return std::make_unique<MaterialEntries>(std::move(compiled), std::move(values), std::move(materials), m_spaces,
-                                             pattern.uv_mapping);
+    const auto how = MaterialEntries::Pick(pick);
+    CompiledPattern compiled = how == MaterialEntries::Pick::Blocks ? compile_block_pattern(pattern, build())
+                                                                    : compile_pattern(pattern, build());
+    return std::make_unique<MaterialEntries>(std::move(compiled), how, std::move(values), std::move(materials),
+                                             m_spaces, pattern.uv_mapping);
 }
 
 std::unique_ptr<PointPigment> TextureFactory::make_point_pigment(const sg::Pigment& pigment) {

@@ -6,7 +6,7 @@
 // map (materials/material_entries.h) and the layers of a layered texture
 // (lancer/shading/material_layers.h); the one material built here is what
 // the object is made of where one material must stand for all (the light
-// an emitting object becomes, `average`, a layered texture in `path`). It
+// an emitting object becomes, a layered texture in `path`). It
 // is the map of the entries' pigments (a pigment_map over the same
 // pattern) and of their normals, with the first entry's finish; a layered
 // texture's pigments are composited as POV composites its layers (each
@@ -69,9 +69,9 @@ class LayeredTexture final : public Texture {
     std::vector<std::unique_ptr<Texture>> m_layers;
 };
 
-// POV's average texture lights each entry and weighs the results; lancer
-// averages the pigments and normals and weighs the finishes alike, which
-// is the same picture where the entries' finishes agree.
+// An average texture as one material (where one must stand for all: an
+// emitting object's light): the pigments and normals averaged and the
+// finishes weighed alike. Hits light each entry (material_entries.h).
 sg::Material average_of(const std::vector<sg::Material>& entries, const std::vector<double>& values,
                         sg::Material result) {
     const std::vector<double> weights = average_weights(values);

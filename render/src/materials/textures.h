@@ -60,8 +60,9 @@ class TextureFactory {
     std::unique_ptr<Texture> make(const sg::Pigment& pigment);
     std::unique_ptr<NormalPerturbation> make_normal(const sg::Normal& normal);
     // A patterned texture's entries, picked by `pattern` at each hit: by
-    // block, or by the map's `values` (materials/material_entries.h).
-    std::unique_ptr<MaterialEntries> make_material_entries(const sg::Pattern& pattern, bool blocks,
+    // block, by the map's `values`, or all by their weights (`values`) for
+    // an average (materials/material_entries.h).
+    std::unique_ptr<MaterialEntries> make_material_entries(const sg::Pattern& pattern, int pick,
                                                            std::vector<float> values,
                                                            std::vector<const Material*> materials);
     // A pigment read at points of its own space, not at hits (the sky).

@@ -2,8 +2,9 @@
 // material_map is lit with its own finish and normal, and between two map
 // entries the lit colours are blended (POV-Ray's ComputeTextureColour):
 // a checker of a mirror and a matte phong tile, a gradient from a dull
-// bumpy texture to a shiny mirror one, nested maps with transforms, and
-// POV's old tiles with layered textures on each side.
+// bumpy texture to a shiny mirror one, nested maps with transforms, POV's
+// old tiles with layered textures on each side, and an average of three
+// textures (one bumpy, one a mirror) turned with the texture.
 // Reference: povray +Itexture_map_finishes.pov +Otexture_map_finishes.png +FN +W160 +H120 -A -D -V +WT2 -GA
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
@@ -34,4 +35,7 @@ box { <-0.6, 0, 1.5>, <0.6, 1.4, 2.5>
 #declare Stripes = texture { pigment { gradient y color_map { [0.5 rgbt <1, 1, 1, 0>] [0.5 rgbt <0, 0, 0, 1>] } scale 0.2 } finish { phong 0.9 } }
 cylinder { <2.6, 0, 2.2>, <2.6, 1.6, 2.2>, 0.5
   texture { tiles { texture { Shiny } texture { Stripes } tile2 texture { Dull } texture { pigment { rgbf <1, 0.8, 0.2, 0.6> } } } scale 0.4 }
+}
+sphere { <-2.9, 0.5, -1.6>, 0.5
+  texture { average texture_map { [1 Dull] [1 Mirror] [2 pigment { radial frequency 6 color_map { [0 rgb <1, 0.8, 0>] [1 rgb <0.2, 0, 0.5>] } } finish { phong 1 }] } rotate 90*x }
 }

@@ -1,10 +1,11 @@
 // The hits of POV-Ray's patterned and layered textures.
 //
-// POV-Ray's texture_map between two entries (lancer/hit.h): the surface is
-// lit once with each entry's material and the lit colours are blended, as
-// POV-Ray blends them. An integrator that shades a hit by a function of
-// the hit alone wraps it in shade_blended(); one that samples (path)
-// takes one entry with its weight's probability, which has the same mean.
+// POV-Ray's patterned textures where more than one entry holds (lancer/hit.h:
+// between two texture_map entries, an average): the surface is lit once
+// with each entry's material and the lit colours are blended, as POV-Ray
+// blends them. An integrator that shades a hit by a function of the hit
+// alone wraps it in shade_blended(); one that samples (path) takes one
+// entry with its share's probability, which has the same mean.
 #pragma once
 
 #include <algorithm>
@@ -31,42 +32,55 @@ inline Vec3 unbent_normal(const Hit& hit) {
     return hit.unbumped_normal != Vec3(0.0f) ? hit.unbumped_normal : hit.shading_normal;
 }
 
-// The hit as the entry it is mostly (first) or the other entry (second),
-// with that entry's own bumps.
-inline Hit first_entry(const Hit& hit) {
+// The hit as one entry of its mix sees it: that entry's material, with
+// its own bumps.
+inline Hit entry_hit(const Hit& hit, const Material* material) {
     Hit entry = hit;
-    entry.blend_material = nullptr;
-    entry.blend_weight = 0.0f;
-    return entry;
-}
-inline Hit second_entry(const Hit& hit) {
-    Hit entry = first_entry(hit);
-    entry.material = hit.blend_material;
-    entry.shading_normal = bent_normal(hit, hit.blend_material, unbent_normal(hit), hit.ray_direction);
+    entry.mix = nullptr;
+    if (material == hit.material) return entry;
+    entry.material = material;
+    entry.shading_normal = bent_normal(hit, material, unbent_normal(hit), hit.ray_direction);
     return entry;
 }
 
-// shade(hit) for a hit of one material; the weighted sum of both for a hit
-// between two entries.
+// The entries of a hit's mix and their shares, heaviest first.
+inline int mix_parts(const Hit& hit, MaterialMix::Part* parts) {
+    Hit unbent = hit;
+    unbent.shading_normal = unbent_normal(hit);
+    return hit.mix->parts(unbent, parts);
+}
+
+// shade(hit) for a hit of one material; for a mix, the sum of each
+// entry's shade weighted by its share.
 template <class Shade>
 auto shade_blended(const Hit& hit, const Shade& shade) -> decltype(shade(hit)) {
-    if (hit.blend_material == nullptr) return shade(hit);
-    return (1.0f - hit.blend_weight) * shade(first_entry(hit)) + hit.blend_weight * shade(second_entry(hit));
+    if (hit.mix == nullptr) return shade(hit);
+    MaterialMix::Part parts[MaterialMix::kMostParts];
+    const int count = mix_parts(hit, parts);
+    auto sum = parts[0].weight * shade(entry_hit(hit, parts[0].material));
+    for (int i = 1; i < count; ++i) sum += parts[i].weight * shade(entry_hit(hit, parts[i].material));
+    return sum;
 }
 
-// The entry a sampling integrator shades, chosen by u in [0, 1), which is
-// then rescaled to a fresh uniform number in [0, 1) (it can serve the
-// next choice: the sampler's dimensions stay as they were).
+// The entry a sampling integrator shades, chosen by u in [0, 1) with its
+// share's probability; u is then rescaled to a fresh uniform number in
+// [0, 1) (it can serve the next choice: the sampler's dimensions stay as
+// they were).
 inline Hit chosen_entry(const Hit& hit, float& u) {
-    if (hit.blend_material == nullptr) return hit;
-    const float w = hit.blend_weight;
+    if (hit.mix == nullptr) return hit;
+    MaterialMix::Part parts[MaterialMix::kMostParts];
+    const int count = mix_parts(hit, parts);
     constexpr float kBelowOne = 0x1.fffffep-1f;
-    if (u < w) {
-        u = std::min(u / w, kBelowOne);
-        return second_entry(hit);
+    float start = 0.0f;
+    for (int i = 0; i < count; ++i) {
+        const float share = parts[i].weight;
+        if (u < start + share || i + 1 == count) {
+            u = share > 0.0f ? std::clamp((u - start) / share, 0.0f, kBelowOne) : 0.0f;
+            return entry_hit(hit, parts[i].material);
+        }
+        start += share;
     }
-    u = std::min((u - w) / (1.0f - w), kBelowOne);
-    return first_entry(hit);
+    return entry_hit(hit, parts[0].material);
 }
 
 // A layered texture (lancer/shading/material_layers.h lights it): each
@@ -80,7 +94,8 @@ inline bool layers_pass_enough(const Color& passed, float bailout) {
 // The hit as one layer sees it: its material, its normal bent by its own
 // normal { } from the surface's unbent normal.
 inline Hit layer_hit(const Hit& hit, const Material& layer, const Vec3& ray_direction) {
-    Hit seen = first_entry(hit);
+    Hit seen = hit;
+    seen.mix = nullptr;
     seen.material = &layer;
     seen.shading_normal = bent_normal(hit, &layer, unbent_normal(hit), ray_direction);
     return seen;
