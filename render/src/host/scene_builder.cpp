@@ -306,7 +306,6 @@ class Builder {
             const std::vector<double> shares = average_weights(written_weights);
             values.assign(shares.begin(), shares.end());
         }
-        if (pick == MaterialEntries::Pick::Blocks) values.clear();
         m_data->material_entries.push_back(m_data->texture_factory->make_material_entries(
             *written.pattern, int(pick), std::move(values), std::move(materials)));
         m_data->has_material_entries = true;

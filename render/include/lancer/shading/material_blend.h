@@ -32,8 +32,8 @@ inline Vec3 unbent_normal(const Hit& hit) {
     return hit.unbumped_normal != Vec3(0.0f) ? hit.unbumped_normal : hit.shading_normal;
 }
 
-// The hit as one entry of its mix sees it: that entry's material, with
-// its own bumps.
+// The hit as one entry of its mix (or one layer of a layered texture)
+// sees it: that material, with its own bumps.
 inline Hit entry_hit(const Hit& hit, const Material* material) {
     Hit entry = hit;
     entry.mix = nullptr;
@@ -84,21 +84,11 @@ inline Hit chosen_entry(const Hit& hit, float& u) {
 }
 
 // A layered texture (lancer/shading/material_layers.h lights it): each
-// layer sees the hit with its own material and normal.
+// layer sees the hit as entry_hit(hit, layer) does.
 
 // Whether the light passing the layers so far still counts (POV's trans).
 inline bool layers_pass_enough(const Color& passed, float bailout) {
     return std::min(1.0f, std::fabs(pov_grey(passed))) > bailout;
-}
-
-// The hit as one layer sees it: its material, its normal bent by its own
-// normal { } from the surface's unbent normal.
-inline Hit layer_hit(const Hit& hit, const Material& layer, const Vec3& ray_direction) {
-    Hit seen = hit;
-    seen.mix = nullptr;
-    seen.material = &layer;
-    seen.shading_normal = bent_normal(hit, &layer, unbent_normal(hit), ray_direction);
-    return seen;
 }
 
 // A hit's layers are lit one by one unless it has none or is a light's

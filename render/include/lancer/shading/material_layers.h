@@ -36,7 +36,7 @@ Color shade_layers(const Hit& hit, const Ray& ray, float bailout, const OwnLight
     Color radiance(0.0f), passed(1.0f);
     for (const Material* layer : layers->top_first) {
         if (!layers_pass_enough(passed, bailout)) break;
-        const Hit seen = layer_hit(hit, *layer, ray.direction);
+        const Hit seen = entry_hit(hit, layer);
         radiance += passed * own_light(seen);
         passed *= layer_passes(make_shading_context(seen, ray));
     }

@@ -87,7 +87,7 @@ inline Color transmittance_to(const RenderScene& scene, const Hit& from, const V
                 if (layers == nullptr) return passes(surface_hit);
                 Color passed(1.0f);
                 for (const Material* layer : layers->top_first) {
-                    passed *= passes(layer_hit(surface_hit, *layer, ray.direction));
+                    passed *= passes(entry_hit(surface_hit, layer));
                     if (lancer::is_black(passed)) break;
                 }
                 return passed;

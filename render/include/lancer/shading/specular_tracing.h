@@ -151,16 +151,16 @@ Color layered_surface_radiance(const Ray& ray, const Hit& hit, const MaterialLay
     std::size_t reached = 0;
     for (const Material* layer : layers.top_first) {
         if (!layers_pass_enough(passed, options.min_weight)) break;
-        passed *= layer_passes(make_shading_context(layer_hit(hit, *layer, ray.direction), ray));
+        passed *= layer_passes(make_shading_context(entry_hit(hit, layer), ray));
         ++reached;
     }
-    const Hit top = layer_hit(hit, *layers.top_first.front(), ray.direction);
+    const Hit top = entry_hit(hit, layers.top_first.front());
     const ShadingContext top_at = make_shading_context(top, ray);
     const SpecularSplit top_split = split_specular(top_at, options, hit.t * glm::length(ray.direction), &passed);
 
     Color radiance(0.0f), above(1.0f);
     for (std::size_t k = 0; k < reached; ++k) {
-        const Hit seen = k == 0 ? top : layer_hit(hit, *layers.top_first[k], ray.direction);
+        const Hit seen = k == 0 ? top : entry_hit(hit, layers.top_first[k]);
         const ShadingContext at = make_shading_context(seen, ray);
         const SpecularSplit split = k == 0 ? top_split : split_mirror(at, options);
         const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
