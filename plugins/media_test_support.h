@@ -40,4 +40,16 @@ inline std::string slab(const std::string& media, double background, const std::
 
 inline const Ray kAlongZ = seed_test::ray_towards({0.0f, 0.0f, -5.0f}, {0.0f, 0.0f, 0.0f});
 
+// What `integrator` sees along `ray` in the scene `text` (-1 if it does not parse).
+inline Color radiance_in(const std::string& integrator, const std::string& text, const Ray& ray = kAlongZ) {
+    const auto scene = scene_from(text);
+    if (!scene) return Color(-1.0f);
+    const auto loaded = seed_test::load_integrator(integrator, *scene);
+    return seed_test::mean_radiance(*loaded, *scene, ray);
+}
+
+inline void expect_colour(const Color& seen, const Color& expected, float tolerance) {
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(seen[k], expected[k], tolerance) << "channel " << k;
+}
+
 }  // namespace lancer::media_test

@@ -105,8 +105,8 @@ INSTANTIATE_TEST_SUITE_P(
                       "camera_spherical_narrow", "camera_transforms", "camera_orthographic_bare_angle", "camera_normal",
                       "camera_mesh_per_pixel", "camera_mesh_side_by_side", "camera_mesh_uv_smooth",
                       "camera_mesh_summed", "camera_mesh_averaged", "media_emission", "media_scattering",
-                      "media_absorbing_glass", "fake_caustics", "sky_layers", "sky_legacy", "sky_skies_inc",
-                      "fog_constant", "fog_ground", "fog_turbulent", "fog_hollow", "rainbow"),
+                      "media_absorbing_glass", "media_cylinder_light", "fake_caustics", "sky_layers", "sky_legacy",
+                      "sky_skies_inc", "fog_constant", "fog_ground", "fog_turbulent", "fog_hollow", "rainbow"),
     [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 // Isosurfaces of POV's internal functions (f_helix1, f_torus2, f_helix2,

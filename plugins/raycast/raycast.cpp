@@ -9,8 +9,11 @@
 // ambient term and the surface's own emission (an area light's, when the
 // ray hits the lamp) are added; a ray that hits nothing returns the
 // background. The model is local_shading.h's, shared with shadow, whitted
-// and gather, so all four agree wherever nothing is occluded. No
-// randomness: one sample per pixel is exact (more only anti-alias).
+// and gather, so all four agree wherever nothing is occluded. Along the
+// camera ray, POV's media (the scene's and those of a hollow object the
+// camera is in), fog and rainbows show as in whitted, the media lit
+// without shadow rays. No randomness: one sample per pixel is exact (more
+// only anti-alias); a medium's jitter is left out.
 //
 // Parameters: documented by `lancer plugins` / docs/integrators.md (from kParameters below).
 //
@@ -56,9 +59,9 @@ class RaycastIntegrator final : public Integrator {
             bool shaded[kLanes];
             lanes.shade(lane_ray, lane_hit, waiting, lane_radiance, shaded);
             for (int k = 0; k < waiting; ++k)
-                radiance[lane_sample[k]] = shaded[k]
-                                               ? seen_through_fog(scene, *lane_ray[k], lane_hit[k], lane_radiance[k])
-                                               : shade(*lane_ray[k], lane_hit[k], scene, lighting);
+                radiance[lane_sample[k]] =
+                    shaded[k] ? seen_through_media(scene, *lane_ray[k], lane_hit[k], lane_radiance[k], kMediaLighting)
+                              : shade(*lane_ray[k], lane_hit[k], scene, lighting);
             waiting = 0;
         };
         for (int i = 0; i < batch.count(); ++i) {
@@ -78,6 +81,10 @@ class RaycastIntegrator final : public Integrator {
     bool is_deterministic() const override { return true; }
 
   private:
+    // Media along camera rays as the surfaces are lit: no shadow rays, and
+    // no random numbers (a medium's jitter is left out).
+    static constexpr MediaLighting kMediaLighting{nullptr, false};
+
     struct SceneLighting {
         explicit SceneLighting(const RenderScene& scene)
             : lights(scene.lights()), ambient_light(scene.options().ambient_light) {}
@@ -86,7 +93,7 @@ class RaycastIntegrator final : public Integrator {
     };
 
     Color shade(const Ray& ray, const Hit* found, const RenderScene& scene, const SceneLighting& lighting) const {
-        return seen_through_fog(scene, ray, found, surface_radiance(ray, found, scene, lighting));
+        return seen_through_media(scene, ray, found, surface_radiance(ray, found, scene, lighting), kMediaLighting);
     }
 
     Color surface_radiance(const Ray& ray, const Hit* found, const RenderScene& scene,

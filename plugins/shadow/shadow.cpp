@@ -11,7 +11,9 @@
 // filtered shadows); `no_shadow` objects cast none. POV's area_light casts
 // POV-Ray's grid shadow (shading/shadow_rays.h). lancer's physical lamps and
 // emitters act through their point proxy, as in the seed: hard shadows from
-// the lamp's centre.
+// the lamp's centre. Along the camera ray, POV's media (the scene's and
+// those of a hollow object the camera is in), fog and rainbows show as in
+// whitted, the media lit behind shadow rays.
 //
 // Beyond the seed, `area_samples N` (N > 0) replaces each physical lamp's proxy
 // by N samples of its surface (Light::sample with the sampler's 2D values),
@@ -48,7 +50,8 @@ class ShadowIntegrator final : public Integrator {
 
     Color shade_camera_hit(const Ray& ray, const Hit* found, const RenderScene& scene,
                            Sampler& sampler) const override {
-        return seen_through_fog(scene, ray, found, surface_radiance(ray, found, scene, sampler));
+        return seen_through_media(scene, ray, found, surface_radiance(ray, found, scene, sampler),
+                                  MediaLighting{&sampler});
     }
 
     bool is_deterministic() const override { return m_area_samples == 0; }

@@ -114,6 +114,43 @@ bool spot_range(const PointLightParameters& spot, const Vec3& origin, const Vec3
     return found;
 }
 
+// The range of [0, length] a cylinder light's beam lights, as POV-Ray 3.7
+// finds it (ComputeCylinderLightInterval), its rules kept because they
+// decide where POV places the samples: the stretch between the ray's
+// crossings of the infinite cylinder of radius `falloff` about the axis;
+// none for a ray parallel to the axis or grazing the cylinder, or when
+// both crossings lie behind the light's plane; a first crossing behind the
+// plane starts the range at the ray's origin; a second one behind it (a
+// ray leaving the beam through the plane) leaves the light out of the
+// segment, as in POV-Ray.
+bool cylinder_range(const DirectionalLightParameters& beam, const Vec3& origin, const Vec3& direction, float length,
+                    float& s0, float& s1) {
+    constexpr double kPovEpsilon = 1e-10, kPovSmallTolerance = 1e-3, kPovMaxDistance = 1e7;
+    const glm::dvec3 axis = -glm::dvec3(beam.to_light), dir(direction);
+    const glm::dvec3 v = glm::dvec3(origin) - glm::dvec3(beam.position);
+    const double k1 = glm::dot(dir, axis), k2 = glm::dot(v, axis);
+    if (k1 <= 0.0 && k2 < 0.0) return false;
+    const double a = 1.0 - k1 * k1;
+    if (a == 0.0) return false;
+    const double b = glm::dot(v, dir) - k1 * k2;
+    const double c = glm::dot(v, v) - k2 * k2 - double(beam.beam_falloff) * double(beam.beam_falloff);
+    const double d = b * b - a * c;
+    if (!(d > kPovEpsilon)) return false;
+    const double root = std::sqrt(d);
+    double t1 = (-b - root) / a, t2 = (-b + root) / a;
+    if (t1 > t2) std::swap(t1, t2);
+    const double l1 = k2 + t1 * k1, l2 = k2 + t2 * k1;
+    if (l1 <= 0.0 && l2 <= 0.0) return false;
+    if (l1 <= 0.0)
+        t1 = 0.0;
+    else if (l2 <= 0.0)
+        t2 = (kPovMaxDistance - k2) / k1;
+    if (!(t1 < double(length) && t2 > kPovSmallTolerance)) return false;
+    s0 = float(std::max(t1, 0.0));
+    s1 = float(std::min(t2, double(length)));
+    return true;
+}
+
 // One sample's values: what it adds (already times the interval length)
 // and its optical depth over the interval.
 struct MediaSample {
@@ -124,12 +161,13 @@ struct MediaSample {
 class SegmentSampler {
   public:
     SegmentSampler(const RenderScene* scene, const MediumRegion& region, const Vec3& origin, const Vec3& direction,
-                   Sampler* sampler, std::vector<LightRange> lights = {})
+                   const MediaLighting& lighting, std::vector<LightRange> lights = {})
         : m_scene(scene),
           m_region(region),
           m_origin(origin),
           m_direction(direction),
-          m_sampler(sampler),
+          m_sampler(lighting.jitter),
+          m_shadows(lighting.shadows),
           m_lights(std::move(lights)) {
         const MediumSampling& s = region.medium->sampling();
         m_jitter = s.jitter;
@@ -205,7 +243,7 @@ class SegmentSampler {
             const LightSample incident = stand_in.sample(p, Vec2(0.5f));
             if (!(incident.pdf > 0.0f) || is_black(incident.radiance)) continue;
             Color colour = incident.radiance * (1.0f / (kPi * incident.pdf));
-            if (light->casts_shadows()) colour *= transmittance_to(*m_scene, at, incident.point, light);
+            if (m_shadows && light->casts_shadows()) colour *= transmittance_to(*m_scene, at, incident.point, light);
             if (is_black(colour)) continue;
             sum += m_region.medium->pov_phase(glm::dot(incident.wi, m_direction)) * colour;
         }
@@ -217,6 +255,7 @@ class SegmentSampler {
     Vec3 m_origin;
     Vec3 m_direction;
     Sampler* m_sampler;
+    bool m_shadows;
     std::vector<LightRange> m_lights;
     bool m_lit = false;
     float m_jitter = 0.0f;
@@ -325,7 +364,7 @@ SegmentResult sample_segment(SegmentSampler& sampler, const MediumSampling& sett
 }  // namespace
 
 Color pov_media_radiance(const RenderScene& scene, const MediumRegion& region, const Vec3& origin,
-                         const Vec3& direction, float length, const Color& behind, Sampler& sampler) {
+                         const Vec3& direction, float length, const Color& behind, const MediaLighting& lighting) {
     if (!region || !(length > 0.0f)) return behind;
     const Medium& medium = *region.medium;
     // Where each light that lights media reaches along the segment.
@@ -335,13 +374,17 @@ Color pov_media_radiance(const RenderScene& scene, const MediumRegion& region, c
         // their group's objects and no medium.
         if (!light->lights_media() || light->light_group() >= 0) continue;
         LightRange range{light, 0.0f, length};
-        const PointLightParameters* point = simple_model_light(*light).parameters<PointLightParameters>();
+        const Light& stand_in = simple_model_light(*light);
+        const PointLightParameters* point = stand_in.parameters<PointLightParameters>();
         if (point && point->spot_axis != Vec3(0.0f) &&
             !spot_range(*point, origin, direction, length, range.s0, range.s1))
             continue;
+        const DirectionalLightParameters* beam = stand_in.parameters<DirectionalLightParameters>();
+        if (beam && beam->beam_falloff > 0.0f && !cylinder_range(*beam, origin, direction, length, range.s0, range.s1))
+            continue;
         lights.push_back(range);
     }
-    SegmentSampler segment(&scene, region, origin, direction, &sampler, lights);
+    SegmentSampler segment(&scene, region, origin, direction, lighting, lights);
     const SegmentResult result = sample_segment(segment, medium.sampling(), lights, medium.homogeneous(), length);
     return behind * glm::exp(-result.depth) + result.added;
 }
@@ -351,7 +394,7 @@ Color pov_media_optical_depth(const MediumRegion& region, const Vec3& origin, co
     const Medium& medium = *region.medium;
     // POV samples constant media on a shadow ray the regular way: exact.
     if (medium.homogeneous()) return medium.constant().extinction * length;
-    SegmentSampler segment(nullptr, region, origin, direction, nullptr);
+    SegmentSampler segment(nullptr, region, origin, direction, MediaLighting{});
     return sample_segment(segment, medium.sampling(), {}, false, length).depth;
 }
 

@@ -65,24 +65,35 @@ SegmentMedia media_before(const RenderScene& scene, const Ray& ray, const Hit* h
 // POV's distance for a ray that escapes (its BOUND_HUGE).
 inline constexpr float kMediaEscapeDistance = 2.0e10f;
 
+// How a medium's samples are lit: as POV-Ray lights them, each light behind
+// a shadow ray and the samples jittered by `jitter` (whitted, gather,
+// shadow), or, for raycast, each light unoccluded and the samples at POV's
+// fixed fractions (raycast draws no random numbers).
+struct MediaLighting {
+    Sampler* jitter = nullptr;  // null: POV's sample positions without jitter
+    bool shadows = true;
+};
+
 // POV's media on the segment from `origin` along unit `direction` over
 // `length`: `behind` (the radiance arriving from the far end) attenuated,
 // plus what the medium emits and scatters towards the origin. Light
 // reaching a sample is each light of the simple model (as whitted's
-// surfaces see them) behind a shadow ray (transmittance_to).
+// surfaces see them), behind a shadow ray (transmittance_to) unless
+// `lighting` says otherwise.
 Color pov_media_radiance(const RenderScene& scene, const MediumRegion& region, const Vec3& origin,
-                         const Vec3& direction, float length, const Color& behind, Sampler& sampler);
+                         const Vec3& direction, float length, const Color& behind, const MediaLighting& lighting);
 // The optical depth of the segment (extinction integrated), per channel,
 // as POV estimates it for a shadow ray.
 Color pov_media_optical_depth(const MediumRegion& region, const Vec3& origin, const Vec3& direction, float length);
 
 // What an integrator calls with the radiance it found along `ray` (hit null:
 // the background): the radiance after the segment's media. Free when the
-// scene has none.
+// scene has none. `inside` lists the objects the ray runs in; a camera ray
+// leaves it empty (media_before finds a camera inside an object).
 // Rainbows (lancer/rainbow.h) come first, fog (lancer/fog.h) last, nearest
 // the eye, as in POV.
 inline Color seen_through_media(const RenderScene& scene, const Ray& ray, const Hit* hit, const Color& radiance,
-                                Sampler& sampler, const InteriorStack& inside) {
+                                const MediaLighting& lighting, const InteriorStack& inside = {}) {
     const SceneFog* fog = scene.fog();
     const SceneRainbows* rainbows = scene.rainbows();
     if (!scene.has_media() && fog == nullptr && rainbows == nullptr) return radiance;
@@ -93,26 +104,11 @@ inline Color seen_through_media(const RenderScene& scene, const Ray& ray, const 
     const float length = hit ? hit->t * scale : kMediaEscapeDistance;
     Color seen = radiance;
     if (rainbows && media.in_open) seen = rainbows->seen_through(direction, length, seen);
-    if (media.interior) seen = pov_media_radiance(scene, media.interior, ray.origin, direction, length, seen, sampler);
+    if (media.interior) seen = pov_media_radiance(scene, media.interior, ray.origin, direction, length, seen, lighting);
     if (media.outer_interior)
-        seen = pov_media_radiance(scene, media.outer_interior, ray.origin, direction, length, seen, sampler);
-    if (media.open) seen = pov_media_radiance(scene, media.open, ray.origin, direction, length, seen, sampler);
+        seen = pov_media_radiance(scene, media.outer_interior, ray.origin, direction, length, seen, lighting);
+    if (media.open) seen = pov_media_radiance(scene, media.open, ray.origin, direction, length, seen, lighting);
     if (fog && media.in_open) seen = fog->seen_through(ray.origin, direction, length, seen);
-    return seen;
-}
-
-// Rainbows and fog alone along a camera ray, for the integrators without
-// media (raycast, shadow): free without either.
-inline Color seen_through_fog(const RenderScene& scene, const Ray& ray, const Hit* hit, const Color& radiance) {
-    const SceneFog* fog = scene.fog();
-    const SceneRainbows* rainbows = scene.rainbows();
-    if ((fog == nullptr && rainbows == nullptr) || !media_before(scene, ray, hit).in_open) return radiance;
-    const float scale = glm::length(ray.direction);
-    const Vec3 direction = ray.direction / scale;
-    const float length = hit ? hit->t * scale : kFogEscapeDistance;
-    Color seen = radiance;
-    if (rainbows) seen = rainbows->seen_through(direction, length, seen);
-    if (fog) seen = fog->seen_through(ray.origin, direction, length, seen);
     return seen;
 }
 

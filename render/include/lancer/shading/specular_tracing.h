@@ -208,14 +208,15 @@ template <class LocalTerm>
 Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler& sampler,
                      const SpecularOptions& options, const LocalTerm& local_term, int level = 1, float weight = 1.0f,
                      const InteriorStack& inside = {}) {
-    if (found == nullptr) return seen_through_media(scene, ray, nullptr, scene.background(ray), sampler, inside);
+    if (found == nullptr)
+        return seen_through_media(scene, ray, nullptr, scene.background(ray), MediaLighting{&sampler}, inside);
     // Between two texture_map entries each is lit and followed with its
     // own finish; as in POV-Ray, the blend does not lower the weight that
     // adc_bailout compares.
     const Color radiance = shade_blended(*found, [&](const Hit& hit) {
         return specular_surface_radiance(ray, hit, scene, sampler, options, local_term, level, weight, inside);
     });
-    return seen_through_media(scene, ray, found, radiance, sampler, inside);
+    return seen_through_media(scene, ray, found, radiance, MediaLighting{&sampler}, inside);
 }
 
 template <class LocalTerm>

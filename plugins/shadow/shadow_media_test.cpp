@@ -1,0 +1,39 @@
+// shadow's media along camera rays (lancer/shading/pov_media.h): the same
+// closed forms as raycast's, but a medium's samples are lit behind shadow
+// rays, as shadow lights its surfaces.
+#include <cmath>
+
+#include "../media_test_support.h"
+
+namespace lancer {
+namespace {
+
+using namespace seed_test;
+using namespace media_test;
+
+TEST(ShadowMedia, TheScenesMediaDimCameraRaysByBeerLambert) {
+    const std::string wall =
+        "camera { location <0, 0, -5> look_at <0, 0, 0> }\n"
+        "light_source { <0, 0, -5> color rgb 1 }\n"
+        "plane { -z, 1 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n"
+        "media { absorption 0.25 }\n";
+    expect_colour(radiance_in("shadow", wall), Color(std::exp(-1.0f)), 1e-5f);
+}
+
+TEST(ShadowMedia, ScatteringIsLitBehindShadowRays) {
+    // As RaycastMedia.ScatteringIsLitWithoutShadowRays: 1 - exp(-4 sigma)
+    // in the open, nothing under an opaque roof.
+    const float sigma = 0.1f;
+    const std::string open =
+        "camera { location <0, 0, -5> look_at <0, 0, 0> }\n"
+        "light_source { <0, 100, 0> color rgb 1 parallel point_at <0, 0, 0> }\n"
+        "plane { -z, 1 pigment { rgb 0 } finish { ambient 0 diffuse 0 } }\n"
+        "media { scattering { 1, 0.1 } intervals 400 samples 2 }\n";
+    const float expected = 1.0f - std::exp(-4.0f * sigma);
+    expect_colour(radiance_in("shadow", open), Color(expected), 0.005f * expected);
+    const std::string roofed = open + "box { <-50, 5, -50>, <50, 6, 50> pigment { rgb 1 } }\n";
+    expect_colour(radiance_in("shadow", roofed), Color(0.0f), 1e-6f);
+}
+
+}  // namespace
+}  // namespace lancer
