@@ -86,7 +86,8 @@ class GatherIntegrator final : public Integrator {
             if (!is_black(diffuse_scale)) local.diffuse += gathered_diffuse(scene, at, hit_sampler);
             return local;
         };
-        return shade_specular(ray, hit, scene, sampler, m_options, gathered_local_term);
+        return shade_specular(ray, hit, scene, sampler, m_options, gathered_local_term, 1, 1.0f,
+                              scene.camera_interiors());
     }
 
     bool is_deterministic() const override { return m_jitter == 0.0f; }

@@ -175,8 +175,8 @@ class PathIntegrator final : public Integrator {
         bool delta_bounce = true;   // the camera counts as a delta event
         float previous_pdf = 0.0f;  // solid-angle density of the last BSDF sample
         Vec3 previous_point(0.0f);
-        Vec3 previous_normal(0.0f);  // the normal NEE weighed lights with there (0 in a medium)
-        InteriorStack inside;        // objects the path is in (media only)
+        Vec3 previous_normal(0.0f);                       // the normal NEE weighed lights with there (0 in a medium)
+        InteriorStack inside = scene.camera_interiors();  // objects the path is in (media only)
 
         for (int depth = 0;; ++depth) {
             Hit hit;

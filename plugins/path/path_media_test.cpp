@@ -83,6 +83,18 @@ TEST(PathMedia, DeltaTrackingMatchesTheOpticalDepthOfADensityGradient) {
     expect_within(estimate(*path, *scene, kAlongZ, 4000), Color(std::exp(-1.0f)));
 }
 
+TEST(PathMedia, ACameraInsideAHollowMediumStartsInIt) {
+    // An emitting wall 4 away inside a sphere of absorption 0.25 that holds
+    // the camera: exp(-1) of its emission arrives.
+    const auto scene = scene_from(
+        "camera { location <0, 0, -5> look_at <0, 0, 0> }\n"
+        "box { <-3, -3, -1>, <3, 3, -0.9> pigment { rgb 1 } finish { ambient 0 diffuse 0 emission 1 } }\n"
+        "sphere { <0, 0, -5>, 10 pigment { rgbt 1 } hollow interior { media { absorption 0.25 } } }\n");
+    ASSERT_TRUE(scene);
+    const auto path = load_integrator("path", *scene);
+    expect_within(estimate(*path, *scene, kAlongZ, 4000), Color(std::exp(-1.0f)));
+}
+
 TEST(PathMedia, WhiteFurnaceConvergesToTheWallsEmission) {
     // Albedo 1: whatever the medium scatters, every direction ends on the
     // wall, which emits 0.7; the medium neither adds nor takes light.

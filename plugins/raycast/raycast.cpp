@@ -59,9 +59,10 @@ class RaycastIntegrator final : public Integrator {
             bool shaded[kLanes];
             lanes.shade(lane_ray, lane_hit, waiting, lane_radiance, shaded);
             for (int k = 0; k < waiting; ++k)
-                radiance[lane_sample[k]] =
-                    shaded[k] ? seen_through_media(scene, *lane_ray[k], lane_hit[k], lane_radiance[k], kMediaLighting)
-                              : shade(*lane_ray[k], lane_hit[k], scene, lighting);
+                radiance[lane_sample[k]] = shaded[k]
+                                               ? seen_through_media(scene, *lane_ray[k], lane_hit[k], lane_radiance[k],
+                                                                    kMediaLighting, scene.camera_interiors())
+                                               : shade(*lane_ray[k], lane_hit[k], scene, lighting);
             waiting = 0;
         };
         for (int i = 0; i < batch.count(); ++i) {
@@ -93,7 +94,8 @@ class RaycastIntegrator final : public Integrator {
     };
 
     Color shade(const Ray& ray, const Hit* found, const RenderScene& scene, const SceneLighting& lighting) const {
-        return seen_through_media(scene, ray, found, surface_radiance(ray, found, scene, lighting), kMediaLighting);
+        return seen_through_media(scene, ray, found, surface_radiance(ray, found, scene, lighting), kMediaLighting,
+                                  scene.camera_interiors());
     }
 
     Color surface_radiance(const Ray& ray, const Hit* found, const RenderScene& scene,

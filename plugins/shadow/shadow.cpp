@@ -51,7 +51,7 @@ class ShadowIntegrator final : public Integrator {
     Color shade_camera_hit(const Ray& ray, const Hit* found, const RenderScene& scene,
                            Sampler& sampler) const override {
         return seen_through_media(scene, ray, found, surface_radiance(ray, found, scene, sampler),
-                                  MediaLighting{&sampler});
+                                  MediaLighting{&sampler}, scene.camera_interiors());
     }
 
     bool is_deterministic() const override { return m_area_samples == 0; }

@@ -69,7 +69,8 @@ class WhittedIntegrator final : public Integrator {
             local.diffuse += opaque_ambient(scene, at);
             return local;
         };
-        return shade_specular(ray, hit, scene, sampler, m_options, lights_with_shadows);
+        return shade_specular(ray, hit, scene, sampler, m_options, lights_with_shadows, 1, 1.0f,
+                              scene.camera_interiors());
     }
 
     bool is_deterministic() const override { return true; }

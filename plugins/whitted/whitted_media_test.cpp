@@ -93,6 +93,22 @@ TEST(WhittedMedia, AtmosphereFillsTheOpenButNotSolidObjects) {
     expect_colour(radiance_in("whitted", hollow), Color(std::exp(-1.0f)), 1e-5f);
 }
 
+TEST(WhittedMedia, ACameraInsideAnObjectStartsInItsInterior) {
+    // A white wall 4 away inside a sphere of absorption 0.25 that holds
+    // the camera: every camera ray starts in the medium (POV's containing
+    // interiors), exp(-1). Not hollow, the sphere shows no media at all.
+    const std::string wall =
+        "camera { location <0, 0, -5> look_at <0, 0, 0> }\n"
+        "plane { -z, 1 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }\n";
+    const std::string medium = " interior { media { absorption 0.25 } } }\n";
+    const std::string hollow = wall + "sphere { <0, 0, -5>, 10 pigment { rgbt 1 } hollow" + medium;
+    const std::string solid = wall + "sphere { <0, 0, -5>, 10 pigment { rgbt 1 }" + medium;
+    for (const char* integrator : {"whitted", "raycast", "shadow"}) {  // gather shows no ambient
+        expect_colour(radiance_in(integrator, hollow), Color(std::exp(-1.0f)), 1e-5f);
+        expect_colour(radiance_in(integrator, solid), Color(1.0f), 1e-5f);
+    }
+}
+
 TEST(WhittedMedia, ShadowRaysThroughAMediumAreDimmed) {
     // A white floor lit from straight above through a hollow slab of
     // absorption 1, 1 thick: the light arriving is exp(-1) of it.

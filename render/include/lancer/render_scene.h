@@ -11,6 +11,7 @@
 #include "lancer/camera.h"
 #include "lancer/fog.h"
 #include "lancer/hit.h"
+#include "lancer/interior_stack.h"
 #include "lancer/light.h"
 #include "lancer/material.h"
 #include "lancer/medium.h"
@@ -78,6 +79,13 @@ class RenderScene {
     virtual const SceneFog* fog() const { return nullptr; }
     // POV's rainbows (lancer/rainbow.h); null: none.
     virtual const SceneRainbows* rainbows() const { return nullptr; }
+    // The objects that contain the camera's location, where a camera ray
+    // starts (POV's containing interiors): they decide the media, fog and
+    // rainbow of its first stretch. Empty in a scene without any of those.
+    virtual const InteriorStack& camera_interiors() const {
+        static const InteriorStack kNone;
+        return kNone;
+    }
 };
 
 }  // namespace lancer

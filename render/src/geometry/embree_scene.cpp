@@ -8,6 +8,8 @@
 
 #include "geometry/embree_scene.h"
 
+#include "geometry/containing_objects.h"
+
 namespace lancer {
 namespace embree {
 namespace {
@@ -38,6 +40,9 @@ EmbreeScene::EmbreeScene(std::unique_ptr<SceneData> data) : m_data(std::move(dat
     rtcSetDeviceErrorFunction(m_device, record_device_error, &m_device_error);
     build();
     if (!m_device_error.empty()) throw std::runtime_error(m_device_error);
+    // Only media, fog and rainbows read it (a scene without them tests no object).
+    if (m_data->has_media || m_data->fog || m_data->rainbows)
+        m_camera_interiors = objects_containing(*m_data, m_data->camera.location());
 }
 
 EmbreeScene::~EmbreeScene() {

@@ -139,6 +139,7 @@ class EmbreeScene final : public RenderScene {
     MediumRegion atmosphere() const override { return m_data->atmosphere; }
     const SceneFog* fog() const override { return m_data->fog.get(); }
     const SceneRainbows* rainbows() const override { return m_data->rainbows.get(); }
+    const InteriorStack& camera_interiors() const override { return m_camera_interiors; }
     // The tables the scene was built from (for the host's own reports).
     const SceneData& data() const { return *m_data; }
 
@@ -171,6 +172,7 @@ class EmbreeScene final : public RenderScene {
     std::vector<GeometryEntry> m_geometries;  // by top-level geomID
     std::vector<std::uint32_t> m_unbounded;   // instance indices, outside the BVH
     std::string m_device_error;
+    InteriorStack m_camera_interiors;
     bool m_has_no_shadow_mesh = false;
     // By instance: a mesh whose triangle i is its face i (no polygons split).
     std::vector<std::uint8_t> m_faces_are_triangles;

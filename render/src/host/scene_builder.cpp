@@ -208,7 +208,11 @@ class Builder {
     // One material per written material and hollow flag: POV's `hollow` is
     // the object's, but what a ray inside sees (media) depends on it.
     const Material* material_for(const sg::MaterialRef& ref, bool hollow = false) {
-        if (!ref) return default_material();
+        if (!ref && !hollow) return default_material();
+        if (!ref) {
+            if (!m_hollow_default_material) m_hollow_default_material = make_material(sg::Material{}, true);
+            return m_hollow_default_material;
+        }
         auto found = m_materials.find({ref.get(), hollow});
         if (found != m_materials.end()) return found->second;
         const Material* material = make_material(*ref, hollow);
@@ -1216,6 +1220,7 @@ class Builder {
     std::map<const sg::TriangleMesh*, const MeshData*> m_meshes;
     std::map<std::pair<const sg::Material*, bool>, const Material*> m_materials;
     const Material* m_default_material = nullptr;
+    const Material* m_hollow_default_material = nullptr;  // POV's default texture on a hollow object
 };
 
 }  // namespace

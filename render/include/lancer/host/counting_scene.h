@@ -45,6 +45,7 @@ class CountingScene final : public RenderScene {
     MediumRegion atmosphere() const override { return m_inner.atmosphere(); }
     const SceneFog* fog() const override { return m_inner.fog(); }
     const SceneRainbows* rainbows() const override { return m_inner.rainbows(); }
+    const InteriorStack& camera_interiors() const override { return m_inner.camera_interiors(); }
 
     // Queries so far, over every thread. Exact once the threads are idle.
     std::uint64_t rays() const;

@@ -9,43 +9,12 @@
 // (RenderScene::has_media()).
 #pragma once
 
-#include <array>
-
+#include "lancer/interior_stack.h"
 #include "lancer/medium.h"
 #include "lancer/render_scene.h"
 #include "lancer/sampler.h"
 
 namespace lancer {
-
-// The objects a ray is inside, innermost last, as POV's ray keeps its list
-// of interiors: an integrator pushes the object a transmitted ray enters
-// and removes the one it leaves. Small and fixed: deeper nesting than
-// kDepth keeps the outermost kDepth objects.
-struct InteriorStack {
-    struct Entry {
-        const Material* material = nullptr;
-        std::uint32_t object_id = 0;
-    };
-    static constexpr int kDepth = 8;
-    std::array<Entry, kDepth> entries{};
-    int size = 0;
-
-    // After a ray is transmitted through `hit`, entering or leaving its object.
-    InteriorStack crossed(const Hit& hit, bool entering) const {
-        InteriorStack next = *this;
-        if (entering) {
-            if (next.size < kDepth) next.entries[std::size_t(next.size++)] = Entry{hit.material, hit.object_id};
-            return next;
-        }
-        for (int i = next.size - 1; i >= 0; --i)
-            if (next.entries[std::size_t(i)].object_id == hit.object_id) {
-                for (int j = i; j + 1 < next.size; ++j) next.entries[std::size_t(j)] = next.entries[std::size_t(j + 1)];
-                --next.size;
-                break;
-            }
-        return next;
-    }
-};
 
 // The media of the segment a ray ran to reach `hit` (null: it escaped).
 // With objects in `inside`: the media of each (hollow ones only, as POV

@@ -1,0 +1,48 @@
+// The objects a ray is inside, innermost last, as POV-Ray's ray keeps its
+// list of interiors: what decides which media a stretch of the ray crosses
+// (lancer/shading/pov_media.h). A camera ray starts with the objects that
+// contain the camera (RenderScene::camera_interiors); an integrator pushes
+// the object a transmitted ray enters and removes the one it leaves.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "lancer/hit.h"
+#include "lancer/material.h"
+
+namespace lancer {
+
+// Small and fixed: deeper nesting than kDepth keeps the outermost kDepth
+// objects.
+struct InteriorStack {
+    struct Entry {
+        const Material* material = nullptr;
+        std::uint32_t object_id = 0;
+    };
+    static constexpr int kDepth = 8;
+    std::array<Entry, kDepth> entries{};
+    int size = 0;
+
+    void push(const Entry& entry) {
+        if (size < kDepth) entries[std::size_t(size++)] = entry;
+    }
+
+    // After a ray is transmitted through `hit`, entering or leaving its object.
+    InteriorStack crossed(const Hit& hit, bool entering) const {
+        InteriorStack next = *this;
+        if (entering) {
+            next.push(Entry{hit.material, hit.object_id});
+            return next;
+        }
+        for (int i = next.size - 1; i >= 0; --i)
+            if (next.entries[std::size_t(i)].object_id == hit.object_id) {
+                for (int j = i; j + 1 < next.size; ++j) next.entries[std::size_t(j)] = next.entries[std::size_t(j + 1)];
+                --next.size;
+                break;
+            }
+        return next;
+    }
+};
+
+}  // namespace lancer

@@ -1,0 +1,75 @@
+// The objects a camera ray starts in (RenderScene::camera_interiors,
+// geometry/containing_objects.h): POV-Ray's containing interiors, found by
+// each object's inside test, largest first.
+#include <gtest/gtest.h>
+
+#include "lancer/host/scene_compiler.h"
+#include "lancer/parser.h"
+#include "lancer/render_scene.h"
+#include "scene_test_helpers.h"
+
+namespace lancer {
+namespace {
+
+using namespace lancer::testing;
+
+// A camera at the origin looking along +z, with fog (so the scene asks
+// which objects contain it), and `objects`.
+std::unique_ptr<RenderScene> camera_among(const std::string& objects) {
+    const std::string text = "#version 3.7;\ncamera { location 0 look_at z }\nfog { distance 10 rgb 1 }\n" + objects;
+    ParseResult parsed = parse_scene_string(text, "<containing>");
+    if (!parsed.ok()) throw std::runtime_error(format_diagnostic(parsed.diagnostics.front()));
+    return compile_scene(*parsed.scene);
+}
+
+bool hollow(const InteriorStack::Entry& entry) {
+    return entry.material->parameters().hollow;
+}
+
+TEST(CameraInteriors, EveryObjectHoldingTheCameraLargestFirst) {
+    const auto scene = camera_among(
+        "sphere { 0, 2 hollow }\n"
+        "box { -50, 50 }\n"
+        "plane { y, 1 }\n"                   // the camera is below it: inside
+        "sphere { <10, 0, 0>, 1 hollow }\n"  // elsewhere
+        "plane { y, -1 }\n");                // above it: outside
+    const InteriorStack& inside = scene->camera_interiors();
+    ASSERT_EQ(inside.size, 3);
+    EXPECT_FALSE(hollow(inside.entries[0]));  // the plane (unbounded)
+    EXPECT_FALSE(hollow(inside.entries[1]));  // the box
+    EXPECT_TRUE(hollow(inside.entries[2]));   // the small sphere, innermost
+}
+
+TEST(CameraInteriors, TransformedAndCsgObjects) {
+    // A sphere moved and scaled around the camera; a difference whose hole
+    // is elsewhere holds it; one whose hole is at the camera does not.
+    const auto scene = camera_among(
+        "sphere { 0, 1 scale <5, 1, 1> translate <3, 0, 0> hollow }\n"
+        "difference { sphere { 0, 8 } sphere { <5, 0, 0>, 1 } hollow }\n"
+        "difference { sphere { 0, 9 } sphere { 0, 1 } }\n");
+    const InteriorStack& inside = scene->camera_interiors();
+    ASSERT_EQ(inside.size, 2);
+    // A ray leaving each object leaves through the object (for the
+    // difference, the leaf) the camera was entered by, so a transmitted ray
+    // takes it off the stack: the ellipsoid (innermost) at 0.8, then the
+    // difference's outer sphere at 8.
+    Hit hit;
+    ASSERT_TRUE(scene->intersect(make_ray({0, 0, 0}, {0, 0, 1}), hit));
+    EXPECT_NEAR(hit.t, 0.8f, 1e-4f);
+    EXPECT_EQ(hit.object_id, inside.entries[1].object_id);
+    ASSERT_TRUE(scene->intersect(make_ray({0, 0, 1}, {0, 0, 1}), hit));
+    EXPECT_NEAR(hit.t, 7.0f, 1e-4f);
+    EXPECT_EQ(hit.object_id, inside.entries[0].object_id);
+    EXPECT_TRUE(hollow(inside.entries[0]));
+    EXPECT_TRUE(hollow(inside.entries[1]));
+}
+
+TEST(CameraInteriors, NoneWithoutMediaFogOrRainbow) {
+    ParseResult parsed =
+        parse_scene_string("#version 3.7;\ncamera { location 0 look_at z }\nsphere { 0, 2 }\n", "<none>");
+    ASSERT_TRUE(parsed.ok());
+    EXPECT_EQ(compile_scene(*parsed.scene)->camera_interiors().size, 0);
+}
+
+}  // namespace
+}  // namespace lancer
