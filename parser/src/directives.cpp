@@ -602,10 +602,14 @@ void Evaluator::directive_version(const RawToken& d) {
 // POV-Ray's end of parsing (parser.cpp): version-dependent defaults follow
 // the #version in force when the scene ends. A scene with no #version at
 // all is 3.62 there (EffectiveLanguageVersion), though `version` reads 3.7.
+int Evaluator::effective_language_version() const {
+    const double version = m_saw_version ? m_language_version : 3.62;
+    return int(version * 100.0 + 0.5);
+}
+
 void Evaluator::settle_version_defaults() {
     m_scene.global.language_version = m_saw_version ? m_language_version : 3.62;
-    // POV compares whole hundredths: 3.7 is 370.
-    const bool before_3_7 = int(m_scene.global.language_version * 100.0 + 0.5) < 370;
+    const bool before_3_7 = effective_language_version() < 370;
     if (!m_saw_assumed_gamma && before_3_7) {
         m_scene.global.gamma_correction = false;
         sg::SourceLocation where;

@@ -315,6 +315,9 @@ class Evaluator {
     std::function<void(sg::Media&)> media_samples(const Value& min, const SourceRange& min_at, const Value& max,
                                                   const SourceRange& max_at);
     void finish_image_map(sg::ImageMap& image, const sg::SourceLocation& at);
+    // POV's EffectiveLanguageVersion now, in whole hundredths as POV
+    // compares it (3.7 is 370): the #version in force, 362 before any.
+    int effective_language_version() const;
     sg::MapType map_type(const Value& v, const SourceRange& where);
     std::function<void(sg::Finish&)> finish_scalar(const std::string& name, bool albedo, const Value& v,
                                                    const SourceRange& where);

@@ -468,6 +468,11 @@ void Evaluator::finish_image_map(sg::ImageMap& image, const sg::SourceLocation& 
             image.format = sg::ImageFormat::Tiff;
     }
     if (image.format == sg::ImageFormat::Exr || image.format == sg::ImageFormat::Hdr) image.srgb = false;
+    // POV-Ray 3.7 decodes an image's colours only in a 3.7 scene: in one
+    // older than 3.7 at this point (gamma modes "none" and "3.6", whatever
+    // its assumed_gamma), a file without a gamma of its own is read as
+    // stored.
+    if (!image.gamma_given && effective_language_version() < 370) image.srgb = false;
 }
 
 // ----------------------------------------------------------------- scene

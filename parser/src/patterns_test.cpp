@@ -462,6 +462,23 @@ TEST(ParserPatterns, MaterialMapListsTexturesAfterItsImage) {
         << alpha.message;
 }
 
+TEST(ParserPatterns, ImageMapColoursAreDecodedOnlyInA37Scene) {
+    // POV-Ray 3.7 reads an image_map's colours as stored while the scene's
+    // #version is below 3.7 (with or without assumed_gamma), and decodes
+    // them from the #version 3.7 on; `gamma` decodes them in any scene.
+    const PlaceholderImage placeholder("image_map_gamma", "colours.png");
+    const std::string map = "plane { y, 0 pigment { image_map { png \"" + placeholder.path + "\" } } }\n";
+    const std::string map_with_gamma =
+        "plane { y, 0 pigment { image_map { png \"" + placeholder.path + "\" gamma 2.2 } } }\n";
+    ParseOptions legacy;
+    legacy.language_version = 3.6;
+    const sg::SceneGraph scene =
+        parse_ok("global_settings { assumed_gamma 1 }\n" + map + map_with_gamma + "#version 3.7;\n" + map, legacy);
+    EXPECT_FALSE(material_of(scene, 0).pigment.image.srgb);
+    EXPECT_TRUE(material_of(scene, 1).pigment.image.srgb);
+    EXPECT_TRUE(material_of(scene, 2).pigment.image.srgb);
+}
+
 TEST(ParserPatterns, ImagePatternReadsItsImageAsStored) {
     const PlaceholderImage placeholder("image_pattern", "mask.png");
     const std::string& image = placeholder.path;
