@@ -13,6 +13,7 @@
 #include "film/file_extension.h"
 #include "film/image_codecs.h"
 #include "film/png_encoder.h"
+#include "film/srgb8.h"
 
 namespace lancer {
 namespace {
@@ -119,7 +120,11 @@ EncodedImage encode_for(const Film& film, const std::string& path, const ImageWr
     // premultiplied: integer formats get the colour divided by alpha.
     const bool raw = encoding == Encoding::LinearFloat || !options.gamma_correction;
     const bool straight = has_alpha && encoding != Encoding::LinearFloat;
-    auto row = [&film, &options, has_alpha, straight, raw, sample_channel, width, channels](int y, float* samples) {
+    // An 8-bit PNG's codes come from a table (film/srgb8.h), the same codes
+    // its encoder would round linear_to_srgb() to.
+    const bool srgb8_table = png && encoding == Encoding::Srgb8 && !raw;
+    auto row = [&film, &options, has_alpha, straight, raw, srgb8_table, sample_channel, width, channels](
+                   int y, float* samples) {
         for (int x = 0; x < width; ++x) {
             const std::size_t index = std::size_t(y) * width + x;
             const float alpha = has_alpha ? glm::clamp(options.alpha[index], 0.0f, 1.0f) : 1.0f;
@@ -130,7 +135,10 @@ EncodedImage encode_for(const Film& film, const std::string& path, const ImageWr
             if (has_alpha && !straight) c *= alpha;
             float* out = samples + std::size_t(x) * channels;
             int channel = 0;
-            for (int k = 0; k < 3; ++k) out[channel++] = raw ? c[k] : linear_to_srgb(c[k]);
+            for (int k = 0; k < 3; ++k)
+                out[channel++] = srgb8_table ? float(linear_to_srgb8(c[k])) / 255.0f
+                                 : raw       ? c[k]
+                                             : linear_to_srgb(c[k]);
             if (has_alpha) out[channel++] = alpha;
             for (const ImageLayer& layer : options.layers)
                 for (std::size_t k = 0; k < layer.channels.size(); ++k)

@@ -60,6 +60,11 @@ bool run_libpng(png_structp png, png_infop info, const EncodeJob& job) {
                  pixels.channels == 4 ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_ABSOLUTE);
+    // libpng's defaults (each row tried with all five filters, zlib level
+    // 6) took 47 ms for a 1280x960 render; the Sub filter alone at level 4
+    // takes 16 ms, for files 0 to 10% larger (noisy renders lose least).
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+    png_set_compression_level(png, 4);
     if (job.text_count > 0) png_set_text(png, info, job.text, job.text_count);
     png_write_info(png, info);
     const unsigned top = pixels.bits == 8 ? 255u : 65535u;

@@ -1,8 +1,10 @@
 // Scale-aware ray origins (pbrt-v4's OffsetRayOrigin idea): a spawned ray
 // starts outside the error box of the hit point, measured along the
 // geometric normal, and one float further; no fixed epsilon anywhere.
+#include <bit>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
 
 #include "lancer/hit.h"
 
@@ -18,6 +20,20 @@ float max_abs(const Vec3& v) {
     return glm::max(std::fabs(v.x), glm::max(std::fabs(v.y), std::fabs(v.z)));
 }
 
+// std::nextafter towards +infinity and -infinity, on the bits: the same
+// floats (zeros and infinities included) without a libm call per axis,
+// which was a tenth of an area-lit render's time.
+float next_float_up(float x) {
+    if (x == kInfinity || x != x) return x;
+    if (x == 0.0f) return std::bit_cast<float>(std::uint32_t(1));  // -0 too
+    const auto bits = std::bit_cast<std::uint32_t>(x);
+    return std::bit_cast<float>(x > 0.0f ? bits + 1 : bits - 1);
+}
+
+float next_float_down(float x) {
+    return -next_float_up(-x);
+}
+
 }  // namespace
 
 Vec3 Hit::offset_origin(const Vec3& direction) const {
@@ -29,9 +45,9 @@ Vec3 Hit::offset_origin(const Vec3& direction) const {
     // Round away from the surface: the sum above may have rounded back.
     for (int axis = 0; axis < 3; ++axis) {
         if (offset[axis] > 0.0f)
-            origin[axis] = std::nextafter(origin[axis], kInfinity);
+            origin[axis] = next_float_up(origin[axis]);
         else if (offset[axis] < 0.0f)
-            origin[axis] = std::nextafter(origin[axis], -kInfinity);
+            origin[axis] = next_float_down(origin[axis]);
     }
     return origin;
 }

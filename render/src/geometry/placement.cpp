@@ -20,12 +20,15 @@ Placement Placement::from(const DMat4& world_from_object) {
     p.world_from_object = world_from_object;
     p.object_from_world = glm::inverse(world_from_object);
     p.normal_to_world = glm::transpose(glm::inverse(linear_part(world_from_object)));
+    p.identity = world_from_object == DMat4(1.0);
     return p;
 }
 
 Vec3 Placement::world_point_error(const DVec3& p_object, const DVec3& p_world) const {
     // Rounding the double result to float (half an ULP, taken as two for
     // safety) plus the double arithmetic of the transform.
+    if (identity)  // the same sums with a = 1 and no translation
+        return Vec3(2.0 * double(FLT_EPSILON) * glm::abs(p_world) + 16.0 * DBL_EPSILON * glm::abs(p_object));
     const DMat3 a = linear_part(world_from_object);
     DVec3 magnitude(0.0);
     for (int row = 0; row < 3; ++row)

@@ -25,12 +25,18 @@ struct Placement {
     DMat4 world_from_object{1.0};
     DMat4 object_from_world{1.0};
     DMat3 normal_to_world{1.0};  // inverse transpose of the linear part
+    // Exactly the identity (an object written in world coordinates, the
+    // common case): the transforms below return their input, as the
+    // products would, without a matrix product per hit.
+    bool identity = true;
 
     static Placement from(const DMat4& world_from_object);
-    DVec3 point_to_world(const DVec3& p) const { return DVec3(world_from_object * glm::dvec4(p, 1.0)); }
-    DVec3 point_to_object(const DVec3& p) const { return DVec3(object_from_world * glm::dvec4(p, 1.0)); }
-    DVec3 vector_to_object(const DVec3& v) const { return DVec3(object_from_world * glm::dvec4(v, 0.0)); }
-    DVec3 normal_to_world_unit(const DVec3& n) const { return glm::normalize(normal_to_world * n); }
+    DVec3 point_to_world(const DVec3& p) const { return identity ? p : DVec3(world_from_object * glm::dvec4(p, 1.0)); }
+    DVec3 point_to_object(const DVec3& p) const { return identity ? p : DVec3(object_from_world * glm::dvec4(p, 1.0)); }
+    DVec3 vector_to_object(const DVec3& v) const {
+        return identity ? v : DVec3(object_from_world * glm::dvec4(v, 0.0));
+    }
+    DVec3 normal_to_world_unit(const DVec3& n) const { return glm::normalize(identity ? n : normal_to_world * n); }
     // Bound on the absolute error of point_to_world(p) rounded to float.
     Vec3 world_point_error(const DVec3& p_object, const DVec3& p_world) const;
     // True if the linear part is a rotation times a uniform scale.

@@ -122,8 +122,9 @@ class PovAreaShadow {
           m_light(light),
           m_area(area),
           m_axes(area_grid_axes(area, glm::dvec3(to_light))),
-          m_colour(light_colour) {
-        State& state = state_of_thread();
+          m_colour(light_colour),
+          m_state(state_of_thread()) {
+        State& state = m_state;
         const std::size_t cells = std::size_t(area.size1) * std::size_t(area.size2);
         if (state.stamp.size() < cells) state.stamp.resize(cells, 0);
         if (state.value.size() < cells) state.value.resize(cells);
@@ -170,7 +171,7 @@ class PovAreaShadow {
     }
 
     Color corner(int u, int v) const {
-        State& state = state_of_thread();
+        State& state = m_state;  // looked up once: a plugin's thread_local costs a call per access
         const std::size_t index = std::size_t(u) * std::size_t(m_area.size2) + std::size_t(v);
         if (state.stamp[index] == state.generation) return state.value[index];
         double ju = u, jv = v;
@@ -197,6 +198,7 @@ class PovAreaShadow {
     const PovAreaLightParameters& m_area;
     AreaGridAxes m_axes;
     Color m_colour;
+    State& m_state;
 };
 
 }  // namespace lancer
