@@ -42,6 +42,20 @@ std::optional<sg::SceneGraph> parse_job_scene(const SceneRequest& request, std::
     return std::move(parsed.scene);
 }
 
+namespace {
+
+void print_advice(const std::vector<RenderAdvice>& advice) {
+    for (const RenderAdvice& item : advice) {
+        Diagnostic warning;
+        warning.severity = Diagnostic::Severity::Warning;
+        warning.location = item.location;
+        warning.message = item.message;
+        print_diagnostic(warning);
+    }
+}
+
+}  // namespace
+
 JobScene compile_job_scene(const std::string& path, sg::SceneGraph graph) {
     JobScene job;
     job.path = path;
@@ -49,6 +63,7 @@ JobScene compile_job_scene(const std::string& path, sg::SceneGraph graph) {
     job.working_gamma = graph.global.assumed_gamma;
     job.gamma_correction = graph.global.gamma_correction;
     job.scene = compile_scene(std::move(graph));
+    print_advice(advice_before_render(*job.scene));
     return job;
 }
 
@@ -90,13 +105,7 @@ void warn_about_scene_for(const sg::SceneGraph& scene, const std::string& integr
 }
 
 void warn_after_render(const RenderScene& scene) {
-    for (const RenderAdvice& advice : advice_after_render(scene)) {
-        Diagnostic warning;
-        warning.severity = Diagnostic::Severity::Warning;
-        warning.location = advice.location;
-        warning.message = advice.message;
-        print_diagnostic(warning);
-    }
+    print_advice(advice_after_render(scene));
 }
 
 JobIntegrator load_job_integrator(const sg::RenderSettings& settings, const std::string& name,

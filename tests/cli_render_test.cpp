@@ -171,6 +171,19 @@ TEST_F(CliRender, PathSaysItIgnoresFogAndRainbows) {
     EXPECT_EQ(whitted.output.find("ignores"), std::string::npos) << whitted.output;
 }
 
+// A camera inside a solid object sees no fog (POV-Ray's rule, which it
+// applies silently): lancer says which object, where it is written.
+TEST_F(CliRender, ACameraInsideASolidObjectIsToldItSeesNoFog) {
+    std::ofstream(m_scene, std::ios::app) << "fog { distance 3 color rgb 0.5 }\n"
+                                             "box { -50, 50 pigment { rgbt 1 } }\n";
+    const CommandResult solid = render("-i whitted -q");
+    ASSERT_EQ(solid.exit_code, 0) << solid.output;
+    EXPECT_CONTAINS(solid.output, "ball.pov:5:1: warning: the camera is inside this object, which is not hollow");
+    std::ofstream(m_scene, std::ios::app) << "sphere { 0, 100 hollow }\n";  // hollow: no warning of its own
+    const CommandResult both = render("-i whitted -q");
+    EXPECT_EQ(both.output.find("ball.pov:6:1"), std::string::npos) << both.output;
+}
+
 TEST_F(CliRender, ParametersAreCheckedAgainstThePlugin) {
     CommandResult result = render("-i raycast -p no_such_parameter=1");
     EXPECT_EQ(result.exit_code, 1) << result.output;

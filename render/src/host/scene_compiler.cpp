@@ -20,4 +20,21 @@ std::vector<RenderAdvice> advice_after_render(const RenderScene& scene) {
     return advice;
 }
 
+std::vector<RenderAdvice> advice_before_render(const RenderScene& scene) {
+    std::vector<RenderAdvice> advice;
+    const auto* compiled = dynamic_cast<const embree::EmbreeScene*>(&scene);
+    if (!compiled || !(scene.has_media() || scene.fog() || scene.rainbows())) return advice;
+    const InteriorStack& inside = scene.camera_interiors();
+    for (int i = 0; i < inside.size; ++i) {
+        const InteriorStack::Entry& entry = inside.entries[std::size_t(i)];
+        if (entry.material->parameters().hollow) continue;
+        advice.push_back({compiled->data().instances[entry.object_id].location,
+                          "the camera is inside this object, which is not hollow: as in POV-Ray, a ray inside a solid "
+                          "object shows no fog, rainbow or media, so the camera sees none of them (make the object "
+                          "hollow to see them)"});
+        break;
+    }
+    return advice;
+}
+
 }  // namespace lancer

@@ -28,6 +28,10 @@ struct RenderAdvice {
     std::string message;
 };
 std::vector<RenderAdvice> advice_after_render(const RenderScene& scene);
+// What a compiled scene shows that its text does not: a camera inside a
+// solid object in a scene with fog, rainbows or media (POV-Ray draws none
+// of them from there, silently; lancer says so).
+std::vector<RenderAdvice> advice_before_render(const RenderScene& scene);
 
 // What POV-Ray's functions need of the renderer (noise, patterns,
 // pigments) while a scene is parsed: ParseOptions::function_natives.
