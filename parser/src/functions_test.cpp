@@ -102,6 +102,13 @@ TEST(ParserFunctions, SumAndProd) {
                               "#declare R = F(0, 0, 0);",
                               "R"),
                      1.875);
+    // A function of more parameters than the evaluator keeps on its stack
+    // for a term's arguments: 20 here, the sum reading the last.
+    std::string many = "#declare F = function(a0";
+    for (int i = 1; i < 20; ++i) many += ", a" + std::to_string(i);
+    many += ") { sum(i, 1, 4, i * a19) }\n#declare R = F(0";
+    for (int i = 1; i < 20; ++i) many += i == 19 ? ", 3" : ", 0";
+    EXPECT_DOUBLE_EQ(declared(many + ");", "R"), 30.0);
     const Diagnostic variable = test::first_error("#declare F = function { sum(x, 1, 3, x) }");
     EXPECT_NE(variable.message.find("loop variable"), std::string::npos) << variable.message;
     const Diagnostic three = test::first_error("#declare F = function { prod(i, 1, 3) }");

@@ -189,7 +189,17 @@ inline double evaluate_function(const Function& f, const double* arguments, int 
         case Op::Product: {
             top -= 2;
             const double first = stack[top], last = stack[top + 1];
-            std::vector<double> values(std::size_t(in.count) + 1, 0.0);
+            // The term's arguments: the function's own, then the index. On
+            // the stack like the evaluator's own, as a sum is evaluated for
+            // every point of a pattern or isosurface.
+            const std::size_t count = std::size_t(in.count) + 1;
+            double local_values[16];
+            std::vector<double> heap_values;
+            double* values = local_values;
+            if (count > std::size(local_values)) {
+                heap_values.resize(count);
+                values = heap_values.data();
+            }
             for (int i = 0; i < in.count; ++i) values[std::size_t(i)] = argument(i);
             const bool sum = in.op == Op::Sum;
             double total = sum ? 0.0 : 1.0;
@@ -197,8 +207,8 @@ inline double evaluate_function(const Function& f, const double* arguments, int 
             // a pattern would otherwise never end.
             long steps = 0;
             for (double i = first; i <= last && steps < function_detail::kMostSequenceSteps; i += 1.0, ++steps) {
-                values.back() = i;
-                const double term = evaluate_function(*f.callees[in.index], values.data(), in.count + 1, natives, 0);
+                values[count - 1] = i;
+                const double term = evaluate_function(*f.callees[in.index], values, in.count + 1, natives, 0);
                 total = sum ? total + term : total * term;
             }
             stack[top++] = total;
