@@ -105,7 +105,7 @@ class IsosurfaceShape final : public Shape {
             return g;
         }
         if (face == kSphereWall) {
-            g.normal = (p - m_p.sphere_center) / m_p.sphere_radius;
+            g.normal = (p - m_p.container.sphere_center) / m_p.container.sphere_radius;
             return g;
         }
         // POV's normal: forward differences one accuracy step long.
@@ -119,24 +119,18 @@ class IsosurfaceShape final : public Shape {
     }
 
     bool inside(const DVec3& p) const override {
-        if (m_p.sphere_container) {
-            const DVec3 r = p - m_p.sphere_center;
-            if (glm::dot(r, r) > m_p.sphere_radius * m_p.sphere_radius) return false;
+        if (m_p.container.sphere) {
+            const DVec3 r = p - m_p.container.sphere_center;
+            if (glm::dot(r, r) > m_p.container.sphere_radius * m_p.container.sphere_radius) return false;
         } else {
             for (int axis = 0; axis < 3; ++axis)
-                if (p[axis] < m_p.box_lower[axis] || p[axis] > m_p.box_upper[axis]) return false;
+                if (p[axis] < m_p.container.box_lower[axis] || p[axis] > m_p.container.box_upper[axis]) return false;
         }
         return !(function_at(p) - m_p.threshold > 0.0);
     }
 
     bool bounds(DVec3& lower, DVec3& upper) const override {
-        if (m_p.sphere_container) {
-            lower = m_p.sphere_center - DVec3(m_p.sphere_radius);
-            upper = m_p.sphere_center + DVec3(m_p.sphere_radius);
-        } else {
-            lower = m_p.box_lower;
-            upper = m_p.box_upper;
-        }
+        m_p.container.bounds(lower, upper);
         return true;
     }
 
@@ -147,15 +141,16 @@ class IsosurfaceShape final : public Shape {
     }
 
     bool container_chord(const DVec3& o, const DVec3& d, Chord& chord) const {
-        if (m_p.sphere_container) {
+        if (m_p.container.sphere) {
             // |o + t d - c|^2 = r^2, solved from the point nearest the centre
             // so far origins keep their digits.
             const double dd = glm::dot(d, d);
             if (!(dd > 0.0)) return false;
-            const DVec3 oc = o - m_p.sphere_center;
+            const DVec3 oc = o - m_p.container.sphere_center;
             const double along = -glm::dot(oc, d) / dd;
             const DVec3 closest = oc + along * d;
-            const double half2 = (m_p.sphere_radius * m_p.sphere_radius - glm::dot(closest, closest)) / dd;
+            const double half2 =
+                (m_p.container.sphere_radius * m_p.container.sphere_radius - glm::dot(closest, closest)) / dd;
             if (!(half2 > 0.0)) return false;
             const double half = std::sqrt(half2);
             chord.enter = along - half;
@@ -165,7 +160,7 @@ class IsosurfaceShape final : public Shape {
         }
         double enter = -HUGE_VAL, exit = HUGE_VAL;
         for (int axis = 0; axis < 3; ++axis) {
-            const double lower = m_p.box_lower[axis], upper = m_p.box_upper[axis];
+            const double lower = m_p.container.box_lower[axis], upper = m_p.container.box_upper[axis];
             if (d[axis] == 0.0) {
                 if (o[axis] < lower || o[axis] > upper) return false;
                 continue;
@@ -252,15 +247,12 @@ std::shared_ptr<const Shape> make_isosurface_shape(const IsosurfaceParameters& p
                                                    std::shared_ptr<IsosurfaceGradientRecord> gradients) {
     const IsosurfaceParameters& p = parameters;
     if (!p.function) return nullptr;
-    if (!finite(p.box_lower) || !finite(p.box_upper) || !finite(p.sphere_center) || !std::isfinite(p.sphere_radius) ||
-        !std::isfinite(p.threshold) || !(p.accuracy > 0.0) || !std::isfinite(p.accuracy) || !(p.max_gradient > 0.0) ||
-        !std::isfinite(p.max_gradient) || !finite(p.evaluate_parameters))
+    if (!p.container.usable() || !std::isfinite(p.threshold) || !(p.accuracy > 0.0) || !std::isfinite(p.accuracy) ||
+        !(p.max_gradient > 0.0) || !std::isfinite(p.max_gradient) || !finite(p.evaluate_parameters))
         return nullptr;
-    if (p.sphere_container && !(p.sphere_radius > 0.0)) return nullptr;
     IsosurfaceParameters kept = p;
     kept.max_trace = std::clamp(p.max_trace, 1, 10);
-    kept.box_lower = glm::min(p.box_lower, p.box_upper);
-    kept.box_upper = glm::max(p.box_lower, p.box_upper);
+    kept.container = p.container.ordered();
     return std::make_shared<IsosurfaceShape>(kept, std::move(gradients));
 }
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "geometry/contained_by.h"
 #include "geometry/shape.h"
 #include "lancer/function.h"
 
@@ -18,10 +19,7 @@ struct IsosurfaceParameters {
     // What the function asks of the renderer (noise, patterns); null when
     // it asks for nothing.
     std::shared_ptr<const sg::FunctionNatives> natives;
-    bool sphere_container = false;
-    DVec3 box_lower{-1.0}, box_upper{1.0};
-    DVec3 sphere_center{0.0};
-    double sphere_radius = 1.0;
+    ContainedBy container;
     double threshold = 0.0;
     double accuracy = 0.001;
     double max_gradient = 1.1;

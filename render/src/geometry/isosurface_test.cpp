@@ -59,8 +59,8 @@ std::shared_ptr<sg::Function> nan_function() {
 IsosurfaceParameters in_box(std::shared_ptr<sg::Function> f, double half = 2.0) {
     IsosurfaceParameters p;
     p.function = std::move(f);
-    p.box_lower = DVec3(-half);
-    p.box_upper = DVec3(half);
+    p.container.box_lower = DVec3(-half);
+    p.container.box_upper = DVec3(half);
     p.max_gradient = 4.0;
     return p;
 }
@@ -147,9 +147,9 @@ TEST(Isosurface, OpenContainerHasNoWalls) {
 TEST(Isosurface, SphereContainer) {
     IsosurfaceParameters p;
     p.function = below_function(0.0);
-    p.sphere_container = true;
-    p.sphere_center = DVec3(0.0, 0.0, 0.0);
-    p.sphere_radius = 1.0;
+    p.container.sphere = true;
+    p.container.sphere_center = DVec3(0.0, 0.0, 0.0);
+    p.container.sphere_radius = 1.0;
     const auto shape = make_isosurface_shape(p);
     // A ray at y = -0.5 meets the container's lower cap first.
     const auto hits = crossings_of(*shape, DVec3(-5.0, -0.5, 0.0), DVec3(1.0, 0.0, 0.0));
@@ -236,7 +236,7 @@ TEST(Isosurface, RefusesWhatCannotBeSearched) {
     p.accuracy = 0.0;
     EXPECT_FALSE(make_isosurface_shape(p));
     p.accuracy = 1e-3;
-    p.box_upper = DVec3(INFINITY);
+    p.container.box_upper = DVec3(INFINITY);
     EXPECT_FALSE(make_isosurface_shape(p));
 }
 

@@ -165,13 +165,7 @@ class ParametricShape final : public Shape {
     bool inside(const DVec3&) const override { return false; }
 
     bool bounds(DVec3& lower, DVec3& upper) const override {
-        if (m_p.sphere_container) {
-            lower = m_p.sphere_center - DVec3(m_p.sphere_radius);
-            upper = m_p.sphere_center + DVec3(m_p.sphere_radius);
-        } else {
-            lower = m_p.box_lower;
-            upper = m_p.box_upper;
-        }
+        m_p.container.bounds(lower, upper);
         return true;
     }
 
@@ -255,14 +249,14 @@ class ParametricShape final : public Shape {
     // sphere's from where the line enters it (behind the origin when the
     // origin is inside).
     bool container_chord(const DVec3& o, const DVec3& d, double& enter, double& exit) const {
-        if (m_p.sphere_container) {
+        if (m_p.container.sphere) {
             const double length = glm::length(d);
             if (!(length > 0.0)) return false;
             const DVec3 unit = d / length;
-            const DVec3 to_center = m_p.sphere_center - o;
+            const DVec3 to_center = m_p.container.sphere_center - o;
             const double distance2 = glm::dot(to_center, to_center);
             const double closest = glm::dot(to_center, unit);
-            const double radius2 = m_p.sphere_radius * m_p.sphere_radius;
+            const double radius2 = m_p.container.sphere_radius * m_p.container.sphere_radius;
             if (distance2 >= radius2 && closest < kParallel) return false;
             const double half2 = radius2 - distance2 + closest * closest;
             if (!(half2 > kParallel)) return false;
@@ -274,7 +268,7 @@ class ParametricShape final : public Shape {
         enter = 0.0;
         exit = HUGE_VAL;
         for (int axis = 0; axis < 3; ++axis) {
-            const double lower = m_p.box_lower[axis], upper = m_p.box_upper[axis];
+            const double lower = m_p.container.box_lower[axis], upper = m_p.container.box_upper[axis];
             if (std::fabs(d[axis]) < kParallel) {
                 if (o[axis] < lower || o[axis] > upper) return false;
                 continue;
@@ -292,25 +286,18 @@ class ParametricShape final : public Shape {
     std::array<std::vector<Range>, 3> m_precomputed;
 };
 
-bool finite(const DVec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 }  // namespace
 
 std::shared_ptr<const Shape> make_parametric_shape(const ParametricParameters& parameters) {
     const ParametricParameters& p = parameters;
     for (const auto& function : p.functions)
         if (!function) return nullptr;
-    if (!finite(p.box_lower) || !finite(p.box_upper) || !finite(p.sphere_center) || !std::isfinite(p.sphere_radius) ||
-        !(p.accuracy > 0.0) || !std::isfinite(p.accuracy) || !(p.max_gradient > 0.0) ||
+    if (!p.container.usable() || !(p.accuracy > 0.0) || !std::isfinite(p.accuracy) || !(p.max_gradient > 0.0) ||
         !std::isfinite(p.max_gradient) || !std::isfinite(p.uv_min.x + p.uv_min.y + p.uv_max.x + p.uv_max.y))
         return nullptr;
-    if (p.sphere_container && !(p.sphere_radius > 0.0)) return nullptr;
     if (p.precompute_axes != 0 && (p.precompute_depth < 1 || p.precompute_depth > 20)) return nullptr;
     ParametricParameters kept = p;
-    kept.box_lower = glm::min(p.box_lower, p.box_upper);
-    kept.box_upper = glm::max(p.box_lower, p.box_upper);
+    kept.container = p.container.ordered();
     kept.uv_min = glm::min(p.uv_min, p.uv_max);
     kept.uv_max = glm::max(p.uv_min, p.uv_max);
     return std::make_shared<ParametricShape>(kept);

@@ -6,6 +6,7 @@
 #include <array>
 #include <memory>
 
+#include "geometry/contained_by.h"
 #include "geometry/shape.h"
 #include "lancer/function.h"
 
@@ -17,10 +18,7 @@ struct ParametricParameters {
     // it asks for nothing.
     std::array<std::shared_ptr<const sg::FunctionNatives>, 3> natives;
     glm::dvec2 uv_min{0.0}, uv_max{1.0};
-    bool sphere_container = false;
-    DVec3 box_lower{-1.0}, box_upper{1.0};
-    DVec3 sphere_center{0.0};
-    double sphere_radius = 1.0;
+    ContainedBy container;
     double accuracy = 0.001;
     double max_gradient = 1.0;
     int precompute_depth = 0;  // 1..20 with precompute_axes, else 0

@@ -34,8 +34,8 @@ ParametricParameters unit_sphere() {
         function_of({{Op::Parameter, 1}, {Op::Math1, M::Sin}, {Op::Parameter, 0}, {Op::Math1, M::Sin}, {Op::Multiply}});
     p.uv_min = {0.0, 0.0};
     p.uv_max = {2.0 * M_PI, M_PI};
-    p.sphere_container = true;
-    p.sphere_radius = 1.05;
+    p.container.sphere = true;
+    p.container.sphere_radius = 1.05;
     p.max_gradient = 1.2;
     p.accuracy = 0.001;
     return p;
@@ -96,9 +96,9 @@ TEST(Parametric, RaysAlongAnAxisAndMisses) {
 // y = 0.5 a ray down the axis meets the sphere's bottom, not its top.
 TEST(Parametric, TheContainerCutsTheSurface) {
     ParametricParameters p = unit_sphere();
-    p.sphere_container = false;
-    p.box_lower = DVec3(-1.1, -1.1, -1.1);
-    p.box_upper = DVec3(1.1, 0.5, 1.1);
+    p.container.sphere = false;
+    p.container.box_lower = DVec3(-1.1, -1.1, -1.1);
+    p.container.box_upper = DVec3(1.1, 0.5, 1.1);
     const auto shape = make_parametric_shape(p);
     ASSERT_TRUE(shape);
     ShapeCrossing hit;

@@ -624,11 +624,7 @@ class Builder {
         parameters.function = iso.function;
         if (!iso.function) throw SceneError(at, "isosurface: it has no function");
         parameters.natives = m_data->texture_factory->function_natives(*iso.function);
-        parameters.sphere_container = iso.container == sg::Isosurface::Container::Sphere;
-        parameters.box_lower = iso.box_corner1;
-        parameters.box_upper = iso.box_corner2;
-        parameters.sphere_center = iso.sphere_center;
-        parameters.sphere_radius = iso.sphere_radius;
+        parameters.container = ContainedBy::from(iso);
         parameters.threshold = iso.threshold;
         parameters.accuracy = iso.accuracy;
         parameters.max_gradient = iso.max_gradient;
@@ -658,11 +654,7 @@ class Builder {
         }
         parameters.uv_min = parametric.uv_min;
         parameters.uv_max = parametric.uv_max;
-        parameters.sphere_container = parametric.container == sg::FunctionContainer::Container::Sphere;
-        parameters.box_lower = parametric.box_corner1;
-        parameters.box_upper = parametric.box_corner2;
-        parameters.sphere_center = parametric.sphere_center;
-        parameters.sphere_radius = parametric.sphere_radius;
+        parameters.container = ContainedBy::from(parametric);
         parameters.accuracy = parametric.accuracy;
         parameters.max_gradient = parametric.max_gradient;
         parameters.precompute_depth = parametric.precompute_depth;
