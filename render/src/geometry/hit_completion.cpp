@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 
 #include "geometry/embree_scene.h"
 
@@ -267,7 +268,15 @@ bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit)
     // Unbounded shapes are outside the BVH: test them against the nearest so far.
     std::uint32_t unbounded_hit = kInvalidId, unbounded_leaf = 0;
     int unbounded_face = 0;
-    double unbounded_t = double(found.tfar);
+    // Embree reports its hit's distance in float; an unbounded shape at the
+    // same float distance wins the tie. A transparent box resting on a
+    // plane meets the plane exactly where its bottom is: without this the
+    // ray inside it found the floor or the bottom face at random, by the
+    // rounding of the box's distance, and half the floor under the box
+    // showed what lies below (POV-Ray shows the floor).
+    double unbounded_t = found.geometry == kInvalidId
+                             ? double(found.tfar)
+                             : double(std::nextafter(found.tfar, std::numeric_limits<float>::infinity()));
     for (std::uint32_t index : m_unbounded) {
         const Instance& instance = m_data->instances[index];
         DVec3 o, d;
