@@ -212,6 +212,15 @@ void Evaluator::ignored(const sg::SourceLocation& where, const std::string& what
     warning(where, what + " is accepted but ignored by lancer");
 }
 
+void Evaluator::dispersion_samples(const sg::SourceLocation& keyword, const Value& count, const SourceRange& where) {
+    const double n = to_float(count, where, "a number of dispersion samples");
+    if (count.kind == Value::Kind::Float && !(int(std::clamp(n, -1e9, 1e9)) >= 2)) {
+        error(where.begin, "dispersion_samples must be at least 2, got " + std::to_string(n) + " (as in POV-Ray)");
+        return;
+    }
+    ignored(keyword, "dispersion_samples");
+}
+
 void Evaluator::unknown_identifier(const std::string& name, const sg::SourceLocation& where,
                                    const std::string& expected) {
     std::string near = suggestion(name);

@@ -102,6 +102,9 @@ class Evaluator {
     bool add_diagnostic(Diagnostic::Severity severity, const sg::SourceLocation& where, const std::string& message);
     static constexpr int kMaxWarnings = 200;
     void ignored(const sg::SourceLocation& where, const std::string& what);
+    // interior { dispersion_samples N }: checked as POV-Ray checks it (at
+    // least 2), then ignored with dispersion itself.
+    void dispersion_samples(const sg::SourceLocation& keyword, const Value& count, const SourceRange& where);
     void unknown_identifier(const std::string& name, const sg::SourceLocation& where, const std::string& expected);
     void syntax_error(const SourceRange& where, const std::string& message);
     std::string suggestion(const std::string& name) const;

@@ -85,7 +85,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        SPECULAR "specular" ROUGHNESS "roughness" PHONG "phong" PHONG_SIZE "phong_size"
        METALLIC "metallic" REFLECTION "reflection" FRESNEL "fresnel" FALLOFF "falloff"
        EXPONENT "exponent" ALBEDO "albedo" CONSERVE_ENERGY "conserve_energy" CRAND "crand"
-       IOR "ior" CAUSTICS "caustics" DISPERSION "dispersion"
+       IOR "ior" CAUSTICS "caustics" DISPERSION "dispersion" DISPERSION_SAMPLES "dispersion_samples"
        VERTEX_VECTORS "vertex_vectors" NORMAL_VECTORS "normal_vectors" UV_VECTORS "uv_vectors"
        FACE_INDICES "face_indices" NORMAL_INDICES "normal_indices" UV_INDICES "uv_indices"
        TEXTURE_LIST "texture_list"
@@ -1408,6 +1408,7 @@ interior_items
   | interior_items "caustics" expr { $$ = std::move($1); double v = ev.to_float($3, @3, "a caustics value");
                                      $$.push_back([v](sg::Interior& i) { i.caustics = v; }); }
   | interior_items "dispersion" expr { $$ = std::move($1); ev.ignored(LOC(@2), "dispersion"); }
+  | interior_items "dispersion_samples" expr { $$ = std::move($1); ev.dispersion_samples(LOC(@2), $3, @3); }
   | interior_items "fade_distance" expr { $$ = std::move($1); double v = ev.to_float($3, @3, "a fade_distance");
                                           $$.push_back([v](sg::Interior& i) { i.fade_distance = v; }); }
   | interior_items "fade_power" expr { $$ = std::move($1); double v = ev.to_float($3, @3, "a fade_power");

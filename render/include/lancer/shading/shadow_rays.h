@@ -99,6 +99,11 @@ inline Color transmittance_to(const RenderScene& scene, const Hit& from, const V
         // light, as POV's shadow rays see interior media (not the
         // atmosphere: POV's media_attenuation is off by default).
         if (scene.has_media()) throughput *= interior_media_transmittance(ray, blocker);
+        // And its interior fade, by the length of that stretch (POV's
+        // ComputeShadowTexture, which fades only with a fade_power).
+        if (!blocker.is_front_face(-ray.direction) && blocker.material->parameters().fade_power > 0.0f)
+            throughput *= blocker.material->interior_attenuation(blocker.t * glm::length(ray.direction));
+        if (lancer::is_black(throughput)) return throughput;
         ray = blocker.spawn_ray_to(target);
     }
     return Color(0.0f);
