@@ -314,6 +314,19 @@ TEST(ParserMaterials, NegativeSurfaceColoursWarn) {
               0);
 }
 
+// POV-Ray's dispersion and dispersion_samples: read, checked as POV-Ray
+// checks them (at least 2 samples), and ignored with a warning at each.
+TEST(ParserMaterials, DispersionSamplesAreCheckedThenIgnored) {
+    const ParseResult read =
+        test::parse_snippet("sphere { 0, 1 interior { ior 1.3 dispersion 1.05 dispersion_samples 7 } }");
+    ASSERT_TRUE(read.ok()) << test::all_diagnostics(read);
+    EXPECT_EQ(test::count_warnings(read), 2) << test::all_diagnostics(read);
+    EXPECT_TRUE(test::contains(test::all_diagnostics(read), "dispersion_samples is accepted but ignored"));
+    const Diagnostic one = test::first_error("sphere { 0, 1 interior { dispersion_samples 1 } }");
+    EXPECT_TRUE(test::contains(one.message, "dispersion_samples must be at least 2")) << one.message;
+    EXPECT_EQ(one.location.column, 45);
+}
+
 TEST(ParserMaterials, TextureFinishDefaultsAndValues) {
     auto scene = parse_ok(R"(sphere { 0, 1 texture {
         pigment { color rgbft <0.1, 0.2, 0.3, 0.4, 0.5> }
