@@ -403,6 +403,9 @@ TEST(ParserPatterns, BumpMapTakesItsOwnItemsInsideTheBlock) {
     EXPECT_TRUE(inside->bump_map_use_color);
     EXPECT_TRUE(inside->bump_map.once);
     EXPECT_DOUBLE_EQ(material_of(scene, 1).normal->bump_size, 3.0);  // the amount after the block wins
+    EXPECT_TRUE(material_of(scene, 1).normal->bump_map_use_color);   // POV-Ray's default: the colour's grey
+    EXPECT_FALSE(material_of(parse_ok("sphere { 0, 1 normal { bump_map { png \"" + image + "\" use_index } } }"), 0)
+                     .normal->bump_map_use_color);
     const std::string before = "sphere { 0, 1 pigment { image_map { png \"" + image + "\" ";
     const Diagnostic in_image_map = first_error(before + "bump_size 2 } } }");
     EXPECT_NE(in_image_map.message.find("belong in a bump_map"), std::string::npos);

@@ -331,7 +331,9 @@ struct Normal {
     std::vector<NormalMapEntry> normal_map;  // also Average's list
     std::vector<NormalRef> block_normals;
     ImageMap bump_map;  // BumpMap
-    bool bump_map_use_color = false;
+    // POV-Ray 3.7's default, measured against its renders: the grey of the
+    // colour; `use_index` reads a colour-mapped file's palette indices.
+    bool bump_map_use_color = true;
     SourceLocation location;
 };
 

@@ -165,14 +165,14 @@ Texel ImageSampler::texel(long long column, long long row) const {
 
 Texel ImageSampler::at(const glm::dvec2& uv) const {
     // Row 0 is the image's top; v runs up.
-    const double s = uv.x, t = 1.0 - uv.y;
+    const glm::dvec2 position = pixel_position(uv, m_width, m_height);
     Texel result;
     if (m_map.interpolate == 0) {
-        result = texel((long long)std::floor(s * m_width), (long long)std::floor(t * m_height));
+        result = texel((long long)std::floor(position.x), (long long)std::floor(position.y));
     } else {
         // POV decodes the texels before it blends them: the four nearest
         // texels' decoded values (texel centres at (i + 0.5) / width).
-        const double x = s * m_width - 0.5, y = t * m_height - 0.5;
+        const double x = position.x - 0.5, y = position.y - 0.5;
         const double left = std::floor(x), top = std::floor(y);
         const float fx = float(x - left), fy = float(y - top);
         const long long column = (long long)left, row = (long long)top;
@@ -184,20 +184,21 @@ Texel ImageSampler::at(const glm::dvec2& uv) const {
         };
         result = {blend(&Texel::rgb), blend(&Texel::alpha)};
     }
-    if (m_palette) add_palette_transparency(result, s, t);
+    if (m_palette) add_palette_transparency(result, uv);
     return result;
 }
 
 // The entries' filter and transmit, at the texels the colour came from
 // and blended with the same weights.
-void ImageSampler::add_palette_transparency(Texel& texel, double s, double t) const {
+void ImageSampler::add_palette_transparency(Texel& texel, const glm::dvec2& uv) const {
     const PaletteTransparency& palette = *m_palette;
     auto entry = [&](double x, double y) {
         const glm::ivec2 at = wrap((long long)std::floor(x), (long long)std::floor(y), palette.width, palette.height);
         return palette.indices[std::size_t(at.y) * std::size_t(palette.width) + std::size_t(at.x)];
     };
     texel.from_palette = true;
-    const double x = s * palette.width, y = t * palette.height;
+    const glm::dvec2 position = pixel_position(uv, palette.width, palette.height);
+    const double x = position.x, y = position.y;
     if (m_map.interpolate == 0) {
         const unsigned char index = entry(x, y);
         texel.filter = palette.filter[index];

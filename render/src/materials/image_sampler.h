@@ -51,6 +51,17 @@ class ImageSampler {
     float filter_all() const { return m_filter_all; }
     float transmit_all() const { return m_transmit_all; }
 
+    // Where (u, v) falls on an image columns x rows wide, in pixels from
+    // its top left corner, as POV-Ray's map_pos puts it: nudged right and
+    // up, so a point on a pixel's edge (the faces of a unit box, at u or
+    // v = 0 and 1) takes the pixel POV-Ray takes. POV nudges by 1e-10 of a
+    // pixel, working in double; lancer's hit points are floats, a few 1e-6
+    // of a pixel off the face, so the nudge here is 1e-4 of a pixel.
+    static glm::dvec2 pixel_position(const glm::dvec2& uv, int columns, int rows) {
+        constexpr double kPovEpsilon = 1e-4;
+        return {uv.x * columns + kPovEpsilon, (1.0 - uv.y) * rows - kPovEpsilon};
+    }
+
     int width() const { return m_width; }
     int height() const { return m_height; }
     bool has_alpha() const { return m_channels == 2 || m_channels == 4; }
@@ -61,7 +72,7 @@ class ImageSampler {
     // of a `once` image, else repeated.
     glm::ivec2 wrap(long long column, long long row, int columns, int rows) const;
     Texel texel(long long column, long long row) const;  // wrapped
-    void add_palette_transparency(Texel& texel, double s, double t) const;
+    void add_palette_transparency(Texel& texel, const glm::dvec2& uv) const;
 
     std::shared_ptr<const ImageTexels> m_texels;
     sg::ImageMap m_map;

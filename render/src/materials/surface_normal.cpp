@@ -14,11 +14,14 @@
 // so a pattern's scale does not change how deep its bumps look.
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <stdexcept>
 
 #include "lancer/scene_error.h"
 #include "materials/average_weights.h"
 #include "materials/blend_map.h"
 #include "materials/image_sampler.h"
+#include "materials/palette_image.h"
 #include "materials/pattern.h"
 #include "materials/pattern_space.h"
 #include "materials/point_pigment.h"
@@ -156,16 +159,29 @@ class AverageNormalNode final : public NormalNode {
     std::vector<std::unique_ptr<NormalNode>> m_normals;
 };
 
-// POV's bump_map: the image is a height field (its grey times bump_size)
-// over the pattern's x-y plane. The surface through the heights at the
-// point's pixel and at the two pixels diagonally below it tilts the normal,
-// in a frame whose x axis is horizontal (normal x world y).
+// POV's bump_map: the image is a height field (its grey times bump_size;
+// with use_index, a colour-mapped file's palette index times bump_size, as
+// POV-Ray reads it) over the pattern's x-y plane. The
+// surface through the heights at the point's pixel and at the two pixels
+// diagonally below it tilts the normal, in a frame whose x axis is
+// horizontal (normal x world y).
 class BumpMapNode final : public NormalNode {
   public:
     BumpMapNode(const sg::Normal& normal, const MaterialBuild& build)
         : m_warps(normal.pattern, build.generator),
           m_image(open_image(normal.bump_map, build)),
-          m_amount(normal.bump_size) {}
+          m_amount(normal.bump_size),
+          m_interpolate(normal.bump_map.interpolate != 0),
+          m_once(normal.bump_map.once) {
+        if (!normal.bump_map_use_color) {
+            try {
+                m_indices = read_palette_image(normal.bump_map.path);
+            } catch (const std::runtime_error& error) {
+                throw SceneError(normal.bump_map.location,
+                                 "cannot read image '" + normal.bump_map.path + "': " + error.what());
+            }
+        }
+    }
 
     glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point) const override {
         const std::optional<glm::dvec2> uv = m_image.project(m_warps.pattern_point(point));
@@ -194,11 +210,43 @@ class BumpMapNode final : public NormalNode {
     }
 
   private:
-    double height(const glm::dvec2& uv) const { return m_amount * pov_greyscale(m_image.at(uv).rgb); }
+    double height(const glm::dvec2& uv) const {
+        if (m_indices) return m_amount * palette_index_at(uv);
+        return m_amount * pov_greyscale(m_image.at(uv).rgb);
+    }
+
+    // The palette index at (u, v) as POV's image_colour_at gives it: the
+    // pixel's, or the four nearest pixels' blended with the colours'
+    // weights and truncated.
+    double palette_index_at(const glm::dvec2& uv) const {
+        const PaletteImage& image = *m_indices;
+        const auto index = [&](double column, double row) {
+            long long x = (long long)std::floor(column), y = (long long)std::floor(row);
+            if (m_once) {
+                x = std::clamp<long long>(x, 0, image.width - 1);
+                y = std::clamp<long long>(y, 0, image.height - 1);
+            } else {
+                x = ((x % image.width) + image.width) % image.width;
+                y = ((y % image.height) + image.height) % image.height;
+            }
+            return double(image.indices[std::size_t(y) * std::size_t(image.width) + std::size_t(x)]);
+        };
+        const glm::dvec2 position = ImageSampler::pixel_position(uv, image.width, image.height);
+        const double x = position.x, y = position.y;
+        if (!m_interpolate) return index(x, y);
+        const double left = std::floor(x - 0.5), top = std::floor(y - 0.5);
+        const double fx = x - 0.5 - left, fy = y - 0.5 - top;
+        const double blended = (1.0 - fy) * ((1.0 - fx) * index(left, top) + fx * index(left + 1.0, top)) +
+                               fy * ((1.0 - fx) * index(left, top + 1.0) + fx * index(left + 1.0, top + 1.0));
+        return std::trunc(blended);
+    }
 
     CompiledPattern m_warps;  // the normal's transforms and warps
     ImageSampler m_image;
     double m_amount;
+    bool m_interpolate;
+    bool m_once;
+    std::optional<PaletteImage> m_indices;  // a colour-mapped file read by its indices
 };
 
 std::unique_ptr<NormalNode> make_node(const sg::Normal& normal, const MaterialBuild& build) {
