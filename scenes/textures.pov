@@ -13,8 +13,11 @@ light_source { <-3, 8, -6> color rgb 1 }
 
 #declare Grid = pigment { uv_mapping image_map { png "assets/uv_grid.png" interpolate 2 } }
 
-// The plane's (u,v) are its x and z: one grid tile per 4 units.
-plane { y, 0 texture { pigment { Grid scale 4 } finish { ambient 0.05 } } }
+// The floor: the same image laid flat (a planar image_map turned onto the
+// x-z plane), one grid tile per 4 units. (POV-Ray defines no (u, v) for a
+// plane: uv_mapping would read the hit's x and y, a single row here.)
+plane { y, 0 texture { pigment { image_map { png "assets/uv_grid.png" interpolate 2 } rotate x * 90 scale 4 }
+                       finish { ambient 0.05 } } }
 sphere { <-2.2, 1, 0.5>, 1 texture { pigment { Grid } finish { ambient 0.05 } } }
 // The box maps POV's unfolded cube: each face shows its own part of the grid.
 box { <-0.6, 0, -0.6>, <0.6, 1.2, 0.6> rotate y * 25 translate <0, 0, 1.2> texture { pigment { Grid } } }

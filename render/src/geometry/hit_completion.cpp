@@ -143,7 +143,7 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
     hit.position_error = instance.placement.world_point_error(g.point, world);
     hit.geometric_normal = Vec3(instance.placement.normal_to_world_unit(g.normal));
     hit.shading_normal = hit.geometric_normal;
-    hit.uv = g.uv;
+    hit.uv = instance.uv_from_world ? Vec2(float(world.x), float(world.y)) : g.uv;
     // A mesh in CSG keeps its per-triangle textures.
     const std::size_t face_index = std::size_t(face);
     hit.material = face >= 0 && face_index < instance.face_materials.size() && instance.face_materials[face_index]

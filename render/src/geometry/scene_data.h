@@ -59,7 +59,11 @@ struct Instance {
     // light of its own.
     bool csg_leaf = false;
     bool flip_normal = false;  // an inverted CSG leaf: its normal points into its solid
-    bool bounded = true;       // false for planes and unbounded shapes and trees
+    // POV-Ray defines no (u, v) for this kind of shape (only spheres,
+    // boxes, tori, lathes, sors, ovus, bicubic patches, parametrics and
+    // meshes have one): uv_mapping then reads the hit's world x and y.
+    bool uv_from_world = false;
+    bool bounded = true;  // false for planes and unbounded shapes and trees
     const MeshData* mesh = nullptr;
     bool mesh_in_world = false;  // world_positions used instead of instancing
     std::vector<float> world_positions;

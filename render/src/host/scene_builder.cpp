@@ -83,6 +83,16 @@ void expand(Bounds& b, const Vec3& lower, const Vec3& upper) {
     b.upper = glm::max(b.upper, upper);
 }
 
+// The shapes whose (u, v) POV-Ray 3.7 defines (their UVCoord); every other
+// shape's is the hit's world x and y (ObjectBase::UVCoord).
+bool pov_defines_uv(const decltype(sg::Object::shape)& shape) {
+    return std::holds_alternative<sg::Sphere>(shape) || std::holds_alternative<sg::Box>(shape) ||
+           std::holds_alternative<sg::Torus>(shape) || std::holds_alternative<sg::Lathe>(shape) ||
+           std::holds_alternative<sg::Sor>(shape) || std::holds_alternative<sg::Ovus>(shape) ||
+           std::holds_alternative<sg::BicubicPatch>(shape) || std::holds_alternative<sg::Parametric>(shape) ||
+           std::holds_alternative<sg::MeshRef>(shape);
+}
+
 // World AABB of an object-space box under a placement, widened by a few
 // ULPs so float bounds contain the double-precision surface.
 void world_bounds(const Placement& placement, const DVec3& lower, const DVec3& upper, Vec3& out_lower,
@@ -532,6 +542,7 @@ class Builder {
     bool make_leaf(const sg::Object& object, const DMat4& world_from_object, const Material* material, bool no_shadow,
                    Instance& instance) {
         instance.placement = Placement::from(world_from_object);
+        instance.uv_from_world = !pov_defines_uv(object.shape);
         instance.material = material;
         instance.casts_shadow = !no_shadow;
         instance.location = object.location;

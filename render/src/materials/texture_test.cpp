@@ -68,14 +68,15 @@ TEST(Textures, ImageMapThroughUvDecodesSrgb) {
     m->pigment.image.map_type = sg::MapType::UV;
     m->pigment.image.interpolate = 0;  // nearest texel: exact values
     sg::SceneGraph graph;
-    // A plane's (u,v) is its (x, z); v = 1 is the image's top.
-    graph.objects.push_back(plane_object({0, 1, 0}, 0.0, m));
+    // A plane's (u, v) is the hit's world (x, y), as POV-Ray's; v = 1 is
+    // the image's top.
+    graph.objects.push_back(plane_object({0, 0, -1}, 0.0, m));
     auto scene = compile_scene(graph);
-    const Vec3 down(0, -1, 0);
-    const Color top_left = pigment_at(*scene, make_ray(Vec3(0.25f, 1, 0.75f), down));
-    const Color top_right = pigment_at(*scene, make_ray(Vec3(0.75f, 1, 0.75f), down));
-    const Color bottom_left = pigment_at(*scene, make_ray(Vec3(0.25f, 1, 0.25f), down));
-    const Color bottom_right = pigment_at(*scene, make_ray(Vec3(0.75f, 1, 0.25f), down));
+    const Vec3 ahead(0, 0, 1);
+    const Color top_left = pigment_at(*scene, make_ray(Vec3(0.25f, 0.75f, -1), ahead));
+    const Color top_right = pigment_at(*scene, make_ray(Vec3(0.75f, 0.75f, -1), ahead));
+    const Color bottom_left = pigment_at(*scene, make_ray(Vec3(0.25f, 0.25f, -1), ahead));
+    const Color bottom_right = pigment_at(*scene, make_ray(Vec3(0.75f, 0.25f, -1), ahead));
     EXPECT_NEAR(top_left.r, 1.0f, 1e-3f);
     EXPECT_NEAR(top_left.g, 0.0f, 1e-3f);
     EXPECT_NEAR(top_right.g, 1.0f, 1e-3f);
@@ -104,11 +105,12 @@ PaletteSample sample_palette(const std::string& path, std::vector<sg::PaletteSet
     m->pigment.image.interpolate = interpolate;
     m->pigment.image.palette_settings = std::move(settings);
     sg::SceneGraph graph;
-    graph.objects.push_back(plane_object({0, 1, 0}, 0.0, m));
+    // A plane's (u, v) is the hit's world (x, y), as POV-Ray's.
+    graph.objects.push_back(plane_object({0, 0, -1}, 0.0, m));
     auto scene = compile_scene(graph);
-    auto at = [&](float x, float z) {
+    auto at = [&](float x, float y) {
         Hit hit;
-        EXPECT_TRUE(scene->intersect(make_ray(Vec3(x, 1, z), Vec3(0, -1, 0)), hit));
+        EXPECT_TRUE(scene->intersect(make_ray(Vec3(x, y, -1), Vec3(0, 0, 1)), hit));
         return hit.material->sample_surface(hit);
     };
     return {at(0.25f, 0.75f), at(0.75f, 0.75f), at(0.25f, 0.25f), at(0.75f, 0.25f), at(0.5f, 0.5f)};
