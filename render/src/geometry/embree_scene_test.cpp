@@ -68,14 +68,16 @@ TEST(EmbreeScene, BoxFacesNormalsAndUv) {
     EXPECT_NEAR(hit.uv.y, 1.0f - 0.25f / 3.0f, 1e-6f);
 }
 
-TEST(EmbreeScene, PlaneHitUsesObjectXz) {
+// POV-Ray defines no (u, v) for a plane: uv_mapping reads the hit's world
+// x and y (ObjectBase::UVCoord).
+TEST(EmbreeScene, PlaneHitUvIsItsWorldXyAsInPovRay) {
     auto scene = compile_objects({plane_object({0, 2, 0}, -1.0)});  // normal normalised: y = -1
     Hit hit;
     ASSERT_TRUE(scene->intersect(make_ray(Vec3(3, 5, 7), Vec3(0, -1, 0)), hit));
     EXPECT_NEAR(hit.t, 6.0f, 1e-5f);
     EXPECT_EQ(hit.geometric_normal, Vec3(0, 1, 0));
     EXPECT_NEAR(hit.uv.x, 3.0f, 1e-6f);
-    EXPECT_NEAR(hit.uv.y, 7.0f, 1e-6f);
+    EXPECT_NEAR(hit.uv.y, -1.0f, 1e-6f);
     EXPECT_TRUE(scene->bounds().empty());  // planes are not finite geometry
 }
 
