@@ -198,11 +198,11 @@ std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
         f->stack_size = 4;
         lancer::IsosurfaceParameters iso;
         iso.function = f;
-        iso.sphere_container = in.byte() & 1;
-        iso.box_lower = in.vector(4);
-        iso.box_upper = in.vector(4);
-        iso.sphere_center = in.vector(4);
-        iso.sphere_radius = std::fabs(in.number(4));
+        iso.container.sphere = in.byte() & 1;
+        iso.container.box_lower = in.vector(4);
+        iso.container.box_upper = in.vector(4);
+        iso.container.sphere_center = in.vector(4);
+        iso.container.sphere_radius = std::fabs(in.number(4));
         iso.threshold = in.number(2);
         iso.accuracy = std::fabs(in.number(0.1));
         iso.max_gradient = std::fabs(in.number(50));
@@ -250,11 +250,11 @@ std::shared_ptr<const lancer::Shape> make_shape(Input& in) {
         parametric.functions = {fx, fy, fz};
         parametric.uv_min = {in.number(10), in.number(10)};
         parametric.uv_max = {in.number(10), in.number(10)};
-        parametric.sphere_container = in.byte() & 1;
-        parametric.box_lower = in.vector(4);
-        parametric.box_upper = in.vector(4);
-        parametric.sphere_center = in.vector(4);
-        parametric.sphere_radius = std::fabs(in.number(4));
+        parametric.container.sphere = in.byte() & 1;
+        parametric.container.box_lower = in.vector(4);
+        parametric.container.box_upper = in.vector(4);
+        parametric.container.sphere_center = in.vector(4);
+        parametric.container.sphere_radius = std::fabs(in.number(4));
         parametric.accuracy = std::fabs(in.number(0.1));
         parametric.max_gradient = std::fabs(in.number(50));
         if (in.byte() & 1) {
