@@ -40,6 +40,19 @@ inline std::string slab(const std::string& media, double background, const std::
 
 inline const Ray kAlongZ = seed_test::ray_towards({0.0f, 0.0f, -5.0f}, {0.0f, 0.0f, 0.0f});
 
+// Isotropic scattering (POV's k = 1, coefficient 0.1) of a parallel light
+// from above, in front of a black wall 4 along kAlongZ: the single
+// scattering integral is 1 - exp(-0.4) in the open. `roofed` adds an opaque
+// slab between the light and the ray.
+inline std::string scattering_under_parallel_light(bool roofed) {
+    return std::string(
+               "camera { location <0, 0, -5> look_at <0, 0, 0> }\n"
+               "light_source { <0, 100, 0> color rgb 1 parallel point_at <0, 0, 0> }\n"
+               "plane { -z, 1 pigment { rgb 0 } finish { ambient 0 diffuse 0 } }\n"
+               "media { scattering { 1, 0.1 } intervals 400 samples 2 }\n") +
+           (roofed ? "box { <-50, 5, -50>, <50, 6, 50> pigment { rgb 1 } }\n" : "");
+}
+
 // What `integrator` sees along `ray` in the scene `text` (-1 if it does not parse).
 inline Color radiance_in(const std::string& integrator, const std::string& text, const Ray& ray = kAlongZ) {
     const auto scene = scene_from(text);

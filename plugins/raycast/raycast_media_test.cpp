@@ -48,18 +48,10 @@ TEST(RaycastMedia, ACameraInsideAHollowObjectSeesItsMedia) {
 }
 
 TEST(RaycastMedia, ScatteringIsLitWithoutShadowRays) {
-    // A parallel light from above scatters in an isotropic medium (POV's
-    // k = 1) in front of a black wall 4 away: sigma int_0^4 exp(-sigma s) ds
-    // = 1 - exp(-4 sigma), even with an opaque roof between light and ray.
-    const float sigma = 0.1f;
-    const std::string scene =
-        "camera { location <0, 0, -5> look_at <0, 0, 0> }\n"
-        "light_source { <0, 100, 0> color rgb 1 parallel point_at <0, 0, 0> }\n"
-        "plane { -z, 1 pigment { rgb 0 } finish { ambient 0 diffuse 0 } }\n"
-        "box { <-50, 5, -50>, <50, 6, 50> pigment { rgb 1 } }\n"
-        "media { scattering { 1, 0.1 } intervals 400 samples 2 }\n";
-    const float expected = 1.0f - std::exp(-4.0f * sigma);
-    expect_colour(radiance_in("raycast", scene), Color(expected), 0.005f * expected);
+    // sigma int_0^4 exp(-sigma s) ds = 1 - exp(-4 sigma), even with an
+    // opaque roof between light and ray.
+    const float expected = 1.0f - std::exp(-0.4f);
+    expect_colour(radiance_in("raycast", scattering_under_parallel_light(true)), Color(expected), 0.005f * expected);
 }
 
 }  // namespace

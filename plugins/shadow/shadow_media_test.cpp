@@ -23,16 +23,9 @@ TEST(ShadowMedia, TheScenesMediaDimCameraRaysByBeerLambert) {
 TEST(ShadowMedia, ScatteringIsLitBehindShadowRays) {
     // As RaycastMedia.ScatteringIsLitWithoutShadowRays: 1 - exp(-4 sigma)
     // in the open, nothing under an opaque roof.
-    const float sigma = 0.1f;
-    const std::string open =
-        "camera { location <0, 0, -5> look_at <0, 0, 0> }\n"
-        "light_source { <0, 100, 0> color rgb 1 parallel point_at <0, 0, 0> }\n"
-        "plane { -z, 1 pigment { rgb 0 } finish { ambient 0 diffuse 0 } }\n"
-        "media { scattering { 1, 0.1 } intervals 400 samples 2 }\n";
-    const float expected = 1.0f - std::exp(-4.0f * sigma);
-    expect_colour(radiance_in("shadow", open), Color(expected), 0.005f * expected);
-    const std::string roofed = open + "box { <-50, 5, -50>, <50, 6, 50> pigment { rgb 1 } }\n";
-    expect_colour(radiance_in("shadow", roofed), Color(0.0f), 1e-6f);
+    const float expected = 1.0f - std::exp(-0.4f);
+    expect_colour(radiance_in("shadow", scattering_under_parallel_light(false)), Color(expected), 0.005f * expected);
+    expect_colour(radiance_in("shadow", scattering_under_parallel_light(true)), Color(0.0f), 1e-6f);
 }
 
 }  // namespace

@@ -1,11 +1,10 @@
 // Scale-aware ray origins (pbrt-v4's OffsetRayOrigin idea): a spawned ray
 // starts outside the error box of the hit point, measured along the
 // geometric normal, and one float further; no fixed epsilon anywhere.
-#include <bit>
 #include <cfloat>
 #include <cmath>
-#include <cstdint>
 
+#include "geometry/float_steps.h"
 #include "lancer/hit.h"
 
 namespace lancer {
@@ -18,20 +17,6 @@ constexpr float kShadowMarginUlps = 64.0f;
 
 float max_abs(const Vec3& v) {
     return glm::max(std::fabs(v.x), glm::max(std::fabs(v.y), std::fabs(v.z)));
-}
-
-// std::nextafter towards +infinity and -infinity, on the bits: the same
-// floats (zeros and infinities included) without a libm call per axis,
-// which was a tenth of an area-lit render's time.
-float next_float_up(float x) {
-    if (x == kInfinity || x != x) return x;
-    if (x == 0.0f) return std::bit_cast<float>(std::uint32_t(1));  // -0 too
-    const auto bits = std::bit_cast<std::uint32_t>(x);
-    return std::bit_cast<float>(x > 0.0f ? bits + 1 : bits - 1);
-}
-
-float next_float_down(float x) {
-    return -next_float_up(-x);
 }
 
 }  // namespace

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <limits>
 
 #include "geometry/embree_scene.h"
+#include "geometry/float_steps.h"
 
 namespace lancer::embree {
 namespace {
@@ -274,9 +274,8 @@ bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit)
     // ray inside it found the floor or the bottom face at random, by the
     // rounding of the box's distance, and half the floor under the box
     // showed what lies below (POV-Ray shows the floor).
-    double unbounded_t = found.geometry == kInvalidId
-                             ? double(found.tfar)
-                             : double(std::nextafter(found.tfar, std::numeric_limits<float>::infinity()));
+    double unbounded_t =
+        found.geometry == kInvalidId || m_unbounded.empty() ? double(found.tfar) : double(next_float_up(found.tfar));
     for (std::uint32_t index : m_unbounded) {
         const Instance& instance = m_data->instances[index];
         DVec3 o, d;

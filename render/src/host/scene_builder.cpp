@@ -217,15 +217,12 @@ class Builder {
 
     // One material per written material and hollow flag: POV's `hollow` is
     // the object's, but what a ray inside sees (media) depends on it.
+    // No material written: POV's default texture (keyed by a null pointer).
     const Material* material_for(const sg::MaterialRef& ref, bool hollow = false) {
         if (!ref && !hollow) return default_material();
-        if (!ref) {
-            if (!m_hollow_default_material) m_hollow_default_material = make_material(sg::Material{}, true);
-            return m_hollow_default_material;
-        }
         auto found = m_materials.find({ref.get(), hollow});
         if (found != m_materials.end()) return found->second;
-        const Material* material = make_material(*ref, hollow);
+        const Material* material = make_material(ref ? *ref : sg::Material{}, hollow);
         m_materials[{ref.get(), hollow}] = material;
         return material;
     }
@@ -1223,7 +1220,6 @@ class Builder {
     std::map<const sg::TriangleMesh*, const MeshData*> m_meshes;
     std::map<std::pair<const sg::Material*, bool>, const Material*> m_materials;
     const Material* m_default_material = nullptr;
-    const Material* m_hollow_default_material = nullptr;  // POV's default texture on a hollow object
 };
 
 }  // namespace

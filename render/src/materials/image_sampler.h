@@ -66,11 +66,12 @@ class ImageSampler {
     int height() const { return m_height; }
     bool has_alpha() const { return m_channels == 2 || m_channels == 4; }
 
-  private:
-    Texel decode(const float* texel) const;
     // Texel (column, row) of an image columns x rows: clamped to the edges
     // of a `once` image, else repeated.
     glm::ivec2 wrap(long long column, long long row, int columns, int rows) const;
+
+  private:
+    Texel decode(const float* texel) const;
     Texel texel(long long column, long long row) const;  // wrapped
     void add_palette_transparency(Texel& texel, const glm::dvec2& uv) const;
 

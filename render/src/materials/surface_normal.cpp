@@ -171,8 +171,7 @@ class BumpMapNode final : public NormalNode {
         : m_warps(normal.pattern, build.generator),
           m_image(open_image(normal.bump_map, build)),
           m_amount(normal.bump_size),
-          m_interpolate(normal.bump_map.interpolate != 0),
-          m_once(normal.bump_map.once) {
+          m_interpolate(normal.bump_map.interpolate != 0) {
         if (!normal.bump_map_use_color) {
             try {
                 m_indices = read_palette_image(normal.bump_map.path);
@@ -221,15 +220,9 @@ class BumpMapNode final : public NormalNode {
     double palette_index_at(const glm::dvec2& uv) const {
         const PaletteImage& image = *m_indices;
         const auto index = [&](double column, double row) {
-            long long x = (long long)std::floor(column), y = (long long)std::floor(row);
-            if (m_once) {
-                x = std::clamp<long long>(x, 0, image.width - 1);
-                y = std::clamp<long long>(y, 0, image.height - 1);
-            } else {
-                x = ((x % image.width) + image.width) % image.width;
-                y = ((y % image.height) + image.height) % image.height;
-            }
-            return double(image.indices[std::size_t(y) * std::size_t(image.width) + std::size_t(x)]);
+            const glm::ivec2 at =
+                m_image.wrap((long long)std::floor(column), (long long)std::floor(row), image.width, image.height);
+            return double(image.indices[std::size_t(at.y) * std::size_t(image.width) + std::size_t(at.x)]);
         };
         const glm::dvec2 position = ImageSampler::pixel_position(uv, image.width, image.height);
         const double x = position.x, y = position.y;
@@ -245,7 +238,6 @@ class BumpMapNode final : public NormalNode {
     ImageSampler m_image;
     double m_amount;
     bool m_interpolate;
-    bool m_once;
     std::optional<PaletteImage> m_indices;  // a colour-mapped file read by its indices
 };
 
