@@ -102,7 +102,14 @@ void EmbreeScene::build() {
         rtcReleaseGeometry(geometry);
         if (m_geometries.size() <= id) m_geometries.resize(id + 1);
         m_geometries[id] = entry;
+        return id;
     };
+    const bool has_meshes = std::any_of(data.instances.begin(), data.instances.end(), [](const Instance& i) {
+        return i.kind == ShapeKind::Mesh && i.mesh && !i.mesh->indices.empty();
+    });
+    std::size_t bounded_shapes = 0;
+    for (const auto& [kind, group] : groups) bounded_shapes += group->instances.size();
+    m_traces_list = !has_meshes && bounded_shapes <= ShapeList::kMostShapes;
     for (auto& [kind, group] : groups) {
         RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(geometry, unsigned(group->instances.size()));
@@ -111,7 +118,11 @@ void EmbreeScene::build() {
         rtcSetGeometryIntersectFunction(geometry, analytic_intersect);
         rtcSetGeometryOccludedFunction(geometry, analytic_occluded);
         rtcCommitGeometry(geometry);
-        attach(geometry, GeometryEntry{group, 0});
+        const unsigned id = attach(geometry, GeometryEntry{group, 0});
+        if (m_traces_list)
+            for (unsigned primitive = 0; primitive < group->instances.size(); ++primitive)
+                m_few_shapes.add(data.instances[group->instances[primitive]], group->instances[primitive], id,
+                                 primitive);
     }
 
     m_faces_are_triangles.assign(data.instances.size(), 0);

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "geometry/scene_data.h"
+#include "geometry/shape_list.h"
 #include "lancer/render_scene.h"
 
 namespace lancer::embree {
@@ -140,6 +141,8 @@ class EmbreeScene final : public RenderScene {
     const SceneFog* fog() const override { return m_data->fog.get(); }
     const SceneRainbows* rainbows() const override { return m_data->rainbows.get(); }
     const InteriorStack& camera_interiors() const override { return m_camera_interiors; }
+    // Whether rays are traced from the list of a few shapes, not the BVH.
+    bool traces_shape_list() const { return m_traces_list; }
     // The tables the scene was built from (for the host's own reports).
     const SceneData& data() const { return *m_data; }
 
@@ -171,6 +174,9 @@ class EmbreeScene final : public RenderScene {
     std::vector<std::unique_ptr<AnalyticGroup>> m_groups;
     std::vector<GeometryEntry> m_geometries;  // by top-level geomID
     std::vector<std::uint32_t> m_unbounded;   // instance indices, outside the BVH
+    // A scene of a few analytic shapes: traced from this list, not the BVH.
+    ShapeList m_few_shapes;
+    bool m_traces_list = false;
     std::string m_device_error;
     InteriorStack m_camera_interiors;
     bool m_has_no_shadow_mesh = false;

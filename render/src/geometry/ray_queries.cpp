@@ -62,9 +62,17 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
     rayhit.hit.primID = kInvalidId;
     rayhit.hit.instID[0] = kInvalidId;
     rayhit.hit.u = rayhit.hit.v = 0.0f;
-    if (embree_can_trace(ray)) rtcIntersect1(m_scene, &context, &rayhit);
-    const EmbreeHit found{rayhit.ray.tnear,     rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
-                          rayhit.hit.instID[0], rayhit.hit.u,    rayhit.hit.v};
+    EmbreeHit found{rayhit.ray.tnear,     rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
+                    rayhit.hit.instID[0], rayhit.hit.u,    rayhit.hit.v};
+    if (embree_can_trace(ray)) {
+        if (m_traces_list) {
+            m_few_shapes.nearest(*m_data, ray, found);
+        } else {
+            rtcIntersect1(m_scene, &context, &rayhit);
+            found = EmbreeHit{rayhit.ray.tnear,     rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
+                              rayhit.hit.instID[0], rayhit.hit.u,    rayhit.hit.v};
+        }
+    }
     if (!complete_hit(ray, found, hit)) return false;
     hit.ray_direction = ray.direction;
     finish_surface(hit, ray.direction, *m_data);
@@ -72,6 +80,22 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
 }
 
 void EmbreeScene::trace_packet(const Ray* rays, int lanes, PacketAnswers& answers) const {
+    if (m_traces_list) {
+        for (int k = 0; k < lanes; ++k) {
+            const Ray& ray = rays[k];
+            const float t_near = glm::max(ray.t_min, 0.0f);  // as fill_embree_ray
+            EmbreeHit found{t_near, glm::max(ray.t_max, t_near), kInvalidId, kInvalidId, kInvalidId, 0.0f, 0.0f};
+            if (embree_can_trace(ray)) m_few_shapes.nearest(*m_data, ray, found);
+            answers.tnear[k] = found.tnear;
+            answers.tfar[k] = found.tfar;
+            answers.geometry[k] = found.geometry;
+            answers.primitive[k] = found.primitive;
+            answers.instance[k] = found.instance;
+            answers.u[k] = found.u;
+            answers.v[k] = found.v;
+        }
+        return;
+    }
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
@@ -189,8 +213,14 @@ bool EmbreeScene::occluded(const Ray& ray) const {
     if (m_has_no_shadow_mesh) context.base.filter = skip_no_shadow;
     RTCRay shadow_ray;
     fill_embree_ray(ray, shadow_ray);
-    if (embree_can_trace(ray)) rtcOccluded1(m_scene, &context.base, &shadow_ray);
-    if (shadow_ray.tfar == -INFINITY) return true;
+    if (embree_can_trace(ray)) {
+        if (m_traces_list) {
+            if (m_few_shapes.occluded(*m_data, ray, shadow_ray.tnear, shadow_ray.tfar)) return true;
+        } else {
+            rtcOccluded1(m_scene, &context.base, &shadow_ray);
+            if (shadow_ray.tfar == -INFINITY) return true;
+        }
+    }
     for (std::uint32_t index : m_unbounded) {
         const Instance& instance = m_data->instances[index];
         if (!instance.casts_shadow) continue;

@@ -1,0 +1,51 @@
+// A scene of a few bounded analytic shapes (the common hand-written POV
+// scene: a floor, a few spheres and boxes) traced by testing each shape's
+// world box in turn instead of through Embree's BVH. For so few shapes
+// Embree's per-query set-up and its user-geometry callbacks cost more than
+// the boxes themselves (bench/README.md, "Few shapes"). The answers are
+// Embree's: the same shapes are tested over the same float t range and the
+// nearest crossing wins in the same way, so the EmbreeScene completes them
+// unchanged (internal to liblancer).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/scene_data.h"
+#include "lancer/ray.h"
+
+namespace lancer::embree {
+
+struct EmbreeHit;
+
+class ShapeList {
+  public:
+    // Up to this many shapes a list traces faster than the BVH (measured,
+    // bench/README.md).
+    static constexpr std::size_t kMostShapes = 6;
+
+    // Analytic instance `index`, which Embree knows as primitive
+    // `primitive` of user geometry `geometry`.
+    void add(const Instance& instance, std::uint32_t index, unsigned geometry, unsigned primitive);
+    bool empty() const { return m_shapes.empty(); }
+    std::size_t size() const { return m_shapes.size(); }
+
+    // The nearest crossing with t in [t_near, t_far) of a traceable ray,
+    // as rtcIntersect1 reports it on the same shapes: t_far lowered to its
+    // float distance, the geometry and primitive ids, u the face and v the
+    // CSG leaf's offset before its root. Untouched when nothing is crossed.
+    void nearest(const SceneData& data, const Ray& ray, EmbreeHit& found) const;
+    // Whether a shape that casts shadows crosses the ray over [t_near, t_far].
+    bool occluded(const SceneData& data, const Ray& ray, float t_near, float t_far) const;
+
+  private:
+    struct Entry {
+        Vec3 lower, upper;  // world, conservative
+        std::uint32_t instance;
+        unsigned geometry, primitive;
+        bool casts_shadow;
+    };
+    std::vector<Entry> m_shapes;
+};
+
+}  // namespace lancer::embree
