@@ -90,10 +90,15 @@ TEST(PovAreaLight, AdaptiveLevelsAsPovRay) {
 // Shadow rays traced for one floor point under an unshadowed square grid:
 // each grid point at most once; `adaptive` a stops uniform regions after a
 // levels (the manual: 8×8 with adaptive 1 traces 16 rays, 9×9 shares
-// midpoints and traces 9).
-std::uint64_t shadow_rays(int size, int adaptive) {
+// midpoints and traces 9). With `decoy`, a tiny sphere halfway up, whose
+// box holds the vertical ray, stands between the rays of the 1, 8 and 9
+// point grids (0.0113 from the nearest, its radius 0.01): it shadows
+// nothing, but nothing can prove that without the rays. Without it, the
+// way is clear.
+std::uint64_t shadow_rays(int size, int adaptive, bool decoy = true) {
     sg::SceneGraph graph;
     graph.objects.push_back(plane({0.0, 1.0, 0.0}, 0.0, default_material()));
+    if (decoy) graph.objects.push_back(sphere({0.008, 2.0, 0.008}, 0.01, default_material()));
     sg::Light light = point_light({0.0, 4.0, 0.0}, sg::Vec3(1.0));
     light.area_light = true;
     light.axis1 = {2.0, 0.0, 0.0};
@@ -116,6 +121,13 @@ TEST(PovAreaLight, GridPointsTracedAsPovTracesThem) {
     EXPECT_EQ(shadow_rays(9, 1), 9u);
     EXPECT_EQ(shadow_rays(8, 1), 16u);
     EXPECT_EQ(shadow_rays(1, 100), 1u);
+}
+
+// RenderScene::may_block_towards: with nothing near the way, no grid point
+// needs a ray.
+TEST(PovAreaLight, AClearWayTracesNoShadowRay) {
+    EXPECT_EQ(shadow_rays(9, 100, false), 0u);
+    EXPECT_EQ(shadow_rays(1, 100, false), 0u);
 }
 
 TEST(PovAreaLight, NoRayEverSeesIt) {

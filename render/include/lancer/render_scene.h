@@ -50,6 +50,15 @@ class RenderScene {
     // lights are not occluders of themselves: a shadow ray aimed at a point
     // on a light stops short of it (Hit::spawn_ray_to).
     virtual bool occluded(const Ray& ray) const = 0;
+    // Conservative: false only when no shadow-casting surface can cross a
+    // segment from `origin` to any point corner + s * edge1 + t * edge2 of
+    // a parallelogram (s, t in [0, 1]), so that shadow rays from `origin`
+    // to such points need not be traced (an area light's grid seen from a
+    // point with nothing near the way). True whenever the scene cannot
+    // tell cheaply.
+    virtual bool may_block_towards(const Vec3& origin, const Vec3& corner, const Vec3& edge1, const Vec3& edge2) const {
+        return true;
+    }
 
     // Every light for next-event estimation: point, directional, rectangle,
     // sphere and emissive objects.

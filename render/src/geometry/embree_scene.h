@@ -126,6 +126,9 @@ class EmbreeScene final : public RenderScene {
     bool intersect(const Ray& ray, Hit& hit) const override;
     void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found, RayCoherence coherence) const override;
     bool occluded(const Ray& ray) const override;
+    // Answered for a scene traced from its shape list, whose unbounded
+    // shapes are planes; true (unknown) otherwise.
+    bool may_block_towards(const Vec3& origin, const Vec3& corner, const Vec3& edge1, const Vec3& edge2) const override;
     const std::vector<const Light*>& lights() const override { return m_data->lights; }
     const std::vector<const Light*>& local_lights() const override { return m_data->local_lights; }
     const Camera& camera() const override { return m_data->camera; }

@@ -236,4 +236,51 @@ bool EmbreeScene::occluded(const Ray& ray) const {
     return false;
 }
 
+bool EmbreeScene::may_block_towards(const Vec3& origin, const Vec3& corner, const Vec3& edge1,
+                                    const Vec3& edge2) const {
+    if (!m_traces_list) return true;
+    const DVec3 apex(origin), base(corner);
+    const DVec3 points[5] = {apex, base, base + DVec3(edge1), base + DVec3(edge1) + DVec3(edge2), base + DVec3(edge2)};
+    double reach = 0.0;  // the longest segment
+    for (const DVec3& p : points) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return true;
+        reach = std::max(reach, glm::length(p - apex));
+    }
+    // The shadow rays run between floats near these points, along rounded
+    // directions: a thousand times their error keeps the answer safe.
+    double largest = 0.0;
+    for (const DVec3& p : points) largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    const double margin = 1e-4 * reach + 1e-6 * largest;
+    for (std::uint32_t index : m_unbounded) {
+        const Instance& instance = m_data->instances[index];
+        if (!instance.casts_shadow) continue;
+        if (instance.kind != ShapeKind::Plane) return true;
+        // A plane is crossed by no such segment when the apex and the whole
+        // parallelogram lie on one side of it.
+        double side[5];
+        for (int i = 0; i < 5; ++i)
+            side[i] = glm::dot(instance.plane.normal, instance.placement.point_to_object(points[i])) -
+                      instance.plane.distance;
+        // The world margin in the plane's space: at most the margin times
+        // the transform's Frobenius norm.
+        const DVec3 x = instance.placement.vector_to_object(DVec3(1.0, 0.0, 0.0));
+        const DVec3 y = instance.placement.vector_to_object(DVec3(0.0, 1.0, 0.0));
+        const DVec3 z = instance.placement.vector_to_object(DVec3(0.0, 0.0, 1.0));
+        const double corner_margin = margin * std::sqrt(glm::dot(x, x) + glm::dot(y, y) + glm::dot(z, z));
+        // The apex may lie on the plane (a hit on the plane itself): its
+        // rays cross it at t = 0, which the plane's own test rejects, as
+        // it computes this same side[0].
+        const double sign = side[1] > 0.0 ? 1.0 : -1.0;
+        if (sign * side[0] < 0.0) return true;
+        for (int i = 1; i < 5; ++i)
+            if (!(sign * side[i] > corner_margin)) return true;
+    }
+    const DVec3 e1(edge1), e2(edge2);
+    const DVec3 faces[5] = {glm::cross(e1, e2), glm::cross(points[1] - apex, points[2] - apex),
+                            glm::cross(points[2] - apex, points[3] - apex),
+                            glm::cross(points[3] - apex, points[4] - apex),
+                            glm::cross(points[4] - apex, points[1] - apex)};
+    return m_few_shapes.may_meet_hull(points, 5, faces, 5, margin);
+}
+
 }  // namespace lancer::embree

@@ -1,6 +1,7 @@
 // Tracing a few shapes without a BVH (see shape_list.h).
 #include "geometry/shape_list.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <utility>
 
@@ -71,6 +72,37 @@ bool ShapeList::occluded(const SceneData& data, const Ray& ray, float t_near, fl
         int face;
         std::uint32_t leaf;
         if (intersect_analytic(data, shape.instance, o, d, t_near, t_far, t, face, leaf)) return true;
+    }
+    return false;
+}
+
+bool ShapeList::may_meet_hull(const DVec3* points, int point_count, const DVec3* axes, int axis_count,
+                              double margin) const {
+    DVec3 hull_lower(points[0]), hull_upper(points[0]);
+    for (int i = 1; i < point_count; ++i) {
+        hull_lower = glm::min(hull_lower, points[i]);
+        hull_upper = glm::max(hull_upper, points[i]);
+    }
+    for (const Entry& shape : m_shapes) {
+        if (!shape.casts_shadow) continue;
+        const DVec3 lower = DVec3(shape.lower) - margin, upper = DVec3(shape.upper) + margin;
+        // The world axes: the two boxes.
+        if (glm::any(glm::lessThan(hull_upper, lower)) || glm::any(glm::lessThan(upper, hull_lower))) continue;
+        const DVec3 centre = 0.5 * (lower + upper), half = 0.5 * (upper - lower);
+        bool separated = false;
+        for (int a = 0; a < axis_count && !separated; ++a) {
+            const DVec3& axis = axes[a];
+            const double box_middle = glm::dot(centre, axis);
+            const double box_reach = glm::dot(half, glm::abs(axis));
+            double hull_min = glm::dot(points[0], axis), hull_max = hull_min;
+            for (int i = 1; i < point_count; ++i) {
+                const double x = glm::dot(points[i], axis);
+                hull_min = std::min(hull_min, x);
+                hull_max = std::max(hull_max, x);
+            }
+            separated = hull_max < box_middle - box_reach || box_middle + box_reach < hull_min;
+        }
+        if (!separated) return true;
     }
     return false;
 }

@@ -38,6 +38,12 @@ class ShapeList {
     // Whether a shape that casts shadows crosses the ray over [t_near, t_far].
     bool occluded(const SceneData& data, const Ray& ray, float t_near, float t_far) const;
 
+    // Whether the box of a shape that casts shadows may come within
+    // `margin` of the convex hull of `points`. Conservative: a separating
+    // plane is sought only across the world axes and `axes` (the hull's
+    // face normals).
+    bool may_meet_hull(const DVec3* points, int point_count, const DVec3* axes, int axis_count, double margin) const;
+
   private:
     struct Entry {
         Vec3 lower, upper;  // world, conservative

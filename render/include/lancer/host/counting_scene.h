@@ -33,6 +33,11 @@ class CountingScene final : public RenderScene {
         count();
         return m_inner.occluded(ray);
     }
+    // Not a ray: not counted.
+    bool may_block_towards(const Vec3& origin, const Vec3& corner, const Vec3& edge1,
+                           const Vec3& edge2) const override {
+        return m_inner.may_block_towards(origin, corner, edge1, edge2);
+    }
     const std::vector<const Light*>& lights() const override { return m_inner.lights(); }
     const std::vector<const Light*>& local_lights() const override { return m_inner.local_lights(); }
     const Camera& camera() const override { return m_inner.camera(); }

@@ -43,26 +43,34 @@ inline Color atmosphere_transmittance(const RenderScene& scene, const Ray& ray) 
 // (POV-Ray's filtered shadows), so a fully transmitting object casts no
 // shadow. `own_light`'s surface is skipped: the proxy of a sphere light sits
 // at its centre, inside the light's own geometry.
-inline Color transmittance_to(const RenderScene& scene, const Hit& from, const Vec3& target,
-                              const Light* own_light = nullptr) {
-    Ray ray = from.spawn_ray_to(target);
-    // POV's media_attenuation: the atmosphere dims the light on its way.
+inline bool dimmed_on_its_way(const RenderScene& scene, const Light* light) {
+    return light != nullptr && light->dimmed_by_atmosphere() && (scene.has_media() || scene.fog() != nullptr);
+}
+
+// What the light loses along a shadow ray that nothing blocks: POV's
+// media_attenuation (the atmosphere dims it on its way) and fog, which dims
+// without adding its colour (POV's shadow rays).
+inline Color dimming_on_the_way(const RenderScene& scene, const Ray& ray, const Light* own_light) {
     Color dimmed(1.0f);
-    if (own_light != nullptr && own_light->dimmed_by_atmosphere()) {
-        if (scene.has_media()) dimmed = atmosphere_transmittance(scene, ray);
-        // And fog, which dims without adding its colour (POV's shadow rays).
-        if (const SceneFog* fog = scene.fog()) {
-            const float scale = glm::length(ray.direction);
-            const float length = std::isfinite(ray.t_max) ? ray.t_max * scale : kFogEscapeDistance;
-            dimmed *= fog->transmittance(ray.origin, ray.direction / scale, length);
-        }
+    if (!dimmed_on_its_way(scene, own_light)) return dimmed;
+    if (scene.has_media()) dimmed = atmosphere_transmittance(scene, ray);
+    if (const SceneFog* fog = scene.fog()) {
+        const float scale = glm::length(ray.direction);
+        const float length = std::isfinite(ray.t_max) ? ray.t_max * scale : kFogEscapeDistance;
+        dimmed *= fog->transmittance(ray.origin, ray.direction / scale, length);
     }
-    if (!scene.occluded(ray)) return dimmed;  // the common case: one cheap query
+    return dimmed;
+}
+
+// What the surfaces between the hit and `target` let through (see
+// transmittance_to), without the atmosphere's and fog's dimming.
+inline Color surfaces_transmittance(const RenderScene& scene, Ray ray, const Vec3& target, const Light* own_light) {
+    if (!scene.occluded(ray)) return Color(1.0f);  // the common case: one cheap query
 
     // Walk the surfaces in between, nearest first. The bound only guards
     // against pathological stacks of coplanar transparent faces.
     constexpr int kMaxSurfacesCrossed = 64;
-    Color throughput = dimmed;
+    Color throughput(1.0f);
     for (int crossed = 0; crossed < kMaxSurfacesCrossed; ++crossed) {
         Hit blocker;
         if (!scene.intersect(ray, blocker)) return throughput;
@@ -109,6 +117,12 @@ inline Color transmittance_to(const RenderScene& scene, const Hit& from, const V
     return Color(0.0f);
 }
 
+inline Color transmittance_to(const RenderScene& scene, const Hit& from, const Vec3& target,
+                              const Light* own_light = nullptr) {
+    const Ray ray = from.spawn_ray_to(target);
+    return dimming_on_the_way(scene, ray, own_light) * surfaces_transmittance(scene, ray, target, own_light);
+}
+
 // POV's area-light visibility from `from`: the light's colour (in POV's
 // units, for the adaptive threshold) times the transmittance to each grid
 // point, averaged as POV does: the four corners of a region, split into
@@ -128,7 +142,9 @@ class PovAreaShadow {
           m_area(area),
           m_axes(area_grid_axes(area, glm::dvec3(to_light))),
           m_colour(light_colour),
-          m_state(state_of_thread()) {
+          m_state(state_of_thread()),
+          m_clear(grid_is_clear()),
+          m_dimmed(dimmed_on_its_way(scene, &light)) {
         State& state = m_state;
         const std::size_t cells = std::size_t(area.size1) * std::size_t(area.size2);
         if (state.stamp.size() < cells) state.stamp.resize(cells, 0);
@@ -140,8 +156,20 @@ class PovAreaShadow {
     }
 
     Color visibility() const {
-        if (m_area.size1 == 1 && m_area.size2 == 1) return corner(0, 0);
-        return subset(0, 0, m_area.size1 - 1, m_area.size2 - 1, 0);
+        if (m_clear && !m_dimmed) return Color(1.0f);  // what every grid point would give
+        const Color seen =
+            m_area.size1 == 1 && m_area.size2 == 1 ? corner(0, 0) : subset(0, 0, m_area.size1 - 1, m_area.size2 - 1, 0);
+        if (!m_dimmed || is_black(seen)) return seen;
+        // POV-Ray dims the grid's average once, along the last light ray
+        // its sampling computed (TraceShadowRay after
+        // TraceAreaLightSubsetShadowRay): towards the centre, or, once the
+        // grid was split, towards twice the centre's position (it passes
+        // the centre as an offset from the centre), over the length of
+        // whichever ray it computed last.
+        const glm::dvec3 centre(m_area.center.position);
+        Ray ray = m_from.spawn_ray_to(Vec3(m_split ? 2.0 * centre : centre));
+        ray.t_max = float(m_last_length);
+        return seen * dimming_on_the_way(m_scene, ray, &m_light);
     }
 
   private:
@@ -167,9 +195,13 @@ class PovAreaShadow {
              distance(c[3], c[2]) > 0.1f || distance(c[2], c[0]) > 0.1f)) {
             const int low_u = (u1 + u2) / 2, high_u = (u1 + u2 + 1) / 2;  // floor and ceil of the midpoint
             const int low_v = (v1 + v2) / 2, high_v = (v1 + v2 + 1) / 2;
+            if (m_dimmed) aim_at_twice_the_centre();
             c[0] = subset(u1, v1, low_u, low_v, level + 1);
+            if (m_dimmed) aim_at_twice_the_centre();
             c[1] = subset(high_u, v1, u2, low_v, level + 1);
+            if (m_dimmed) aim_at_twice_the_centre();
             c[2] = subset(u1, high_v, low_u, v2, level + 1);
+            if (m_dimmed) aim_at_twice_the_centre();
             c[3] = subset(high_u, high_v, u2, v2, level + 1);
         }
         return (c[0] + c[1] + c[2] + c[3]) * 0.25f;
@@ -185,10 +217,47 @@ class PovAreaShadow {
             jv += jitter(index, 1) - 0.5;
         }
         const glm::dvec3 point = glm::dvec3(m_area.center.position) + area_grid_offset(m_area, m_axes, ju, jv);
-        const Color seen = transmittance_to(m_scene, m_from, Vec3(point), &m_light);
+        if (m_dimmed) m_last_length = glm::distance(point, glm::dvec3(m_from.position));
+        // Undimmed: the atmosphere and fog dim the average (visibility()).
+        const Color seen =
+            m_clear ? Color(1.0f)
+                    : surfaces_transmittance(m_scene, m_from.spawn_ray_to(Vec3(point)), Vec3(point), &m_light);
         state.stamp[index] = state.generation;
         state.value[index] = seen;
         return seen;
+    }
+
+    void aim_at_twice_the_centre() const {
+        m_split = true;
+        m_last_length = glm::distance(2.0 * glm::dvec3(m_area.center.position), glm::dvec3(m_from.position));
+    }
+
+    // Whether nothing can stand between the hit and any grid point, jitter
+    // included (RenderScene::may_block_towards): then no shadow ray is
+    // traced. The grid's points lie in the parallelogram the oriented axes
+    // span around the centre, out to half a cell past its edges when
+    // jittered (POV's circular nudge of 0.001 is covered too). One ray
+    // origin must serve them all, so they must lie clearly on one side of
+    // the surface.
+    bool grid_is_clear() const {
+        if (m_area.circular && (m_area.size1 == 1 || m_area.size2 == 1)) return false;
+        const auto half_extent = [&](int size) {
+            return size <= 1 ? 0.0 : 0.502 + (m_area.jitter ? 0.5 / double(size - 1) : 0.0);
+        };
+        const double h1 = half_extent(m_area.size1), h2 = half_extent(m_area.size2);
+        const glm::dvec3 corner = glm::dvec3(m_area.center.position) - h1 * m_axes.axis1 - h2 * m_axes.axis2;
+        const glm::dvec3 edge1 = 2.0 * h1 * m_axes.axis1, edge2 = 2.0 * h2 * m_axes.axis2;
+        const glm::dvec3 position(m_from.position), normal(m_from.geometric_normal);
+        int above = 0, below = 0;
+        for (const glm::dvec3& point : {corner, corner + edge1, corner + edge1 + edge2, corner + edge2}) {
+            const double side = glm::dot(point - position, normal);
+            const double clearance = 1e-4 * glm::length(point - position);
+            above += side > clearance;
+            below += side < -clearance;
+        }
+        if (above != 4 && below != 4) return false;
+        const Vec3 origin = m_from.offset_origin(Vec3(corner - position));
+        return !m_scene.may_block_towards(origin, Vec3(corner), Vec3(edge1), Vec3(edge2));
     }
 
     // POV jitters at random from render to render; lancer's jitter is a
@@ -204,6 +273,12 @@ class PovAreaShadow {
     AreaGridAxes m_axes;
     Color m_colour;
     State& m_state;
+    bool m_clear;   // no grid point needs a shadow ray
+    bool m_dimmed;  // the atmosphere or fog dims the light on its way
+    // POV's last light ray (see visibility()): whether it was aimed at twice
+    // the centre, and its length.
+    mutable bool m_split = false;
+    mutable double m_last_length = 0.0;
 };
 
 }  // namespace lancer
