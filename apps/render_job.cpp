@@ -82,6 +82,16 @@ std::map<std::string, sg::ParameterValue> scene_parameters_for(const sg::RenderS
     return {};
 }
 
+// The first object (depth first) that sets double_illuminate on, or null.
+const sg::Object* first_double_illuminated(const std::vector<sg::Object>& objects) {
+    for (const sg::Object& object : objects) {
+        if (object.double_illuminate.value_or(false)) return &object;
+        if (const auto* group = std::get_if<sg::Group>(&object.shape))
+            if (const sg::Object* inside = first_double_illuminated(group->children)) return inside;
+    }
+    return nullptr;
+}
+
 void warn_about_scene_for(const sg::SceneGraph& scene, const std::string& integrator) {
     // Only path follows light bounce after bounce: whitted's and gather's
     // recursions end, so a bright finish there is just bright, as in POV.
@@ -102,6 +112,15 @@ void warn_about_scene_for(const sg::SceneGraph& scene, const std::string& integr
     if (!scene.fogs.empty()) ignored(scene.fogs.front().location, scene.fogs.size() > 1 ? "every fog" : "fog");
     if (!scene.rainbows.empty())
         ignored(scene.rainbows.front().location, scene.rainbows.size() > 1 ? "every rainbow" : "rainbow");
+    if (const sg::Object* object = first_double_illuminated(scene.objects)) {
+        Diagnostic warning;
+        warning.severity = Diagnostic::Severity::Warning;
+        warning.location = object->location;
+        warning.message =
+            "path ignores double_illuminate (POV-Ray's light from behind a surface, which raycast, shadow, whitted "
+            "and gather show); in path light passes a surface only through what it transmits";
+        print_diagnostic(warning);
+    }
 }
 
 void warn_after_render(const RenderScene& scene) {

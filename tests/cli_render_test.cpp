@@ -171,6 +171,18 @@ TEST_F(CliRender, PathSaysItIgnoresFogAndRainbows) {
     EXPECT_EQ(whitted.output.find("ignores"), std::string::npos) << whitted.output;
 }
 
+// double_illuminate, inside a union too, is POV-Ray's lighting of the
+// classic integrators: path says it ignores it; whitted does not warn.
+TEST_F(CliRender, PathSaysItIgnoresDoubleIlluminate) {
+    std::ofstream(m_scene, std::ios::app) << "union { disc { <0, 0, 3>, z, 1 double_illuminate } }\n";
+    const CommandResult path = render("-i path --spp 1 -q");
+    ASSERT_EQ(path.exit_code, 0) << path.output;
+    EXPECT_CONTAINS(path.output, "ball.pov:4:9: warning: path ignores double_illuminate");
+    const CommandResult whitted = render("-i whitted -q");
+    ASSERT_EQ(whitted.exit_code, 0) << whitted.output;
+    EXPECT_EQ(whitted.output.find("double_illuminate"), std::string::npos) << whitted.output;
+}
+
 // A camera inside a solid object sees no fog (POV-Ray's rule, which it
 // applies silently): lancer says which object, where it is written.
 TEST_F(CliRender, ACameraInsideASolidObjectIsToldItSeesNoFog) {

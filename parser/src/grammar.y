@@ -532,7 +532,7 @@ object_mod
   | "no_shadow"        { $$ = [](ShapeValue& s) { s.object.no_shadow = true; }; }
   | "uv_mapping"       { $$ = ev.object_uv_mapping(LOC(@1)); }
   | "hollow" opt_bool  { bool on = $2; $$ = [on](ShapeValue& s) { set_hollow(s.object, on); }; }
-  | "double_illuminate" { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "double_illuminate"); }
+  | "double_illuminate" opt_bool { bool on = $2; $$ = [on](ShapeValue& s) { s.object.double_illuminate = on; }; }
   | "no_image"         { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_image"); }
   | "no_reflection"    { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_reflection"); }
   | "no_radiosity"     { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_radiosity"); }

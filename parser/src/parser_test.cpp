@@ -758,16 +758,30 @@ TEST(ParserExpressions, RandIsPovRaysSequence) {
 }
 
 TEST(ParserObjects, NoShadowHollowAndIgnoredKeywordsWarn) {
-    ParseResult result =
-        test::parse_snippet("sphere { 0, 1 no_shadow hollow double_illuminate normal { bumps 0.5 } }", "w.pov");
+    ParseResult result = test::parse_snippet(
+        "sphere { 0, 1 no_shadow hollow double_illuminate no_reflection normal { bumps 0.5 } }", "w.pov");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     EXPECT_TRUE(result.scene->objects[0].no_shadow);
     EXPECT_TRUE(result.scene->objects[0].hollow);
-    EXPECT_EQ(test::count_warnings(result), 1);  // double_illuminate (hollow has a meaning: media)
+    EXPECT_EQ(result.scene->objects[0].double_illuminate, std::optional<bool>(true));
+    EXPECT_EQ(test::count_warnings(result), 1);  // no_reflection (hollow has a meaning: media)
     ASSERT_TRUE(result.scene->objects[0].material && result.scene->objects[0].material->normal);
     EXPECT_EQ(result.scene->objects[0].material->normal->pattern.kind, sg::Pattern::Kind::Bumps);
     EXPECT_DOUBLE_EQ(result.scene->objects[0].material->normal->bump_size, 0.5);
     for (const auto& d : result.diagnostics) EXPECT_EQ(d.location.line, 1);
+}
+
+TEST(ParserObjects, DoubleIlluminateTakesAnOptionalSwitch) {
+    ParseResult result = test::parse_snippet(
+        "disc { 0, y, 1 double_illuminate off }\n"
+        "disc { 0, y, 1 double_illuminate 1 }\n"
+        "disc { 0, y, 1 }\n",
+        "d.pov");
+    ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
+    EXPECT_EQ(result.scene->objects[0].double_illuminate, std::optional<bool>(false));
+    EXPECT_EQ(result.scene->objects[1].double_illuminate, std::optional<bool>(true));
+    EXPECT_FALSE(result.scene->objects[2].double_illuminate.has_value());
+    EXPECT_EQ(test::count_warnings(result), 0);
 }
 
 TEST(ParserObjects, ImageMapResolvesNextToTheScene) {

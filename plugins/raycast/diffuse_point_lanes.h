@@ -46,9 +46,10 @@ class DiffusePointLanes {
     static bool covers(const Hit& hit) {
         const Material& material = *hit.material;
         return hit.emitter == nullptr && hit.mix == nullptr && material.layers() == nullptr &&
-               hit.lit_by_global_lights && material.pigment_is_constant() && !material.has_glossy() &&
-               material.parameters().brilliance == 1.0f && material.parameters().diffuse_back == 0.0f &&
-               material.parameters().crand == 0.0f && !material.has_iridescence();
+               hit.lit_by_global_lights && !hit.double_illuminate && material.pigment_is_constant() &&
+               !material.has_glossy() && material.parameters().brilliance == 1.0f &&
+               material.parameters().diffuse_back == 0.0f && material.parameters().crand == 0.0f &&
+               !material.has_iridescence();
     }
 
     // Radiance towards rays[k] from hits[k] (covered hits), k < count <=

@@ -764,6 +764,10 @@ struct Object {
     bool inherits_material = false;  // `material` came from an enclosing group
     bool no_shadow = false;
     bool hollow = false;
+    // POV's double_illuminate, when the scene sets it (on or off). On a
+    // group it is set on every object inside, whatever they said: the
+    // outermost setting wins.
+    std::optional<bool> double_illuminate;
     // POV's light_group: an index into SceneGraph::light_groups (children
     // without one of their own are in it too); -1: none.
     int light_group = -1;

@@ -39,6 +39,9 @@ struct Hit {
     // scene's global lights reach it (light.h: light_reaches).
     std::int16_t light_group = -1;
     bool lit_by_global_lights = true;
+    // POV's double_illuminate: a light behind the surface lights it as if
+    // it were in front (local_shading.h: reflect_light_sample).
+    bool double_illuminate = false;
 
     // Unit normals turned to face the side `toward` (e.g. -ray.direction):
     // POV-Ray surfaces are two-sided.

@@ -161,7 +161,8 @@ void EmbreeScene::build() {
                                                        index,
                                                        instance.casts_shadow,
                                                        instance.lit_by_global_lights,
-                                                       instance.light_group};
+                                                       instance.light_group,
+                                                       instance.double_illuminate};
             }
             continue;
         }

@@ -75,6 +75,7 @@ struct PlainTriangles {
     bool casts_shadow = true;
     bool lit_by_global_lights = true;
     std::int16_t light_group = -1;
+    bool double_illuminate = false;
 };
 
 // One ray's answer from Embree.

@@ -120,6 +120,7 @@ void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const flo
         hit.casts_shadow = mesh.casts_shadow;
         hit.light_group = mesh.light_group;
         hit.lit_by_global_lights = mesh.lit_by_global_lights;
+        hit.double_illuminate = mesh.double_illuminate;
     }
 }
 
@@ -261,6 +262,7 @@ void EmbreeScene::complete_instance_hit(std::uint32_t index, std::uint32_t leaf,
     hit.casts_shadow = instance.casts_shadow;
     hit.light_group = instance.light_group;
     hit.lit_by_global_lights = instance.lit_by_global_lights;
+    hit.double_illuminate = surface.double_illuminate;
     hit.emitter = emitter_of(surface, hit.material);
 }
 
@@ -319,6 +321,7 @@ bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit)
     hit.casts_shadow = instance.casts_shadow;
     hit.light_group = instance.light_group;
     hit.lit_by_global_lights = instance.lit_by_global_lights;
+    hit.double_illuminate = instance.double_illuminate;
     hit.emitter = emitter_of(instance, hit.material);
     return true;
 }

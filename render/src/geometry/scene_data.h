@@ -74,6 +74,7 @@ struct Instance {
     bool casts_shadow = true;
     std::int16_t light_group = -1;                // POV's light_group (Hit::light_group)
     bool lit_by_global_lights = true;             // false in a light_group without global_lights
+    bool double_illuminate = false;               // POV's (Hit::double_illuminate)
     Vec3 bounds_lower{0.0f}, bounds_upper{0.0f};  // world, conservative
     sg::SourceLocation location;
 };

@@ -126,6 +126,23 @@ class LightGroupScope {
     int m_saved;
 };
 
+// POV's double_illuminate on a group reaches everything inside it,
+// overriding what the objects inside said: the outermost setting wins.
+class DoubleIlluminateScope {
+  public:
+    DoubleIlluminateScope(std::optional<bool>& current, const std::optional<bool>& own)
+        : m_current(current), m_saved(current) {
+        if (!current) current = own;
+    }
+    ~DoubleIlluminateScope() { m_current = m_saved; }
+    DoubleIlluminateScope(const DoubleIlluminateScope&) = delete;
+    DoubleIlluminateScope& operator=(const DoubleIlluminateScope&) = delete;
+
+  private:
+    std::optional<bool>& m_current;
+    std::optional<bool> m_saved;
+};
+
 class Builder {
   public:
     explicit Builder(sg::SceneGraph& graph) : m_graph(graph), m_data(std::make_unique<SceneData>()) {
@@ -501,6 +518,7 @@ class Builder {
                              m_light_group <= sg::kMaxLightGroups;
         instance.light_group = grouped ? std::int16_t(m_light_group) : std::int16_t(-1);
         instance.lit_by_global_lights = !grouped || m_graph.light_groups[std::size_t(m_light_group)].global_lights;
+        instance.double_illuminate = m_double_illuminate.value_or(false);
         m_data->instances.push_back(std::move(instance));
         m_data->texture_spaces.push_back(texture_owner_from_world);
         return std::uint32_t(m_data->instances.size() - 1);
@@ -510,6 +528,7 @@ class Builder {
                      const sg::MaterialRef& inherited, const DMat4& inherited_owner, bool no_shadow) {
         for (const sg::Object& object : objects) {
             const LightGroupScope group(m_light_group, object.light_group);
+            const DoubleIlluminateScope illuminated(m_double_illuminate, object.double_illuminate);
             const DMat4 world_from_object = world_from_parent * object.parent_from_object;
             const sg::MaterialRef& material = object.material ? object.material : inherited;
             // POV: a texture follows the transforms applied after it, i.e. it
@@ -892,6 +911,7 @@ class Builder {
     std::uint32_t add_csg_node(CsgTree& tree, const sg::Object& object, const DMat4& world_from_parent,
                                const sg::MaterialRef& inherited, const DMat4& inherited_owner, bool no_shadow,
                                bool inverted) {
+        const DoubleIlluminateScope illuminated(m_double_illuminate, object.double_illuminate);
         const DMat4 world_from_object = world_from_parent * object.parent_from_object;
         const sg::MaterialRef& material = object.material ? object.material : inherited;
         const DMat4 owner = object.material ? world_from_object : inherited_owner;
@@ -1213,7 +1233,8 @@ class Builder {
 
     sg::SceneGraph& m_graph;
     std::unique_ptr<SceneData> m_data;
-    int m_light_group = -1;  // the light_group of the objects being added (LightGroupScope)
+    int m_light_group = -1;                   // the light_group of the objects being added (LightGroupScope)
+    std::optional<bool> m_double_illuminate;  // of the objects being added (DoubleIlluminateScope)
     std::map<const sg::TriangleMesh*, int> m_mesh_uses;
     std::map<std::tuple<const sg::Function*, const std::string*, int, int>, std::shared_ptr<IsosurfaceGradientRecord>>
         m_isosurface_records;

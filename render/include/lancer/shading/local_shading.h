@@ -71,10 +71,17 @@ inline LobeRadiance reflect_light_sample(const ShadingContext& at, const LightSa
     const float cosine = std::abs(glm::dot(at.normal, sample.wi));
     const Color incident = sample.radiance * (sample.pdf == 1.0f ? cosine : cosine / sample.pdf);
     LobeRadiance reflected;
-    if (glm::dot(at.normal, sample.wi) > 0.0f) {
+    if (const float facing = glm::dot(at.normal, sample.wi); facing > 0.0f) {
         reflected.diffuse = at.material.diffuse_brdf(at.surface, at.normal, at.wo, sample.wi) * incident;
         if (at.material.has_glossy())
             reflected.glossy = at.material.glossy_brdf(at.surface, at.normal, at.wo, sample.wi) * incident;
+    } else if (at.hit.double_illuminate) {
+        // POV's double_illuminate: the front's diffuse, by |cos|, as if the
+        // light were mirrored in front. POV's highlights from behind need a
+        // half vector or mirror direction within a right angle of a light
+        // below the surface: left out.
+        const Vec3 mirrored = sample.wi - 2.0f * facing * at.normal;
+        reflected.diffuse = at.material.diffuse_brdf(at.surface, at.normal, at.wo, mirrored) * incident;
     } else {
         // POV lights a surface from behind only through diffuse backside.
         reflected.diffuse = at.material.backside_diffuse_brdf(at.surface, at.normal, sample.wi) * incident;
