@@ -250,6 +250,7 @@ class Evaluator {
     // An object's own uv_mapping, before its texture (POV-Ray's UV_FLAG).
     std::function<void(ShapeValue&)> object_uv_mapping(const sg::SourceLocation& at);
     std::function<void(ShapeValue&)> texture_edit(std::shared_ptr<sg::Material> texture);
+    std::function<void(ShapeValue&)> interior_texture_edit(std::shared_ptr<sg::Material> texture);
     std::function<void(ShapeValue&)> material_edit(std::shared_ptr<sg::Material> material);
     std::function<void(ShapeValue&)> pigment_edit(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at);
     std::function<void(ShapeValue&)> finish_edit(const Edits<sg::Finish>& edits, const sg::SourceLocation& at);

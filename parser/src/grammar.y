@@ -72,6 +72,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        TRANSLATE "translate" ROTATE "rotate" SCALE "scale" MATRIX "matrix" TRANSFORM "transform"
        INVERSE "inverse" TEXTURE "texture" PIGMENT "pigment" FINISH "finish" INTERIOR "interior"
        MATERIAL "material" NO_SHADOW "no_shadow" HOLLOW "hollow" DOUBLE_ILLUMINATE "double_illuminate"
+       INTERIOR_TEXTURE "interior_texture"
        NO_IMAGE "no_image" NO_REFLECTION "no_reflection" INSIDE_VECTOR "inside_vector"
        COLOR "color" COLOUR "colour" RGB "rgb" RGBF "rgbf" RGBT "rgbt" RGBFT "rgbft"
        SRGB "srgb" SRGBF "srgbf" SRGBT "srgbt" SRGBFT "srgbft"
@@ -524,6 +525,7 @@ object_mods
 object_mod
   : transform_item     { $$ = ev.transform_edit($1); }
   | texture            { $$ = ev.texture_edit($1); }
+  | "interior_texture" "{" texture_body "}" { $$ = ev.interior_texture_edit($3); }
   | pigment_block      { $$ = ev.pigment_edit($1, LOC(@1)); }
   | finish_block       { $$ = ev.finish_edit($1, LOC(@1)); }
   | normal_block       { $$ = ev.normal_edit($1, LOC(@1)); }

@@ -24,7 +24,8 @@ using MaterialPtr = std::shared_ptr<const sg::Material>;
 MaterialPtr in_child_space(const MaterialPtr& material, const sg::Mat4& parent_from_child) {
     const bool has_densities = std::any_of(material->interior.media.begin(), material->interior.media.end(),
                                            [](const sg::Media& m) { return !m.densities.empty(); });
-    if (material->pigment.kind == sg::Pigment::Kind::Solid && !material->normal && !has_densities)
+    if (material->pigment.kind == sg::Pigment::Kind::Solid && !material->normal && !has_densities &&
+        !material->interior_texture)
         return material;  // nothing to move
     auto moved = std::make_shared<sg::Material>(*material);
     move_patterns(*moved, parent_from_child);
@@ -33,6 +34,21 @@ MaterialPtr in_child_space(const MaterialPtr& material, const sg::Mat4& parent_f
 
 // POV: a texture on a union reaches every descendant that has none of its
 // own; a later pigment or finish on the union reaches them again.
+// POV-Ray promotes a group's interior_texture to every descendant without
+// one, a texture of its own or not (Post_Process); `inside` is in the
+// object's space.
+void give_interior_texture(sg::Object& object, const MaterialPtr& inside) {
+    if (object.material && object.material->interior_texture) return;
+    if (object.material && !object.inherits_material) {
+        auto with = std::make_shared<sg::Material>(*object.material);
+        with->interior_texture = inside;
+        object.material = with;
+    }
+    if (auto* group = std::get_if<sg::Group>(&object.shape))
+        for (auto& child : group->children)
+            give_interior_texture(child, in_child_space(inside, child.parent_from_object));
+}
+
 void give_material(sg::Object& object, const MaterialPtr& material, bool inherited = false) {
     object.material = material;
     object.inherits_material = inherited;
@@ -40,6 +56,8 @@ void give_material(sg::Object& object, const MaterialPtr& material, bool inherit
         for (auto& child : group->children) {
             if (!child.material || child.inherits_material)
                 give_material(child, in_child_space(material, child.parent_from_object), true);
+            else if (material->interior_texture)
+                give_interior_texture(child, in_child_space(material->interior_texture, child.parent_from_object));
         }
     }
 }
@@ -57,6 +75,11 @@ void drop_face_materials(sg::Object& object) {
 // Attaches a material written in the space parent_from_object maps into.
 // A texture's uv_mapping reaches its pigment, normal, image and pattern.
 void map_by_uv(sg::Material& material) {
+    if (material.interior_texture) {
+        auto inside = std::make_shared<sg::Material>(*material.interior_texture);
+        map_by_uv(*inside);
+        material.interior_texture = inside;
+    }
     material.uv_mapping = true;
     if (material.pattern) material.pattern->uv_mapping = true;
     material.pigment.pattern.uv_mapping = true;
@@ -219,7 +242,19 @@ std::function<void(ShapeValue&)> Evaluator::texture_edit(std::shared_ptr<sg::Mat
             return;
         }
         sg::Material material = *texture;
-        if (s.object.material) material.interior = s.object.material->interior;  // a texture has no interior
+        if (s.object.material) {
+            material.interior = s.object.material->interior;  // a texture has no interior
+            if (s.object.material->interior_texture)          // nor an interior_texture
+                material.interior_texture = current_in_parent_space(s, sg::Material{}).interior_texture;
+        }
+        attach_in_parent_space(s, material);
+    };
+}
+
+std::function<void(ShapeValue&)> Evaluator::interior_texture_edit(std::shared_ptr<sg::Material> texture) {
+    return [texture, fallback = default_texture()](ShapeValue& s) {
+        sg::Material material = current_in_parent_space(s, fallback);
+        material.interior_texture = texture;
         attach_in_parent_space(s, material);
     };
 }

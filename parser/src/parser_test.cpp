@@ -784,6 +784,31 @@ TEST(ParserObjects, DoubleIlluminateTakesAnOptionalSwitch) {
     EXPECT_EQ(test::count_warnings(result), 0);
 }
 
+// interior_texture: kept beside the texture whatever their order, in the
+// space a texture written at the same place would have (moving with the
+// object's later transforms, not its earlier ones).
+TEST(ParserObjects, InteriorTextureSitsBesideTheTexture) {
+    ParseResult result = test::parse_snippet(
+        "sphere { 0, 1 scale 2 interior_texture { pigment { checker rgb 1 rgb 0 } } texture { pigment { rgb x } } "
+        "translate 3*y }\n"
+        "sphere { 0, 1 texture { pigment { rgb x } } interior_texture { pigment { rgb y } } }\n"
+        "sphere { 0, 1 scale 2 texture { pigment { checker rgb 1 rgb 0 } } translate 3*y }\n",
+        "i.pov");
+    ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
+    EXPECT_EQ(test::count_warnings(result), 0);
+    const sg::Object& first = result.scene->objects[0];
+    ASSERT_TRUE(first.material && first.material->interior_texture);
+    EXPECT_EQ(first.material->pigment.color.rgb, sg::Vec3(1.0, 0.0, 0.0));
+    const sg::Mat4& inside = first.material->interior_texture->pigment.pattern.pattern_from_object;
+    const sg::Mat4& as_texture = result.scene->objects[2].material->pigment.pattern.pattern_from_object;
+    for (int column = 0; column < 4; ++column)
+        for (int row = 0; row < 4; ++row) EXPECT_NEAR(inside[column][row], as_texture[column][row], 1e-12);
+    EXPECT_NE(inside, sg::Mat4(1.0));  // the comparison means something
+    const sg::Object& second = result.scene->objects[1];
+    ASSERT_TRUE(second.material && second.material->interior_texture);
+    EXPECT_EQ(second.material->interior_texture->pigment.color.rgb, sg::Vec3(0.0, 1.0, 0.0));
+}
+
 TEST(ParserObjects, ImageMapResolvesNextToTheScene) {
     ParseResult result = test::parse_snippet("sphere { 0, 1 pigment { image_map { png \"missing.png\" } } }", "i.pov");
     ASSERT_FALSE(result.ok());

@@ -193,6 +193,11 @@ void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer, boo
         move_patterns(*moved, inner_from_outer, object_move);
         layer = moved;
     }
+    if (material.interior_texture) {
+        auto moved = std::make_shared<sg::Material>(*material.interior_texture);
+        move_patterns(*moved, inner_from_outer, object_move);
+        material.interior_texture = moved;
+    }
 }
 
 // ------------------------------------------------------------- patterns

@@ -59,14 +59,13 @@ const std::unordered_set<std::string>& builtin_names() {
 
 // Ignored POV blocks: swallowed with a warning so nothing is dropped silently.
 const std::unordered_set<std::string>& ignored_blocks() {
-    static const std::unordered_set<std::string> names = {"photons", "radiosity", "interior_texture", "subsurface",
-                                                          "mm_per_unit"};
+    static const std::unordered_set<std::string> names = {"photons", "radiosity", "subsurface", "mm_per_unit"};
     return names;
 }
 
 // POV-Ray words lancer does not implement: a clear error beats "unknown identifier".
 const std::unordered_set<std::string>& unsupported_words() {
-    static const std::unordered_set<std::string> names = {"lemon", "layered", "interior_texture", "dictionary"};
+    static const std::unordered_set<std::string> names = {"lemon", "layered", "dictionary"};
     return names;
 }
 

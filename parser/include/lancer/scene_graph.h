@@ -416,9 +416,13 @@ struct Material {
     std::vector<TextureMapEntry> texture_map;
     std::vector<MaterialRef> block_textures;
     std::vector<MaterialRef> layers_above;  // bottom to top
-    bool average = false;                   // texture { average texture_map { … } }: the entries weighted
-    bool uv_mapping = false;                // POV's texture { uv_mapping … }: every pattern of it at (u, v, 0)
-    std::string name;                       // the #declare'd name, if any, for summaries and errors
+    // POV's interior_texture: what the surface shows where a ray meets it
+    // from inside (against its normal), in the same space as the rest; its
+    // own interior is unused (the object's is this material's).
+    MaterialRef interior_texture;
+    bool average = false;     // texture { average texture_map { … } }: the entries weighted
+    bool uv_mapping = false;  // POV's texture { uv_mapping … }: every pattern of it at (u, v, 0)
+    std::string name;         // the #declare'd name, if any, for summaries and errors
     SourceLocation location;
 };
 

@@ -151,7 +151,7 @@ void EmbreeScene::build() {
         if (instance.mesh_in_world) {
             attach(make_triangles(mesh, instance.world_positions), GeometryEntry{nullptr, index});
             if (m_faces_are_triangles[index] && mesh.normals.empty() && mesh.uvs.empty() &&
-                instance.face_materials.empty()) {
+                instance.face_materials.empty() && instance.interior_material == nullptr) {
                 const unsigned id = unsigned(m_geometries.size() - 1);
                 if (m_plain_triangles.size() <= id) m_plain_triangles.resize(id + 1);
                 m_plain_triangles[id] = PlainTriangles{instance.world_positions.data(),

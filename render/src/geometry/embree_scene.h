@@ -167,8 +167,9 @@ class EmbreeScene final : public RenderScene {
     // The Hit on analytic instance `index` (or its CSG leaf `leaf`) at t.
     void complete_instance_hit(std::uint32_t index, std::uint32_t leaf, const Ray& ray, float t, int face,
                                Hit& hit) const;
+    // `ray_direction` decides POV's interior_texture.
     void complete_mesh_hit(const Instance& instance, bool faces_are_triangles, std::uint32_t primitive, float b1,
-                           float b2, Hit& hit) const;
+                           float b2, const Vec3& ray_direction, Hit& hit) const;
 
     std::unique_ptr<SceneData> m_data;
     RTCDevice m_device = nullptr;

@@ -124,6 +124,13 @@ void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const flo
     }
 }
 
+// POV-Ray shows an object's interior_texture where the ray meets the
+// surface from the side its (smooth, unbent) normal points away from.
+static void show_interior_texture(const Instance& instance, const Ray& ray, Hit& hit) {
+    if (instance.interior_material && glm::dot(hit.shading_normal, ray.direction) > 0.0f)
+        hit.material = instance.interior_material;
+}
+
 void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray, float t, int face, Hit& hit) const {
     DVec3 o, d;
     const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
@@ -154,7 +161,7 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
 }
 
 void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_triangles, std::uint32_t primitive,
-                                    float u, float v, Hit& hit) const {
+                                    float u, float v, const Vec3& ray_direction, Hit& hit) const {
     const MeshData& mesh = *instance.mesh;
     // Skipping the lookup when triangle i is face i saves one more cold load.
     const std::uint32_t face_index = faces_are_triangles ? primitive : mesh.face_of_triangle[primitive];
@@ -193,6 +200,9 @@ void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_tri
     // normals or texture coordinates to interpolate.
     const bool has_normals = !mesh.normals.empty(), has_uvs = !mesh.uvs.empty();
     const sg::TriangleMesh::Face* face = has_normals || has_uvs ? &mesh.faces[face_index] : nullptr;
+    // POV's normal of a flat triangle is the opposite of lancer's (see
+    // mesh_shape.cpp); a smooth one's is the corners' blend in both.
+    Vec3 pov_normal = -world_normal;
     if (has_normals && face->normal[0] >= 0) {
         DVec3 interpolated(0.0);
         const double weight[3] = {b0, b1, b2};
@@ -203,6 +213,7 @@ void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_tri
         if (glm::length(interpolated) > 0.0) {
             const Vec3 shading(instance.placement.normal_to_world_unit(interpolated));
             hit.shading_normal = shading;
+            pov_normal = shading;
             // Keep both normals on the side the mesh author's normals give.
             if (glm::dot(shading, hit.geometric_normal) < 0.0f) hit.geometric_normal = -hit.geometric_normal;
         }
@@ -221,6 +232,8 @@ void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_tri
     const Material* face_material =
         face_index < instance.face_materials.size() ? instance.face_materials[face_index] : nullptr;
     hit.material = face_material ? face_material : instance.material;
+    if (instance.interior_material && glm::dot(pov_normal, ray_direction) > 0.0f)
+        hit.material = instance.interior_material;
     hit.primitive_id = face_index;
 }
 
@@ -263,6 +276,7 @@ void EmbreeScene::complete_instance_hit(std::uint32_t index, std::uint32_t leaf,
     hit.light_group = instance.light_group;
     hit.lit_by_global_lights = instance.lit_by_global_lights;
     hit.double_illuminate = surface.double_illuminate;
+    show_interior_texture(surface, ray, hit);
     hit.emitter = emitter_of(surface, hit.material);
 }
 
@@ -315,7 +329,7 @@ bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit)
     hit.t = found.tfar;
     const std::uint32_t index = entry.instance;
     complete_mesh_hit(m_data->instances[index], m_faces_are_triangles[index] != 0, found.primitive, found.u, found.v,
-                      hit);
+                      ray.direction, hit);
     const Instance& instance = m_data->instances[index];
     hit.object_id = index;
     hit.casts_shadow = instance.casts_shadow;

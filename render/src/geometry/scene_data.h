@@ -68,6 +68,9 @@ struct Instance {
     bool mesh_in_world = false;  // world_positions used instead of instancing
     std::vector<float> world_positions;
     const Material* material = nullptr;
+    // POV's interior_texture: shown where a ray meets the surface against
+    // its normal (null: none, `material` on both sides).
+    const Material* interior_material = nullptr;
     std::vector<const Material*> face_materials;  // by face; null: `material`
     const Light* emitter = nullptr;               // for emissive materials
     const Light* light = nullptr;                 // the area light this surface is

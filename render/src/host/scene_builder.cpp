@@ -244,6 +244,20 @@ class Builder {
         return material;
     }
 
+    // POV's interior_texture of `ref`, with the object's interior (what
+    // the rays inside see is the object's, whichever side they meet); null
+    // when it has none.
+    const Material* interior_material_for(const sg::MaterialRef& ref, bool hollow) {
+        if (!ref || !ref->interior_texture) return nullptr;
+        auto found = m_interior_materials.find({ref.get(), hollow});
+        if (found != m_interior_materials.end()) return found->second;
+        sg::Material inside = *ref->interior_texture;
+        inside.interior = ref->interior;
+        const Material* material = make_material(inside, hollow);
+        m_interior_materials[{ref.get(), hollow}] = material;
+        return material;
+    }
+
     const Material* make_material(const sg::Material& written, bool hollow = false) {
         return build_material(written, hollow, material_entries(written, written.interior, hollow, {}));
     }
@@ -550,6 +564,7 @@ class Builder {
             if (!make_leaf(object, world_from_object, material_for(material, object.hollow), object_no_shadow,
                            instance))
                 continue;
+            instance.interior_material = interior_material_for(material, object.hollow);
             push_instance(std::move(instance), glm::inverse(owner));
         }
     }
@@ -945,6 +960,7 @@ class Builder {
             } else {
                 make_leaf(object, world_from_object, material_for(material, object.hollow), object_no_shadow, instance);
             }
+            instance.interior_material = interior_material_for(material, object.hollow);
             if (!instance.shape) {
                 switch (instance.kind) {
                 case ShapeKind::Sphere: instance.shape = make_sphere_shape(instance.sphere); break;
@@ -1240,6 +1256,7 @@ class Builder {
         m_isosurface_records;
     std::map<const sg::TriangleMesh*, const MeshData*> m_meshes;
     std::map<std::pair<const sg::Material*, bool>, const Material*> m_materials;
+    std::map<std::pair<const sg::Material*, bool>, const Material*> m_interior_materials;
     const Material* m_default_material = nullptr;
 };
 
