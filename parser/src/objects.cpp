@@ -32,8 +32,6 @@ MaterialPtr in_child_space(const MaterialPtr& material, const sg::Mat4& parent_f
     return moved;
 }
 
-// POV: a texture on a union reaches every descendant that has none of its
-// own; a later pigment or finish on the union reaches them again.
 // POV-Ray promotes a group's interior_texture to every descendant without
 // one, a texture of its own or not (Post_Process); `inside` is in the
 // object's space.
@@ -49,6 +47,8 @@ void give_interior_texture(sg::Object& object, const MaterialPtr& inside) {
             give_interior_texture(child, in_child_space(inside, child.parent_from_object));
 }
 
+// POV: a texture on a union reaches every descendant that has none of its
+// own; a later pigment or finish on the union reaches them again.
 void give_material(sg::Object& object, const MaterialPtr& material, bool inherited = false) {
     object.material = material;
     object.inherits_material = inherited;

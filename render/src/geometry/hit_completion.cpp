@@ -124,10 +124,12 @@ void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const flo
     }
 }
 
-// POV-Ray shows an object's interior_texture where the ray meets the
-// surface from the side its (smooth, unbent) normal points away from.
-static void show_interior_texture(const Instance& instance, const Ray& ray, Hit& hit) {
-    if (instance.interior_material && glm::dot(hit.shading_normal, ray.direction) > 0.0f)
+// POV-Ray shows an object's interior_texture where the ray runs along the
+// surface's normal (POV's, smooth and unbent): it meets the surface from
+// inside.
+static void show_interior_texture(const Instance& instance, const Vec3& pov_normal, const Vec3& ray_direction,
+                                  Hit& hit) {
+    if (instance.interior_material && glm::dot(pov_normal, ray_direction) > 0.0f)
         hit.material = instance.interior_material;
 }
 
@@ -232,8 +234,7 @@ void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_tri
     const Material* face_material =
         face_index < instance.face_materials.size() ? instance.face_materials[face_index] : nullptr;
     hit.material = face_material ? face_material : instance.material;
-    if (instance.interior_material && glm::dot(pov_normal, ray_direction) > 0.0f)
-        hit.material = instance.interior_material;
+    show_interior_texture(instance, pov_normal, ray_direction, hit);
     hit.primitive_id = face_index;
 }
 
@@ -276,7 +277,7 @@ void EmbreeScene::complete_instance_hit(std::uint32_t index, std::uint32_t leaf,
     hit.light_group = instance.light_group;
     hit.lit_by_global_lights = instance.lit_by_global_lights;
     hit.double_illuminate = surface.double_illuminate;
-    show_interior_texture(surface, ray, hit);
+    show_interior_texture(surface, hit.shading_normal, ray.direction, hit);
     hit.emitter = emitter_of(surface, hit.material);
 }
 

@@ -7,17 +7,13 @@
 #include <random>
 #include <string>
 
-#include "lancer/host/scene_compiler.h"
-#include "lancer/parser.h"
-#include "lancer/render_scene.h"
+#include "pov_text_scene.h"
 
 namespace lancer {
 namespace {
 
 std::unique_ptr<RenderScene> compile(const std::string& objects) {
-    ParseResult parsed = parse_scene_string("#version 3.7;\ncamera { location -5*z look_at 0 }\n" + objects, "<block>");
-    if (!parsed.ok()) throw std::runtime_error(format_diagnostic(parsed.diagnostics.front()));
-    return compile_scene(*parsed.scene);
+    return testing::compile_pov_text("camera { location -5*z look_at 0 }\n" + objects, "<block>");
 }
 
 // A 2 x 2 light square 6 units up, centred over x = 2.

@@ -20,6 +20,12 @@ bool embree_can_trace(const Ray& ray) {
            !std::isnan(ray.t_max);
 }
 
+// Embree's answer for a ray that meets nothing: its own range, no ids.
+EmbreeHit no_hit(const Ray& ray) {
+    const float t_near = glm::max(ray.t_min, 0.0f);
+    return EmbreeHit{t_near, glm::max(ray.t_max, t_near), kInvalidId, kInvalidId, kInvalidId, 0.0f, 0.0f};
+}
+
 void fill_embree_ray(const Ray& ray, RTCRay& out) {
     out.org_x = ray.origin.x;
     out.org_y = ray.origin.y;
@@ -27,8 +33,9 @@ void fill_embree_ray(const Ray& ray, RTCRay& out) {
     out.dir_x = ray.direction.x;
     out.dir_y = ray.direction.y;
     out.dir_z = ray.direction.z;
-    out.tnear = glm::max(ray.t_min, 0.0f);
-    out.tfar = glm::max(ray.t_max, out.tnear);
+    const EmbreeHit range = no_hit(ray);
+    out.tnear = range.tnear;
+    out.tfar = range.tfar;
     out.time = 0.0f;
     out.mask = 0xffffffffu;
     out.id = 0;
@@ -54,24 +61,22 @@ inline void finish_surface(Hit& hit, const Vec3& ray_direction, const SceneData&
 }  // namespace
 
 bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRayHit rayhit;
-    fill_embree_ray(ray, rayhit.ray);
-    rayhit.hit.geomID = kInvalidId;
-    rayhit.hit.primID = kInvalidId;
-    rayhit.hit.instID[0] = kInvalidId;
-    rayhit.hit.u = rayhit.hit.v = 0.0f;
-    EmbreeHit found{rayhit.ray.tnear,     rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
-                    rayhit.hit.instID[0], rayhit.hit.u,    rayhit.hit.v};
-    if (embree_can_trace(ray)) {
-        if (m_traces_list) {
-            m_few_shapes.nearest(*m_data, ray, found);
-        } else {
-            rtcIntersect1(m_scene, &context, &rayhit);
-            found = EmbreeHit{rayhit.ray.tnear,     rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
-                              rayhit.hit.instID[0], rayhit.hit.u,    rayhit.hit.v};
-        }
+    // An untraceable ray meets only the shapes outside the BVH (complete_hit).
+    EmbreeHit found = no_hit(ray);
+    if (embree_can_trace(ray) && m_traces_list) {
+        m_few_shapes.nearest(*m_data, ray, found);
+    } else if (embree_can_trace(ray)) {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRayHit rayhit;
+        fill_embree_ray(ray, rayhit.ray);
+        rayhit.hit.geomID = kInvalidId;
+        rayhit.hit.primID = kInvalidId;
+        rayhit.hit.instID[0] = kInvalidId;
+        rayhit.hit.u = rayhit.hit.v = 0.0f;
+        rtcIntersect1(m_scene, &context, &rayhit);
+        found = EmbreeHit{rayhit.ray.tnear,     rayhit.ray.tfar, rayhit.hit.geomID, rayhit.hit.primID,
+                          rayhit.hit.instID[0], rayhit.hit.u,    rayhit.hit.v};
     }
     if (!complete_hit(ray, found, hit)) return false;
     hit.ray_direction = ray.direction;
@@ -82,10 +87,8 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
 void EmbreeScene::trace_packet(const Ray* rays, int lanes, PacketAnswers& answers) const {
     if (m_traces_list) {
         for (int k = 0; k < lanes; ++k) {
-            const Ray& ray = rays[k];
-            const float t_near = glm::max(ray.t_min, 0.0f);  // as fill_embree_ray
-            EmbreeHit found{t_near, glm::max(ray.t_max, t_near), kInvalidId, kInvalidId, kInvalidId, 0.0f, 0.0f};
-            if (embree_can_trace(ray)) m_few_shapes.nearest(*m_data, ray, found);
+            EmbreeHit found = no_hit(rays[k]);
+            if (embree_can_trace(rays[k])) m_few_shapes.nearest(*m_data, rays[k], found);
             answers.tnear[k] = found.tnear;
             answers.tfar[k] = found.tfar;
             answers.geometry[k] = found.geometry;
@@ -241,15 +244,14 @@ bool EmbreeScene::may_block_towards(const Vec3& origin, const Vec3& corner, cons
     if (!m_traces_list) return true;
     const DVec3 apex(origin), base(corner);
     const DVec3 points[5] = {apex, base, base + DVec3(edge1), base + DVec3(edge1) + DVec3(edge2), base + DVec3(edge2)};
-    double reach = 0.0;  // the longest segment
+    double reach = 0.0, largest = 0.0;  // the longest segment, the largest coordinate
     for (const DVec3& p : points) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return true;
         reach = std::max(reach, glm::length(p - apex));
+        largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
     }
     // The shadow rays run between floats near these points, along rounded
     // directions: a thousand times their error keeps the answer safe.
-    double largest = 0.0;
-    for (const DVec3& p : points) largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
     const double margin = 1e-4 * reach + 1e-6 * largest;
     for (std::uint32_t index : m_unbounded) {
         const Instance& instance = m_data->instances[index];

@@ -37,18 +37,25 @@ void ShapeList::add(const Instance& instance, std::uint32_t index, unsigned geom
         Entry{instance.bounds_lower, instance.bounds_upper, index, geometry, primitive, instance.casts_shadow});
 }
 
-void ShapeList::nearest(const SceneData& data, const Ray& ray, EmbreeHit& found) const {
-    const Vec3 inverse_direction = 1.0f / ray.direction;
+// The nearest crossing of one listed shape over [t_near, t_far], as
+// Embree's user-geometry callbacks compute it.
+bool ShapeList::crosses(const SceneData& data, const Entry& shape, const Ray& ray, float t_near, float t_far, double& t,
+                        int& face, std::uint32_t& leaf) {
     const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
     const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+    DVec3 o, d;
+    ray_to_object(data.instances[shape.instance], org, dir, o, d);
+    return intersect_analytic(data, shape.instance, o, d, t_near, t_far, t, face, leaf);
+}
+
+void ShapeList::nearest(const SceneData& data, const Ray& ray, EmbreeHit& found) const {
+    const Vec3 inverse_direction = 1.0f / ray.direction;
     for (const Entry& shape : m_shapes) {
         if (!meets_box(ray.origin, inverse_direction, shape.lower, shape.upper, found.tnear, found.tfar)) continue;
-        DVec3 o, d;
-        ray_to_object(data.instances[shape.instance], org, dir, o, d);
         double t;
         int face;
         std::uint32_t leaf;
-        if (!intersect_analytic(data, shape.instance, o, d, found.tnear, found.tfar, t, face, leaf)) continue;
+        if (!crosses(data, shape, ray, found.tnear, found.tfar, t, face, leaf)) continue;
         const float t_float = float(t);
         if (!(t_float < found.tfar)) continue;
         found.tfar = t_float;
@@ -61,17 +68,13 @@ void ShapeList::nearest(const SceneData& data, const Ray& ray, EmbreeHit& found)
 
 bool ShapeList::occluded(const SceneData& data, const Ray& ray, float t_near, float t_far) const {
     const Vec3 inverse_direction = 1.0f / ray.direction;
-    const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
-    const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
     for (const Entry& shape : m_shapes) {
         if (!shape.casts_shadow || !meets_box(ray.origin, inverse_direction, shape.lower, shape.upper, t_near, t_far))
             continue;
-        DVec3 o, d;
-        ray_to_object(data.instances[shape.instance], org, dir, o, d);
         double t;
         int face;
         std::uint32_t leaf;
-        if (intersect_analytic(data, shape.instance, o, d, t_near, t_far, t, face, leaf)) return true;
+        if (crosses(data, shape, ray, t_near, t_far, t, face, leaf)) return true;
     }
     return false;
 }
@@ -83,6 +86,18 @@ bool ShapeList::may_meet_hull(const DVec3* points, int point_count, const DVec3*
         hull_lower = glm::min(hull_lower, points[i]);
         hull_upper = glm::max(hull_upper, points[i]);
     }
+    // The hull's extent along each axis, the same for every shape.
+    constexpr int kMostAxes = 8;
+    double hull_min[kMostAxes], hull_max[kMostAxes];
+    axis_count = std::min(axis_count, kMostAxes);  // fewer axes: still conservative
+    for (int a = 0; a < axis_count; ++a) {
+        hull_min[a] = hull_max[a] = glm::dot(points[0], axes[a]);
+        for (int i = 1; i < point_count; ++i) {
+            const double x = glm::dot(points[i], axes[a]);
+            hull_min[a] = std::min(hull_min[a], x);
+            hull_max[a] = std::max(hull_max[a], x);
+        }
+    }
     for (const Entry& shape : m_shapes) {
         if (!shape.casts_shadow) continue;
         const DVec3 lower = DVec3(shape.lower) - margin, upper = DVec3(shape.upper) + margin;
@@ -91,16 +106,9 @@ bool ShapeList::may_meet_hull(const DVec3* points, int point_count, const DVec3*
         const DVec3 centre = 0.5 * (lower + upper), half = 0.5 * (upper - lower);
         bool separated = false;
         for (int a = 0; a < axis_count && !separated; ++a) {
-            const DVec3& axis = axes[a];
-            const double box_middle = glm::dot(centre, axis);
-            const double box_reach = glm::dot(half, glm::abs(axis));
-            double hull_min = glm::dot(points[0], axis), hull_max = hull_min;
-            for (int i = 1; i < point_count; ++i) {
-                const double x = glm::dot(points[i], axis);
-                hull_min = std::min(hull_min, x);
-                hull_max = std::max(hull_max, x);
-            }
-            separated = hull_max < box_middle - box_reach || box_middle + box_reach < hull_min;
+            const double box_middle = glm::dot(centre, axes[a]);
+            const double box_reach = glm::dot(half, glm::abs(axes[a]));
+            separated = hull_max[a] < box_middle - box_reach || box_middle + box_reach < hull_min[a];
         }
         if (!separated) return true;
     }

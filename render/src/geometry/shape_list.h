@@ -51,6 +51,8 @@ class ShapeList {
         unsigned geometry, primitive;
         bool casts_shadow;
     };
+    static bool crosses(const SceneData& data, const Entry& shape, const Ray& ray, float t_near, float t_far, double& t,
+                        int& face, std::uint32_t& leaf);
     std::vector<Entry> m_shapes;
 };
 

@@ -12,17 +12,14 @@
 #include <string>
 
 #include "geometry/embree_scene.h"
-#include "lancer/host/scene_compiler.h"
-#include "lancer/parser.h"
+#include "pov_text_scene.h"
 #include "scene_test_helpers.h"
 
 namespace lancer {
 namespace {
 
 std::unique_ptr<RenderScene> compile(const std::string& objects) {
-    ParseResult parsed = parse_scene_string("#version 3.7;\ncamera { location -5*z look_at 0 }\n" + objects, "<list>");
-    if (!parsed.ok()) throw std::runtime_error(format_diagnostic(parsed.diagnostics.front()));
-    return compile_scene(*parsed.scene);
+    return testing::compile_pov_text("camera { location -5*z look_at 0 }\n" + objects, "<list>");
 }
 
 bool traces_list(const RenderScene& scene) {

@@ -7,9 +7,7 @@
 
 #include <string>
 
-#include "lancer/host/scene_compiler.h"
-#include "lancer/parser.h"
-#include "lancer/render_scene.h"
+#include "pov_text_scene.h"
 #include "scene_test_helpers.h"
 
 namespace lancer {
@@ -18,9 +16,7 @@ namespace {
 // Whether the surface that a ray along +z through (x, 0) meets is double
 // illuminated.
 bool illuminated_at(const std::string& objects, float x) {
-    ParseResult parsed = parse_scene_string("#version 3.7;\n" + objects, "<double>");
-    if (!parsed.ok()) throw std::runtime_error(format_diagnostic(parsed.diagnostics.front()));
-    const auto scene = compile_scene(*parsed.scene);
+    const auto scene = testing::compile_pov_text(objects, "<double>");
     Hit hit;
     if (!scene->intersect(testing::make_ray(Vec3(x, 0.0f, -10.0f), Vec3(0, 0, 1)), hit))
         throw std::runtime_error("no hit");

@@ -37,12 +37,8 @@ inline Color atmosphere_transmittance(const RenderScene& scene, const Ray& ray) 
     return glm::exp(-pov_media_optical_depth(atmosphere, ray.origin, ray.direction / scale, length));
 }
 
-// How much light leaving `target` reaches the hit: 1 when nothing lies
-// between, 0 behind an opaque shadow caster. Transparent surfaces on the way
-// filter it by transparency * transmission tint without bending it
-// (POV-Ray's filtered shadows), so a fully transmitting object casts no
-// shadow. `own_light`'s surface is skipped: the proxy of a sphere light sits
-// at its centre, inside the light's own geometry.
+// Whether the atmosphere or fog dims `light` on its way to a surface
+// (POV's media_attenuation; fog too).
 inline bool dimmed_on_its_way(const RenderScene& scene, const Light* light) {
     return light != nullptr && light->dimmed_by_atmosphere() && (scene.has_media() || scene.fog() != nullptr);
 }
@@ -117,6 +113,12 @@ inline Color surfaces_transmittance(const RenderScene& scene, Ray ray, const Vec
     return Color(0.0f);
 }
 
+// How much light leaving `target` reaches the hit: 1 when nothing lies
+// between, 0 behind an opaque shadow caster. Transparent surfaces on the way
+// filter it by transparency * transmission tint without bending it
+// (POV-Ray's filtered shadows), so a fully transmitting object casts no
+// shadow. `own_light`'s surface is skipped: the proxy of a sphere light sits
+// at its centre, inside the light's own geometry.
 inline Color transmittance_to(const RenderScene& scene, const Hit& from, const Vec3& target,
                               const Light* own_light = nullptr) {
     const Ray ray = from.spawn_ray_to(target);
@@ -195,14 +197,13 @@ class PovAreaShadow {
              distance(c[3], c[2]) > 0.1f || distance(c[2], c[0]) > 0.1f)) {
             const int low_u = (u1 + u2) / 2, high_u = (u1 + u2 + 1) / 2;  // floor and ceil of the midpoint
             const int low_v = (v1 + v2) / 2, high_v = (v1 + v2 + 1) / 2;
-            if (m_dimmed) aim_at_twice_the_centre();
-            c[0] = subset(u1, v1, low_u, low_v, level + 1);
-            if (m_dimmed) aim_at_twice_the_centre();
-            c[1] = subset(high_u, v1, u2, low_v, level + 1);
-            if (m_dimmed) aim_at_twice_the_centre();
-            c[2] = subset(u1, high_v, low_u, v2, level + 1);
-            if (m_dimmed) aim_at_twice_the_centre();
-            c[3] = subset(high_u, high_v, u2, v2, level + 1);
+            const int quarters[4][4] = {
+                {u1, v1, low_u, low_v}, {high_u, v1, u2, low_v}, {u1, high_v, low_u, v2}, {high_u, high_v, u2, v2}};
+            for (int i = 0; i < 4; ++i) {
+                if (m_dimmed) aim_at_twice_the_centre();  // POV aims its light ray before each quarter
+                const int* q = quarters[i];
+                c[i] = subset(q[0], q[1], q[2], q[3], level + 1);
+            }
         }
         return (c[0] + c[1] + c[2] + c[3]) * 0.25f;
     }
