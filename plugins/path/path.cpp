@@ -187,7 +187,7 @@ class PathIntegrator final : public Integrator {
             // without media skips this): emission, attenuation, and
             // perhaps a scattering that continues the path from inside.
             if (scene.has_media()) {
-                const SegmentMedia media = media_before(scene, ray, found ? &hit : nullptr, inside);
+                const SegmentMedia media = media_along(scene, inside);
                 if (!media.empty()) {
                     const float length = found ? hit.t : kMediaEscapeDistance;
                     const MediumInteraction event = track_segment(media, ray.origin, ray.direction, length, sampler);
@@ -295,7 +295,7 @@ class PathIntegrator final : public Integrator {
             // sampling record of the vertex before it, for MIS.
             const bool passes_straight = scene.has_media() && scattered.is_transmission && scattered.is_delta &&
                                          std::abs(material.parameters().ior - 1.0f) < 1e-6f;
-            if (scene.has_media() && scattered.is_transmission) inside = inside.crossed(hit, hit.is_front_face(wo));
+            if (scene.has_media() && scattered.is_transmission) inside = inside.crossed(hit);
             if (!passes_straight) {
                 delta_bounce = scattered.is_delta;
                 previous_pdf = scattered.pdf;

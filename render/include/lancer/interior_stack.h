@@ -28,19 +28,20 @@ struct InteriorStack {
         if (size < kDepth) entries[std::size_t(size++)] = entry;
     }
 
-    // After a ray is transmitted through `hit`, entering or leaving its object.
-    InteriorStack crossed(const Hit& hit, bool entering) const {
+    // After a ray is transmitted through `hit`: POV-Ray's rule (Trace::
+    // ComputeRefraction) goes by the list, not by the face. The object
+    // leaves the list if it is in it, else it joins it: a ray that passes a
+    // polygon, which has no inside, is "in" it from then on, whichever side
+    // it came from, and a non-hollow one then hides fog and media beyond.
+    InteriorStack crossed(const Hit& hit) const {
         InteriorStack next = *this;
-        if (entering) {
-            next.push(Entry{hit.material, hit.object_id});
-            return next;
-        }
         for (int i = next.size - 1; i >= 0; --i)
             if (next.entries[std::size_t(i)].object_id == hit.object_id) {
                 for (int j = i; j + 1 < next.size; ++j) next.entries[std::size_t(j)] = next.entries[std::size_t(j + 1)];
                 --next.size;
-                break;
+                return next;
             }
+        next.push(Entry{hit.material, hit.object_id});
         return next;
     }
 };

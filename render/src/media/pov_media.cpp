@@ -22,38 +22,35 @@
 
 namespace lancer {
 
-SegmentMedia media_before(const RenderScene& scene, const Ray& ray, const Hit* hit, const InteriorStack& inside) {
+SegmentMedia media_along(const RenderScene& scene, const InteriorStack& inside) {
     SegmentMedia media;
-    const MediumRegion atmosphere = scene.atmosphere();
-    if (inside.size > 0) {
-        bool all_hollow = true;
-        for (int i = inside.size - 1; i >= 0; --i) {
-            const InteriorStack::Entry& entry = inside.entries[std::size_t(i)];
-            const MaterialParameters& p = entry.material->parameters();
-            all_hollow = all_hollow && p.hollow;
-            if (!p.medium) continue;
-            const MediumRegion region{p.medium, entry.object_id};
-            if (!media.interior)
-                media.interior = region;
-            else if (!media.outer_interior)
-                media.outer_interior = region;
-        }
-        // POV: no media at all in a ray inside a solid object.
-        if (!all_hollow) return SegmentMedia{};
-        media.open = atmosphere;
-        media.in_open = true;
-        return media;
+    bool all_hollow = true;
+    for (int i = inside.size - 1; i >= 0; --i) {
+        const InteriorStack::Entry& entry = inside.entries[std::size_t(i)];
+        const MaterialParameters& p = entry.material->parameters();
+        all_hollow = all_hollow && p.hollow;
+        if (!p.medium) continue;
+        const MediumRegion region{p.medium, entry.object_id};
+        if (!media.interior)
+            media.interior = region;
+        else if (!media.outer_interior)
+            media.outer_interior = region;
     }
-    if (hit == nullptr || hit->is_front_face(-ray.direction)) {
-        media.open = atmosphere;
-        media.in_open = true;
-        return media;
-    }
+    // POV: no media at all in a ray inside a solid object.
+    if (!all_hollow) return SegmentMedia{};
+    media.open = scene.atmosphere();
+    media.in_open = true;
+    return media;
+}
+
+SegmentMedia media_before_judged_by_face(const RenderScene& scene, const Ray& ray, const Hit* hit) {
+    if (hit == nullptr || hit->is_front_face(-ray.direction)) return media_along(scene, {});
     // The segment ends on a back face: it ran inside that object.
+    SegmentMedia media;
     const MaterialParameters& container = hit->material->parameters();
     if (!container.hollow) return media;  // a solid object: no media, not even the atmosphere
     if (container.medium) media.interior = MediumRegion{container.medium, hit->object_id};
-    media.open = atmosphere;
+    media.open = scene.atmosphere();
     media.in_open = true;
     return media;
 }

@@ -206,7 +206,7 @@ Color shadow_transmittance(const RenderScene& scene, const Ray& shadow_ray, cons
         const bool found = scene.intersect(probe, next);
         const bool before_end = found && next.t <= ray.t_max;
         const float stretch = (before_end ? next.t : ray.t_max) * scale;
-        const SegmentMedia media = media_before(scene, probe, found ? &next : nullptr);
+        const SegmentMedia media = media_before_judged_by_face(scene, probe, found ? &next : nullptr);
         throughput *= segment_transmittance(media, ray.origin, ray.direction / scale, stretch, sampler);
         if (!before_end || is_black(throughput)) return throughput;
         // A blocker passes light only straight through (no_shadow ones and

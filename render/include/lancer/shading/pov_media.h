@@ -5,7 +5,7 @@
 //
 // Which media a segment crosses (POV's rule: an interior's media show only
 // inside a `hollow` object; the atmosphere fills the open and hollow
-// objects): media_before(). A scene without media never gets here
+// objects): media_along(). A scene without media never gets here
 // (RenderScene::has_media()).
 #pragma once
 
@@ -16,12 +16,10 @@
 
 namespace lancer {
 
-// The media of the segment a ray ran to reach `hit` (null: it escaped).
-// With objects in `inside`: the media of each (hollow ones only, as POV
-// shows them; the innermost two at most), and the atmosphere if every one
-// is hollow. With none: the interior medium of the object whose back face
-// ends the segment (a ray that started inside, such as a camera in an
-// object), and the atmosphere unless that object is solid.
+// The media of a stretch of ray that runs inside the objects `inside` lists
+// (POV's list of interiors, lancer/interior_stack.h): the media of each
+// (hollow ones only, as POV shows them; the innermost two at most), and the
+// atmosphere if every one is hollow (none: the open air).
 struct SegmentMedia {
     MediumRegion interior;
     MediumRegion outer_interior;  // a second, enclosing interior with media
@@ -29,7 +27,11 @@ struct SegmentMedia {
     bool in_open = false;  // outside every solid object: the atmosphere and fog apply
     bool empty() const { return !interior && !outer_interior && !open; }
 };
-SegmentMedia media_before(const RenderScene& scene, const Ray& ray, const Hit* hit, const InteriorStack& inside = {});
+SegmentMedia media_along(const RenderScene& scene, const InteriorStack& inside);
+// For a ray whose list nobody kept (path's shadow rays through media): the
+// stretch that ends on a back face ran inside that object, one that ends
+// on a front face or escapes ran in the open.
+SegmentMedia media_before_judged_by_face(const RenderScene& scene, const Ray& ray, const Hit* hit);
 
 // POV's distance for a ray that escapes (its BOUND_HUGE).
 inline constexpr float kMediaEscapeDistance = 2.0e10f;
@@ -57,16 +59,16 @@ Color pov_media_optical_depth(const MediumRegion& region, const Vec3& origin, co
 
 // What an integrator calls with the radiance it found along `ray` (hit null:
 // the background): the radiance after the segment's media. Free when the
-// scene has none. `inside` lists the objects the ray runs in; a camera ray
-// leaves it empty (media_before finds a camera inside an object).
+// scene has none. `inside` lists the objects the ray runs in; a camera ray's
+// are RenderScene::camera_interiors().
 // Rainbows (lancer/rainbow.h) come first, fog (lancer/fog.h) last, nearest
 // the eye, as in POV.
 inline Color seen_through_media(const RenderScene& scene, const Ray& ray, const Hit* hit, const Color& radiance,
-                                const MediaLighting& lighting, const InteriorStack& inside = {}) {
+                                const MediaLighting& lighting, const InteriorStack& inside) {
     const SceneFog* fog = scene.fog();
     const SceneRainbows* rainbows = scene.rainbows();
     if (!scene.has_media() && fog == nullptr && rainbows == nullptr) return radiance;
-    const SegmentMedia media = media_before(scene, ray, hit, inside);
+    const SegmentMedia media = media_along(scene, inside);
     if (media.empty() && !((fog || rainbows) && media.in_open)) return radiance;
     const float scale = glm::length(ray.direction);
     const Vec3 direction = ray.direction / scale;

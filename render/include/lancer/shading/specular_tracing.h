@@ -117,14 +117,14 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
 // ray past max_depth or under min_weight is not traced and counts black, as in POV-Ray.
 template <class LocalTerm>
 Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
-                     const LocalTerm& local_term, int level = 1, float weight = 1.0f, const InteriorStack& inside = {});
+                     const LocalTerm& local_term, int level, float weight, const InteriorStack& inside);
 
 // Follows `direction` from `hit` with `path_weight` (black: not at all):
 // the radiance seen there, raised to `exponent` (POV's reflection
 // exponent) and weighted.
 template <class LocalTerm>
-Color follow_specular(const Hit& hit, bool entering, const Color& path_weight, const Vec3& direction, float exponent,
-                      bool transmitted, const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
+Color follow_specular(const Hit& hit, const Color& path_weight, const Vec3& direction, float exponent, bool transmitted,
+                      const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
                       const LocalTerm& local_term, int level, float weight, const InteriorStack& inside) {
     if (is_black(path_weight)) return Color(0.0f);
     const float next_weight = weight * max_component(path_weight);
@@ -132,7 +132,7 @@ Color follow_specular(const Hit& hit, bool entering, const Color& path_weight, c
     // A transmitted ray enters or leaves the object (media see it).
     const bool crosses = transmitted && (scene.has_media() || scene.fog() || scene.rainbows());
     Color seen = trace_specular(hit.spawn_ray(direction), scene, sampler, options, local_term, level + 1, next_weight,
-                                crosses ? inside.crossed(hit, entering) : inside);
+                                crosses ? inside.crossed(hit) : inside);
     if (exponent != 1.0f) seen = glm::pow(glm::max(seen, Color(0.0f)), Color(exponent));
     return path_weight * seen;
 }
@@ -170,13 +170,13 @@ Color layered_surface_radiance(const Ray& ray, const Hit& hit, const MaterialLay
         // POV weighs a layer's reflected ray by the light reaching the layer.
         const float reaching = std::min(1.0f, std::fabs(pov_grey(above)));
         if (reflects)
-            radiance += follow_specular(seen, at.entering, split.reflection, split.reflected,
-                                        at.material.parameters().reflection_exponent, false, scene, sampler, options,
-                                        local_term, level, weight * reaching, inside);
+            radiance +=
+                follow_specular(seen, split.reflection, split.reflected, at.material.parameters().reflection_exponent,
+                                false, scene, sampler, options, local_term, level, weight * reaching, inside);
         above *= layer_passes(at);
     }
-    radiance += follow_specular(top, top_at.entering, top_split.transmission, top_split.refracted, 1.0f, true, scene,
-                                sampler, options, local_term, level, weight, inside);
+    radiance += follow_specular(top, top_split.transmission, top_split.refracted, 1.0f, true, scene, sampler, options,
+                                local_term, level, weight, inside);
     return radiance;
 }
 
@@ -194,11 +194,10 @@ Color specular_surface_radiance(const Ray& ray, const Hit& hit, const RenderScen
     const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
     Color radiance = surface_emission(at) + split.diffuse_scale * local.diffuse + local.glossy;
 
-    radiance += follow_specular(hit, at.entering, split.reflection, split.reflected,
-                                at.material.parameters().reflection_exponent, false, scene, sampler, options,
+    radiance += follow_specular(hit, split.reflection, split.reflected, at.material.parameters().reflection_exponent,
+                                false, scene, sampler, options, local_term, level, weight, inside);
+    radiance += follow_specular(hit, split.transmission, split.refracted, 1.0f, true, scene, sampler, options,
                                 local_term, level, weight, inside);
-    radiance += follow_specular(hit, at.entering, split.transmission, split.refracted, 1.0f, true, scene, sampler,
-                                options, local_term, level, weight, inside);
     return radiance;
 }
 
@@ -206,8 +205,8 @@ Color specular_surface_radiance(const Ray& ray, const Hit& hit, const RenderScen
 // such as a camera ray the host traced.
 template <class LocalTerm>
 Color shade_specular(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler& sampler,
-                     const SpecularOptions& options, const LocalTerm& local_term, int level = 1, float weight = 1.0f,
-                     const InteriorStack& inside = {}) {
+                     const SpecularOptions& options, const LocalTerm& local_term, int level, float weight,
+                     const InteriorStack& inside) {
     if (found == nullptr)
         return seen_through_media(scene, ray, nullptr, scene.background(ray), MediaLighting{&sampler}, inside);
     // Between two texture_map entries each is lit and followed with its
