@@ -81,8 +81,14 @@ DirectionNumbers build_direction_numbers() {
     return table;
 }
 
-const DirectionNumbers& direction_numbers() {
-    static const DirectionNumbers table = build_direction_numbers();
+// The direction numbers with their bits reversed (see owen_scramble_reversed).
+const DirectionNumbers& reversed_direction_numbers() {
+    static const DirectionNumbers table = [] {
+        DirectionNumbers reversed = build_direction_numbers();
+        for (auto& dimension : reversed)
+            for (std::uint32_t& v : dimension) v = reverse_bits(v);
+        return reversed;
+    }();
     return table;
 }
 
@@ -100,15 +106,16 @@ std::uint64_t mix64(std::uint64_t x) {
 // Nested uniform scramble (Burley, "Practical hash-based Owen scrambling",
 // JCGT 2020): on bit-reversed values, a hash in which every bit depends only
 // on the bits below it flips each digit as a function of the digits above
-// it in the original order, which is Owen's scramble.
-std::uint32_t owen_scramble(std::uint32_t x, std::uint32_t seed) {
-    x = reverse_bits(x);
+// it in the original order, which is Owen's scramble. It takes and returns
+// bit-reversed values: the points are built reversed (from reversed
+// direction numbers), so only the result is reversed back.
+std::uint32_t owen_scramble_reversed(std::uint32_t x, std::uint32_t seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
-    return reverse_bits(x);
+    return x;
 }
 
 // [0,1) from the top 24 bits, so the float is exact and never rounds to 1.
@@ -119,7 +126,7 @@ float to_unit_float(std::uint32_t x) {
 class SobolSampler final : public Sampler {
   public:
     explicit SobolSampler(std::uint64_t seed)
-        : m_seed(mix64(seed ^ 0x5b1e5c0ffee5eedull)), m_table(&direction_numbers()) {}
+        : m_seed(mix64(seed ^ 0x5b1e5c0ffee5eedull)), m_table(&reversed_direction_numbers()) {}
 
     void start_sample(int pixel_x, int pixel_y, std::uint32_t sample_index) override {
         m_pixel_key = mix64(m_seed ^ mix64((std::uint64_t(std::uint32_t(pixel_x)) << 32) | std::uint32_t(pixel_y)));
@@ -143,14 +150,12 @@ class SobolSampler final : public Sampler {
         const std::uint64_t dim_key = mix64(m_pixel_key + 0x9e3779b97f4a7c15ull * (dimension + 1));
         if (dimension >= m_table->size())
             return to_unit_float(std::uint32_t(mix64(dim_key ^ (std::uint64_t(m_index) << 17)) >> 32));
-        // Point m_index of this dimension: XOR of the direction numbers of
-        // its set bits.
+        // Point m_index of this dimension, reversed: XOR of the (reversed)
+        // direction numbers of its set bits.
         const auto& v = (*m_table)[dimension];
         std::uint32_t x = 0;
-        std::uint32_t i = m_index;
-        for (int k = 0; i != 0; ++k, i >>= 1)
-            if (i & 1u) x ^= v[k];
-        return to_unit_float(owen_scramble(x, std::uint32_t(dim_key >> 32)));
+        for (std::uint32_t i = m_index; i != 0; i &= i - 1) x ^= v[std::size_t(__builtin_ctz(i))];
+        return to_unit_float(reverse_bits(owen_scramble_reversed(x, std::uint32_t(dim_key >> 32))));
     }
 
     std::uint64_t m_seed;
