@@ -19,11 +19,13 @@ class PolygonSampler final : public SurfaceSampler {
         Vec2 uv0, uv1, uv2;          // uv at origin, origin+e1, origin+e2
         bool parallelogram = false;
         const Material* material = nullptr;
+        DVec3 normal{0.0};  // unit, set by the sampler
     };
     PolygonSampler(std::vector<Polygon> polygons, bool closed) : m_closed(closed) {
         for (Polygon& p : polygons) {
             const double area = glm::length(glm::cross(p.edge1, p.edge2)) * (p.parallelogram ? 1.0 : 0.5);
             if (!(area > 0.0) || !std::isfinite(area)) continue;
+            p.normal = glm::normalize(glm::cross(p.edge1, p.edge2));
             m_polygons.push_back(p);
             m_total += area;
             m_cdf.push_back(m_total);
@@ -54,7 +56,7 @@ class PolygonSampler final : public SurfaceSampler {
             b2 = uy * s;
         }
         point.position = p.origin + b1 * p.edge1 + b2 * p.edge2;
-        point.normal = glm::normalize(glm::cross(p.edge1, p.edge2));
+        point.normal = p.normal;
         const float fb1 = float(b1), fb2 = float(b2);
         point.uv = p.parallelogram ? p.uv0 + fb1 * (p.uv1 - p.uv0) + fb2 * (p.uv2 - p.uv0)
                                    : (1.0f - fb1 - fb2) * p.uv0 + fb1 * p.uv1 + fb2 * p.uv2;
@@ -66,12 +68,11 @@ class PolygonSampler final : public SurfaceSampler {
     DVec3 centroid() const override { return m_centroid; }
     bool is_flat(DVec3& normal) const override {
         if (m_closed || m_polygons.empty()) return false;
-        const DVec3 n0 = glm::normalize(glm::cross(m_polygons[0].edge1, m_polygons[0].edge2));
+        const DVec3 n0 = m_polygons[0].normal;
         double size = 0.0;
         for (const Polygon& p : m_polygons) size = std::max(size, glm::length(p.edge1) + glm::length(p.edge2));
         for (const Polygon& p : m_polygons) {
-            const DVec3 n = glm::normalize(glm::cross(p.edge1, p.edge2));
-            if (std::fabs(glm::dot(n, n0)) < 1.0 - 1e-9) return false;
+            if (std::fabs(glm::dot(p.normal, n0)) < 1.0 - 1e-9) return false;
             if (std::fabs(glm::dot(p.origin - m_polygons[0].origin, n0)) > 1e-9 * (size + glm::length(p.origin)))
                 return false;
         }
