@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/mesh_shape.h"
+
 namespace lancer {
 namespace {
 
@@ -16,6 +18,21 @@ bool box_holds(const Instance& instance, const DVec3& p) {
 
 bool shape_holds(const Shape& shape, const Instance& instance, const DVec3& p) {
     return shape.solid() && shape.inside(instance.placement.point_to_object(p));
+}
+
+// A mesh has an inside only with POV's inside_vector. The camera's test is
+// made once a scene, so the mesh is built as a Shape for it alone.
+bool mesh_holds(const Instance& instance, const DVec3& p) {
+    const MeshData* mesh = instance.mesh;
+    if (mesh == nullptr || !mesh->inside_vector) return false;
+    MeshShapeParameters parameters;
+    parameters.positions = mesh_positions_from_xyz(mesh->object_positions);
+    parameters.faces.resize(mesh->indices.size() / 3);
+    for (std::size_t t = 0; t < parameters.faces.size(); ++t)
+        for (int k = 0; k < 3; ++k) parameters.faces[t].position[k] = int(mesh->indices[3 * t + std::size_t(k)]);
+    parameters.inside_vector = instance.placement.vector_to_object(DVec3(*mesh->inside_vector));
+    const std::shared_ptr<const Shape> shape = make_mesh_shape(std::move(parameters));
+    return shape && shape_holds(*shape, instance, p);
 }
 
 // The instance whose interior a point inside `instance` is in, if any:
@@ -39,8 +56,8 @@ const Instance* container_at(const SceneData& data, const Instance& instance, co
         }
         return first_leaf;
     }
-    case ShapeKind::Rectangle:
-    case ShapeKind::Mesh: return nullptr;
+    case ShapeKind::Mesh: return mesh_holds(instance, p) ? &instance : nullptr;
+    case ShapeKind::Rectangle: return nullptr;
     }
     return nullptr;
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "camera/aperture_shape.h"
@@ -40,6 +41,9 @@ struct MeshData {
     std::vector<float> object_positions;  // xyz per vertex, plus one padding float
     std::vector<std::uint32_t> indices;   // three per triangle
     std::vector<std::uint32_t> face_of_triangle;
+    // POV's inside_vector, in world space (POV-Ray never transforms it):
+    // only with one has the mesh an inside (the camera's interiors).
+    std::optional<sg::Vec3> inside_vector;
     int uses = 0;
 };
 

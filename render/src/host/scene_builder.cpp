@@ -509,6 +509,7 @@ class Builder {
             mesh->object_positions.push_back(float(p.z));
         }
         mesh->object_positions.push_back(0.0f);  // Embree reads 16 bytes per vertex
+        mesh->inside_vector = ref->inside_vector;
         const int count = int(ref->positions.size());
         for (std::uint32_t f = 0; f < ref->faces.size(); ++f) {
             const auto& face = ref->faces[f];
