@@ -33,6 +33,11 @@ struct Hit {
     Vec3 unbumped_normal{0.0f};
     const Light* emitter = nullptr;  // area light or emissive object, else null
     std::uint32_t object_id = 0;     // index of the world-space instance
+    // The object whose inside the surface bounds: object_id, or for a part
+    // of a CSG object the CSG's own, so a ray that enters through one part
+    // and leaves through another left the one object (POV's parts share
+    // their parent's interior). What lancer/interior_stack.h goes by.
+    std::uint32_t interior_id = 0;
     std::uint32_t primitive_id = 0;
     bool casts_shadow = true;  // false for no_shadow objects
     // POV's light_group the surface is in (-1: none), and whether the

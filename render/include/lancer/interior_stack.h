@@ -18,7 +18,8 @@ namespace lancer {
 struct InteriorStack {
     struct Entry {
         const Material* material = nullptr;
-        std::uint32_t object_id = 0;
+        std::uint32_t object_id = 0;    // the surface's (where its media's patterns are placed)
+        std::uint32_t interior_id = 0;  // the object it is the inside of (Hit::interior_id)
     };
     static constexpr int kDepth = 8;
     std::array<Entry, kDepth> entries{};
@@ -36,12 +37,12 @@ struct InteriorStack {
     InteriorStack crossed(const Hit& hit) const {
         InteriorStack next = *this;
         for (int i = next.size - 1; i >= 0; --i)
-            if (next.entries[std::size_t(i)].object_id == hit.object_id) {
+            if (next.entries[std::size_t(i)].interior_id == hit.interior_id) {
                 for (int j = i; j + 1 < next.size; ++j) next.entries[std::size_t(j)] = next.entries[std::size_t(j + 1)];
                 --next.size;
                 return next;
             }
-        next.push(Entry{hit.material, hit.object_id});
+        next.push(Entry{hit.material, hit.object_id, hit.interior_id});
         return next;
     }
 };

@@ -64,6 +64,46 @@ TEST(CameraInteriors, TransformedAndCsgObjects) {
     EXPECT_TRUE(hollow(inside.entries[1]));
 }
 
+TEST(CameraInteriors, AMeshWithInsideVectorHoldsTheCameraOneWithoutDoesNot) {
+    // Two closed tetrahedra around the camera; only inside_vector gives a
+    // mesh an inside (POV's Mesh::Inside).
+    const std::string tetrahedron =
+        "triangle { <-3, -3, -3>, <3, -3, -3>, <0, 3, -3> } triangle { <-3, -3, -3>, <3, -3, -3>, <0, 0, 4> }\n"
+        "triangle { <3, -3, -3>, <0, 3, -3>, <0, 0, 4> } triangle { <0, 3, -3>, <-3, -3, -3>, <0, 0, 4> }\n";
+    const auto scene = camera_among("mesh { " + tetrahedron + " inside_vector <0.3, 1, 0.1> hollow }\nmesh { " +
+                                    tetrahedron + " scale 2 }\n");
+    const InteriorStack& inside = scene->camera_interiors();
+    ASSERT_EQ(inside.size, 1);
+    EXPECT_TRUE(hollow(inside.entries[0]));
+}
+
+// POV-Ray's list of interiors goes by object, not by face: a transmitted
+// ray adds the object it crosses, or takes it off if it is on the list.
+TEST(InteriorStackCrossing, PartsOfOneCsgAreOneInsideAndAPatchIsEnteredFromEitherSide) {
+    const auto scene = camera_among(
+        "intersection { sphere { <0, 0, 5.5>, 1 } sphere { <0, 0, 4.5>, 1 } pigment { rgbf 1 } }\n"
+        "polygon { 4, <-1, -1>, <1, -1>, <1, 1>, <-1, 1> translate 9 * z pigment { rgbf 1 } }\n");
+    InteriorStack inside = scene->camera_interiors();
+    ASSERT_EQ(inside.size, 0);
+    // Along +z the ray enters the lens through one sphere and leaves
+    // through the other: a different part, the same object.
+    Hit enter, leave, patch;
+    ASSERT_TRUE(scene->intersect(make_ray({0, 0, 0}, {0, 0, 1}), enter));
+    ASSERT_TRUE(scene->intersect(make_ray({0, 0, enter.t + 0.01f}, {0, 0, 1}), leave));
+    EXPECT_NE(enter.object_id, leave.object_id);
+    EXPECT_EQ(enter.interior_id, leave.interior_id);
+    inside = inside.crossed(enter);
+    EXPECT_EQ(inside.size, 1);
+    inside = inside.crossed(leave);
+    EXPECT_EQ(inside.size, 0);
+    // The polygon has no inside, yet a ray through it is "in" it from
+    // then on, whichever face it met (POV's ComputeRefraction).
+    ASSERT_TRUE(scene->intersect(make_ray({0, 0, 8}, {0, 0, 1}), patch));
+    EXPECT_EQ(inside.crossed(patch).size, 1);
+    ASSERT_TRUE(scene->intersect(make_ray({0, 0, 10}, {0, 0, -1}), patch));
+    EXPECT_EQ(inside.crossed(patch).size, 1);
+}
+
 TEST(CameraInteriors, NoneWithoutMediaFogOrRainbow) {
     ParseResult parsed =
         parse_scene_string("#version 3.7;\ncamera { location 0 look_at z }\nsphere { 0, 2 }\n", "<none>");

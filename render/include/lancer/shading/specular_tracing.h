@@ -51,6 +51,26 @@ struct SpecularSplit {
     bool total_internal_reflection = false;  // the surface transmits, but the ray cannot leave
 };
 
+// POV-Ray's mirror direction about a normal { } bent one (Trace::
+// ComputeReflection): a ray the bent normal would send behind the
+// surface's own normal is reflected about that normal instead, if it went
+// in behind the bent one too, or else reflected once more about it. Without
+// a bend, the plain mirror direction.
+inline Vec3 pov_mirror_direction(const ShadingContext& at) {
+    const Vec3 incident = -at.wo;
+    Vec3 out = reflect(incident, at.normal);
+    Vec3 raw = unbent_normal(at.hit);
+    if (glm::dot(raw, at.wo) < 0.0f) raw = -raw;
+    const float below = glm::dot(out, raw);
+    if (below < 0.0f) {
+        if (glm::dot(out, at.normal) < 0.0f)
+            out = reflect(incident, raw);
+        else
+            out -= 2.0f * below * raw;
+    }
+    return glm::normalize(out);
+}
+
 // The mirror alone: what a layer below the top of a layered texture
 // reflects (POV-Ray refracts only through the top layer).
 inline SpecularSplit split_mirror(const ShadingContext& at, const SpecularOptions& options) {
@@ -58,7 +78,7 @@ inline SpecularSplit split_mirror(const ShadingContext& at, const SpecularOption
     const Color mirror = at.material.mirror_reflectance(at.surface, glm::dot(at.normal, at.wo), at.entering);
     if (!options.additive_reflection) split.diffuse_scale = glm::max(Color(1.0f) - mirror, Color(0.0f));
     split.reflection = mirror;
-    if (!is_black(split.reflection)) split.reflected = reflect(-at.wo, at.normal);
+    if (!is_black(split.reflection)) split.reflected = pov_mirror_direction(at);
     return split;
 }
 
@@ -83,7 +103,10 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
         // Relative index: outside is ior 1; a ray on the back face leaves the object.
         const float ior = glm::max(at.material.parameters().ior, 1e-6f);
         const float eta = at.entering ? 1.0f / ior : ior;
-        const bool refracts = refract(incident, at.normal, eta, split.refracted);
+        // A bent normal may face away from the ray: POV turns it to face
+        // the ray before it refracts (Trace::TraceRefractionRay).
+        const Vec3 towards_ray = glm::dot(incident, at.normal) <= 0.0f ? at.normal : -at.normal;
+        const bool refracts = refract(incident, towards_ray, eta, split.refracted);
         split.total_internal_reflection = !refracts;
         const Color transmitted = layers_passed ? *layers_passed : at.material.pov_transmitted(at.surface);
         if (options.fresnel) {
@@ -107,7 +130,7 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
             if (!refracts && !options.fresnel) split.reflection *= fade;
         }
     }
-    if (!is_black(split.reflection)) split.reflected = reflect(incident, at.normal);
+    if (!is_black(split.reflection)) split.reflected = pov_mirror_direction(at);
     return split;
 }
 
