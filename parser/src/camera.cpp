@@ -64,7 +64,9 @@ sg::Camera resolve_camera(const CameraSpec& spec, bool* sky_along_view) {
         sg::Vec3 target = *spec.look_at;
         if (glm::length(target - location) > 0.0) {
             direction_length = glm::length(direction);
-            double handedness = glm::dot(glm::cross(up, direction), right) < 0.0 ? -1.0 : 1.0;
+            // POV keeps right's sense only when (up x direction) . right is positive: a
+            // frame with up along direction has none, and its image comes out mirrored.
+            double handedness = glm::dot(glm::cross(up, direction), right) > 0.0 ? 1.0 : -1.0;
             sg::Vec3 d = glm::normalize(target - location);
             sg::Vec3 new_right = glm::cross(sky, d);
             // Looking along the sky: POV keeps the right vector it had

@@ -613,6 +613,17 @@ TEST(ParserCamera, FixedOrderSkyRightAndOrthographic) {
     EXPECT_EQ(ortho.camera->projection, sg::Camera::Projection::Orthographic);
 }
 
+TEST(ParserCamera, UpAlongDirectionHasNoHandednessSoLookAtMirrorsRight) {
+    // POV-Ray's sample objects/fractal3.pov: up <0,0,1> lies along the
+    // default direction, so (up x direction) . right is 0, not positive,
+    // and look_at turns right the other way (POV's Parse_Camera).
+    auto scene = parse_ok("camera { location <0, 3.3, 0> up <0, 0, 1> right x sky <0, 0, 1> look_at 0 }");
+    const auto& c = *scene.camera;
+    expect_vec(c.direction, {0, -1, 0});
+    expect_vec(c.right, {-1, 0, 0});  // sky x direction = z x -y = +x, turned
+    expect_vec(c.up, {0, 0, 1});
+}
+
 TEST(ParserCamera, TypesAndTheirAngles) {
     auto fisheye = parse_ok("camera { fisheye angle 270 location <0, 1, 0> look_at <0, 1, 5> }");
     EXPECT_EQ(fisheye.camera->projection, sg::Camera::Projection::Fisheye);
