@@ -535,8 +535,8 @@ object_mod
   | "uv_mapping"       { $$ = ev.object_uv_mapping(LOC(@1)); }
   | "hollow" opt_bool  { bool on = $2; $$ = [on](ShapeValue& s) { set_hollow(s.object, on); }; }
   | "double_illuminate" opt_bool { bool on = $2; $$ = [on](ShapeValue& s) { s.object.double_illuminate = on; }; }
-  | "no_image"         { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_image"); }
-  | "no_reflection"    { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_reflection"); }
+  | "no_image" opt_bool { bool on = $2; $$ = [on](ShapeValue& s) { s.object.no_image = on; }; }
+  | "no_reflection" opt_bool { bool on = $2; $$ = [on](ShapeValue& s) { s.object.no_reflection = on; }; }
   | "no_radiosity"     { $$ = [](ShapeValue&) {}; ev.ignored(LOC(@1), "no_radiosity"); }
   | "inverse"          { $$ = [](ShapeValue& s) { s.object.inverse = !s.object.inverse; }; }
   | "sturm"            { $$ = [](ShapeValue&) {}; }

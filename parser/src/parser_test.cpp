@@ -770,12 +770,12 @@ TEST(ParserExpressions, RandIsPovRaysSequence) {
 
 TEST(ParserObjects, NoShadowHollowAndIgnoredKeywordsWarn) {
     ParseResult result = test::parse_snippet(
-        "sphere { 0, 1 no_shadow hollow double_illuminate no_reflection normal { bumps 0.5 } }", "w.pov");
+        "sphere { 0, 1 no_shadow hollow double_illuminate no_radiosity normal { bumps 0.5 } }", "w.pov");
     ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
     EXPECT_TRUE(result.scene->objects[0].no_shadow);
     EXPECT_TRUE(result.scene->objects[0].hollow);
     EXPECT_EQ(result.scene->objects[0].double_illuminate, std::optional<bool>(true));
-    EXPECT_EQ(test::count_warnings(result), 1);  // no_reflection (hollow has a meaning: media)
+    EXPECT_EQ(test::count_warnings(result), 1);  // no_radiosity (hollow has a meaning: media)
     ASSERT_TRUE(result.scene->objects[0].material && result.scene->objects[0].material->normal);
     EXPECT_EQ(result.scene->objects[0].material->normal->pattern.kind, sg::Pattern::Kind::Bumps);
     EXPECT_DOUBLE_EQ(result.scene->objects[0].material->normal->bump_size, 0.5);
@@ -792,6 +792,21 @@ TEST(ParserObjects, DoubleIlluminateTakesAnOptionalSwitch) {
     EXPECT_EQ(result.scene->objects[0].double_illuminate, std::optional<bool>(false));
     EXPECT_EQ(result.scene->objects[1].double_illuminate, std::optional<bool>(true));
     EXPECT_FALSE(result.scene->objects[2].double_illuminate.has_value());
+    EXPECT_EQ(test::count_warnings(result), 0);
+}
+
+TEST(ParserObjects, NoImageAndNoReflectionTakeAnOptionalSwitch) {
+    ParseResult result = test::parse_snippet(
+        "sphere { 0, 1 no_image no_reflection off }\n"
+        "sphere { 0, 1 no_image 0 no_reflection }\n"
+        "sphere { 0, 1 }\n",
+        "h.pov");
+    ASSERT_TRUE(result.ok()) << test::all_diagnostics(result);
+    EXPECT_TRUE(result.scene->objects[0].no_image);
+    EXPECT_FALSE(result.scene->objects[0].no_reflection);
+    EXPECT_FALSE(result.scene->objects[1].no_image);
+    EXPECT_TRUE(result.scene->objects[1].no_reflection);
+    EXPECT_FALSE(result.scene->objects[2].no_image || result.scene->objects[2].no_reflection);
     EXPECT_EQ(test::count_warnings(result), 0);
 }
 

@@ -772,6 +772,11 @@ struct Object {
     // group it is set on every object inside, whatever they said: the
     // outermost setting wins.
     std::optional<bool> double_illuminate;
+    // POV's no_image and no_reflection: camera rays (and what they refract
+    // into), or mirror rays, pass through the object; it still casts
+    // shadows. On a group they reach everything inside it.
+    bool no_image = false;
+    bool no_reflection = false;
     // POV's light_group: an index into SceneGraph::light_groups (children
     // without one of their own are in it too); -1: none.
     int light_group = -1;

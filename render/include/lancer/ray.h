@@ -1,6 +1,8 @@
 // Small value types every stage of rendering speaks: vectors, colours, rays.
 #pragma once
 
+#include <cstdint>
+
 #include <limits>
 
 #include <glm/glm.hpp>
@@ -18,11 +20,17 @@ inline constexpr double kPiD = 3.141592653589793238463;
 // A ray is the half-line origin + t * direction for t in [t_min, t_max].
 // direction need not be unit length, but every ray the host and the shared
 // helpers (Hit::spawn_ray...) create has a unit direction.
+// What a ray is to POV-Ray's no_image and no_reflection objects, which it
+// passes through: a camera ray, or one refracted from it (Image); a mirror
+// ray, or one refracted from it (Reflection); any other ray sees them all.
+enum class RaySight : std::uint8_t { Other, Image, Reflection };
+
 struct Ray {
     Vec3 origin{0.0f};
     Vec3 direction{0.0f, 0.0f, 1.0f};
     float t_min = 0.0f;
     float t_max = kInfinity;
+    RaySight seen_as = RaySight::Other;
 
     Vec3 at(float t) const { return origin + t * direction; }
 };

@@ -151,6 +151,13 @@ class EmbreeScene final : public RenderScene {
     const SceneData& data() const { return *m_data; }
 
   private:
+    // The nearest hit whatever POV's no_image and no_reflection say.
+    bool nearest_hit(const Ray& ray, Hit& hit) const;
+    // Whether `ray` passes through the object `hit` is on (POV's no_image,
+    // no_reflection; Ray::seen_as).
+    bool hidden_from(const Ray& ray, const Hit& hit) const;
+    // The nearest hit past `hit` (hidden from `ray`) that `ray` sees.
+    bool nearest_visible_hit(const Ray& ray, Hit& hit) const;
     void build();
     RTCGeometry make_triangles(const MeshData& mesh, const std::vector<float>& positions);
     // intersect_batch's stages for coherent rays (see there); packets of kPacketLanes rays.

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "geometry/embree_scene.h"
+#include "geometry/float_steps.h"
 #include "lancer/shading/material_blend.h"
 
 namespace lancer::embree {
@@ -61,6 +62,34 @@ inline void finish_surface(Hit& hit, const Vec3& ray_direction, const SceneData&
 }  // namespace
 
 bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
+    if (!nearest_hit(ray, hit)) return false;
+    if (m_data->has_hidden_objects && hidden_from(ray, hit)) return nearest_visible_hit(ray, hit);
+    return true;
+}
+
+bool EmbreeScene::hidden_from(const Ray& ray, const Hit& hit) const {
+    if (ray.seen_as == RaySight::Other) return false;
+    // A part of a CSG object is hidden with the whole object, or alone.
+    const Instance& part = m_data->instances[hit.object_id];
+    const Instance& whole = m_data->instances[hit.interior_id];
+    if (ray.seen_as == RaySight::Image) return part.no_image || whole.no_image;
+    return part.no_reflection || whole.no_reflection;
+}
+
+bool EmbreeScene::nearest_visible_hit(const Ray& ray, Hit& hit) const {
+    // Past each hidden surface in turn; the bound guards against stacks of
+    // coplanar hidden faces.
+    constexpr int kMostHiddenSurfaces = 64;
+    Ray rest = ray;
+    for (int passed = 0; passed < kMostHiddenSurfaces; ++passed) {
+        rest.t_min = next_float_up(std::max(hit.t, rest.t_min));
+        if (!(rest.t_min < rest.t_max) || !nearest_hit(rest, hit)) return false;
+        if (!hidden_from(ray, hit)) return true;
+    }
+    return false;
+}
+
+bool EmbreeScene::nearest_hit(const Ray& ray, Hit& hit) const {
     // An untraceable ray meets only the shapes outside the BVH (complete_hit).
     EmbreeHit found = no_hit(ray);
     if (embree_can_trace(ray) && m_traces_list) {
@@ -206,6 +235,9 @@ void EmbreeScene::intersect_batch(const Ray* rays, int count, Hit* hits, bool* f
     if (m_data->has_normal_perturbation || m_data->has_material_entries)
         for (int i = 0; i < count; ++i)
             if (found[i]) finish_surface(hits[i], rays[i].direction, *m_data);
+    if (m_data->has_hidden_objects)
+        for (int i = 0; i < count; ++i)
+            if (found[i] && hidden_from(rays[i], hits[i])) found[i] = nearest_visible_hit(rays[i], hits[i]);
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {

@@ -82,6 +82,8 @@ struct Instance {
     std::int16_t light_group = -1;                // POV's light_group (Hit::light_group)
     bool lit_by_global_lights = true;             // false in a light_group without global_lights
     bool double_illuminate = false;               // POV's (Hit::double_illuminate)
+    bool no_image = false;                        // POV's: camera rays pass through (Ray::seen_as)
+    bool no_reflection = false;                   // POV's: mirror rays pass through
     Vec3 bounds_lower{0.0f}, bounds_upper{0.0f};  // world, conservative
     sg::SourceLocation location;
 };
@@ -95,6 +97,7 @@ struct SceneData {
     std::vector<std::unique_ptr<Texture>> textures;
     std::vector<std::unique_ptr<NormalPerturbation>> normals;  // a scene without normal { } pays nothing
     bool has_normal_perturbation = false;
+    bool has_hidden_objects = false;  // some instance has no_image or no_reflection
     // texture_maps lit entry by entry (materials/material_entries.h).
     std::vector<std::unique_ptr<MaterialEntries>> material_entries;
     bool has_material_entries = false;

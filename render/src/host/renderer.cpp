@@ -353,6 +353,7 @@ class ImageRender {
         const int added = batch.size;
         m_scene.camera().generate_rays(batch.film_x, batch.film_y, batch.lens, added, m_film.width(), m_film.height(),
                                        batch.rays, batch.sees, batch.ray_number);
+        for (int i = 0; i < added; ++i) batch.rays[i].seen_as = RaySight::Image;
         int kept = 0;
         for (int i = 0; i < added; ++i) {
             if (!batch.sees[i]) {

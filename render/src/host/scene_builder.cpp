@@ -110,37 +110,44 @@ void world_bounds(const Placement& placement, const DVec3& lower, const DVec3& u
     out_upper = Vec3(hi + slack);
 }
 
-// The light_group the objects being added are in: an object's own group
-// while its children are added, the enclosing one otherwise.
-class LightGroupScope {
+// A setting of the objects being added, changed while one object and its
+// children are added and restored after them.
+template <class Setting>
+class SettingScope {
   public:
-    LightGroupScope(int& current, int own) : m_current(current), m_saved(current) {
-        if (own >= 0) current = own;
-    }
-    ~LightGroupScope() { m_current = m_saved; }
-    LightGroupScope(const LightGroupScope&) = delete;
-    LightGroupScope& operator=(const LightGroupScope&) = delete;
+    SettingScope(Setting& current, const Setting& inside) : m_current(current), m_saved(current) { current = inside; }
+    ~SettingScope() { m_current = m_saved; }
+    SettingScope(const SettingScope&) = delete;
+    SettingScope& operator=(const SettingScope&) = delete;
 
   private:
-    int& m_current;
-    int m_saved;
+    Setting& m_current;
+    Setting m_saved;
+};
+
+// The light_group the objects being added are in: an object's own group
+// while its children are added, the enclosing one otherwise.
+struct LightGroupScope : SettingScope<int> {
+    LightGroupScope(int& current, int own) : SettingScope(current, own >= 0 ? own : current) {}
 };
 
 // POV's double_illuminate on a group reaches everything inside it,
 // overriding what the objects inside said: the outermost setting wins.
-class DoubleIlluminateScope {
-  public:
+struct DoubleIlluminateScope : SettingScope<std::optional<bool>> {
     DoubleIlluminateScope(std::optional<bool>& current, const std::optional<bool>& own)
-        : m_current(current), m_saved(current) {
-        if (!current) current = own;
-    }
-    ~DoubleIlluminateScope() { m_current = m_saved; }
-    DoubleIlluminateScope(const DoubleIlluminateScope&) = delete;
-    DoubleIlluminateScope& operator=(const DoubleIlluminateScope&) = delete;
+        : SettingScope(current, current ? current : own) {}
+};
 
-  private:
-    std::optional<bool>& m_current;
-    std::optional<bool> m_saved;
+// POV's no_image and no_reflection on a group reach everything inside it
+// (POV's Post_Process sets them on the children; it never clears them).
+struct HiddenFrom {
+    bool image = false;
+    bool reflection = false;
+};
+struct HiddenFromScope : SettingScope<HiddenFrom> {
+    HiddenFromScope(HiddenFrom& current, const sg::Object& object)
+        : SettingScope(current,
+                       HiddenFrom{current.image || object.no_image, current.reflection || object.no_reflection}) {}
 };
 
 class Builder {
@@ -534,6 +541,9 @@ class Builder {
         instance.light_group = grouped ? std::int16_t(m_light_group) : std::int16_t(-1);
         instance.lit_by_global_lights = !grouped || m_graph.light_groups[std::size_t(m_light_group)].global_lights;
         instance.double_illuminate = m_double_illuminate.value_or(false);
+        instance.no_image = m_hidden_from.image;
+        instance.no_reflection = m_hidden_from.reflection;
+        m_data->has_hidden_objects = m_data->has_hidden_objects || instance.no_image || instance.no_reflection;
         m_data->instances.push_back(std::move(instance));
         m_data->texture_spaces.push_back(texture_owner_from_world);
         return std::uint32_t(m_data->instances.size() - 1);
@@ -544,6 +554,7 @@ class Builder {
         for (const sg::Object& object : objects) {
             const LightGroupScope group(m_light_group, object.light_group);
             const DoubleIlluminateScope illuminated(m_double_illuminate, object.double_illuminate);
+            const HiddenFromScope hidden(m_hidden_from, object);
             const DMat4 world_from_object = world_from_parent * object.parent_from_object;
             const sg::MaterialRef& material = object.material ? object.material : inherited;
             // POV: a texture follows the transforms applied after it, i.e. it
@@ -928,6 +939,7 @@ class Builder {
                                const sg::MaterialRef& inherited, const DMat4& inherited_owner, bool no_shadow,
                                bool inverted) {
         const DoubleIlluminateScope illuminated(m_double_illuminate, object.double_illuminate);
+        const HiddenFromScope hidden(m_hidden_from, object);
         const DMat4 world_from_object = world_from_parent * object.parent_from_object;
         const sg::MaterialRef& material = object.material ? object.material : inherited;
         const DMat4 owner = object.material ? world_from_object : inherited_owner;
@@ -1252,6 +1264,7 @@ class Builder {
     std::unique_ptr<SceneData> m_data;
     int m_light_group = -1;                   // the light_group of the objects being added (LightGroupScope)
     std::optional<bool> m_double_illuminate;  // of the objects being added (DoubleIlluminateScope)
+    HiddenFrom m_hidden_from;                 // of the objects being added (HiddenFromScope)
     std::map<const sg::TriangleMesh*, int> m_mesh_uses;
     std::map<std::tuple<const sg::Function*, const std::string*, int, int>, std::shared_ptr<IsosurfaceGradientRecord>>
         m_isosurface_records;

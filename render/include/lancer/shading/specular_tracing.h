@@ -146,15 +146,18 @@ Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler,
 // the radiance seen there, raised to `exponent` (POV's reflection
 // exponent) and weighted.
 template <class LocalTerm>
-Color follow_specular(const Hit& hit, const Color& path_weight, const Vec3& direction, float exponent, bool transmitted,
-                      const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
+Color follow_specular(const Ray& from, const Hit& hit, const Color& path_weight, const Vec3& direction, float exponent,
+                      bool transmitted, const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
                       const LocalTerm& local_term, int level, float weight, const InteriorStack& inside) {
     if (is_black(path_weight)) return Color(0.0f);
     const float next_weight = weight * max_component(path_weight);
     if (level + 1 > options.max_depth || next_weight < options.min_weight) return Color(0.0f);
     // A transmitted ray enters or leaves the object (media see it).
     const bool crosses = transmitted && (scene.has_media() || scene.fog() || scene.rainbows());
-    Color seen = trace_specular(hit.spawn_ray(direction), scene, sampler, options, local_term, level + 1, next_weight,
+    Ray next = hit.spawn_ray(direction);
+    // POV: a refracted ray is what its parent was; a mirror ray is a reflection.
+    next.seen_as = transmitted ? from.seen_as : RaySight::Reflection;
+    Color seen = trace_specular(next, scene, sampler, options, local_term, level + 1, next_weight,
                                 crosses ? inside.crossed(hit) : inside);
     if (exponent != 1.0f) seen = glm::pow(glm::max(seen, Color(0.0f)), Color(exponent));
     return path_weight * seen;
@@ -193,13 +196,13 @@ Color layered_surface_radiance(const Ray& ray, const Hit& hit, const MaterialLay
         // POV weighs a layer's reflected ray by the light reaching the layer.
         const float reaching = std::min(1.0f, std::fabs(pov_grey(above)));
         if (reflects)
-            radiance +=
-                follow_specular(seen, split.reflection, split.reflected, at.material.parameters().reflection_exponent,
-                                false, scene, sampler, options, local_term, level, weight * reaching, inside);
+            radiance += follow_specular(ray, seen, split.reflection, split.reflected,
+                                        at.material.parameters().reflection_exponent, false, scene, sampler, options,
+                                        local_term, level, weight * reaching, inside);
         above *= layer_passes(at);
     }
-    radiance += follow_specular(top, top_split.transmission, top_split.refracted, 1.0f, true, scene, sampler, options,
-                                local_term, level, weight, inside);
+    radiance += follow_specular(ray, top, top_split.transmission, top_split.refracted, 1.0f, true, scene, sampler,
+                                options, local_term, level, weight, inside);
     return radiance;
 }
 
@@ -217,9 +220,10 @@ Color specular_surface_radiance(const Ray& ray, const Hit& hit, const RenderScen
     const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
     Color radiance = surface_emission(at) + split.diffuse_scale * local.diffuse + local.glossy;
 
-    radiance += follow_specular(hit, split.reflection, split.reflected, at.material.parameters().reflection_exponent,
-                                false, scene, sampler, options, local_term, level, weight, inside);
-    radiance += follow_specular(hit, split.transmission, split.refracted, 1.0f, true, scene, sampler, options,
+    radiance +=
+        follow_specular(ray, hit, split.reflection, split.reflected, at.material.parameters().reflection_exponent,
+                        false, scene, sampler, options, local_term, level, weight, inside);
+    radiance += follow_specular(ray, hit, split.transmission, split.refracted, 1.0f, true, scene, sampler, options,
                                 local_term, level, weight, inside);
     return radiance;
 }
