@@ -179,12 +179,15 @@ class Material {
     float transparency(const SurfaceSample& surface) const {
         return glm::clamp(surface.filter + surface.transmit, 0.0f, 1.0f);
     }
-    // The share of the surface's own light it shows (diffuse, ambient):
-    // 1 - transparency, or POV 3.6's rule (MaterialParameters::legacy_opacity).
+    // The share of the surface's own light it shows (diffuse, ambient), as
+    // POV-Ray weighs it: 1 - filter - transmit, or POV 3.6's rule
+    // (MaterialParameters::legacy_opacity). Neither is clamped, as in POV:
+    // `transmit 100` makes it -99, which scenes use to raise the contrast of
+    // what lies behind (POV's advanced/bwstripe.pov).
     float opacity(const SurfaceSample& surface) const {
-        if (!m_params.legacy_opacity) return 1.0f - transparency(surface);
+        if (!m_params.legacy_opacity) return 1.0f - surface.filter - surface.transmit;
         const float pigment_peak = glm::max(surface.pigment.r, glm::max(surface.pigment.g, surface.pigment.b));
-        return glm::clamp(1.0f - (surface.filter * pigment_peak + surface.transmit), 0.0f, 1.0f);
+        return 1.0f - (surface.filter * pigment_peak + surface.transmit);
     }
     // Colour of transmitted light per unit transparency: filter tints by the
     // pigment, transmit does not.
@@ -211,9 +214,12 @@ class Material {
     Color brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const;
     // The diffuse part alone (gather replaces only this term).
     Color diffuse_brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo, const Vec3& wi) const {
+        return diffuse_brdf_at_opacity(surface, n, wi, opacity(surface));
+    }
+    // The same for a given opacity (path's physical one, in [0, 1]).
+    Color diffuse_brdf_at_opacity(const SurfaceSample& surface, const Vec3& n, const Vec3& wi, float opacity) const {
         const float cos_i = glm::dot(n, wi);
         if (!(cos_i > 0.0f) || m_params.diffuse == 0.0f) return Color(0.0f);
-        const float opacity = this->opacity(surface);
         float shape = 1.0f;
         if (m_params.brilliance != 1.0f) shape = std::pow(cos_i, m_params.brilliance - 1.0f);
         return diffuse_lobe_weight(m_params.diffuse, opacity, shape) * surface.pigment;
