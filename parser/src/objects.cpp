@@ -508,6 +508,7 @@ void Evaluator::finish_image_map(sg::ImageMap& image, const sg::SourceLocation& 
     // its assumed_gamma), a file without a gamma of its own is read as
     // stored.
     if (!image.gamma_given && effective_language_version() < 370) image.srgb = false;
+    image.working_gamma = m_scene.global.assumed_gamma;
 }
 
 // ----------------------------------------------------------------- scene

@@ -77,6 +77,10 @@ struct ImageMap {
     // POV decodes an image_map's colours; a bump_map's or image_pattern's
     // values are read as stored unless `gamma` is given.
     bool gamma_given = false;
+    // The scene's assumed_gamma when the image was named: POV-Ray shades
+    // in that working space, so a decoded colour is encoded into it
+    // (v^(1/G)); 1: linear, nothing to do.
+    double working_gamma = 1.0;
     SourceLocation location;
     bool use_alpha = false;  // image_pattern: the value is the alpha (or red)
     SourceLocation use_alpha_location;

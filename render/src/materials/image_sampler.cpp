@@ -221,6 +221,8 @@ Texel ImageSampler::decode(const float* texel) const {
     Texel out;
     out.rgb = m_channels < 3 ? Color(texel[0]) : Color(texel[0], texel[1], texel[2]);
     if (m_decode_srgb) out.rgb = Color(srgb_decode(out.rgb.r), srgb_decode(out.rgb.g), srgb_decode(out.rgb.b));
+    if (m_decode_srgb && m_map.working_gamma != 1.0 && m_map.working_gamma > 0.0)
+        out.rgb = glm::pow(glm::max(out.rgb, Color(0.0f)), Color(float(1.0 / m_map.working_gamma)));
     out.alpha = has_alpha() ? texel[m_channels - 1] : 1.0f;
     return out;
 }
