@@ -23,7 +23,9 @@ bool intersect_box(const AnalyticBox& b, const DVec3& o, const DVec3& d, double 
         double t_lower = (b.lower[axis] - o[axis]) * inverse;
         double t_upper = (b.upper[axis] - o[axis]) * inverse;
         int f_lower = 2 * axis, f_upper = 2 * axis + 1;
-        if (t_lower > t_upper) {
+        // By direction, not by comparing t: a box flat along this axis has
+        // t_lower == t_upper, and the face the ray enters is the one facing it.
+        if (d[axis] < 0.0) {
             std::swap(t_lower, t_upper);
             std::swap(f_lower, f_upper);
         }
