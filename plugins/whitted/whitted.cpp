@@ -11,8 +11,9 @@
 // falloff and `fresnel on`), T its transparency (pigment filter + transmit)
 // and tint its transmission colour. The reflected direction S is the mirror
 // of the incoming ray R about the normal N; the refracted direction follows
-// Snell's law with the interior's `ior` (outside is ior 1), and total
-// internal reflection sends the transmitted share into the reflection.
+// Snell's law with the ratio of indices POV-Ray reads from the objects the
+// ray is in (InteriorStack::refraction_eta), and total internal reflection
+// sends the transmitted share into the reflection.
 //
 // A finish is a sum, as POV-Ray and the seed write it: colour = ρd·C_diffuse
 // + ρs·C_specular + ρr·C_reflected; `reflection` adds to the diffuse term.

@@ -45,6 +45,36 @@ struct InteriorStack {
         next.push(Entry{hit.material, hit.object_id, hit.interior_id});
         return next;
     }
+
+    // n1/n2 across `hit`, whose object's index is `ior`, for the ray that
+    // refracts there (POV-Ray's Trace::ComputeRefraction): by the list, not
+    // by the face. Nested objects count as outside their container (leaving
+    // the inner one returns to the container's index), and where two
+    // overlap the later entered wins, so leaving the earlier bends nothing.
+    float refraction_eta(const Hit& hit, float ior) const {
+        if (size == 0) return 1.0f / ior;
+        const Entry& innermost = entries[std::size_t(size - 1)];
+        if (innermost.interior_id == hit.interior_id)
+            return size == 1 ? ior : ior / entries[std::size_t(size - 2)].material->parameters().ior;
+        if (holds(hit)) return 1.0f;
+        return innermost.material->parameters().ior / ior;
+    }
+
+    // n2/n1 across `hit` for POV's `reflection { fresnel }` (Trace::
+    // ComputeRelativeIOR), which leaving into another object reads as the
+    // innermost's index over this one's.
+    float fresnel_ior(const Hit& hit, float ior) const {
+        if (size == 0) return ior;
+        if (!holds(hit)) return ior / entries[std::size_t(size - 1)].material->parameters().ior;
+        if (size == 1) return 1.0f / ior;
+        return entries[std::size_t(size - 1)].material->parameters().ior / ior;
+    }
+
+    bool holds(const Hit& hit) const {
+        for (int i = 0; i < size; ++i)
+            if (entries[std::size_t(i)].interior_id == hit.interior_id) return true;
+        return false;
+    }
 };
 
 }  // namespace lancer

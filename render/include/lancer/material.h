@@ -248,7 +248,7 @@ class Material {
 
     // Mirror reflectance for cos_i = dot(n, wo) (POV's reflection block; with
     // fresnel, Fresnel of ior scaled between min and max). Zero: no mirror.
-    Color mirror_reflectance(const SurfaceSample& surface, float cos_i, bool entering) const;
+    Color mirror_reflectance(const SurfaceSample& surface, float cos_i, float relative_ior) const;
     bool has_mirror() const;
     const NormalPerturbation* normal_perturbation() const { return m_params.normal; }
     const MaterialMix* entries() const { return m_params.entries; }

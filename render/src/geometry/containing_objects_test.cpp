@@ -104,6 +104,59 @@ TEST(InteriorStackCrossing, PartsOfOneCsgAreOneInsideAndAPatchIsEnteredFromEithe
     EXPECT_EQ(inside.crossed(patch).size, 1);
 }
 
+// The ratio of indices a refracted ray bends by, as POV-Ray's
+// ComputeRefraction reads it from the list: water (1.33) in glass (1.5),
+// then two overlapping balls (1.3, entered first, and 1.7), along +z.
+TEST(InteriorStackCrossing, RefractionReadsTheIndicesOfTheObjectsTheRayIsIn) {
+    const auto scene = camera_among(
+        "sphere { <0, 0, 5>, 2 pigment { rgbf 1 } interior { ior 1.5 } }\n"
+        "sphere { <0, 0, 5>, 1 pigment { rgbf 1 } interior { ior 1.33 } }\n"
+        "sphere { <0, 0, 12>, 1.5 pigment { rgbf 1 } interior { ior 1.3 } }\n"
+        "sphere { <0, 0, 13.5>, 1.5 pigment { rgbf 1 } interior { ior 1.7 } }\n");
+    InteriorStack inside = scene->camera_interiors();
+    ASSERT_EQ(inside.size, 0);
+    struct Crossing {
+        float z, eta, fresnel_ior;
+        int size_after;
+    };
+    const Crossing expected[] = {
+        {3.0f, 1.0f / 1.5f, 1.5f, 1},           // into the glass from the air
+        {4.0f, 1.5f / 1.33f, 1.33f / 1.5f, 2},  // into the water from the glass
+        // out of the water, back into the glass; POV's Fresnel reads this
+        // as the innermost's (the water's) index over the water's
+        {6.0f, 1.33f / 1.5f, 1.0f, 1},
+        {7.0f, 1.5f, 1.0f / 1.5f, 0},          // out into the air
+        {10.5f, 1.0f / 1.3f, 1.3f, 1},         // into the first ball
+        {12.0f, 1.3f / 1.7f, 1.7f / 1.3f, 2},  // into the second, which now wins
+        {13.5f, 1.0f, 1.7f / 1.3f, 1},         // out of the first while in the second: no bend
+        {15.0f, 1.7f, 1.0f / 1.7f, 0},         // out of the second
+    };
+    float z = 0.0f;
+    for (const Crossing& crossing : expected) {
+        Hit hit;
+        ASSERT_TRUE(scene->intersect(make_ray({0, 0, z}, {0, 0, 1}), hit));
+        z += hit.t;
+        SCOPED_TRACE("crossing at z = " + std::to_string(crossing.z));
+        EXPECT_NEAR(z, crossing.z, 1e-3f);
+        const float ior = hit.material->parameters().ior;
+        EXPECT_NEAR(inside.refraction_eta(hit, ior), crossing.eta, 1e-5f);
+        EXPECT_NEAR(inside.fresnel_ior(hit, ior), crossing.fresnel_ior, 1e-5f);
+        inside = inside.crossed(hit);
+        EXPECT_EQ(inside.size, crossing.size_after);
+        z += 1e-3f;
+    }
+}
+
+TEST(CameraInteriors, ACameraInGlassStartsInItWithoutMedia) {
+    // Refraction reads the list too, so a scene with an ior asks which
+    // objects hold the camera even without fog or media.
+    ParseResult parsed = parse_scene_string(
+        "#version 3.7;\ncamera { location 0 look_at z }\nsphere { 0, 2 pigment { rgbf 1 } interior { ior 1.5 } }\n",
+        "<none>");
+    ASSERT_TRUE(parsed.ok());
+    EXPECT_EQ(compile_scene(*parsed.scene)->camera_interiors().size, 1);
+}
+
 TEST(CameraInteriors, NoneWithoutMediaFogOrRainbow) {
     ParseResult parsed =
         parse_scene_string("#version 3.7;\ncamera { location 0 look_at z }\nsphere { 0, 2 }\n", "<none>");

@@ -40,8 +40,9 @@ EmbreeScene::EmbreeScene(std::unique_ptr<SceneData> data) : m_data(std::move(dat
     rtcSetDeviceErrorFunction(m_device, record_device_error, &m_device_error);
     build();
     if (!m_device_error.empty()) throw std::runtime_error(m_device_error);
-    // Only media, fog and rainbows read it (a scene without them tests no object).
-    if (m_data->has_media || m_data->fog || m_data->rainbows)
+    // Only media, fog, rainbows and refraction read it (a scene without
+    // them tests no object).
+    if (m_data->has_media || m_data->fog || m_data->rainbows || m_data->has_refraction)
         m_camera_interiors = objects_containing(*m_data, m_data->camera.location());
 }
 

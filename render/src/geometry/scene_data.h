@@ -107,6 +107,7 @@ struct SceneData {
     std::vector<std::unique_ptr<Medium>> media;
     MediumRegion atmosphere;
     bool has_media = false;
+    bool has_refraction = false;  // some material's ior is not 1: what bends depends on the objects a ray is in
     std::vector<std::unique_ptr<Light>> owned_lights;
     std::vector<const Light*> lights;
     std::vector<const Light*> local_lights;

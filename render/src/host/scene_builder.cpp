@@ -306,6 +306,7 @@ class Builder {
         if (hollow && !source.interior.media.empty()) parameters.medium = make_medium(source.interior.media);
         parameters.entries = entries;
         if (!written.layers_above.empty()) parameters.layers = material_layers(written, hollow);
+        if (parameters.ior != 1.0f) m_data->has_refraction = true;
         m_data->materials.push_back(std::make_unique<Material>(parameters));
         return m_data->materials.back().get();
     }

@@ -142,9 +142,12 @@ Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hi
     // Mirror (POV's reflection block) and, unless reflection adds to it as
     // in POV-Ray, the diffuse share it takes away (whitted's "a mirror has
     // no diffuse").
-    const Color rho_r = material.has_mirror() ? glm::clamp(material.mirror_reflectance(surface, cos_o, m_entering),
-                                                           Color(0.0f), Color(1.0f))
-                                              : Color(0.0f);
+    const float face_ior = glm::max(p.ior, 1e-6f);
+    const Color rho_r =
+        material.has_mirror()
+            ? glm::clamp(material.mirror_reflectance(surface, cos_o, m_entering ? face_ior : 1.0f / face_ior),
+                         Color(0.0f), Color(1.0f))
+            : Color(0.0f);
     m_diffuse_scale = additive_reflection ? Color(1.0f) : Color(1.0f) - rho_r;
     m_mirror = rho_r;
 

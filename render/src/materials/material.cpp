@@ -96,14 +96,14 @@ Color Material::brdf(const SurfaceSample& surface, const Vec3& n, const Vec3& wo
     return diffuse_brdf(surface, n, wo, wi) + glossy_brdf(surface, n, wo, wi);
 }
 
-Color Material::mirror_reflectance(const SurfaceSample& surface, float cos_i, bool entering) const {
+Color Material::mirror_reflectance(const SurfaceSample& surface, float cos_i, float relative_ior) const {
     if (!has_mirror()) return Color(0.0f);
     cos_i = glm::clamp(cos_i, 0.0f, 1.0f);
     const Color& r_min = m_params.reflection_min;
     const Color& r_max = m_params.reflection_max;
     if (m_params.reflection_fresnel) {
         // POV's Fresnel (ComputeReflectivity) with the relative index.
-        const float n = entering ? m_params.ior : 1.0f / glm::max(m_params.ior, 1e-6f);
+        const float n = relative_ior;
         const float radicand = n * n + cos_i * cos_i - 1.0f;
         if (!(radicand > 0.0f)) return r_max;
         const float g = std::sqrt(radicand);

@@ -179,7 +179,8 @@ Color entry_pass_through_weight(const Hit& hit) {
     Color weight = transparency * material.transmission_tint(surface);
     if (p.conserve_energy) {
         const float cos_i = std::abs(glm::dot(hit.shading_normal, hit.geometric_normal));
-        weight *= glm::clamp(Color(1.0f) - material.mirror_reflectance(surface, cos_i, true), Color(0.0f), Color(1.0f));
+        weight *=
+            glm::clamp(Color(1.0f) - material.mirror_reflectance(surface, cos_i, p.ior), Color(0.0f), Color(1.0f));
     }
     return weight;
 }

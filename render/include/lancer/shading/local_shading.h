@@ -26,6 +26,11 @@ struct ShadingContext {
     Vec3 normal;                  // unit shading normal on the side of wo (surfaces are two-sided)
     bool entering;                // the ray arrives on the front face (from outside a closed object)
     float film_thickness = 0.0f;  // irid's, at this hit
+    // The indices across the surface, n1/n2 for the refracted ray and n2/n1
+    // for POV's Fresnel reflection: by the face (outside is ior 1) until
+    // in_interiors() reads them from the objects the ray is in.
+    float refraction_eta = 1.0f;
+    float fresnel_ior = 1.0f;
 };
 
 inline ShadingContext make_shading_context(const Hit& hit, const Ray& ray) {
@@ -33,6 +38,19 @@ inline ShadingContext make_shading_context(const Hit& hit, const Ray& ray) {
     ShadingContext at{hit, *hit.material,         hit.material->sample_surface(hit),
                       wo,  hit.facing_normal(wo), hit.is_front_face(wo)};
     if (at.material.has_iridescence()) at.film_thickness = at.material.film_thickness(hit.position);
+    const float ior = glm::max(at.material.parameters().ior, 1e-6f);
+    at.refraction_eta = at.entering ? 1.0f / ior : ior;
+    at.fresnel_ior = at.entering ? ior : 1.0f / ior;
+    return at;
+}
+
+// POV-Ray's indices across the surface, read from the objects the ray is
+// in (InteriorStack) rather than from the face it meets: a ray in water
+// that enters a glass holding it bends by 1.5/1.33, not by 1.5.
+inline ShadingContext& in_interiors(ShadingContext& at, const InteriorStack& inside) {
+    const float ior = glm::max(at.material.parameters().ior, 1e-6f);
+    at.refraction_eta = inside.refraction_eta(at.hit, ior);
+    at.fresnel_ior = inside.fresnel_ior(at.hit, ior);
     return at;
 }
 

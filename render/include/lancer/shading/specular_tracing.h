@@ -75,7 +75,7 @@ inline Vec3 pov_mirror_direction(const ShadingContext& at) {
 // reflects (POV-Ray refracts only through the top layer).
 inline SpecularSplit split_mirror(const ShadingContext& at, const SpecularOptions& options) {
     SpecularSplit split;
-    const Color mirror = at.material.mirror_reflectance(at.surface, glm::dot(at.normal, at.wo), at.entering);
+    const Color mirror = at.material.mirror_reflectance(at.surface, glm::dot(at.normal, at.wo), at.fresnel_ior);
     if (!options.additive_reflection) split.diffuse_scale = glm::max(Color(1.0f) - mirror, Color(0.0f));
     split.reflection = mirror;
     if (!is_black(split.reflection)) split.reflected = pov_mirror_direction(at);
@@ -100,9 +100,7 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
                            ? std::min(1.0f, std::fabs(pov_grey(*layers_passed)))
                            : 0.0f;
     if (transparency > 0.0f) {
-        // Relative index: outside is ior 1; a ray on the back face leaves the object.
-        const float ior = glm::max(at.material.parameters().ior, 1e-6f);
-        const float eta = at.entering ? 1.0f / ior : ior;
+        const float eta = at.refraction_eta;
         // A bent normal may face away from the ray: POV turns it to face
         // the ray before it refracts (Trace::TraceRefractionRay).
         const Vec3 towards_ray = glm::dot(incident, at.normal) <= 0.0f ? at.normal : -at.normal;
@@ -152,13 +150,11 @@ Color follow_specular(const Ray& from, const Hit& hit, const Color& path_weight,
     if (is_black(path_weight)) return Color(0.0f);
     const float next_weight = weight * max_component(path_weight);
     if (level + 1 > options.max_depth || next_weight < options.min_weight) return Color(0.0f);
-    // A transmitted ray enters or leaves the object (media see it).
-    const bool crosses = transmitted && (scene.has_media() || scene.fog() || scene.rainbows());
     Ray next = hit.spawn_ray(direction);
     // POV: a refracted ray is what its parent was; a mirror ray is a reflection.
     next.seen_as = transmitted ? from.seen_as : RaySight::Reflection;
     Color seen = trace_specular(next, scene, sampler, options, local_term, level + 1, next_weight,
-                                crosses ? inside.crossed(hit) : inside);
+                                transmitted ? inside.crossed(hit) : inside);
     if (exponent != 1.0f) seen = glm::pow(glm::max(seen, Color(0.0f)), Color(exponent));
     return path_weight * seen;
 }
@@ -177,17 +173,20 @@ Color layered_surface_radiance(const Ray& ray, const Hit& hit, const MaterialLay
     std::size_t reached = 0;
     for (const Material* layer : layers.top_first) {
         if (!layers_pass_enough(passed, options.min_weight)) break;
-        passed *= layer_passes(make_shading_context(entry_hit(hit, layer), ray));
+        ShadingContext layer_at = make_shading_context(entry_hit(hit, layer), ray);
+        passed *= layer_passes(in_interiors(layer_at, inside));
         ++reached;
     }
     const Hit top = entry_hit(hit, layers.top_first.front());
-    const ShadingContext top_at = make_shading_context(top, ray);
+    ShadingContext top_at = make_shading_context(top, ray);
+    in_interiors(top_at, inside);
     const SpecularSplit top_split = split_specular(top_at, options, hit.t * glm::length(ray.direction), &passed);
 
     Color radiance(0.0f), above(1.0f);
     for (std::size_t k = 0; k < reached; ++k) {
         const Hit seen = k == 0 ? top : entry_hit(hit, layers.top_first[k]);
-        const ShadingContext at = make_shading_context(seen, ray);
+        ShadingContext at = make_shading_context(seen, ray);
+        in_interiors(at, inside);
         const SpecularSplit split = k == 0 ? top_split : split_mirror(at, options);
         const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
         radiance += above * (surface_emission(at) + split.diffuse_scale * local.diffuse + local.glossy);
@@ -214,7 +213,8 @@ Color specular_surface_radiance(const Ray& ray, const Hit& hit, const RenderScen
                                 const InteriorStack& inside) {
     if (const MaterialLayers* layers = layers_to_light(hit))
         return layered_surface_radiance(ray, hit, *layers, scene, sampler, options, local_term, level, weight, inside);
-    const ShadingContext at = make_shading_context(hit, ray);
+    ShadingContext at = make_shading_context(hit, ray);
+    in_interiors(at, inside);
     const SpecularSplit split = split_specular(at, options, hit.t * glm::length(ray.direction));
 
     const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
