@@ -194,11 +194,14 @@ class Material {
     Color transmission_tint(const SurfaceSample& surface) const;
     // POV-Ray's transmitted colour, filter * pigment + transmit: the same as
     // transparency() * transmission_tint() while filter + transmit <= 1,
-    // and not scaled down beyond (POV passes more light than arrives where
-    // a scene asks for it, e.g. `filter all` on a palette image's clear
-    // entries). For the classic integrators; `path` keeps the scaled form.
+    // and neither scaled down beyond (POV passes more light than arrives
+    // where a scene asks for it, e.g. `filter all` on a palette image's
+    // clear entries) nor clamped at 0 (a negative transmit subtracts what
+    // lies behind, in refraction and shadows alike: POV's
+    // advanced/transmitfx.pov). For the classic integrators; `path` keeps
+    // the scaled form.
     Color pov_transmitted(const SurfaceSample& surface) const {
-        return glm::max(surface.filter * surface.pigment + Color(surface.transmit), Color(0.0f));
+        return surface.filter * surface.pigment + Color(surface.transmit);
     }
 
     // Radiance emitted towards the viewer (two-sided).

@@ -76,7 +76,9 @@ inline Color surfaces_transmittance(const RenderScene& scene, Ray ray, const Vec
             const auto passes = [&ray](const Hit& surface_hit) {
                 const Material& material = *surface_hit.material;
                 const SurfaceSample surface = material.sample_surface(surface_hit);
-                if (!(material.transparency(surface) > 0.0f)) return Color(0.0f);
+                // POV's opaque test: neither filter nor transmit (a negative
+                // transmit lets through negative light).
+                if (surface.filter == 0.0f && surface.transmit == 0.0f) return Color(0.0f);
                 Color passed = material.pov_transmitted(surface);
                 if (const float caustics = material.parameters().caustics; caustics != 0.0f) {
                     const float cosine =

@@ -94,11 +94,12 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
     const float cos_i = glm::dot(at.normal, at.wo);
     const Color mirror = split.reflection;
 
-    float transparency = at.material.transparency(at.surface);
-    if (layers_passed)
-        transparency = layers_pass_enough(*layers_passed, options.min_weight)
-                           ? std::min(1.0f, std::fabs(pov_grey(*layers_passed)))
-                           : 0.0f;
+    // POV's filCol: filter * pigment + transmit, unclamped (a negative
+    // transmit subtracts what lies behind), traced while its grey passes
+    // the bailout.
+    const Color transmitted = layers_passed ? *layers_passed : at.material.pov_transmitted(at.surface);
+    const float transparency =
+        layers_pass_enough(transmitted, options.min_weight) ? std::min(1.0f, std::fabs(pov_grey(transmitted))) : 0.0f;
     if (transparency > 0.0f) {
         const float eta = at.refraction_eta;
         // A bent normal may face away from the ray: POV turns it to face
@@ -106,10 +107,10 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
         const Vec3 towards_ray = glm::dot(incident, at.normal) <= 0.0f ? at.normal : -at.normal;
         const bool refracts = refract(incident, towards_ray, eta, split.refracted);
         split.total_internal_reflection = !refracts;
-        const Color transmitted = layers_passed ? *layers_passed : at.material.pov_transmitted(at.surface);
         if (options.fresnel) {
             const float fresnel = refracts ? fresnel_dielectric(cos_i, eta) : 1.0f;
-            split.reflection = glm::max(mirror, Color(transparency * fresnel));
+            const float share = layers_passed ? transparency : at.material.transparency(at.surface);
+            split.reflection = glm::max(mirror, Color(share * fresnel));
             if (refracts) split.transmission = (1.0f - fresnel) * transmitted;
         } else if (refracts) {
             split.transmission = transmitted;
@@ -148,7 +149,8 @@ Color follow_specular(const Ray& from, const Hit& hit, const Color& path_weight,
                       bool transmitted, const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
                       const LocalTerm& local_term, int level, float weight, const InteriorStack& inside) {
     if (is_black(path_weight)) return Color(0.0f);
-    const float next_weight = weight * max_component(path_weight);
+    // POV's w1: the largest channel's magnitude (a weight may be negative).
+    const float next_weight = weight * max_component(glm::abs(path_weight));
     if (level + 1 > options.max_depth || next_weight < options.min_weight) return Color(0.0f);
     Ray next = hit.spawn_ray(direction);
     // POV: a refracted ray is what its parent was; a mirror ray is a reflection.
