@@ -14,6 +14,7 @@
 #include "lancer/shading/pov_media.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -25,16 +26,11 @@ namespace lancer {
 SegmentMedia media_along(const RenderScene& scene, const InteriorStack& inside) {
     SegmentMedia media;
     bool all_hollow = true;
-    for (int i = inside.size - 1; i >= 0; --i) {
+    for (int i = 0; i < inside.size; ++i) {
         const InteriorStack::Entry& entry = inside.entries[std::size_t(i)];
         const MaterialParameters& p = entry.material->parameters();
         all_hollow = all_hollow && p.hollow;
-        if (!p.medium) continue;
-        const MediumRegion region{p.medium, entry.object_id};
-        if (!media.interior)
-            media.interior = region;
-        else if (!media.outer_interior)
-            media.outer_interior = region;
+        if (p.medium) media.interiors.add(MediumRegion{p.medium, entry.object_id});
     }
     // POV: no media at all in a ray inside a solid object.
     if (!all_hollow) return SegmentMedia{};
@@ -49,7 +45,7 @@ SegmentMedia media_before_judged_by_face(const RenderScene& scene, const Ray& ra
     SegmentMedia media;
     const MaterialParameters& container = hit->material->parameters();
     if (!container.hollow) return media;  // a solid object: no media, not even the atmosphere
-    if (container.medium) media.interior = MediumRegion{container.medium, hit->object_id};
+    if (container.medium) media.interiors.add(MediumRegion{container.medium, hit->object_id});
     media.open = scene.atmosphere();
     media.in_open = true;
     return media;
@@ -155,21 +151,35 @@ struct MediaSample {
     Color depth{0.0f};
 };
 
+// POV's settings for media sampled together (MediaFunction::ComputeMedia):
+// the first medium's with the most intervals, the smallest aa_threshold.
+MediumSampling combined_sampling(const MediumRegion* regions, int count) {
+    MediumSampling settings = regions[0].medium->sampling();
+    for (int i = 1; i < count; ++i) {
+        const MediumSampling& s = regions[i].medium->sampling();
+        const float aa_threshold = std::min(settings.aa_threshold, s.aa_threshold);
+        if (s.intervals > settings.intervals) settings = s;
+        settings.aa_threshold = aa_threshold;
+    }
+    return settings;
+}
+
 class SegmentSampler {
   public:
-    SegmentSampler(const RenderScene* scene, const MediumRegion& region, const Vec3& origin, const Vec3& direction,
-                   const MediaLighting& lighting, std::vector<LightRange> lights = {})
+    SegmentSampler(const RenderScene* scene, const MediumRegion* regions, int count, const MediumSampling& settings,
+                   const Vec3& origin, const Vec3& direction, const MediaLighting& lighting,
+                   std::vector<LightRange> lights = {})
         : m_scene(scene),
-          m_region(region),
+          m_regions(regions),
+          m_count(std::min(count, InteriorStack::kDepth)),
           m_origin(origin),
           m_direction(direction),
           m_sampler(lighting.jitter),
           m_shadows(lighting.shadows),
           m_lights(std::move(lights)) {
-        const MediumSampling& s = region.medium->sampling();
-        m_jitter = s.jitter;
-        m_aa_threshold = s.aa_threshold;
-        m_aa_level = s.aa_level;
+        m_jitter = settings.jitter;
+        m_aa_threshold = settings.aa_threshold;
+        m_aa_level = settings.aa_level;
     }
 
     // Whether the interval being sampled is lit (POV skips lights elsewhere).
@@ -179,12 +189,23 @@ class SegmentSampler {
     MediaSample sample(float s0, float ds, float f) const {
         const float s = s0 + f * ds;
         const Vec3 p = m_origin + s * m_direction;
-        const MediumPoint c = m_region.medium->at(p, m_region.space);
+        // Every medium's coefficients at the point, summed (each scatters
+        // with its own phase function).
+        std::array<Color, InteriorStack::kDepth> scattering;
+        bool scatters = false;
+        Color extinction(0.0f), emission(0.0f);
+        for (int i = 0; i < m_count; ++i) {
+            const MediumPoint c = m_regions[i].medium->at(p, m_regions[i].space);
+            extinction += c.extinction;
+            emission += c.emission;
+            scattering[std::size_t(i)] = c.scattering;
+            scatters = scatters || !is_black(c.scattering);
+        }
         MediaSample result;
-        result.depth = c.extinction * ds;
+        result.depth = extinction * ds;
         if (m_scene == nullptr) return result;  // a shadow ray: extinction only
-        Color added = c.emission;
-        if (!is_black(c.scattering) && m_lit) added += c.scattering * light_at(p, s);
+        Color added = emission;
+        if (scatters && m_lit) added += light_at(p, s, scattering);
         result.radiance = added * ds;
         return result;
     }
@@ -229,7 +250,7 @@ class SegmentSampler {
   private:
     // POV's light at a medium sample: each light's colour (POV's units)
     // behind its shadow ray, weighted by the media's k towards the ray.
-    Color light_at(const Vec3& p, float s) const {
+    Color light_at(const Vec3& p, float s, const std::array<Color, InteriorStack::kDepth>& scattering) const {
         Hit at;
         at.position = p;
         Color sum(0.0f);
@@ -242,13 +263,17 @@ class SegmentSampler {
             Color colour = incident.radiance * (1.0f / (kPi * incident.pdf));
             if (m_shadows && light->casts_shadows()) colour *= transmittance_to(*m_scene, at, incident.point, light);
             if (is_black(colour)) continue;
-            sum += m_region.medium->pov_phase(glm::dot(incident.wi, m_direction)) * colour;
+            const float cos_theta = glm::dot(incident.wi, m_direction);
+            for (int i = 0; i < m_count; ++i)
+                if (!is_black(scattering[std::size_t(i)]))
+                    sum += scattering[std::size_t(i)] * m_regions[i].medium->pov_phase(cos_theta) * colour;
         }
         return sum;
     }
 
     const RenderScene* m_scene;
-    MediumRegion m_region;
+    const MediumRegion* m_regions;
+    int m_count;
     Vec3 m_origin;
     Vec3 m_direction;
     Sampler* m_sampler;
@@ -360,16 +385,16 @@ SegmentResult sample_segment(SegmentSampler& sampler, const MediumSampling& sett
 
 }  // namespace
 
-Color pov_media_radiance(const RenderScene& scene, const MediumRegion& region, const Vec3& origin,
+Color pov_media_radiance(const RenderScene& scene, const MediumRegion* regions, int count, const Vec3& origin,
                          const Vec3& direction, float length, const Color& behind, const MediaLighting& lighting) {
-    if (!region || !(length > 0.0f)) return behind;
-    const Medium& medium = *region.medium;
+    if (count <= 0 || !(length > 0.0f)) return behind;
     // Where each light that lights media reaches along the segment.
     std::vector<LightRange> lights;
     for (const Light* light : scene.lights()) {
         // A light_group's lights are not the scene's in POV-Ray: they light
-        // their group's objects and no medium.
-        if (!light->lights_media() || light->light_group() >= 0) continue;
+        // their group's objects and no medium. Nor does a shadowless light
+        // (POV's fill light, which ComputeOneMediaLightInterval skips).
+        if (!light->lights_media() || light->light_group() >= 0 || !light->casts_shadows()) continue;
         LightRange range{light, 0.0f, length};
         const Light& stand_in = simple_model_light(*light);
         const PointLightParameters* point = stand_in.parameters<PointLightParameters>();
@@ -381,8 +406,11 @@ Color pov_media_radiance(const RenderScene& scene, const MediumRegion& region, c
             continue;
         lights.push_back(range);
     }
-    SegmentSampler segment(&scene, region, origin, direction, lighting, lights);
-    const SegmentResult result = sample_segment(segment, medium.sampling(), lights, medium.homogeneous(), length);
+    const MediumSampling settings = combined_sampling(regions, count);
+    bool homogeneous = true;
+    for (int i = 0; i < count; ++i) homogeneous = homogeneous && regions[i].medium->homogeneous();
+    SegmentSampler segment(&scene, regions, count, settings, origin, direction, lighting, lights);
+    const SegmentResult result = sample_segment(segment, settings, lights, homogeneous, length);
     return behind * glm::exp(-result.depth) + result.added;
 }
 
@@ -391,7 +419,7 @@ Color pov_media_optical_depth(const MediumRegion& region, const Vec3& origin, co
     const Medium& medium = *region.medium;
     // POV samples constant media on a shadow ray the regular way: exact.
     if (medium.homogeneous()) return medium.constant().extinction * length;
-    SegmentSampler segment(nullptr, region, origin, direction, MediaLighting{});
+    SegmentSampler segment(nullptr, &region, 1, medium.sampling(), origin, direction, MediaLighting{});
     return sample_segment(segment, medium.sampling(), {}, false, length).depth;
 }
 

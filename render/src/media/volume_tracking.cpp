@@ -29,11 +29,11 @@ float mean(const Color& c) {
 
 // The regions of a segment as a small list.
 struct Regions {
-    std::array<MediumRegion, 3> list;
+    std::array<MediumRegion, InteriorStack::kDepth + 1> list;
     int count = 0;
     explicit Regions(const SegmentMedia& media) {
-        if (media.interior) list[std::size_t(count++)] = media.interior;
-        if (media.outer_interior) list[std::size_t(count++)] = media.outer_interior;
+        for (int i = 0; i < media.interiors.count; ++i)
+            list[std::size_t(count++)] = media.interiors.regions[std::size_t(i)];
         if (media.open) list[std::size_t(count++)] = media.open;
     }
     bool homogeneous() const {

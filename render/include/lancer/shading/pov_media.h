@@ -9,6 +9,8 @@
 // (RenderScene::has_media()).
 #pragma once
 
+#include <array>
+
 #include "lancer/interior_stack.h"
 #include "lancer/medium.h"
 #include "lancer/render_scene.h"
@@ -16,16 +18,28 @@
 
 namespace lancer {
 
+// The interiors' media of a stretch, in the order the ray entered them
+// (POV's list of interiors), which POV-Ray samples as one: the coefficients
+// summed at each sample, placed by the settings of the first medium with
+// the most intervals.
+struct InteriorMedia {
+    std::array<MediumRegion, InteriorStack::kDepth> regions{};
+    int count = 0;
+    void add(const MediumRegion& region) {
+        if (count < InteriorStack::kDepth) regions[std::size_t(count++)] = region;
+    }
+    explicit operator bool() const { return count > 0; }
+};
+
 // The media of a stretch of ray that runs inside the objects `inside` lists
 // (POV's list of interiors, lancer/interior_stack.h): the media of each
-// (hollow ones only, as POV shows them; the innermost two at most), and the
-// atmosphere if every one is hollow (none: the open air).
+// (when all of them are hollow, as POV shows them), and the atmosphere
+// then too (none: the open air).
 struct SegmentMedia {
-    MediumRegion interior;
-    MediumRegion outer_interior;  // a second, enclosing interior with media
+    InteriorMedia interiors;
     MediumRegion open;
     bool in_open = false;  // outside every solid object: the atmosphere and fog apply
-    bool empty() const { return !interior && !outer_interior && !open; }
+    bool empty() const { return !interiors && !open; }
 };
 SegmentMedia media_along(const RenderScene& scene, const InteriorStack& inside);
 // For a ray whose list nobody kept (path's shadow rays through media): the
@@ -51,8 +65,13 @@ struct MediaLighting {
 // reaching a sample is each light of the simple model (as whitted's
 // surfaces see them), behind a shadow ray (transmittance_to) unless
 // `lighting` says otherwise.
-Color pov_media_radiance(const RenderScene& scene, const MediumRegion& region, const Vec3& origin,
+Color pov_media_radiance(const RenderScene& scene, const MediumRegion* regions, int count, const Vec3& origin,
                          const Vec3& direction, float length, const Color& behind, const MediaLighting& lighting);
+inline Color pov_media_radiance(const RenderScene& scene, const MediumRegion& region, const Vec3& origin,
+                                const Vec3& direction, float length, const Color& behind,
+                                const MediaLighting& lighting) {
+    return pov_media_radiance(scene, &region, region ? 1 : 0, origin, direction, length, behind, lighting);
+}
 // The optical depth of the segment (extinction integrated), per channel,
 // as POV estimates it for a shadow ray.
 Color pov_media_optical_depth(const MediumRegion& region, const Vec3& origin, const Vec3& direction, float length);
@@ -75,9 +94,9 @@ inline Color seen_through_media(const RenderScene& scene, const Ray& ray, const 
     const float length = hit ? hit->t * scale : kMediaEscapeDistance;
     Color seen = radiance;
     if (rainbows && media.in_open) seen = rainbows->seen_through(direction, length, seen);
-    if (media.interior) seen = pov_media_radiance(scene, media.interior, ray.origin, direction, length, seen, lighting);
-    if (media.outer_interior)
-        seen = pov_media_radiance(scene, media.outer_interior, ray.origin, direction, length, seen, lighting);
+    if (media.interiors)
+        seen = pov_media_radiance(scene, media.interiors.regions.data(), media.interiors.count, ray.origin, direction,
+                                  length, seen, lighting);
     if (media.open) seen = pov_media_radiance(scene, media.open, ray.origin, direction, length, seen, lighting);
     if (fog && media.in_open) seen = fog->seen_through(ray.origin, direction, length, seen);
     return seen;
