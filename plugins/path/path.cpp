@@ -176,7 +176,7 @@ class PathIntegrator final : public Integrator {
         float previous_pdf = 0.0f;  // solid-angle density of the last BSDF sample
         Vec3 previous_point(0.0f);
         Vec3 previous_normal(0.0f);                       // the normal NEE weighed lights with there (0 in a medium)
-        InteriorStack inside = scene.camera_interiors();  // objects the path is in (media only)
+        InteriorStack inside = scene.camera_interiors();  // objects the path is in (media, refraction)
 
         for (int depth = 0;; ++depth) {
             Hit hit;
@@ -272,7 +272,12 @@ class PathIntegrator final : public Integrator {
             }
             if (depth >= max_depth) break;
 
-            const Bsdf bsdf(material, surface, hit, wo, m_settings.additive_reflection);
+            // The indices across the surface from the objects the path is
+            // in, as POV-Ray reads them: an air bubble in glass bends as
+            // glass to air, water in a glass as glass to water.
+            const float ior = glm::max(material.parameters().ior, 1e-6f);
+            const Bsdf bsdf(material, surface, hit, wo, m_settings.additive_reflection,
+                            inside.refraction_eta(hit, ior));
             if (bsdf.is_black()) break;
 
             // Next-event estimation. The dimensions are drawn even when
@@ -289,13 +294,13 @@ class PathIntegrator final : public Integrator {
             const BsdfSample scattered = bsdf.sample(u_choice, u_direction);
             if (!scattered.valid()) break;
             throughput *= scattered.weight;
-            radiance_scale *= transmission_scale(hit, wo, scattered, material);
+            if (scattered.is_transmission) radiance_scale *= bsdf.eta() * bsdf.eta();
             // With media, light is connected through index-matched surfaces
             // (shadow_transmittance): a ray passing one straight keeps the
             // sampling record of the vertex before it, for MIS.
             const bool passes_straight = scene.has_media() && scattered.is_transmission && scattered.is_delta &&
                                          std::abs(material.parameters().ior - 1.0f) < 1e-6f;
-            if (scene.has_media() && scattered.is_transmission) inside = inside.crossed(hit);
+            if (scattered.is_transmission) inside = inside.crossed(hit);
             if (!passes_straight) {
                 delta_bounce = scattered.is_delta;
                 previous_pdf = scattered.pdf;
@@ -323,14 +328,6 @@ class PathIntegrator final : public Integrator {
   private:
     // The (eta_from/eta_to)^2 radiance factor a dielectric refraction put
     // into the weight (1 for anything else).
-    static float transmission_scale(const Hit& hit, const Vec3& wo, const BsdfSample& s, const Material& material) {
-        if (!s.is_transmission) return 1.0f;
-        const float ior = material.parameters().ior;
-        if (!(ior > 0.0f) || std::abs(ior - 1.0f) < 1e-6f) return 1.0f;
-        const float eta = hit.is_front_face(wo) ? 1.0f / ior : ior;
-        return eta * eta;
-    }
-
     // Probability that NEE at point p with normal n (0 in a medium) picks
     // `light` (1 when every light is sampled).
     float selection_probability(const RenderScene& scene, const Light* light, const Vec3& p, const Vec3& n) const {

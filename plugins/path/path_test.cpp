@@ -353,6 +353,38 @@ TEST_F(PathFixture, TreeLightSelectionAgreesWithEveryLight) {
     EXPECT_TRUE(ac.passed) << "all vs tree, nee only: " << ac.summary;
 }
 
+// Refraction reads the indices of the objects the path is in, as in
+// POV-Ray: a ball of the same glass inside a glass ball is index-matched
+// (n 1.5 on both sides of its surface), so it neither bends nor reflects
+// the light and the image is the outer ball's alone. Judged by the faces,
+// its surface would bend light as air to glass.
+sg::SceneGraph glass_ball_scene(bool with_inner_ball) {
+    ParseOptions options;
+    options.language_version = 3.7;
+    std::string text = R"(
+        camera { location <0, 0.5, -4> look_at <0, 0.5, 0> }
+        plane { y, -0.6 pigment { checker rgb 0.9 rgb 0.1 scale 0.5 } finish { ambient 0 diffuse 1 } }
+        sphere { <0, 0.5, 0>, 1 pigment { rgbt 1 } finish { ambient 0 diffuse 0 } interior { ior 1.5 } }
+        sky_sphere { pigment { gradient y color_map { [0 rgb <0.2, 0.3, 0.9>] [1 rgb 1] } } }
+    )";
+    if (with_inner_ball)
+        text +=
+            "sphere { <0.2, 0.6, 0>, 0.5 pigment { rgbt 1 } finish { ambient 0 diffuse 0 } interior { ior 1.5 } }\n";
+    ParseResult parsed = parse_scene_string(text, "glass.pov", options);
+    EXPECT_TRUE(parsed.ok());
+    return parsed.ok() ? *parsed.scene : sg::SceneGraph{};
+}
+
+TEST_F(PathFixture, AnIndexMatchedBallInsideGlassIsInvisible) {
+    auto integrator = make_integrator(path, {"max_depth=12"});
+    const PixelStatistics alone =
+        PixelStatistics::from_film(render(glass_ball_scene(false), *integrator, 16, 12, 256, 21));
+    const PixelStatistics nested =
+        PixelStatistics::from_film(render(glass_ball_scene(true), *integrator, 16, 12, 256, 22));
+    const ImageComparison c = compare_images(alone, nested, 0.01, 2);
+    EXPECT_TRUE(c.passed) << c.summary;
+}
+
 TEST_F(PathFixture, SobolAndIndependentAgree) {
     const sg::SceneGraph graph = glossy_area_scene();
     auto independent = make_integrator(path, {"sampler=independent"});

@@ -132,7 +132,7 @@ float blinn_lobe_pdf(const Vec3& n, const Vec3& wo, const Vec3& wi, float expone
 // ------------------------------------------------------------------ material
 
 Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hit, const Vec3& wo,
-           bool additive_reflection)
+           bool additive_reflection, float relative_eta)
     : m_material(material), m_surface(surface), m_wo(wo) {
     const MaterialParameters& p = material.parameters();
     m_n = hit.facing_normal(wo);
@@ -177,12 +177,13 @@ Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hi
     if (m_transparency > 0.0f) {
         m_tint = material.transmission_tint(surface);
         const float ior = p.ior > 0.0f ? p.ior : 1.0f;
+        const float eta = relative_eta > 0.0f ? relative_eta : m_entering ? 1.0f / ior : ior;
         float fresnel = 0.0f;
-        if (std::abs(ior - 1.0f) < 1e-6f) {
+        if (std::abs(eta - 1.0f) < 1e-6f) {
             m_eta = 1.0f;
             m_refracted = -wo;
         } else {
-            m_eta = m_entering ? 1.0f / ior : ior;
+            m_eta = eta;
             if (refract(-wo, m_n, m_eta, m_refracted)) {
                 fresnel = std::clamp(fresnel_dielectric(cos_o, m_eta), 0.0f, 1.0f);
                 m_refracted = glm::normalize(m_refracted);

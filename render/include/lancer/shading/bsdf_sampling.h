@@ -106,8 +106,11 @@ struct BsdfSample {
 class Bsdf {
   public:
     // `wo` unit, pointing away from the hit (towards the previous vertex).
+    // `relative_eta`: n on wo's side over n beyond, from the objects the
+    // path is in (InteriorStack::refraction_eta); 0 judges by the face
+    // (a back face leaves into ior 1).
     Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hit, const Vec3& wo,
-         bool additive_reflection = false);
+         bool additive_reflection = false, float relative_eta = 0.0f);
 
     // f(wo, wi) * |cos(n, wi)| of the smooth components; 0 below the surface.
     Color eval(const Vec3& wi) const;
@@ -118,6 +121,8 @@ class Bsdf {
     BsdfSample sample(float u_choice, const Vec2& u) const;
 
     bool has_smooth() const { return m_p_smooth > 0.0f; }
+    // n on wo's side over n beyond the surface (1: index-matched).
+    float eta() const { return m_eta; }
     bool is_black() const { return m_p_smooth + m_p_mirror + m_p_dielectric <= 0.0f; }
     // The shading normal turned towards wo.
     const Vec3& normal() const { return m_n; }
