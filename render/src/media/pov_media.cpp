@@ -23,17 +23,23 @@
 
 namespace lancer {
 
-SegmentMedia media_along(const RenderScene& scene, const InteriorStack& inside) {
-    SegmentMedia media;
-    bool all_hollow = true;
+InteriorMedia interior_media(const InteriorStack& inside) {
+    InteriorMedia media;
     for (int i = 0; i < inside.size; ++i) {
         const InteriorStack::Entry& entry = inside.entries[std::size_t(i)];
         const MaterialParameters& p = entry.material->parameters();
-        all_hollow = all_hollow && p.hollow;
-        if (p.medium) media.interiors.add(MediumRegion{p.medium, entry.object_id});
+        if (!p.hollow) return InteriorMedia{};
+        if (p.medium) media.add(MediumRegion{p.medium, entry.object_id});
     }
+    return media;
+}
+
+SegmentMedia media_along(const RenderScene& scene, const InteriorStack& inside) {
+    SegmentMedia media;
     // POV: no media at all in a ray inside a solid object.
-    if (!all_hollow) return SegmentMedia{};
+    for (int i = 0; i < inside.size; ++i)
+        if (!inside.entries[std::size_t(i)].material->parameters().hollow) return SegmentMedia{};
+    media.interiors = interior_media(inside);
     media.open = scene.atmosphere();
     media.in_open = true;
     return media;
@@ -168,8 +174,9 @@ class SegmentSampler {
   public:
     SegmentSampler(const RenderScene* scene, const MediumRegion* regions, int count, const MediumSampling& settings,
                    const Vec3& origin, const Vec3& direction, const MediaLighting& lighting,
-                   std::vector<LightRange> lights = {})
+                   std::vector<LightRange> lights = {}, const InteriorStack* inside = nullptr)
         : m_scene(scene),
+          m_inside(inside),
           m_regions(regions),
           m_count(std::min(count, InteriorStack::kDepth)),
           m_origin(origin),
@@ -261,7 +268,8 @@ class SegmentSampler {
             const LightSample incident = stand_in.sample(p, Vec2(0.5f));
             if (!(incident.pdf > 0.0f) || is_black(incident.radiance)) continue;
             Color colour = incident.radiance * (1.0f / (kPi * incident.pdf));
-            if (m_shadows && light->casts_shadows()) colour *= transmittance_to(*m_scene, at, incident.point, light);
+            if (m_shadows && light->casts_shadows())
+                colour *= transmittance_to(*m_scene, at, incident.point, light, m_inside);
             if (is_black(colour)) continue;
             const float cos_theta = glm::dot(incident.wi, m_direction);
             for (int i = 0; i < m_count; ++i)
@@ -272,6 +280,7 @@ class SegmentSampler {
     }
 
     const RenderScene* m_scene;
+    const InteriorStack* m_inside;
     const MediumRegion* m_regions;
     int m_count;
     Vec3 m_origin;
@@ -386,7 +395,8 @@ SegmentResult sample_segment(SegmentSampler& sampler, const MediumSampling& sett
 }  // namespace
 
 Color pov_media_radiance(const RenderScene& scene, const MediumRegion* regions, int count, const Vec3& origin,
-                         const Vec3& direction, float length, const Color& behind, const MediaLighting& lighting) {
+                         const Vec3& direction, float length, const Color& behind, const MediaLighting& lighting,
+                         const InteriorStack* inside) {
     if (count <= 0 || !(length > 0.0f)) return behind;
     // Where each light that lights media reaches along the segment.
     std::vector<LightRange> lights;
@@ -409,18 +419,28 @@ Color pov_media_radiance(const RenderScene& scene, const MediumRegion* regions, 
     const MediumSampling settings = combined_sampling(regions, count);
     bool homogeneous = true;
     for (int i = 0; i < count; ++i) homogeneous = homogeneous && regions[i].medium->homogeneous();
-    SegmentSampler segment(&scene, regions, count, settings, origin, direction, lighting, lights);
+    SegmentSampler segment(&scene, regions, count, settings, origin, direction, lighting, lights, inside);
     const SegmentResult result = sample_segment(segment, settings, lights, homogeneous, length);
     return behind * glm::exp(-result.depth) + result.added;
 }
 
-Color pov_media_optical_depth(const MediumRegion& region, const Vec3& origin, const Vec3& direction, float length) {
-    if (!region || !(length > 0.0f) || !region.medium->attenuates()) return Color(0.0f);
-    const Medium& medium = *region.medium;
+Color pov_media_optical_depth(const MediumRegion* regions, int count, const Vec3& origin, const Vec3& direction,
+                              float length) {
+    if (count <= 0 || !(length > 0.0f)) return Color(0.0f);
+    bool attenuates = false, homogeneous = true;
+    Color constant(0.0f);
+    for (int i = 0; i < count; ++i) {
+        const Medium& medium = *regions[i].medium;
+        attenuates = attenuates || medium.attenuates();
+        homogeneous = homogeneous && medium.homogeneous();
+        if (medium.homogeneous()) constant += medium.constant().extinction;
+    }
+    if (!attenuates) return Color(0.0f);
     // POV samples constant media on a shadow ray the regular way: exact.
-    if (medium.homogeneous()) return medium.constant().extinction * length;
-    SegmentSampler segment(nullptr, &region, 1, medium.sampling(), origin, direction, MediaLighting{});
-    return sample_segment(segment, medium.sampling(), {}, false, length).depth;
+    if (homogeneous) return constant * length;
+    const MediumSampling settings = combined_sampling(regions, count);
+    SegmentSampler segment(nullptr, regions, count, settings, origin, direction, MediaLighting{});
+    return sample_segment(segment, settings, {}, false, length).depth;
 }
 
 }  // namespace lancer

@@ -31,6 +31,9 @@ struct ShadingContext {
     // in_interiors() reads them from the objects the ray is in.
     float refraction_eta = 1.0f;
     float fresnel_ior = 1.0f;
+    // The objects the ray is in, which its shadow rays start in (null:
+    // they judge interiors by faces); set by in_interiors().
+    const InteriorStack* inside = nullptr;
 };
 
 inline ShadingContext make_shading_context(const Hit& hit, const Ray& ray) {
@@ -51,6 +54,7 @@ inline ShadingContext& in_interiors(ShadingContext& at, const InteriorStack& ins
     const float ior = glm::max(at.material.parameters().ior, 1e-6f);
     at.refraction_eta = inside.refraction_eta(at.hit, ior);
     at.fresnel_ior = inside.fresnel_ior(at.hit, ior);
+    at.inside = &inside;
     return at;
 }
 
@@ -158,7 +162,7 @@ inline LobeRadiance reflect_pov_area_light(const RenderScene& scene, const Shadi
     if (lobes == Lobes::GlossyOnly) reflected.diffuse = Color(0.0f);
     if (!light.casts_shadows()) reflected.glossy = Color(0.0f);  // see reflect_simple_light
     if (shadows == Shadows::Hard && light.casts_shadows() && !reflected.is_black())
-        reflected *= PovAreaShadow(scene, at.hit, light, area, centre.wi, colour).visibility();
+        reflected *= PovAreaShadow(scene, at.hit, light, area, centre.wi, colour, at.inside).visibility();
     return reflected;
 }
 
@@ -178,7 +182,7 @@ inline LobeRadiance reflect_simple_light(const RenderScene& scene, const Shading
     // (no phong, no specular).
     if (!light.casts_shadows()) reflected.glossy = Color(0.0f);
     if (shadows == Shadows::Hard && light.casts_shadows() && !reflected.is_black())
-        reflected *= transmittance_to(scene, at.hit, sample.point, &light);
+        reflected *= transmittance_to(scene, at.hit, sample.point, &light, at.inside);
     return reflected;
 }
 

@@ -42,6 +42,8 @@ struct SegmentMedia {
     bool empty() const { return !interiors && !open; }
 };
 SegmentMedia media_along(const RenderScene& scene, const InteriorStack& inside);
+// The interiors' media alone (none when one of the objects is solid).
+InteriorMedia interior_media(const InteriorStack& inside);
 // For a ray whose list nobody kept (path's shadow rays through media): the
 // stretch that ends on a back face ran inside that object, one that ends
 // on a front face or escapes ran in the open.
@@ -65,16 +67,25 @@ struct MediaLighting {
 // reaching a sample is each light of the simple model (as whitted's
 // surfaces see them), behind a shadow ray (transmittance_to) unless
 // `lighting` says otherwise.
+// `inside`: the objects the segment runs in, which its samples' shadow
+// rays start in (POV's light rays copy their ray's list); null: shadow
+// rays judge interiors by the faces they leave through.
 Color pov_media_radiance(const RenderScene& scene, const MediumRegion* regions, int count, const Vec3& origin,
-                         const Vec3& direction, float length, const Color& behind, const MediaLighting& lighting);
+                         const Vec3& direction, float length, const Color& behind, const MediaLighting& lighting,
+                         const InteriorStack* inside = nullptr);
 inline Color pov_media_radiance(const RenderScene& scene, const MediumRegion& region, const Vec3& origin,
-                                const Vec3& direction, float length, const Color& behind,
-                                const MediaLighting& lighting) {
-    return pov_media_radiance(scene, &region, region ? 1 : 0, origin, direction, length, behind, lighting);
+                                const Vec3& direction, float length, const Color& behind, const MediaLighting& lighting,
+                                const InteriorStack* inside = nullptr) {
+    return pov_media_radiance(scene, &region, region ? 1 : 0, origin, direction, length, behind, lighting, inside);
 }
 // The optical depth of the segment (extinction integrated), per channel,
-// as POV estimates it for a shadow ray.
-Color pov_media_optical_depth(const MediumRegion& region, const Vec3& origin, const Vec3& direction, float length);
+// as POV estimates it for a shadow ray: the media sampled as one.
+Color pov_media_optical_depth(const MediumRegion* regions, int count, const Vec3& origin, const Vec3& direction,
+                              float length);
+inline Color pov_media_optical_depth(const MediumRegion& region, const Vec3& origin, const Vec3& direction,
+                                     float length) {
+    return pov_media_optical_depth(&region, region ? 1 : 0, origin, direction, length);
+}
 
 // What an integrator calls with the radiance it found along `ray` (hit null:
 // the background): the radiance after the segment's media. Free when the
@@ -96,8 +107,9 @@ inline Color seen_through_media(const RenderScene& scene, const Ray& ray, const 
     if (rainbows && media.in_open) seen = rainbows->seen_through(direction, length, seen);
     if (media.interiors)
         seen = pov_media_radiance(scene, media.interiors.regions.data(), media.interiors.count, ray.origin, direction,
-                                  length, seen, lighting);
-    if (media.open) seen = pov_media_radiance(scene, media.open, ray.origin, direction, length, seen, lighting);
+                                  length, seen, lighting, &inside);
+    if (media.open)
+        seen = pov_media_radiance(scene, media.open, ray.origin, direction, length, seen, lighting, &inside);
     if (fog && media.in_open) seen = fog->seen_through(ray.origin, direction, length, seen);
     return seen;
 }

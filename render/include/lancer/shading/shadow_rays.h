@@ -28,6 +28,17 @@ inline Color interior_media_transmittance(const Ray& ray, const Hit& blocker) {
     return glm::exp(-pov_media_optical_depth(region, ray.origin, ray.direction / scale, blocker.t * scale));
 }
 
+// exp(-optical depth) of the interiors' media along `ray` up to `blocker`,
+// as POV-Ray's shadow rays see them (ComputeShadowColour): every object on
+// the ray's list, sampled as one, unless one of them is solid.
+inline Color listed_media_transmittance(const Ray& ray, const Hit& blocker, const InteriorStack& inside) {
+    const InteriorMedia media = interior_media(inside);
+    if (!media) return Color(1.0f);
+    const float scale = glm::length(ray.direction);
+    return glm::exp(-pov_media_optical_depth(media.regions.data(), media.count, ray.origin, ray.direction / scale,
+                                             blocker.t * scale));
+}
+
 // exp(-optical depth) of the atmosphere over the whole of a shadow ray.
 inline Color atmosphere_transmittance(const RenderScene& scene, const Ray& ray) {
     const MediumRegion atmosphere = scene.atmosphere();
@@ -60,8 +71,10 @@ inline Color dimming_on_the_way(const RenderScene& scene, const Ray& ray, const 
 
 // What the surfaces between the hit and `target` let through (see
 // transmittance_to), without the atmosphere's and fog's dimming.
-inline Color surfaces_transmittance(const RenderScene& scene, Ray ray, const Vec3& target, const Light* own_light) {
+inline Color surfaces_transmittance(const RenderScene& scene, Ray ray, const Vec3& target, const Light* own_light,
+                                    const InteriorStack* inside = nullptr) {
     if (!scene.occluded(ray)) return Color(1.0f);  // the common case: one cheap query
+    InteriorStack listed = inside ? *inside : InteriorStack{};
 
     // Walk the surfaces in between, nearest first. The bound only guards
     // against pathological stacks of coplanar transparent faces.
@@ -101,10 +114,19 @@ inline Color surfaces_transmittance(const RenderScene& scene, Ray ray, const Vec
             throughput *= shade_blended(blocker, layers_pass);
             if (lancer::is_black(throughput)) return throughput;
         }
-        // The stretch just crossed ran inside this object: its media dim the
-        // light, as POV's shadow rays see interior media (not the
-        // atmosphere: POV's media_attenuation is off by default).
-        if (scene.has_media()) throughput *= interior_media_transmittance(ray, blocker);
+        // The stretch just crossed ran inside the objects on the ray's list
+        // (without one, inside this object if the ray leaves it here): their
+        // media dim the light, as POV's shadow rays see interior media (not
+        // the atmosphere: POV's media_attenuation is off by default). A
+        // no_shadow object is not on the way at all.
+        if (scene.has_media()) {
+            if (inside) {
+                throughput *= listed_media_transmittance(ray, blocker, listed);
+                if (blocker.casts_shadow) listed = listed.crossed(blocker);
+            } else {
+                throughput *= interior_media_transmittance(ray, blocker);
+            }
+        }
         // And its interior fade, by the length of that stretch (POV's
         // ComputeShadowTexture, which fades only with a fade_power).
         if (!blocker.is_front_face(-ray.direction) && blocker.material->parameters().fade_power > 0.0f)
@@ -121,10 +143,13 @@ inline Color surfaces_transmittance(const RenderScene& scene, Ray ray, const Vec
 // (POV-Ray's filtered shadows), so a fully transmitting object casts no
 // shadow. `own_light`'s surface is skipped: the proxy of a sphere light sits
 // at its centre, inside the light's own geometry.
+// `inside`: the objects the shadow ray starts in (those of the ray that
+// found `from`, as POV's light rays copy its list); null judges each
+// interior by the face the shadow ray leaves it through.
 inline Color transmittance_to(const RenderScene& scene, const Hit& from, const Vec3& target,
-                              const Light* own_light = nullptr) {
+                              const Light* own_light = nullptr, const InteriorStack* inside = nullptr) {
     const Ray ray = from.spawn_ray_to(target);
-    return dimming_on_the_way(scene, ray, own_light) * surfaces_transmittance(scene, ray, target, own_light);
+    return dimming_on_the_way(scene, ray, own_light) * surfaces_transmittance(scene, ray, target, own_light, inside);
 }
 
 // POV's area-light visibility from `from`: the light's colour (in POV's
@@ -139,9 +164,10 @@ inline Color transmittance_to(const RenderScene& scene, const Hit& from, const V
 class PovAreaShadow {
   public:
     PovAreaShadow(const RenderScene& scene, const Hit& from, const Light& light, const PovAreaLightParameters& area,
-                  const Vec3& to_light, const Color& light_colour)
+                  const Vec3& to_light, const Color& light_colour, const InteriorStack* inside = nullptr)
         : m_scene(scene),
           m_from(from),
+          m_inside(inside),
           m_light(light),
           m_area(area),
           m_axes(area_grid_axes(area, glm::dvec3(to_light))),
@@ -222,9 +248,9 @@ class PovAreaShadow {
         const glm::dvec3 point = glm::dvec3(m_area.center.position) + area_grid_offset(m_area, m_axes, ju, jv);
         if (m_dimmed) m_last_length = glm::distance(point, glm::dvec3(m_from.position));
         // Undimmed: the atmosphere and fog dim the average (visibility()).
-        const Color seen =
-            m_clear ? Color(1.0f)
-                    : surfaces_transmittance(m_scene, m_from.spawn_ray_to(Vec3(point)), Vec3(point), &m_light);
+        const Color seen = m_clear ? Color(1.0f)
+                                   : surfaces_transmittance(m_scene, m_from.spawn_ray_to(Vec3(point)), Vec3(point),
+                                                            &m_light, m_inside);
         state.stamp[index] = state.generation;
         state.value[index] = seen;
         return seen;
@@ -271,6 +297,7 @@ class PovAreaShadow {
 
     const RenderScene& m_scene;
     const Hit& m_from;
+    const InteriorStack* m_inside;
     const Light& m_light;
     const PovAreaLightParameters& m_area;
     AreaGridAxes m_axes;
