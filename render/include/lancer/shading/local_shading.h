@@ -26,13 +26,9 @@ struct ShadingContext {
     Vec3 normal;                  // unit shading normal on the side of wo (surfaces are two-sided)
     bool entering;                // the ray arrives on the front face (from outside a closed object)
     float film_thickness = 0.0f;  // irid's, at this hit
-    // The indices across the surface, n1/n2 for the refracted ray and n2/n1
-    // for POV's Fresnel reflection: by the face (outside is ior 1) until
-    // in_interiors() reads them from the objects the ray is in.
-    float refraction_eta = 1.0f;
-    float fresnel_ior = 1.0f;
-    // The objects the ray is in, which its shadow rays start in (null:
-    // they judge interiors by faces); set by in_interiors().
+    // The objects the ray is in, which decide the indices across the
+    // surface and which its shadow rays start in; null: judged by the face
+    // (outside is ior 1). Set by in_interiors().
     const InteriorStack* inside = nullptr;
 };
 
@@ -41,9 +37,6 @@ inline ShadingContext make_shading_context(const Hit& hit, const Ray& ray) {
     ShadingContext at{hit, *hit.material,         hit.material->sample_surface(hit),
                       wo,  hit.facing_normal(wo), hit.is_front_face(wo)};
     if (at.material.has_iridescence()) at.film_thickness = at.material.film_thickness(hit.position);
-    const float ior = glm::max(at.material.parameters().ior, 1e-6f);
-    at.refraction_eta = at.entering ? 1.0f / ior : ior;
-    at.fresnel_ior = at.entering ? ior : 1.0f / ior;
     return at;
 }
 
@@ -51,11 +44,22 @@ inline ShadingContext make_shading_context(const Hit& hit, const Ray& ray) {
 // in (InteriorStack) rather than from the face it meets: a ray in water
 // that enters a glass holding it bends by 1.5/1.33, not by 1.5.
 inline ShadingContext& in_interiors(ShadingContext& at, const InteriorStack& inside) {
-    const float ior = glm::max(at.material.parameters().ior, 1e-6f);
-    at.refraction_eta = inside.refraction_eta(at.hit, ior);
-    at.fresnel_ior = inside.fresnel_ior(at.hit, ior);
     at.inside = &inside;
     return at;
+}
+
+// n1/n2 for the ray refracted at `at`.
+inline float refraction_eta(const ShadingContext& at) {
+    const float ior = glm::max(at.material.parameters().ior, 1e-6f);
+    if (at.inside) return at.inside->refraction_eta(at.hit, ior);
+    return at.entering ? 1.0f / ior : ior;
+}
+
+// n2/n1 for POV's Fresnel reflection at `at`.
+inline float fresnel_ior(const ShadingContext& at) {
+    const float ior = glm::max(at.material.parameters().ior, 1e-6f);
+    if (at.inside) return at.inside->fresnel_ior(at.hit, ior);
+    return at.entering ? ior : 1.0f / ior;
 }
 
 // Reflected radiance split by lobe, so an integrator can weight or replace

@@ -20,7 +20,7 @@ namespace lancer {
 inline Color layer_passes(const ShadingContext& at) {
     Color passed = at.material.pov_transmitted(at.surface);
     if (at.material.parameters().conserve_energy) {
-        const Color mirror = at.material.mirror_reflectance(at.surface, glm::dot(at.normal, at.wo), at.fresnel_ior);
+        const Color mirror = at.material.mirror_reflectance(at.surface, glm::dot(at.normal, at.wo), fresnel_ior(at));
         passed *= glm::clamp(Color(1.0f) - mirror, Color(0.0f), Color(1.0f));
     }
     return passed;

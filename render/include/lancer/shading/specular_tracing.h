@@ -75,7 +75,7 @@ inline Vec3 pov_mirror_direction(const ShadingContext& at) {
 // reflects (POV-Ray refracts only through the top layer).
 inline SpecularSplit split_mirror(const ShadingContext& at, const SpecularOptions& options) {
     SpecularSplit split;
-    const Color mirror = at.material.mirror_reflectance(at.surface, glm::dot(at.normal, at.wo), at.fresnel_ior);
+    const Color mirror = at.material.mirror_reflectance(at.surface, glm::dot(at.normal, at.wo), fresnel_ior(at));
     if (!options.additive_reflection) split.diffuse_scale = glm::max(Color(1.0f) - mirror, Color(0.0f));
     split.reflection = mirror;
     if (!is_black(split.reflection)) split.reflected = pov_mirror_direction(at);
@@ -101,7 +101,7 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
     const float transparency =
         layers_pass_enough(transmitted, options.min_weight) ? std::min(1.0f, std::fabs(pov_grey(transmitted))) : 0.0f;
     if (transparency > 0.0f) {
-        const float eta = at.refraction_eta;
+        const float eta = refraction_eta(at);
         // A bent normal may face away from the ray: POV turns it to face
         // the ray before it refracts (Trace::TraceRefractionRay).
         const Vec3 towards_ray = glm::dot(incident, at.normal) <= 0.0f ? at.normal : -at.normal;
