@@ -60,7 +60,9 @@ class ShadowIntegrator final : public Integrator {
     Color surface_radiance(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler& sampler) const {
         if (!found) return scene.background(ray);
         const auto own_light = [&](const Hit& hit) {
-            const ShadingContext at = make_shading_context(hit, ray);
+            ShadingContext at = make_shading_context(hit, ray);
+            // Its shadow rays start in the objects the camera is in.
+            in_interiors(at, scene.camera_interiors());
             Color radiance = surface_emission(at);
             if (m_with_ambient) radiance += opaque_ambient(scene, at);
             for (const Light* light : scene.lights()) {
@@ -84,7 +86,7 @@ class ShadowIntegrator final : public Integrator {
             const LightSample sample = light.sample(at.hit.position, sampler.next_2d());
             const Color reflected = reflect_light_sample(at, sample).total();
             if (is_black(reflected)) continue;
-            sum += reflected * transmittance_to(scene, at.hit, sample.point);
+            sum += reflected * transmittance_to(scene, at.hit, sample.point, nullptr, at.inside);
         }
         return sum / float(m_area_samples);
     }
