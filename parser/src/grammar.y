@@ -921,8 +921,10 @@ material_items
   | material_items TEXTURE_ID { $$ = std::move($1); auto t = $2.value.texture;
                                 $$.push_back([t](sg::Material& m) { m = *t; }); }
   | material_items texture  { $$ = std::move($1); auto t = $2;
-                              $$.push_back([t](sg::Material& m) { sg::Interior keep = m.interior; m = *t; m.interior = keep; }); }
-  | material_items interior { $$ = std::move($1); auto i = $2; $$.push_back([i](sg::Material& m) { m.interior = *i; }); }
+                              $$.push_back([t](sg::Material& m) { sg::Interior keep = m.interior; const bool had = m.has_interior;
+                                                                  m = *t; m.interior = keep; m.has_interior = had; }); }
+  | material_items interior { $$ = std::move($1); auto i = $2;
+                              $$.push_back([i](sg::Material& m) { m.interior = *i; m.has_interior = true; }); }
   | material_items transform_item { $$ = std::move($1); sg::Mat4 t = $2;
                               $$.push_back([t](sg::Material& m) { transform_material(m, t); }); }
   ;

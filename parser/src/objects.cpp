@@ -47,6 +47,21 @@ void give_interior_texture(sg::Object& object, const MaterialPtr& inside) {
             give_interior_texture(child, in_child_space(inside, child.parent_from_object));
 }
 
+// POV-Ray promotes a group's interior to every descendant that has a
+// texture of its own but no interior written for it (Post_Process copies
+// the interior to children without one); `outer` holds the interior, in
+// the object's space.
+void give_interior(sg::Object& object, const MaterialPtr& outer) {
+    if (object.material && object.material->has_interior && !object.inherits_material) return;
+    if (object.material && !object.inherits_material) {
+        auto with = std::make_shared<sg::Material>(*object.material);
+        with->interior = outer->interior;
+        object.material = with;
+    }
+    if (auto* group = std::get_if<sg::Group>(&object.shape))
+        for (auto& child : group->children) give_interior(child, in_child_space(outer, child.parent_from_object));
+}
+
 // POV: a texture on a union reaches every descendant that has none of its
 // own; a later pigment or finish on the union reaches them again.
 void give_material(sg::Object& object, const MaterialPtr& material, bool inherited = false) {
@@ -54,9 +69,12 @@ void give_material(sg::Object& object, const MaterialPtr& material, bool inherit
     object.inherits_material = inherited;
     if (auto* group = std::get_if<sg::Group>(&object.shape)) {
         for (auto& child : group->children) {
-            if (!child.material || child.inherits_material)
+            if (!child.material || child.inherits_material) {
                 give_material(child, in_child_space(material, child.parent_from_object), true);
-            else if (material->interior_texture)
+                continue;
+            }
+            if (material->has_interior) give_interior(child, in_child_space(material, child.parent_from_object));
+            if (material->interior_texture)
                 give_interior_texture(child, in_child_space(material->interior_texture, child.parent_from_object));
         }
     }
@@ -244,7 +262,8 @@ std::function<void(ShapeValue&)> Evaluator::texture_edit(std::shared_ptr<sg::Mat
         sg::Material material = *texture;
         if (s.object.material) {
             material.interior = s.object.material->interior;  // a texture has no interior
-            if (s.object.material->interior_texture)          // nor an interior_texture
+            material.has_interior = s.object.material->has_interior;
+            if (s.object.material->interior_texture)  // nor an interior_texture
                 material.interior_texture = current_in_parent_space(s, sg::Material{}).interior_texture;
         }
         attach_in_parent_space(s, material);
@@ -306,6 +325,7 @@ std::function<void(ShapeValue&)> Evaluator::interior_edit(std::shared_ptr<sg::In
     return [interior, fallback = default_texture()](ShapeValue& s) {
         sg::Material material = current_in_parent_space(s, fallback);
         material.interior = *interior;
+        material.has_interior = true;
         attach_in_parent_space(s, material);
     };
 }
@@ -319,6 +339,8 @@ std::function<void(ShapeValue&)> Evaluator::child_edit(ShapePtr child) {
         }
         if (!object.material && s.object.material) {
             give_material(object, in_child_space(s.object.material, object.parent_from_object), true);
+        } else if (s.object.material && s.object.material->has_interior) {
+            give_interior(object, in_child_space(s.object.material, object.parent_from_object));
         }
         std::get<sg::Group>(s.object.shape).children.push_back(std::move(object));
     };

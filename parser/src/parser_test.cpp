@@ -327,6 +327,32 @@ TEST(ParserMaterials, DispersionSamplesAreCheckedThenIgnored) {
     EXPECT_EQ(one.location.column, 45);
 }
 
+// POV-Ray gives a union's interior to every part without an interior of
+// its own, textured or not, through nested unions and whether the part
+// came before or after it; a part's own interior (or its material's) stays.
+TEST(ParserMaterials, AGroupsInteriorReachesPartsWithoutOne) {
+    auto scene = parse_ok(R"(
+        #declare M = material { texture { pigment { rgbf 1 } } interior { ior 1.2 } }
+        union {
+          sphere { 0, 1 pigment { rgbf 1 } }
+          union { sphere { 0, 1 texture { pigment { rgb 1 } } } }
+          sphere { 0, 1 pigment { rgbf 1 } interior { ior 1.1 } }
+          sphere { 0, 1 material { M } }
+          interior { ior 1.6 }
+        }
+        union { interior { ior 1.4 } sphere { 0, 1 pigment { rgbf 1 } } }
+        sphere { 0, 1 pigment { rgbf 1 } })");
+    const auto& parts = std::get<sg::Group>(scene.objects.at(0).shape).children;
+    ASSERT_EQ(parts.size(), 4u);
+    EXPECT_DOUBLE_EQ(parts[0].material->interior.ior, 1.6);
+    EXPECT_DOUBLE_EQ(std::get<sg::Group>(parts[1].shape).children.at(0).material->interior.ior, 1.6);
+    EXPECT_DOUBLE_EQ(parts[2].material->interior.ior, 1.1);
+    EXPECT_DOUBLE_EQ(parts[3].material->interior.ior, 1.2);
+    const auto& later = std::get<sg::Group>(scene.objects.at(1).shape).children;
+    EXPECT_DOUBLE_EQ(later.at(0).material->interior.ior, 1.4);
+    EXPECT_DOUBLE_EQ(scene.objects.at(2).material->interior.ior, 1.0);
+}
+
 TEST(ParserMaterials, TextureFinishDefaultsAndValues) {
     auto scene = parse_ok(R"(sphere { 0, 1 texture {
         pigment { color rgbft <0.1, 0.2, 0.3, 0.4, 0.5> }

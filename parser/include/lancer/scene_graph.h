@@ -414,6 +414,9 @@ struct Material {
     NormalRef normal;  // null: the surface's own normal
     Finish finish;
     Interior interior;
+    // An interior { } was written for it (on the object, or in its
+    // material { }): else, as in POV-Ray, the object takes its group's.
+    bool has_interior = false;
     // Patterned: the pattern whose value picks among texture_map's entries
     // (blended between two) or block_textures (one per block).
     std::optional<Pattern> pattern;
