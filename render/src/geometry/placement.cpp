@@ -26,16 +26,23 @@ Placement Placement::from(const DMat4& world_from_object) {
 
 Vec3 Placement::world_point_error(const DVec3& p_object, const DVec3& p_world) const {
     // Rounding the double result to float (half an ULP, taken as two for
-    // safety) plus the double arithmetic of the transform.
-    if (identity)  // the same sums with a = 1 and no translation
-        return Vec3(2.0 * double(FLT_EPSILON) * glm::abs(p_world) + 16.0 * DBL_EPSILON * glm::abs(p_object));
-    const DMat3 a = linear_part(world_from_object);
-    DVec3 magnitude(0.0);
-    for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 3; ++col) magnitude[row] += std::fabs(a[col][row]) * std::fabs(p_object[col]);
-    magnitude += glm::abs(DVec3(world_from_object[3]));
-    const DVec3 error = 2.0 * double(FLT_EPSILON) * glm::abs(p_world) + 16.0 * DBL_EPSILON * magnitude;
-    return Vec3(error);
+    // safety) plus the double arithmetic of the intersection and the
+    // transform. That arithmetic mixes the axes (a point found along a ray,
+    // or snapped onto a disc), so its bound on every axis is the largest:
+    // a point exactly on the plane z = 0 still gets an error across it, and
+    // a ray leaving it starts off the surface, not on it where its own
+    // rounding finds the surface again at t = 1e-17 (a cone's base in the
+    // plane z = 0 stopped every shadow ray leaving through it).
+    DVec3 magnitude = glm::abs(p_object);
+    if (!identity) {
+        const DMat3 a = linear_part(world_from_object);
+        magnitude = DVec3(0.0);
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col < 3; ++col) magnitude[row] += std::fabs(a[col][row]) * std::fabs(p_object[col]);
+        magnitude += glm::abs(DVec3(world_from_object[3]));
+    }
+    const double largest = std::max({magnitude.x, magnitude.y, magnitude.z});
+    return Vec3(2.0 * double(FLT_EPSILON) * glm::abs(p_world) + DVec3(16.0 * DBL_EPSILON * largest));
 }
 
 bool Placement::is_similarity() const {

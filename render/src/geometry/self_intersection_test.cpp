@@ -170,6 +170,38 @@ TEST_P(SelfIntersection, CylinderConeTorusDiscQuadricAndCsg) {
     check_quadric_family_and_csg(s * glm::dvec3(0.4, -0.3, 0.2), s);
 }
 
+// Flat faces lying in the planes x = 0, y = 0 and z = 0, where a hit's
+// coordinate across the face is exactly 0 and rounds with no error of its
+// own: a cone's base, a cylinder's cap, a disc, a box's face.
+TEST(SelfIntersectionOnCoordinatePlanes, FlatFacesThroughTheOrigin) {
+    const struct {
+        const char* label;
+        sg::Object object;
+        glm::dvec3 centre;
+        bool convex_closed;
+    } cases[] = {
+        {"cone with its base in z = 0",
+         shape_object(sg::Object::Kind::Cone, sg::Cone{{0, 0, 0}, {0, 0, -2}, 1.0, 0.0, false}, glm::dmat4(1.0)),
+         {0, 0, -1},
+         true},
+        {"cylinder with a cap in y = 0",
+         shape_object(sg::Object::Kind::Cylinder, sg::Cone{{0.3, 0, 0}, {0.3, 1.5, 0}, 0.8, 0.8, false},
+                      glm::dmat4(1.0)),
+         {0.3, 0.75, 0},
+         true},
+        {"disc in z = 0",
+         shape_object(sg::Object::Kind::Disc, sg::Disc{{0, 0, 0}, {0, 0, 1}, 1.0, 0.0}, glm::dmat4(1.0)),
+         {0, 0, 0},
+         false},
+        {"box with a face in x = 0", box_object({0, -0.5, -1}, {1.5, 0.5, 1}), {0.75, 0, 0}, true},
+    };
+    for (const auto& c : cases) {
+        sg::SceneGraph graph;
+        graph.objects.push_back(c.object);
+        check_scene(*compile_scene(graph), c.centre, 1.0, c.convex_closed, c.label);
+    }
+}
+
 // Shadow rays towards a point light lying exactly on a plane (analytic and
 // triangle) are not blocked by that plane.
 TEST_P(SelfIntersection, LightOnASurfaceIsNotShadowedByIt) {
