@@ -48,12 +48,12 @@ void give_interior_texture(sg::Object& object, const MaterialPtr& inside) {
 }
 
 // POV-Ray promotes a group's interior to every descendant that has a
-// texture of its own but no interior written for it (Post_Process copies
-// the interior to children without one); `outer` holds the interior, in
-// the object's space.
+// texture, its own or a nested group's, but no interior written for it
+// (Post_Process copies the interior to children without one); `outer`
+// holds the interior, in the object's space.
 void give_interior(sg::Object& object, const MaterialPtr& outer) {
     if (object.material && object.material->has_interior && !object.inherits_material) return;
-    if (object.material && !object.inherits_material) {
+    if (object.material) {
         auto with = std::make_shared<sg::Material>(*object.material);
         with->interior = outer->interior;
         object.material = with;

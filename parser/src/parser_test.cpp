@@ -338,16 +338,19 @@ TEST(ParserMaterials, AGroupsInteriorReachesPartsWithoutOne) {
           union { sphere { 0, 1 texture { pigment { rgb 1 } } } }
           sphere { 0, 1 pigment { rgbf 1 } interior { ior 1.1 } }
           sphere { 0, 1 material { M } }
+          union { sphere { 0, 1 } pigment { rgbf 1 } }
           interior { ior 1.6 }
         }
         union { interior { ior 1.4 } sphere { 0, 1 pigment { rgbf 1 } } }
         sphere { 0, 1 pigment { rgbf 1 } })");
     const auto& parts = std::get<sg::Group>(scene.objects.at(0).shape).children;
-    ASSERT_EQ(parts.size(), 4u);
+    ASSERT_EQ(parts.size(), 5u);
     EXPECT_DOUBLE_EQ(parts[0].material->interior.ior, 1.6);
     EXPECT_DOUBLE_EQ(std::get<sg::Group>(parts[1].shape).children.at(0).material->interior.ior, 1.6);
     EXPECT_DOUBLE_EQ(parts[2].material->interior.ior, 1.1);
     EXPECT_DOUBLE_EQ(parts[3].material->interior.ior, 1.2);
+    // A part that takes its texture from a nested group takes the interior too.
+    EXPECT_DOUBLE_EQ(std::get<sg::Group>(parts[4].shape).children.at(0).material->interior.ior, 1.6);
     const auto& later = std::get<sg::Group>(scene.objects.at(1).shape).children;
     EXPECT_DOUBLE_EQ(later.at(0).material->interior.ior, 1.4);
     EXPECT_DOUBLE_EQ(scene.objects.at(2).material->interior.ior, 1.0);

@@ -33,10 +33,10 @@ struct Hit {
     Vec3 unbumped_normal{0.0f};
     const Light* emitter = nullptr;  // area light or emissive object, else null
     std::uint32_t object_id = 0;     // index of the world-space instance
-    // The object whose inside the surface bounds: object_id, or for a part
-    // of a CSG object the CSG's own, so a ray that enters through one part
-    // and leaves through another left the one object (POV's parts share
-    // their parent's interior). What lancer/interior_stack.h goes by.
+    // The interior the surface bounds, as POV-Ray's Interior: the parts of
+    // a union or CSG share their group's unless an interior is written for
+    // the part, so a ray that enters through one part and leaves through
+    // another left the one object. What lancer/interior_stack.h goes by.
     std::uint32_t interior_id = 0;
     std::uint32_t primitive_id = 0;
     bool casts_shadow = true;  // false for no_shadow objects

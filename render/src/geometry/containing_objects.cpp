@@ -81,8 +81,7 @@ InteriorStack objects_containing(const SceneData& data, const Vec3& p) {
         const Instance* container = container_at(data, instance, point);
         if (container == nullptr || container->material == nullptr) continue;
         const auto object_id = std::uint32_t(container - data.instances.data());
-        const auto interior_id = std::uint32_t(&instance - data.instances.data());
-        found.push_back({box_volume(instance), {container->material, object_id, interior_id}});
+        found.push_back({box_volume(instance), {container->material, object_id, container->interior_id}});
     }
     std::stable_sort(found.begin(), found.end(), [](const Found& a, const Found& b) { return a.volume > b.volume; });
     InteriorStack stack;

@@ -104,6 +104,51 @@ TEST(InteriorStackCrossing, PartsOfOneCsgAreOneInsideAndAPatchIsEnteredFromEithe
     EXPECT_EQ(inside.crossed(patch).size, 1);
 }
 
+// Follows the ray from the origin along +z through each surface in turn,
+// expecting one at each crossing's z, and hands each hit to `check`.
+template <class Crossing, std::size_t N, class Check>
+void along_z(const RenderScene& scene, const Crossing (&crossings)[N], Check check) {
+    float z = 0.0f;
+    for (const Crossing& crossing : crossings) {
+        Hit hit;
+        ASSERT_TRUE(scene.intersect(make_ray({0, 0, z}, {0, 0, 1}), hit));
+        z += hit.t;
+        SCOPED_TRACE("crossing at z = " + std::to_string(crossing.z));
+        EXPECT_NEAR(z, crossing.z, 1e-3f);
+        check(crossing, hit);
+        z += 1e-3f;
+    }
+}
+
+// POV-Ray's parts share their group's Interior unless one is written for
+// the part: along +z, two overlapping balls of a union are one object, so
+// entering the second "leaves" it (and leaving the first enters it again),
+// with an interior written on the union or with the one POV makes for it.
+// In the merge, whose inner surfaces are gone, the ray enters the first
+// ball and leaves through the second, which has its own interior: on
+// POV's list it is then in both.
+TEST(InteriorStackCrossing, PartsShareTheirGroupsInteriorUnlessTheyHaveTheirOwn) {
+    const auto scene = camera_among(
+        "union { sphere { <0, 0, 4>, 1.5 } sphere { <0, 0, 6>, 1.5 } pigment { rgbf 1 } interior { ior 1.5 } }\n"
+        "union { sphere { <0, 0, 14>, 1.5 pigment { rgbf 1 } } sphere { <0, 0, 16>, 1.5 pigment { rgbf 1 } } }\n"
+        "merge { sphere { <0, 0, 24>, 1.5 } sphere { <0, 0, 26>, 1.5 interior { ior 1.2 } }\n"
+        "        pigment { rgbf 1 } interior { ior 1.5 } }\n");
+    struct Crossing {
+        float z;
+        int size_after;
+    };
+    const Crossing expected[] = {
+        {2.5f, 1},  {4.5f, 0},  {5.5f, 1},  {7.5f, 0},   // union with an interior
+        {12.5f, 1}, {14.5f, 0}, {15.5f, 1}, {17.5f, 0},  // union without
+        {22.5f, 1}, {27.5f, 2},                          // merge
+    };
+    InteriorStack inside = scene->camera_interiors();
+    along_z(*scene, expected, [&inside](const Crossing& crossing, const Hit& hit) {
+        inside = inside.crossed(hit);
+        EXPECT_EQ(inside.size, crossing.size_after);
+    });
+}
+
 // The ratio of indices a refracted ray bends by, as POV-Ray's
 // ComputeRefraction reads it from the list: water (1.33) in glass (1.5),
 // then two overlapping balls (1.3, entered first, and 1.7), along +z.
@@ -131,20 +176,13 @@ TEST(InteriorStackCrossing, RefractionReadsTheIndicesOfTheObjectsTheRayIsIn) {
         {13.5f, 1.0f, 1.7f / 1.3f, 1},         // out of the first while in the second: no bend
         {15.0f, 1.7f, 1.0f / 1.7f, 0},         // out of the second
     };
-    float z = 0.0f;
-    for (const Crossing& crossing : expected) {
-        Hit hit;
-        ASSERT_TRUE(scene->intersect(make_ray({0, 0, z}, {0, 0, 1}), hit));
-        z += hit.t;
-        SCOPED_TRACE("crossing at z = " + std::to_string(crossing.z));
-        EXPECT_NEAR(z, crossing.z, 1e-3f);
+    along_z(*scene, expected, [&inside](const Crossing& crossing, const Hit& hit) {
         const float ior = hit.material->parameters().ior;
         EXPECT_NEAR(inside.refraction_eta(hit, ior), crossing.eta, 1e-5f);
         EXPECT_NEAR(inside.fresnel_ior(hit, ior), crossing.fresnel_ior, 1e-5f);
         inside = inside.crossed(hit);
         EXPECT_EQ(inside.size, crossing.size_after);
-        z += 1e-3f;
-    }
+    });
 }
 
 TEST(CameraInteriors, ACameraInGlassStartsInItWithoutMedia) {

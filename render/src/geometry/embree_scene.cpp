@@ -160,6 +160,7 @@ void EmbreeScene::build() {
                                                        instance.material,
                                                        emitter_of(instance, instance.material),
                                                        index,
+                                                       instance.interior_id,
                                                        instance.casts_shadow,
                                                        instance.lit_by_global_lights,
                                                        instance.light_group,

@@ -64,7 +64,7 @@ struct ShadowContext {
 // Everything a hit on a mesh placed in world space needs, when its
 // triangles are its faces and it has no per-vertex normals, texture
 // coordinates or per-face materials (the common OBJ and mesh2 case): a hit
-// then reads this 40-byte record and the triangle's corners, nothing of
+// then reads this 48-byte record and the triangle's corners, nothing of
 // the Instance or the source mesh.
 struct PlainTriangles {
     const float* positions = nullptr;  // null: not a plain world mesh
@@ -72,6 +72,7 @@ struct PlainTriangles {
     const Material* material = nullptr;
     const Light* emitter = nullptr;
     std::uint32_t object_id = 0;
+    std::uint32_t interior_id = 0;
     bool casts_shadow = true;
     bool lit_by_global_lights = true;
     std::int16_t light_group = -1;

@@ -116,7 +116,7 @@ void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const flo
         hit.unbumped_normal = Vec3(0.0f);
         hit.emitter = mesh.emitter;
         hit.object_id = mesh.object_id;
-        hit.interior_id = mesh.object_id;
+        hit.interior_id = mesh.interior_id;
         hit.primitive_id = primitive[k];
         hit.casts_shadow = mesh.casts_shadow;
         hit.light_group = mesh.light_group;
@@ -274,7 +274,7 @@ void EmbreeScene::complete_instance_hit(std::uint32_t index, std::uint32_t leaf,
     hit.t = t;
     complete_analytic_hit(surface, ray, t, face, hit);
     hit.object_id = leaf;
-    hit.interior_id = index;
+    hit.interior_id = surface.interior_id;
     hit.casts_shadow = instance.casts_shadow;
     hit.light_group = instance.light_group;
     hit.lit_by_global_lights = instance.lit_by_global_lights;
@@ -335,7 +335,7 @@ bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit)
                       ray.direction, hit);
     const Instance& instance = m_data->instances[index];
     hit.object_id = index;
-    hit.interior_id = index;
+    hit.interior_id = instance.interior_id;
     hit.casts_shadow = instance.casts_shadow;
     hit.light_group = instance.light_group;
     hit.lit_by_global_lights = instance.lit_by_global_lights;

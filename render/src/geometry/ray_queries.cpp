@@ -69,11 +69,10 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
 
 bool EmbreeScene::hidden_from(const Ray& ray, const Hit& hit) const {
     if (ray.seen_as == RaySight::Other) return false;
-    // A part of a CSG object is hidden with the whole object, or alone.
+    // A part of a group is hidden with the whole (the builder passes the
+    // group's no_image and no_reflection down to its parts), or alone.
     const Instance& part = m_data->instances[hit.object_id];
-    const Instance& whole = m_data->instances[hit.interior_id];
-    if (ray.seen_as == RaySight::Image) return part.no_image || whole.no_image;
-    return part.no_reflection || whole.no_reflection;
+    return ray.seen_as == RaySight::Image ? part.no_image : part.no_reflection;
 }
 
 bool EmbreeScene::nearest_visible_hit(const Ray& ray, Hit& hit) const {

@@ -75,6 +75,10 @@ struct Instance {
     // POV's interior_texture: shown where a ray meets the surface against
     // its normal (null: none, `material` on both sides).
     const Material* interior_material = nullptr;
+    // Which interior the surface bounds (Hit::interior_id): POV-Ray's
+    // Interior, which the parts of a group share unless a part has an
+    // interior written for it.
+    std::uint32_t interior_id = 0;
     std::vector<const Material*> face_materials;  // by face; null: `material`
     const Light* emitter = nullptr;               // for emissive materials
     const Light* light = nullptr;                 // the area light this surface is

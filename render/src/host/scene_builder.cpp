@@ -150,6 +150,20 @@ struct HiddenFromScope : SettingScope<HiddenFrom> {
                        HiddenFrom{current.image || object.no_image, current.reflection || object.no_reflection}) {}
 };
 
+// Whose interior the objects being added share: POV-Ray's Post_Process
+// gives a group's Interior (one object, written or made for it) to every
+// part without an interior written for it, so overlapping parts of a union
+// are one object to a ray's list of interiors, while a part with its own
+// interior is an object of its own, inside a merge too.
+struct InteriorOwnerScope : SettingScope<const sg::Object*> {
+    InteriorOwnerScope(const sg::Object*& current, const sg::Object& object)
+        : SettingScope(current, current == nullptr || writes_interior(object) ? &object : current) {}
+
+    static bool writes_interior(const sg::Object& object) {
+        return object.material && object.material->has_interior && !object.inherits_material;
+    }
+};
+
 class Builder {
   public:
     explicit Builder(sg::SceneGraph& graph) : m_graph(graph), m_data(std::make_unique<SceneData>()) {
@@ -545,6 +559,10 @@ class Builder {
         instance.no_image = m_hidden_from.image;
         instance.no_reflection = m_hidden_from.reflection;
         m_data->has_hidden_objects = m_data->has_hidden_objects || instance.no_image || instance.no_reflection;
+        const auto next_interior_id = std::uint32_t(m_data->instances.size());
+        instance.interior_id = m_interior_owner == nullptr
+                                   ? next_interior_id
+                                   : m_interior_ids.try_emplace(m_interior_owner, next_interior_id).first->second;
         m_data->instances.push_back(std::move(instance));
         m_data->texture_spaces.push_back(texture_owner_from_world);
         return std::uint32_t(m_data->instances.size() - 1);
@@ -556,6 +574,7 @@ class Builder {
             const LightGroupScope group(m_light_group, object.light_group);
             const DoubleIlluminateScope illuminated(m_double_illuminate, object.double_illuminate);
             const HiddenFromScope hidden(m_hidden_from, object);
+            const InteriorOwnerScope interior(m_interior_owner, object);
             const DMat4 world_from_object = world_from_parent * object.parent_from_object;
             const sg::MaterialRef& material = object.material ? object.material : inherited;
             // POV: a texture follows the transforms applied after it, i.e. it
@@ -941,6 +960,7 @@ class Builder {
                                bool inverted) {
         const DoubleIlluminateScope illuminated(m_double_illuminate, object.double_illuminate);
         const HiddenFromScope hidden(m_hidden_from, object);
+        const InteriorOwnerScope interior(m_interior_owner, object);
         const DMat4 world_from_object = world_from_parent * object.parent_from_object;
         const sg::MaterialRef& material = object.material ? object.material : inherited;
         const DMat4 owner = object.material ? world_from_object : inherited_owner;
@@ -1263,9 +1283,11 @@ class Builder {
 
     sg::SceneGraph& m_graph;
     std::unique_ptr<SceneData> m_data;
-    int m_light_group = -1;                   // the light_group of the objects being added (LightGroupScope)
-    std::optional<bool> m_double_illuminate;  // of the objects being added (DoubleIlluminateScope)
-    HiddenFrom m_hidden_from;                 // of the objects being added (HiddenFromScope)
+    int m_light_group = -1;                        // the light_group of the objects being added (LightGroupScope)
+    std::optional<bool> m_double_illuminate;       // of the objects being added (DoubleIlluminateScope)
+    HiddenFrom m_hidden_from;                      // of the objects being added (HiddenFromScope)
+    const sg::Object* m_interior_owner = nullptr;  // of the objects being added (InteriorOwnerScope)
+    std::map<const sg::Object*, std::uint32_t> m_interior_ids;  // by owner; an instance with none gets its own
     std::map<const sg::TriangleMesh*, int> m_mesh_uses;
     std::map<std::tuple<const sg::Function*, const std::string*, int, int>, std::shared_ptr<IsosurfaceGradientRecord>>
         m_isosurface_records;
