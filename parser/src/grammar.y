@@ -84,7 +84,7 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
        QUICK_COLOR "quick_color" QUICK_COLOUR "quick_colour" NO_RADIOSITY "no_radiosity" MM_PER_UNIT "mm_per_unit"
        AMBIENT "ambient" EMISSION "emission" DIFFUSE "diffuse" BRILLIANCE "brilliance"
        SPECULAR "specular" ROUGHNESS "roughness" PHONG "phong" PHONG_SIZE "phong_size"
-       METALLIC "metallic" REFLECTION "reflection" FRESNEL "fresnel" FALLOFF "falloff"
+       METALLIC "metallic" REFLECTION "reflection" REFLECTION_EXPONENT "reflection_exponent" FRESNEL "fresnel" FALLOFF "falloff"
        EXPONENT "exponent" ALBEDO "albedo" CONSERVE_ENERGY "conserve_energy" CRAND "crand"
        IOR "ior" CAUSTICS "caustics" DISPERSION "dispersion" DISPERSION_SAMPLES "dispersion_samples"
        VERTEX_VECTORS "vertex_vectors" NORMAL_VECTORS "normal_vectors" UV_VECTORS "uv_vectors"
@@ -1362,7 +1362,11 @@ finish_item
   | "reflection" colour { sg::Vec3 c = ev.to_color($2, @2).rgb;
                           $$ = [c](sg::Finish& f) { f.reflection.min = c; f.reflection.max = c; }; }
   | "reflection" "{" reflection_items "}"
-      { auto edits = $3; $$ = [edits](sg::Finish& f) { f.reflection = sg::Reflection{}; for (auto& e : edits) e(f); }; }
+      { auto edits = $3; $$ = [edits](sg::Finish& f) { const double exponent = f.reflection.exponent;
+                                                        f.reflection = sg::Reflection{}; f.reflection.exponent = exponent;
+                                                        for (auto& e : edits) e(f); }; }
+  | "reflection_exponent" expr { double v = ev.positive($2, @2, "a reflection exponent");
+                                 $$ = [v](sg::Finish& f) { f.reflection.exponent = v; }; }
   | "conserve_energy" opt_bool { bool on = $2; $$ = [on](sg::Finish& f) { f.conserve_energy = on; }; }
   | "crand" expr       { $$ = ev.finish_scalar("crand", false, $2, @2); }
   ;
@@ -1394,7 +1398,7 @@ reflection_opts
 reflection_item
   : "fresnel" opt_bool { bool on = $2; $$ = [on](sg::Finish& f) { f.reflection.fresnel = on; }; }
   | "falloff" expr     { double v = ev.to_float($2, @2); $$ = [v](sg::Finish& f) { f.reflection.falloff = v; }; }
-  | "exponent" expr    { double v = ev.to_float($2, @2); $$ = [v](sg::Finish& f) { f.reflection.exponent = v; }; }
+  | "exponent" expr    { double v = ev.positive($2, @2, "a reflection exponent"); $$ = [v](sg::Finish& f) { f.reflection.exponent = v; }; }
   | "metallic"         { $$ = [](sg::Finish& f) { f.reflection.metallic = 1.0; }; }
   | "metallic" expr    { double v = ev.to_float($2, @2); $$ = [v](sg::Finish& f) { f.reflection.metallic = v; }; }
   ;

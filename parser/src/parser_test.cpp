@@ -383,6 +383,17 @@ TEST(ParserMaterials, TextureFinishDefaultsAndValues) {
     EXPECT_DOUBLE_EQ(m->interior.ior, 1.5);
 }
 
+// The older `reflection_exponent` sets the same exponent, which a later
+// reflection block keeps (POV's Reflect_Exp); it must be positive (POV
+// divides by it).
+TEST(ParserMaterials, ReflectionExponentOldAndNew) {
+    auto scene = parse_ok("sphere { 0, 1 finish { reflection_exponent 0.5 reflection { 0.3 } } }");
+    EXPECT_DOUBLE_EQ(scene.objects[0].material->finish.reflection.exponent, 0.5);
+    const Diagnostic error = test::first_error("sphere { 0, 1 finish { reflection { 0.3 exponent 0 } } }");
+    EXPECT_NE(error.message.find("reflection exponent must be positive"), std::string::npos) << error.message;
+    EXPECT_EQ(error.location.line, 1);
+}
+
 // POV-Ray's Parse_Finish: `albedo` values become the peaks that reflect
 // that share, with the finish's final exponents (phong_size written after).
 TEST(ParserMaterials, AlbedoBecomesPovsPeak) {

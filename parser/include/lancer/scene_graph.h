@@ -342,11 +342,11 @@ struct Normal {
 };
 
 struct Reflection {
-    Vec3 min{0.0};         // reflectance at normal incidence ...
-    Vec3 max{0.0};         // ... and at grazing incidence
-    double falloff = 1.0;  // POV's falloff exponent
-    bool fresnel = false;  // use the interior's ior instead of falloff
-    double exponent = 1.0;
+    Vec3 min{0.0};          // reflectance at normal incidence ...
+    Vec3 max{0.0};          // ... and at grazing incidence
+    double falloff = 1.0;   // POV's falloff exponent
+    bool fresnel = false;   // use the interior's ior instead of falloff
+    double exponent = 1.0;  // as written: POV raises the reflected colour to 1 / exponent
     double metallic = 0.0;
 };
 

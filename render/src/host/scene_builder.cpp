@@ -42,7 +42,8 @@ MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment, 
     p.reflection_falloff = float(m.finish.reflection.falloff);
     p.reflection_fresnel = m.finish.reflection.fresnel;
     p.reflection_metallic = float(m.finish.reflection.metallic);
-    p.reflection_exponent = float(m.finish.reflection.exponent);
+    // POV raises the reflected colour to 1 / exponent (its Reflect_Exp).
+    p.reflection_exponent = float(1.0 / m.finish.reflection.exponent);
     p.conserve_energy = m.finish.conserve_energy;
     p.diffuse_back = float(m.finish.diffuse_back);
     p.crand = float(m.finish.crand);
