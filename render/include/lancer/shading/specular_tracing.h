@@ -48,6 +48,9 @@ struct SpecularSplit {
     Color transmission{0.0f};   // weight of the radiance seen along `refracted`
     Vec3 reflected{0.0f};
     Vec3 refracted{0.0f};
+    // irid's tint of what is seen along `reflected`, before the reflection
+    // exponent (POV's ComputeReflection tints the reflected ray's colour).
+    Color reflected_tint{1.0f};
     bool total_internal_reflection = false;  // the surface transmits, but the ray cannot leave
 };
 
@@ -71,6 +74,14 @@ inline Vec3 pov_mirror_direction(const ShadingContext& at) {
     return glm::normalize(out);
 }
 
+// The mirror direction, and irid's tint along it, where the split reflects.
+inline void aim_reflection(const ShadingContext& at, SpecularSplit& split) {
+    if (is_black(split.reflection)) return;
+    split.reflected = pov_mirror_direction(at);
+    if (at.material.has_iridescence())
+        split.reflected_tint = at.material.iridescence(at.film_thickness, at.normal, at.wo, split.reflected);
+}
+
 // The mirror alone: what a layer below the top of a layered texture
 // reflects (POV-Ray refracts only through the top layer).
 inline SpecularSplit split_mirror(const ShadingContext& at, const SpecularOptions& options) {
@@ -78,7 +89,7 @@ inline SpecularSplit split_mirror(const ShadingContext& at, const SpecularOption
     const Color mirror = at.material.mirror_reflectance(at.surface, glm::dot(at.normal, at.wo), fresnel_ior(at));
     if (!options.additive_reflection) split.diffuse_scale = glm::max(Color(1.0f) - mirror, Color(0.0f));
     split.reflection = mirror;
-    if (!is_black(split.reflection)) split.reflected = pov_mirror_direction(at);
+    aim_reflection(at, split);
     return split;
 }
 
@@ -129,7 +140,7 @@ inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOpti
             if (!refracts && !options.fresnel) split.reflection *= fade;
         }
     }
-    if (!is_black(split.reflection)) split.reflected = pov_mirror_direction(at);
+    aim_reflection(at, split);
     return split;
 }
 
@@ -142,12 +153,13 @@ Color trace_specular(const Ray& ray, const RenderScene& scene, Sampler& sampler,
                      const LocalTerm& local_term, int level, float weight, const InteriorStack& inside);
 
 // Follows `direction` from `hit` with `path_weight` (black: not at all):
-// the radiance seen there, raised to `exponent` (POV's reflection
-// exponent) and weighted.
+// the radiance seen there, tinted by `seen_tint`, raised to `exponent`
+// (POV's reflection exponent) and weighted.
 template <class LocalTerm>
 Color follow_specular(const Ray& from, const Hit& hit, const Color& path_weight, const Vec3& direction, float exponent,
                       bool transmitted, const RenderScene& scene, Sampler& sampler, const SpecularOptions& options,
-                      const LocalTerm& local_term, int level, float weight, const InteriorStack& inside) {
+                      const LocalTerm& local_term, int level, float weight, const InteriorStack& inside,
+                      const Color& seen_tint = Color(1.0f)) {
     if (is_black(path_weight)) return Color(0.0f);
     // POV's w1: the largest channel's magnitude (a weight may be negative).
     const float next_weight = weight * max_component(glm::abs(path_weight));
@@ -156,7 +168,8 @@ Color follow_specular(const Ray& from, const Hit& hit, const Color& path_weight,
     // POV: a refracted ray is what its parent was; a mirror ray is a reflection.
     next.seen_as = transmitted ? from.seen_as : RaySight::Reflection;
     Color seen = trace_specular(next, scene, sampler, options, local_term, level + 1, next_weight,
-                                transmitted ? inside.crossed(hit) : inside);
+                                transmitted ? inside.crossed(hit) : inside) *
+                 seen_tint;
     if (exponent != 1.0f) seen = glm::pow(glm::max(seen, Color(0.0f)), Color(exponent));
     return path_weight * seen;
 }
@@ -199,7 +212,7 @@ Color layered_surface_radiance(const Ray& ray, const Hit& hit, const MaterialLay
         if (reflects)
             radiance += follow_specular(ray, seen, split.reflection, split.reflected,
                                         at.material.parameters().reflection_exponent, false, scene, sampler, options,
-                                        local_term, level, weight * reaching, inside);
+                                        local_term, level, weight * reaching, inside, split.reflected_tint);
         above *= layer_passes(at);
     }
     radiance += follow_specular(ray, top, top_split.transmission, top_split.refracted, 1.0f, true, scene, sampler,
@@ -224,7 +237,7 @@ Color specular_surface_radiance(const Ray& ray, const Hit& hit, const RenderScen
 
     radiance +=
         follow_specular(ray, hit, split.reflection, split.reflected, at.material.parameters().reflection_exponent,
-                        false, scene, sampler, options, local_term, level, weight, inside);
+                        false, scene, sampler, options, local_term, level, weight, inside, split.reflected_tint);
     radiance += follow_specular(ray, hit, split.transmission, split.refracted, 1.0f, true, scene, sampler, options,
                                 local_term, level, weight, inside);
     return radiance;
