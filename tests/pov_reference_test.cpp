@@ -109,7 +109,8 @@ INSTANTIATE_TEST_SUITE_P(
         "rainbow", "area_light_fog", "double_illuminate", "interior_texture", "fog_patch_backs", "media_camera_in_mesh",
         "csg_glass_fog", "bumped_glass_tir", "hidden_objects", "over_transparent", "images_working_gamma",
         "flat_box_glass", "nested_ior", "projected_in_scene", "negative_transmit", "media_overlapping",
-        "media_shadow_overlap", "union_interior", "glass_cone_on_floor", "union_shared_interior", "irid_reflection"),
+        "media_shadow_overlap", "union_interior", "glass_cone_on_floor", "union_shared_interior", "irid_reflection",
+        "pigment_then_texture"),
     [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 // Isosurfaces of POV's internal functions (f_helix1, f_torus2, f_helix2,

@@ -126,6 +126,13 @@ sg::Material current_in_parent_space(const ShapeValue& shape, const sg::Material
     return material;
 }
 
+// A pigment, normal or finish written on an object without a texture makes
+// its texture (POV's copy of the default texture), which a texture written
+// after it then lies on top of; an interior alone makes none.
+void written_at(sg::Material& material, const sg::SourceLocation& at) {
+    if (material.location.line == 0) material.location = at;
+}
+
 void apply_default_material(sg::Object& object, const MaterialPtr& fallback) {
     if (!object.material) {
         give_material(object, fallback, true);
@@ -299,6 +306,7 @@ std::function<void(ShapeValue&)> Evaluator::pigment_edit(const Edits<sg::Pigment
         if (refuse_layer_over_pattern(s, at)) return;
         sg::Material material = current_in_parent_space(s, fallback);
         change(material);
+        written_at(material, at);
         attach_in_parent_space(s, material);
     };
 }
@@ -308,6 +316,7 @@ std::function<void(ShapeValue&)> Evaluator::finish_edit(const Edits<sg::Finish>&
         if (refuse_layer_over_pattern(s, at)) return;
         sg::Material material = current_in_parent_space(s, fallback);
         change(material);
+        written_at(material, at);
         attach_in_parent_space(s, material);
     };
 }
@@ -317,6 +326,7 @@ std::function<void(ShapeValue&)> Evaluator::normal_edit(const Edits<sg::Normal>&
         if (refuse_layer_over_pattern(s, at)) return;
         sg::Material material = current_in_parent_space(s, fallback);
         change(material);
+        written_at(material, at);
         attach_in_parent_space(s, material);
     };
 }

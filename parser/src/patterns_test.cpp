@@ -189,6 +189,27 @@ TEST(ParserTextures, LayeredTexturesStackOnObjectsAndInDeclarations) {
     EXPECT_DOUBLE_EQ(object.layers_above[0]->pigment.color.transmit, 0.5);
 }
 
+// A pigment (normal, finish) written on an object without a texture makes
+// its texture, as POV-Ray copies its default texture for it: a texture
+// written after it lies on top (advanced/glasschess.pov's knight). An
+// interior alone makes none, so a texture after it is the only layer.
+TEST(ParserTextures, ATextureAfterAPigmentLiesOnTopOfIt) {
+    auto scene = parse_ok(
+        "sphere { 0, 1 pigment { rgbf 0.9 } texture { pigment { rgbf <0.98, 1, 0.98, 1> } } }\n"
+        "sphere { 0, 1 finish { phong 1 } texture { pigment { rgb 1 } } }\n"
+        "sphere { 0, 1 interior { ior 1.5 } texture { pigment { rgb 1 } } }");
+    const sg::Material& pigmented = material_of(scene, 0);
+    EXPECT_DOUBLE_EQ(pigmented.pigment.color.filter, 0.9);
+    ASSERT_EQ(pigmented.layers_above.size(), 1u);
+    EXPECT_DOUBLE_EQ(pigmented.layers_above[0]->pigment.color.filter, 1.0);
+    const sg::Material& finished = material_of(scene, 1);
+    EXPECT_DOUBLE_EQ(finished.finish.phong, 1.0);
+    EXPECT_EQ(finished.layers_above.size(), 1u);
+    const sg::Material& interior_only = material_of(scene, 2);
+    EXPECT_TRUE(interior_only.layers_above.empty());
+    EXPECT_DOUBLE_EQ(interior_only.interior.ior, 1.5);
+}
+
 TEST(ParserTextures, TextureMapAndBlockTextures) {
     auto scene = parse_ok(
         "#declare A = texture { pigment { rgb 1 } finish { phong 1 } }\n"
