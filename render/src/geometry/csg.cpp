@@ -25,8 +25,10 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
     for (std::uint32_t child : node.children) bound(instances, child);
     for (std::uint32_t clip : node.clips) bound(instances, clip);
     node.bounded = false;
+    node.box_holds_solid = true;
     auto take = [&](const CsgNode& other, bool intersect) {
         if (!other.bounded) return;
+        node.box_holds_solid = node.box_holds_solid && other.box_holds_solid;
         if (!node.bounded) {
             node.lower = other.lower;
             node.upper = other.upper;
@@ -48,6 +50,7 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
             node.bounded = true;
             node.lower = DVec3(leaf.bounds_lower);
             node.upper = DVec3(leaf.bounds_upper);
+            node.box_holds_solid = leaf.shape->inside_within_bounds();
         }
         break;
     }
@@ -72,7 +75,7 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
 
 bool CsgTree::inside(const std::vector<Instance>& instances, std::uint32_t index, const DVec3& p) const {
     const CsgNode& node = nodes[index];
-    if (node.bounded && !box_contains(node, p)) return false;
+    if (node.bounded && node.box_holds_solid && !box_contains(node, p)) return false;
     bool result = false;
     switch (node.operation) {
     case CsgNode::Operation::Leaf: {

@@ -33,9 +33,14 @@ struct CsgNode {
     bool inverted = false;       // Leaf: solid and normal flipped
     std::vector<std::uint32_t> children;
     std::vector<std::uint32_t> clips;  // roots of clipped_by trees, in this tree
-    // World box holding the node's solid (and so its surface), when finite.
+    // World box holding the node's surface, when finite, as POV-Ray bounds
+    // it: an intersection's is the overlap of its children's (a disc's flat,
+    // so POV culls the rays that miss it, and so does lancer).
     bool bounded = false;
     DVec3 lower{0.0}, upper{0.0};
+    // Whether that box holds the solid too, for the inside test: a disc's
+    // inside is POV's half-space behind it.
+    bool box_holds_solid = true;
 };
 
 struct CsgCrossing {

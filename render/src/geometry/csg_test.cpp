@@ -51,6 +51,23 @@ TEST(Csg, IntersectionKeepsOnlyTheCommonPart) {
     EXPECT_NEAR(corner.t, 4.0f, 1e-5f);
 }
 
+// A disc's inside is POV's half-space behind it, beyond its flat box: the
+// intersection of a ball and a disc facing down is the dome above the
+// disc. As in POV-Ray the object is bounded by the overlap of the parts'
+// boxes, the disc's 0.001 thick: a ray that crosses that slab finds the
+// dome, one that never does (the ray along the top) misses it, and a ray
+// leaving the disc upwards starts in the slab and finds the dome inside.
+TEST(Csg, ADiscBoundsAnIntersectionByItsHalfSpaceAndItsSlab) {
+    const auto scene = compile("intersection { sphere { <0, -5, 0>, 10 } disc { 0, -y, 10.1 } }");
+    EXPECT_NEAR(first_hit(*scene, {0, 20, 0.5f}, {0, -1, 0}).t, 20.0f - std::sqrt(100.0f - 0.25f) + 5.0f, 1e-4f);
+    EXPECT_LT(first_hit(*scene, {-20, 4, 0}, {1, 0, 0}).t, 0.0f);
+    const Hit bottom = first_hit(*scene, {0, -1, 0}, {0, 1, 0});
+    ASSERT_NEAR(bottom.t, 1.0f, 1e-5f);
+    Hit dome;
+    ASSERT_TRUE(scene->intersect(bottom.spawn_ray({0, 1, 0}), dome));
+    EXPECT_NEAR(dome.position.y, 5.0f, 1e-4f);
+}
+
 TEST(Csg, MergeDropsInnerSurfacesAndUnionKeepsThem) {
     const std::string spheres = "sphere { <-0.5, 0, 0>, 1 } sphere { <0.5, 0, 0>, 1 }";
     const auto merged = compile("merge { " + spheres + " }");

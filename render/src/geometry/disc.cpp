@@ -35,12 +35,18 @@ class DiscShape final : public Shape {
     }
 
     bool inside(const DVec3& p) const override { return glm::dot(p - m_disc.center, m_disc.normal) < 0.0; }
+    bool inside_within_bounds() const override { return false; }
 
     bool bounds(DVec3& lower, DVec3& upper) const override {
         const DVec3 spread =
             m_disc.radius * glm::sqrt(glm::max(DVec3(0.0), DVec3(1.0) - m_disc.normal * m_disc.normal));
-        lower = m_disc.center - spread;
-        upper = m_disc.center + spread;
+        // POV-Ray's box is 0.001 thick either side of the disc (its
+        // SMALL_TOLERANCE): a ray leaving the disc starts inside it, so a
+        // CSG intersection that POV bounds by the disc's box still finds its
+        // other surfaces from there, as in POV-Ray.
+        const DVec3 thickness = 0.001 * glm::abs(m_disc.normal);
+        lower = m_disc.center - spread - thickness;
+        upper = m_disc.center + spread + thickness;
         return true;
     }
 

@@ -53,6 +53,9 @@ class Shape {
     // without inside_vector, a polygon, a bicubic patch): it has no inside,
     // inverted or not, and CSG only keeps or drops pieces of its surface.
     virtual bool solid() const { return true; }
+    // False where the inside reaches beyond bounds(): a disc's inside is
+    // POV's half-space behind it, its bounds only the flat disc.
+    virtual bool inside_within_bounds() const { return true; }
 };
 
 // Newton steps from p along the gradient onto value = level (an implicit
