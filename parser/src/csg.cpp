@@ -91,9 +91,13 @@ std::function<void(ShapeValue&)> Evaluator::bound_edit(const std::vector<ShapePt
         if (is_patch_object(bound->object))
             error(bound->object.location,
                   std::string(kPatchObject) + " cannot bound: it has no inside (POV-Ray's \"illegal patch in bound\")");
-    // A bound only speeds POV-Ray up; lancer's BVH needs none.
+    // A bound speeds POV-Ray up, and cuts what the rays that miss it would
+    // see (the renderer's csg.h).
     return [bounds](ShapeValue& s) {
-        for (sg::Object& bound : in_object_space(bounds, s.object)) s.bounded_by.push_back(std::move(bound));
+        for (sg::Object& bound : in_object_space(bounds, s.object)) {
+            s.object.bounded_by.push_back(bound);
+            s.bounded_by.push_back(std::move(bound));
+        }
     };
 }
 

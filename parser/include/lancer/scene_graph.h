@@ -768,6 +768,10 @@ struct Object {
     // POV's clipped_by: only the parts of this object's surface inside every
     // one of these are kept (in this object's space).
     std::vector<Object> clipped_by;
+    // POV's bounded_by (in this object's space): a ray that neither meets
+    // nor starts in every one of these misses the object (Ray_In_Bound), so
+    // a bound smaller than the object cuts it where the rays miss it.
+    std::vector<Object> bounded_by;
     // Maps this object's own space to its parent's space (the group it is
     // in, or the world). Children of a union compose with their parent's.
     Mat4 parent_from_object{1.0};

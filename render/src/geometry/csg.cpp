@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/scene_data.h"
 
@@ -24,6 +25,7 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
     CsgNode& node = nodes[index];
     for (std::uint32_t child : node.children) bound(instances, child);
     for (std::uint32_t clip : node.clips) bound(instances, clip);
+    for (std::uint32_t bounding : node.bounds) bound(instances, bounding);
     node.bounded = false;
     node.box_holds_solid = true;
     auto take = [&](const CsgNode& other, bool intersect) {
@@ -67,6 +69,24 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
         break;
     }
     for (std::uint32_t clip : node.clips) take(nodes[clip], true);
+    // POV's box of a bounded object is its bounds' (the uninverted ones')
+    // where that is smaller; its inside test ignores the bounds.
+    if (!node.bounds.empty()) {
+        CsgNode own = node;
+        node.bounded = false;
+        for (std::uint32_t bounding : node.bounds)
+            if (!nodes[bounding].inverted) take(nodes[bounding], true);
+        const auto volume = [](const CsgNode& n) {
+            const DVec3 size = glm::max(n.upper - n.lower, DVec3(0.0));
+            return size.x * size.y * size.z;
+        };
+        if (!node.bounded || (own.bounded && !(volume(node) < volume(own)))) {
+            node.bounded = own.bounded;
+            node.lower = own.lower;
+            node.upper = own.upper;
+        }
+        node.box_holds_solid = false;
+    }
     if (node.bounded && (node.lower.x > node.upper.x || node.lower.y > node.upper.y || node.lower.z > node.upper.z)) {
         // Children that share no space: an empty solid, kept as a point box.
         node.upper = node.lower;
@@ -113,6 +133,9 @@ void CsgTree::gather(const std::vector<Instance>& instances, std::uint32_t index
         double lo = t_min, hi = t_max;
         if (!ray_box_interval(node.lower, node.upper, o, d, lo, hi)) return;
     }
+    if (node.rays_must_meet_bounds)
+        for (std::uint32_t bounding : node.bounds)
+            if (!ray_meets(instances, bounding, o, d, t_min, out)) return;
     const std::size_t start = out.size();
     switch (node.operation) {
     case CsgNode::Operation::Leaf: {
@@ -156,6 +179,16 @@ void CsgTree::gather(const std::vector<Instance>& instances, std::uint32_t index
         };
         out.erase(std::remove_if(out.begin() + std::ptrdiff_t(start), out.end(), clipped), out.end());
     }
+}
+
+bool CsgTree::ray_meets(const std::vector<Instance>& instances, std::uint32_t index, const DVec3& o, const DVec3& d,
+                        double t_min, std::vector<CsgCrossing>& scratch) const {
+    if (inside(instances, index, o + t_min * d)) return true;
+    const std::size_t start = scratch.size();
+    gather(instances, index, o, d, t_min, std::numeric_limits<double>::infinity(), scratch);
+    const bool met = scratch.size() > start;
+    scratch.resize(start);
+    return met;
 }
 
 bool CsgTree::nearest(const std::vector<Instance>& instances, const DVec3& o, const DVec3& d, double t_min,

@@ -33,6 +33,12 @@ struct CsgNode {
     bool inverted = false;       // Leaf: solid and normal flipped
     std::vector<std::uint32_t> children;
     std::vector<std::uint32_t> clips;  // roots of clipped_by trees, in this tree
+    // Roots of bounded_by trees. Their box is the node's where it is the
+    // smaller (POV's parser); with `rays_must_meet_bounds` a ray must also
+    // meet or start in each (POV's Ray_In_Bound, which POV drops for a cheap
+    // object outside CSG: "unnecessary bounding object removed").
+    std::vector<std::uint32_t> bounds;
+    bool rays_must_meet_bounds = false;
     // World box holding the node's surface, when finite, as POV-Ray bounds
     // it: an intersection's is the overlap of its children's (a disc's flat,
     // so POV culls the rays that miss it, and so does lancer).
@@ -67,6 +73,10 @@ class CsgTree {
   private:
     void gather(const std::vector<Instance>& instances, std::uint32_t node, const DVec3& o, const DVec3& d,
                 double t_min, double t_max, std::vector<CsgCrossing>& out) const;
+    // POV's Ray_In_Bound for one bound: the ray from o + t_min d on meets
+    // the tree under `node` or starts inside it (`scratch` is left as it was).
+    bool ray_meets(const std::vector<Instance>& instances, std::uint32_t node, const DVec3& o, const DVec3& d,
+                   double t_min, std::vector<CsgCrossing>& scratch) const;
     void bound(const std::vector<Instance>& instances, std::uint32_t node);
 };
 

@@ -68,6 +68,22 @@ TEST(Csg, ADiscBoundsAnIntersectionByItsHalfSpaceAndItsSlab) {
     EXPECT_NEAR(dome.position.y, 5.0f, 1e-4f);
 }
 
+// POV-Ray's bounded_by: an object's box becomes its bound's where that is
+// smaller, and rays that miss the box miss the object; for an object costly
+// to intersect (here a quadric) a ray must also meet the bound itself, while
+// a cheap one's bound is dropped (POV's "unnecessary bounding object").
+TEST(Csg, BoundedByCutsAsPovRayDoes) {
+    const auto boxed = compile("sphere { 0, 2 bounded_by { box { -1, 1 } } }");
+    EXPECT_NEAR(first_hit(*boxed, {0.5f, 0, -10}, {0, 0, 1}).t, 10.0f - std::sqrt(3.75f), 1e-4f);
+    EXPECT_LT(first_hit(*boxed, {1.5f, 0, -10}, {0, 0, 1}).t, 0.0f);
+    const auto costly =
+        compile("quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -4 bounded_by { sphere { <0, 0, 3>, 1 } } }");
+    EXPECT_NEAR(first_hit(*costly, {0.5f, 0, -10}, {0, 0, 1}).t, 10.0f - std::sqrt(3.75f), 1e-4f);
+    EXPECT_LT(first_hit(*costly, {0.9f, 0.9f, -10}, {0, 0, 1}).t, 0.0f);
+    const auto cheap = compile("sphere { 0, 2 bounded_by { sphere { <0, 0, 3>, 1 } } }");
+    EXPECT_NEAR(first_hit(*cheap, {0.9f, 0.9f, -10}, {0, 0, 1}).t, 10.0f - std::sqrt(4.0f - 1.62f), 1e-4f);
+}
+
 TEST(Csg, MergeDropsInnerSurfacesAndUnionKeepsThem) {
     const std::string spheres = "sphere { <-0.5, 0, 0>, 1 } sphere { <0.5, 0, 0>, 1 }";
     const auto merged = compile("merge { " + spheres + " }");

@@ -589,7 +589,8 @@ class Builder {
                 continue;
             }
             // CSG, or an object that an inversion or clip makes one.
-            if (std::holds_alternative<sg::Group>(object.shape) || object.inverse || !object.clipped_by.empty()) {
+            if (std::holds_alternative<sg::Group>(object.shape) || object.inverse || !object.clipped_by.empty() ||
+                bound_may_cut(object)) {
                 add_csg(object, world_from_parent, inherited, inherited_owner, no_shadow);
                 continue;
             }
@@ -599,6 +600,34 @@ class Builder {
                 continue;
             instance.interior_material = interior_material_for(material, object.hollow);
             push_instance(std::move(instance), glm::inverse(owner));
+        }
+    }
+
+    // POV's bounded_by cuts an object where rays miss the bound (csg.h):
+    // traced as CSG for a shape (the quartics POV's samples bound), while
+    // on a group or mesh, where it serves speed and rarely cuts, it is left
+    // out so that they keep their BVH.
+    static bool bound_may_cut(const sg::Object& object) {
+        return !object.bounded_by.empty() && !std::holds_alternative<sg::Group>(object.shape) &&
+               !std::holds_alternative<sg::MeshRef>(object.shape);
+    }
+
+    // The objects outside CSG whose bounds POV keeps testing rays against
+    // (Link_To_Frame drops the others': CSG, polynomials, text and quadrics
+    // are costly to intersect).
+    static bool keeps_ray_bounds(const sg::Object& object) {
+        using Kind = sg::Object::Kind;
+        switch (object.kind) {
+        case Kind::Union:
+        case Kind::Merge:
+        case Kind::Intersection:
+        case Kind::Difference:
+        case Kind::Poly:
+        case Kind::Cubic:
+        case Kind::Quartic:
+        case Kind::Text:
+        case Kind::Quadric: return true;
+        default: return false;
         }
     }
 
@@ -938,7 +967,9 @@ class Builder {
     void add_csg(const sg::Object& object, const DMat4& world_from_parent, const sg::MaterialRef& inherited,
                  const DMat4& inherited_owner, bool no_shadow) {
         auto tree = std::make_unique<CsgTree>();
+        m_csg_root = &object;
         tree->root = add_csg_node(*tree, object, world_from_parent, inherited, inherited_owner, no_shadow, false);
+        m_csg_root = nullptr;
         tree->compute_bounds(m_data->instances);
         const CsgNode& root = tree->nodes[tree->root];
         Instance instance;
@@ -1011,6 +1042,10 @@ class Builder {
         }
         for (const sg::Object& clip : object.clipped_by)
             node.clips.push_back(add_csg_node(tree, clip, world_from_object, material, owner, object_no_shadow, false));
+        for (const sg::Object& bound : object.bounded_by)
+            node.bounds.push_back(
+                add_csg_node(tree, bound, world_from_object, material, owner, object_no_shadow, false));
+        node.rays_must_meet_bounds = &object != m_csg_root || keeps_ray_bounds(object);
         tree.nodes.push_back(std::move(node));
         return std::uint32_t(tree.nodes.size() - 1);
     }
@@ -1288,6 +1323,7 @@ class Builder {
     std::optional<bool> m_double_illuminate;       // of the objects being added (DoubleIlluminateScope)
     HiddenFrom m_hidden_from;                      // of the objects being added (HiddenFromScope)
     const sg::Object* m_interior_owner = nullptr;  // of the objects being added (InteriorOwnerScope)
+    const sg::Object* m_csg_root = nullptr;        // the object add_csg is adding
     std::map<const sg::Object*, std::uint32_t> m_interior_ids;  // by owner; an instance with none gets its own
     std::map<const sg::TriangleMesh*, int> m_mesh_uses;
     std::map<std::tuple<const sg::Function*, const std::string*, int, int>, std::shared_ptr<IsosurfaceGradientRecord>>
