@@ -163,6 +163,18 @@ Texel ImageSampler::texel(long long column, long long row) const {
     return decode(values);
 }
 
+// The four nearest texels' shares at (fx, fy) from the first: POV's
+// interpolate 4 weighs each by the inverse of its squared distance
+// (imageutil.cpp's norm_dist), every other kind bilinearly.
+ImageSampler::CornerWeights ImageSampler::corner_weights(float fx, float fy) const {
+    if (m_map.interpolate != 4) return {(1.0f - fx) * (1.0f - fy), fx * (1.0f - fy), (1.0f - fx) * fy, fx * fy};
+    const float da = fx * fx + fy * fy, db = (1.0f - fx) * (1.0f - fx) + fy * fy,
+                dc = fx * fx + (1.0f - fy) * (1.0f - fy), dd = (1.0f - fx) * (1.0f - fx) + (1.0f - fy) * (1.0f - fy);
+    if (da == 0.0f) return {1.0f, 0.0f, 0.0f, 0.0f};  // on a texel's centre
+    const float wa = 1.0f / da, wb = 1.0f / db, wc = 1.0f / dc, wd = 1.0f / dd, sum = wa + wb + wc + wd;
+    return {wa / sum, wb / sum, wc / sum, wd / sum};
+}
+
 Texel ImageSampler::at(const glm::dvec2& uv) const {
     // Row 0 is the image's top; v runs up.
     const glm::dvec2 position = pixel_position(uv, m_width, m_height);
@@ -178,10 +190,8 @@ Texel ImageSampler::at(const glm::dvec2& uv) const {
         const long long column = (long long)left, row = (long long)top;
         const Texel a = texel(column, row), b = texel(column + 1, row), c = texel(column, row + 1),
                     d = texel(column + 1, row + 1);
-        auto blend = [&](auto member) {
-            return (1.0f - fy) * ((1.0f - fx) * a.*member + fx * b.*member) +
-                   fy * ((1.0f - fx) * c.*member + fx * d.*member);
-        };
+        const CornerWeights w = corner_weights(fx, fy);
+        auto blend = [&](auto member) { return w.a * a.*member + w.b * b.*member + w.c * c.*member + w.d * d.*member; };
         result = {blend(&Texel::rgb), blend(&Texel::alpha)};
     }
     if (m_palette) add_palette_transparency(result, uv);
@@ -209,9 +219,9 @@ void ImageSampler::add_palette_transparency(Texel& texel, const glm::dvec2& uv) 
     const float fx = float(x - 0.5 - left), fy = float(y - 0.5 - top);
     const unsigned char a = entry(left, top), b = entry(left + 1.0, top), c = entry(left, top + 1.0),
                         d = entry(left + 1.0, top + 1.0);
+    const CornerWeights w = corner_weights(fx, fy);
     auto blend = [&](const float* values) {
-        return (1.0f - fy) * ((1.0f - fx) * values[a] + fx * values[b]) +
-               fy * ((1.0f - fx) * values[c] + fx * values[d]);
+        return w.a * values[a] + w.b * values[b] + w.c * values[c] + w.d * values[d];
     };
     texel.filter = blend(palette.filter);
     texel.transmit = blend(palette.transmit);

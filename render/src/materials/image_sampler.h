@@ -71,6 +71,12 @@ class ImageSampler {
     glm::ivec2 wrap(long long column, long long row, int columns, int rows) const;
 
   private:
+    // Shares of the texels at (0, 0), (1, 0), (0, 1) and (1, 1) from the
+    // first, for a point (fx, fy) from it.
+    struct CornerWeights {
+        float a, b, c, d;
+    };
+    CornerWeights corner_weights(float fx, float fy) const;
     Texel decode(const float* texel) const;
     Texel texel(long long column, long long row) const;  // wrapped
     void add_palette_transparency(Texel& texel, const glm::dvec2& uv) const;
