@@ -110,7 +110,8 @@ INSTANTIATE_TEST_SUITE_P(
         "csg_glass_fog", "bumped_glass_tir", "hidden_objects", "over_transparent", "images_working_gamma",
         "flat_box_glass", "nested_ior", "projected_in_scene", "negative_transmit", "media_overlapping",
         "media_shadow_overlap", "union_interior", "glass_cone_on_floor", "union_shared_interior", "irid_reflection",
-        "pigment_then_texture", "disc_intersection", "bounded_quartic", "image_interpolate"),
+        "pigment_then_texture", "disc_intersection", "bounded_quartic", "image_interpolate",
+        "smooth_glass_height_field"),
     [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 // Isosurfaces of POV's internal functions (f_helix1, f_torus2, f_helix2,

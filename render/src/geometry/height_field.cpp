@@ -114,7 +114,7 @@ class HeightFieldShape final : public Shape {
                 (1.0 - fz) * ((1.0 - fx) * vertex_normal(cell_x, cell_z) + fx * vertex_normal(cell_x + 1, cell_z)) +
                 fz * ((1.0 - fx) * vertex_normal(cell_x, cell_z + 1) + fx * vertex_normal(cell_x + 1, cell_z + 1));
             const double blended_length = glm::length(blended);
-            if (blended_length > 1e-12 && std::isfinite(blended_length)) g.normal = blended / blended_length;
+            if (blended_length > 1e-12 && std::isfinite(blended_length)) g.shading_normal = blended / blended_length;
         }
         g.uv = Vec2(float(g.point.x), float(g.point.z));
         return g;

@@ -227,25 +227,29 @@ TEST(HeightField, SmoothNormalsOnAPlaneAreThePlaneNormal) {
     // The grid's normal (-8192, 1, 0) per cell (heights at 65536 a unit)
     // is stored as shorts (-32766, 3, 0): y truncated from 3.9999.
     const DVec3 stored = glm::normalize(DVec3(-32766.0 * 4.0, 3.0 * 65536.0, 0.0));
-    EXPECT_NEAR(glm::dot(g.normal, stored), 1.0, 1e-12);
-    EXPECT_NEAR(glm::length(g.normal), 1.0, 1e-12);
+    EXPECT_NEAR(glm::dot(g.shading_normal, stored), 1.0, 1e-12);
+    EXPECT_NEAR(glm::length(g.shading_normal), 1.0, 1e-12);
+    // The facet's own normal stays exact: rays leave across it.
+    EXPECT_NEAR(glm::dot(g.normal, glm::normalize(DVec3(-0.5, 1.0, 0.0))), 1.0, 1e-12);
     // On a fine grid the storage costs little: within 1e-4 of the plane's.
     auto fine = make_height_field_shape(grid_of(257, 9, ramp), true, 0.0);
     ASSERT_TRUE(fine->nearest(DVec3(0.37, 2.0, 0.61), DVec3(0, -1, 0), 0.0, 1e30, hit));
     const SurfaceGeometry h = fine->surface(DVec3(0.37, 2.0 - hit.t, 0.61), hit.face);
-    EXPECT_NEAR(glm::dot(h.normal, glm::normalize(DVec3(-0.5, 1.0, 0.0))), 1.0, 1e-4);
+    EXPECT_NEAR(glm::dot(h.shading_normal, glm::normalize(DVec3(-0.5, 1.0, 0.0))), 1.0, 1e-4);
 }
 
 TEST(HeightField, SmoothNormalsInterpolateAcrossARidge) {
     // A roof ridge along x = 0.5: flat normals jump across it, smooth ones
-    // vary continuously and are vertical on the ridge line.
+    // vary continuously and are vertical on the ridge line (the normal
+    // shading reads; the facets' stay flat).
     auto roof = [](double x, double) { return 0.5 - 0.25 * std::fabs(x - 0.5) * 2.0; };
     auto flat = make_height_field_shape(grid_of(5, 5, roof), false, 0.0);
     auto smooth = make_height_field_shape(grid_of(5, 5, roof), true, 0.0);
     auto normal_at = [](const Shape& s, double x, double z) {
         ShapeCrossing hit;
         EXPECT_TRUE(s.nearest(DVec3(x, 2.0, z), DVec3(0, -1, 0), 0.0, 1e30, hit));
-        return s.surface(DVec3(x, 2.0 - hit.t, z), hit.face).normal;
+        const SurfaceGeometry g = s.surface(DVec3(x, 2.0 - hit.t, z), hit.face);
+        return g.shading_normal == DVec3(0.0) ? g.normal : g.shading_normal;
     };
     EXPECT_NEAR(normal_at(*flat, 0.49, 0.4).x, -normal_at(*flat, 0.51, 0.4).x, 1e-12);
     EXPECT_LT(normal_at(*flat, 0.49, 0.4).x, -0.3);

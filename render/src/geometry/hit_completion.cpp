@@ -148,12 +148,17 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
     case ShapeKind::Analytic: g = instance.shape->surface(p, face); break;
     default: g = rectangle_surface(instance.rectangle, p); break;
     }
-    if (instance.flip_normal) g.normal = -g.normal;
+    if (instance.flip_normal) {
+        g.normal = -g.normal;
+        g.shading_normal = -g.shading_normal;
+    }
     const DVec3 world = instance.placement.point_to_world(g.point);
     hit.position = Vec3(world);
     hit.position_error = instance.placement.world_point_error(g.point, world);
     hit.geometric_normal = Vec3(instance.placement.normal_to_world_unit(g.normal));
-    hit.shading_normal = hit.geometric_normal;
+    hit.shading_normal = g.shading_normal == DVec3(0.0)
+                             ? hit.geometric_normal
+                             : Vec3(instance.placement.normal_to_world_unit(g.shading_normal));
     hit.uv = instance.uv_from_world ? Vec2(float(world.x), float(world.y)) : g.uv;
     // A mesh in CSG keeps its per-triangle textures.
     const std::size_t face_index = std::size_t(face);

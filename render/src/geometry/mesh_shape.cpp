@@ -320,7 +320,7 @@ class MeshShape final : public Shape {
                     blended += weight[k] * m_mesh.normals[std::size_t(n)];
             }
             const double length = glm::length(blended);
-            if (length > 0.0 && std::isfinite(length)) g.normal = blended / length;
+            if (length > 0.0 && std::isfinite(length)) g.shading_normal = blended / length;
         }
         if (f.uv[0] >= 0) {
             glm::dvec2 uv(0.0);

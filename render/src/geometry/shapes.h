@@ -76,8 +76,12 @@ bool intersect_rectangle(const AnalyticRectangle& r, const DVec3& o, const DVec3
 // Surface details at a point already on the shape (object space).
 struct SurfaceGeometry {
     DVec3 point;   // projected exactly onto the surface
-    DVec3 normal;  // unit, outward
+    DVec3 normal;  // unit, outward: the surface's own (a smoothed shape's facet)
     Vec2 uv;
+    // Unit, for shading, where it is not `normal` (a smooth height field's
+    // or mesh's interpolated normal); zero: `normal`. Rays leave along the
+    // facet's, which the hit point's error box is measured across.
+    DVec3 shading_normal{0.0};
 };
 SurfaceGeometry sphere_surface(const AnalyticSphere& s, const DVec3& p);
 SurfaceGeometry box_surface(const AnalyticBox& b, const DVec3& p, int face);
