@@ -47,9 +47,16 @@ const Instance* container_at(const SceneData& data, const Instance& instance, co
     case ShapeKind::Csg: {
         const CsgTree& tree = *instance.csg;
         if (!tree.inside(data.instances, tree.root, p)) return nullptr;
+        // The object's own leaves, not its clips' or bounds'.
         const Instance* first_leaf = nullptr;
-        for (const CsgNode& node : tree.nodes) {
-            if (node.operation != CsgNode::Operation::Leaf) continue;
+        std::vector<std::uint32_t> pending{tree.root};
+        while (!pending.empty()) {
+            const CsgNode& node = tree.nodes[pending.back()];
+            pending.pop_back();
+            if (node.operation != CsgNode::Operation::Leaf) {
+                pending.insert(pending.end(), node.children.rbegin(), node.children.rend());
+                continue;
+            }
             const Instance& leaf = data.instances[node.instance];
             if (first_leaf == nullptr) first_leaf = &leaf;
             if (!node.inverted && shape_holds(*leaf.shape, leaf, p)) return &leaf;

@@ -84,6 +84,20 @@ TEST(Csg, BoundedByCutsAsPovRayDoes) {
     EXPECT_NEAR(first_hit(*cheap, {0.9f, 0.9f, -10}, {0, 0, 1}).t, 10.0f - std::sqrt(4.0f - 1.62f), 1e-4f);
 }
 
+// A smooth triangle whose written normals disagree with its winding, as
+// a CSG leaf: the facet's normal is turned to the side of the normal that
+// shades, as for a mesh out of CSG, so the two never face apart.
+TEST(Csg, ASmoothMeshLeafsNormalsFaceTheSameSide) {
+    const auto scene = compile(
+        "mesh { smooth_triangle { <-1, -1, 0>, <0, 0, -1>, <1, -1, 0>, <0, 0, -1>, <0, 1, 0>, <0, 0, -1> }\n"
+        "  clipped_by { box { -2, 2 } } }");
+    for (const float side : {-1.0f, 1.0f}) {
+        const Hit hit = first_hit(*scene, {0.1f, -0.2f, 5 * side}, {0, 0, -side});
+        ASSERT_GT(hit.t, 0.0f);
+        EXPECT_GT(glm::dot(hit.shading_normal, hit.geometric_normal), 0.99f) << "from z = " << 5 * side;
+    }
+}
+
 TEST(Csg, MergeDropsInnerSurfacesAndUnionKeepsThem) {
     const std::string spheres = "sphere { <-0.5, 0, 0>, 1 } sphere { <0.5, 0, 0>, 1 }";
     const auto merged = compile("merge { " + spheres + " }");

@@ -141,6 +141,9 @@ class HeightFieldShape final : public Shape {
         return p.y < surface;
     }
 
+    // POV's inside runs on below the floor, which the box stops at.
+    bool inside_within_bounds() const override { return false; }
+
     bool bounds(DVec3& lower, DVec3& upper) const override {
         lower = DVec3(0.0, m_floor, 0.0);
         upper = DVec3(1.0, m_top, 1.0);

@@ -156,9 +156,15 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
     hit.position = Vec3(world);
     hit.position_error = instance.placement.world_point_error(g.point, world);
     hit.geometric_normal = Vec3(instance.placement.normal_to_world_unit(g.normal));
-    hit.shading_normal = g.shading_normal == DVec3(0.0)
-                             ? hit.geometric_normal
-                             : Vec3(instance.placement.normal_to_world_unit(g.shading_normal));
+    if (g.shading_normal != DVec3(0.0)) {
+        // A mesh's written normals may disagree with its winding: the
+        // facet's normal is turned to the shading side, as for meshes out
+        // of CSG (the side a spawned ray is offset to follows its direction).
+        hit.shading_normal = Vec3(instance.placement.normal_to_world_unit(g.shading_normal));
+        if (glm::dot(hit.shading_normal, hit.geometric_normal) < 0.0f) hit.geometric_normal = -hit.geometric_normal;
+    } else {
+        hit.shading_normal = hit.geometric_normal;
+    }
     hit.uv = instance.uv_from_world ? Vec2(float(world.x), float(world.y)) : g.uv;
     // A mesh in CSG keeps its per-triangle textures.
     const std::size_t face_index = std::size_t(face);

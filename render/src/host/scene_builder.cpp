@@ -590,7 +590,7 @@ class Builder {
             }
             // CSG, or an object that an inversion or clip makes one.
             if (std::holds_alternative<sg::Group>(object.shape) || object.inverse || !object.clipped_by.empty() ||
-                bound_may_cut(object)) {
+                bound_may_cut(object, material)) {
                 add_csg(object, world_from_parent, inherited, inherited_owner, no_shadow);
                 continue;
             }
@@ -606,10 +606,14 @@ class Builder {
     // POV's bounded_by cuts an object where rays miss the bound (csg.h):
     // traced as CSG for a shape (the quartics POV's samples bound), while
     // on a group or mesh, where it serves speed and rarely cuts, it is left
-    // out so that they keep their BVH.
-    static bool bound_may_cut(const sg::Object& object) {
-        return !object.bounded_by.empty() && !std::holds_alternative<sg::Group>(object.shape) &&
-               !std::holds_alternative<sg::MeshRef>(object.shape);
+    // out so that they keep their BVH, and so it is on a glowing cheap shape,
+    // which as a CSG leaf would not be a light `path` samples.
+    static bool bound_may_cut(const sg::Object& object, const sg::MaterialRef& material) {
+        if (object.bounded_by.empty() || std::holds_alternative<sg::Group>(object.shape) ||
+            std::holds_alternative<sg::MeshRef>(object.shape))
+            return false;
+        const bool glows = material && material->finish.emission != sg::Vec3(0.0);
+        return keeps_ray_bounds(object) || !glows;
     }
 
     // The objects outside CSG whose bounds POV keeps testing rays against

@@ -168,11 +168,17 @@ Texel ImageSampler::texel(long long column, long long row) const {
 // (imageutil.cpp's norm_dist), every other kind bilinearly.
 ImageSampler::CornerWeights ImageSampler::corner_weights(float fx, float fy) const {
     if (m_map.interpolate != 4) return {(1.0f - fx) * (1.0f - fy), fx * (1.0f - fy), (1.0f - fx) * fy, fx * fy};
-    const float da = fx * fx + fy * fy, db = (1.0f - fx) * (1.0f - fx) + fy * fy,
-                dc = fx * fx + (1.0f - fy) * (1.0f - fy), dd = (1.0f - fx) * (1.0f - fx) + (1.0f - fy) * (1.0f - fy);
-    if (da == 0.0f) return {1.0f, 0.0f, 0.0f, 0.0f};  // on a texel's centre
-    const float wa = 1.0f / da, wb = 1.0f / db, wc = 1.0f / dc, wd = 1.0f / dd, sum = wa + wb + wc + wd;
-    return {wa / sum, wb / sum, wc / sum, wd / sum};
+    const double x = fx, y = fy;
+    const double distance2[4] = {x * x + y * y, (1.0 - x) * (1.0 - x) + y * y, x * x + (1.0 - y) * (1.0 - y),
+                                 (1.0 - x) * (1.0 - x) + (1.0 - y) * (1.0 - y)};
+    double weight[4], sum = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        if (distance2[k] == 0.0)  // on a texel's centre: that texel alone
+            return {k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f, k == 3 ? 1.0f : 0.0f};
+        weight[k] = 1.0 / distance2[k];
+        sum += weight[k];
+    }
+    return {float(weight[0] / sum), float(weight[1] / sum), float(weight[2] / sum), float(weight[3] / sum)};
 }
 
 Texel ImageSampler::at(const glm::dvec2& uv) const {
