@@ -72,18 +72,19 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
     // POV's box of a bounded object is its bounds' (the uninverted ones')
     // where that is smaller; its inside test ignores the bounds.
     if (!node.bounds.empty()) {
-        CsgNode own = node;
+        const bool own_bounded = node.bounded;
+        const DVec3 own_lower = node.lower, own_upper = node.upper;
         node.bounded = false;
         for (std::uint32_t bounding : node.bounds)
             if (!nodes[bounding].inverted) take(nodes[bounding], true);
-        const auto volume = [](const CsgNode& n) {
-            const DVec3 size = glm::max(n.upper - n.lower, DVec3(0.0));
+        const auto volume = [](const DVec3& lower, const DVec3& upper) {
+            const DVec3 size = glm::max(upper - lower, DVec3(0.0));
             return size.x * size.y * size.z;
         };
-        if (!node.bounded || (own.bounded && !(volume(node) < volume(own)))) {
-            node.bounded = own.bounded;
-            node.lower = own.lower;
-            node.upper = own.upper;
+        if (!node.bounded || (own_bounded && !(volume(node.lower, node.upper) < volume(own_lower, own_upper)))) {
+            node.bounded = own_bounded;
+            node.lower = own_lower;
+            node.upper = own_upper;
         }
         node.box_holds_solid = false;
     }

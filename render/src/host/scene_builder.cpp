@@ -971,9 +971,10 @@ class Builder {
     void add_csg(const sg::Object& object, const DMat4& world_from_parent, const sg::MaterialRef& inherited,
                  const DMat4& inherited_owner, bool no_shadow) {
         auto tree = std::make_unique<CsgTree>();
-        m_csg_root = &object;
         tree->root = add_csg_node(*tree, object, world_from_parent, inherited, inherited_owner, no_shadow, false);
-        m_csg_root = nullptr;
+        // POV keeps testing rays against a part's bounds, but drops an
+        // object's own for the cheap kinds (Link_To_Frame).
+        tree->nodes[tree->root].rays_must_meet_bounds = keeps_ray_bounds(object);
         tree->compute_bounds(m_data->instances);
         const CsgNode& root = tree->nodes[tree->root];
         Instance instance;
@@ -1049,7 +1050,7 @@ class Builder {
         for (const sg::Object& bound : object.bounded_by)
             node.bounds.push_back(
                 add_csg_node(tree, bound, world_from_object, material, owner, object_no_shadow, false));
-        node.rays_must_meet_bounds = &object != m_csg_root || keeps_ray_bounds(object);
+        node.rays_must_meet_bounds = true;
         tree.nodes.push_back(std::move(node));
         return std::uint32_t(tree.nodes.size() - 1);
     }
@@ -1327,7 +1328,6 @@ class Builder {
     std::optional<bool> m_double_illuminate;       // of the objects being added (DoubleIlluminateScope)
     HiddenFrom m_hidden_from;                      // of the objects being added (HiddenFromScope)
     const sg::Object* m_interior_owner = nullptr;  // of the objects being added (InteriorOwnerScope)
-    const sg::Object* m_csg_root = nullptr;        // the object add_csg is adding
     std::map<const sg::Object*, std::uint32_t> m_interior_ids;  // by owner; an instance with none gets its own
     std::map<const sg::TriangleMesh*, int> m_mesh_uses;
     std::map<std::tuple<const sg::Function*, const std::string*, int, int>, std::shared_ptr<IsosurfaceGradientRecord>>
