@@ -3,38 +3,86 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <stdexcept>
 #include <utility>
 
 #include "geometry/embree_scene.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace lancer::embree {
 namespace {
 
-// Whether the ray's [t_near, t_far] meets the box: the slab test with the
-// far distance widened by the rounding of its own computation (pbrt's
-// 1 + 2 gamma(3)), so it never rejects a box that the exact ray meets. A
-// direction component of zero gives infinite slab distances, or NaN for an
-// origin on the slab's plane, which the comparisons then leave out.
-bool meets_box(const Vec3& origin, const Vec3& inverse_direction, const Vec3& lower, const Vec3& upper, float t_near,
-               float t_far) {
-    constexpr float kWiden = 1.0f + 2.0f * (3.0f * FLT_EPSILON * 0.5f) / (1.0f - 3.0f * FLT_EPSILON * 0.5f);
-    for (int axis = 0; axis < 3; ++axis) {
-        float entry = (lower[axis] - origin[axis]) * inverse_direction[axis];
-        float exit = (upper[axis] - origin[axis]) * inverse_direction[axis];
-        if (entry > exit) std::swap(entry, exit);
-        exit *= kWiden;
-        t_near = entry > t_near ? entry : t_near;
-        t_far = exit < t_far ? exit : t_far;
-        if (t_near > t_far) return false;
-    }
-    return true;
-}
+// The slab test's far distances are widened by the rounding of their own
+// computation (pbrt's 1 + 2 gamma(3)), so no box that the exact ray meets
+// is rejected.
+constexpr float kWiden = 1.0f + 2.0f * (3.0f * FLT_EPSILON * 0.5f) / (1.0f - 3.0f * FLT_EPSILON * 0.5f);
 
 }  // namespace
 
+ShapeList::Boxes ShapeList::empty_boxes() {
+    Boxes boxes;
+    for (int axis = 0; axis < 3; ++axis)
+        for (int lane = 0; lane < kLanes; ++lane) {
+            boxes.lower[axis][lane] = FLT_MAX;
+            boxes.upper[axis][lane] = -FLT_MAX;
+        }
+    return boxes;
+}
+
 void ShapeList::add(const Instance& instance, std::uint32_t index, unsigned geometry, unsigned primitive) {
+    if (m_shapes.size() >= std::size_t(kLanes)) throw std::logic_error("ShapeList: more shapes than it traces");
+    const std::size_t lane = m_shapes.size();
     m_shapes.push_back(
         Entry{instance.bounds_lower, instance.bounds_upper, index, geometry, primitive, instance.casts_shadow});
+    for (int axis = 0; axis < 3; ++axis) {
+        m_boxes.lower[axis][lane] = instance.bounds_lower[axis];
+        m_boxes.upper[axis][lane] = instance.bounds_upper[axis];
+    }
+}
+
+// The slab test on every lane at once. Each select is written as the
+// SIMD min/max whose rule it is (min(a, b) = a < b ? a : b), which the
+// compiler does not find in the scalar loop by itself. A direction
+// component of zero gives infinite slab distances, or NaN for an origin
+// on the slab's plane, which the comparisons then leave out, lane by lane
+// as the scalar test did.
+unsigned ShapeList::boxes_met(const Ray& ray, float t_near, float t_far, float* entry) const {
+    const Vec3 inverse_direction = 1.0f / ray.direction;
+    unsigned met = 0;
+#if defined(__SSE2__)
+    for (int group = 0; group < int(m_shapes.size()); group += 4) {
+        __m128 nearest = _mm_set1_ps(t_near), farthest = _mm_set1_ps(t_far);
+        for (int axis = 0; axis < 3; ++axis) {
+            const __m128 origin = _mm_set1_ps(ray.origin[axis]), inverse = _mm_set1_ps(inverse_direction[axis]);
+            const __m128 a = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(&m_boxes.lower[axis][group]), origin), inverse);
+            const __m128 b = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(&m_boxes.upper[axis][group]), origin), inverse);
+            const __m128 in = _mm_min_ps(b, a);                                    // a > b ? b : a
+            const __m128 out = _mm_mul_ps(_mm_max_ps(a, b), _mm_set1_ps(kWiden));  // a > b ? a : b
+            nearest = _mm_max_ps(in, nearest);                                     // in > nearest ? in : nearest
+            farthest = _mm_min_ps(out, farthest);                                  // out < farthest ? out : farthest
+        }
+        met |= unsigned(_mm_movemask_ps(_mm_cmple_ps(nearest, farthest))) << group;
+        _mm_storeu_ps(entry + group, nearest);
+    }
+#else
+    for (int lane = 0; lane < int(m_shapes.size()); ++lane) {
+        float nearest = t_near, farthest = t_far;
+        for (int axis = 0; axis < 3; ++axis) {
+            const float a = (m_boxes.lower[axis][lane] - ray.origin[axis]) * inverse_direction[axis];
+            const float b = (m_boxes.upper[axis][lane] - ray.origin[axis]) * inverse_direction[axis];
+            const float in = a > b ? b : a;
+            const float out = (a > b ? a : b) * kWiden;
+            nearest = in > nearest ? in : nearest;
+            farthest = out < farthest ? out : farthest;
+        }
+        met |= unsigned(nearest <= farthest) << lane;
+        entry[lane] = nearest;
+    }
+#endif
+    return met & ((1u << m_shapes.size()) - 1u);
 }
 
 // The nearest crossing of one listed shape over [t_near, t_far], as
@@ -49,9 +97,13 @@ bool ShapeList::crosses(const SceneData& data, const Entry& shape, const Ray& ra
 }
 
 void ShapeList::nearest(const SceneData& data, const Ray& ray, EmbreeHit& found) const {
-    const Vec3 inverse_direction = 1.0f / ray.direction;
-    for (const Entry& shape : m_shapes) {
-        if (!meets_box(ray.origin, inverse_direction, shape.lower, shape.upper, found.tnear, found.tfar)) continue;
+    float entry[kLanes];
+    const unsigned met = boxes_met(ray, found.tnear, found.tfar, entry);
+    for (std::size_t lane = 0; lane < m_shapes.size(); ++lane) {
+        // A box entered beyond the nearest crossing so far is passed over,
+        // as the slab test against that nearer end would.
+        if (!(met & (1u << lane)) || entry[lane] > found.tfar) continue;
+        const Entry& shape = m_shapes[lane];
         double t;
         int face;
         std::uint32_t leaf;
@@ -67,10 +119,11 @@ void ShapeList::nearest(const SceneData& data, const Ray& ray, EmbreeHit& found)
 }
 
 bool ShapeList::occluded(const SceneData& data, const Ray& ray, float t_near, float t_far) const {
-    const Vec3 inverse_direction = 1.0f / ray.direction;
-    for (const Entry& shape : m_shapes) {
-        if (!shape.casts_shadow || !meets_box(ray.origin, inverse_direction, shape.lower, shape.upper, t_near, t_far))
-            continue;
+    float entry[kLanes];
+    const unsigned met = boxes_met(ray, t_near, t_far, entry);
+    for (std::size_t lane = 0; lane < m_shapes.size(); ++lane) {
+        const Entry& shape = m_shapes[lane];
+        if (!shape.casts_shadow || !(met & (1u << lane))) continue;
         double t;
         int face;
         std::uint32_t leaf;

@@ -51,9 +51,21 @@ class ShapeList {
         unsigned geometry, primitive;
         bool casts_shadow;
     };
+    // The shapes' boxes by axis, one lane a shape (the lanes past the
+    // shapes are empty boxes), so one ray is tested against all at once.
+    static constexpr int kLanes = 8;
+    static_assert(kMostShapes <= kLanes);
+    struct Boxes {
+        float lower[3][kLanes], upper[3][kLanes];
+    };
+    // Which boxes the ray's [t_near, t_far] meets, as bits by shape, and
+    // where it enters each.
+    unsigned boxes_met(const Ray& ray, float t_near, float t_far, float* entry) const;
     static bool crosses(const SceneData& data, const Entry& shape, const Ray& ray, float t_near, float t_far, double& t,
                         int& face, std::uint32_t& leaf);
     std::vector<Entry> m_shapes;
+    Boxes m_boxes = empty_boxes();
+    static Boxes empty_boxes();
 };
 
 }  // namespace lancer::embree
