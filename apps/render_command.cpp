@@ -508,7 +508,10 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
         // film's storage only asks whether there is one.
         RenderOptions as_planned = options;
         if (arguments.time_option->count()) as_planned.time_budget_seconds = arguments.time_budget;
-        Film film(options.width, options.height, film_storage_for(*scene.scene, *integrator, as_planned));
+        // The error estimate of a fixed sample count costs 40 bytes a
+        // pixel: kept when --stats will report it.
+        Film film(options.width, options.height,
+                  film_storage_for(*scene.scene, *integrator, as_planned, !job.stats.empty()));
         // A render killed before its first checkpoint has nothing to resume:
         // it starts over, so `--resume` after a kill at any moment works.
         // Only the process that writes the files resumes: the others' film

@@ -383,7 +383,9 @@ class MpiDistribution final : public Distribution {
         JobProgress progress(options.progress != ProgressMode::Quiet);
 
         // Rank 0's own share, rendered on the local worker's thread.
-        Film scratch(film.width(), film.height());
+        // In the film's storage, as every other process renders: a sum
+        // of floats rounds otherwise than a sum of doubles.
+        Film scratch(film.width(), film.height(), film.storage());
         TileRenderer renderer(counted, integrator, options, mode, scratch, options.cancel);
         WorkHeader local_unit;
         std::vector<Accumulator> local_state, local_pixels;

@@ -1,6 +1,6 @@
 // Per-pixel accumulation: in double (Totals), so sums stay exact enough for
-// thousands of samples and variance estimates, or the colour alone
-// (MeanOnly) when a pixel takes one sample.
+// thousands of samples and variance estimates, or the colour sum and counts
+// alone (Sums, MeanOnly) when nothing reads a variance.
 #include "lancer/host/film.h"
 
 #include <algorithm>
@@ -13,17 +13,46 @@ namespace lancer {
 Film::Film(int width, int height, Storage storage) : m_width(width), m_height(height), m_storage(storage) {
     if (width <= 0 || height <= 0) throw std::invalid_argument("film size must be positive");
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
-    if (storage == Storage::MeanOnly)
-        m_colour_sums.assign(pixels, Color(0.0f));
-    else
-        m_pixels.resize(pixels);
+    allocate(pixels);
     m_taken.resize(pixels, 0);
+}
+
+void Film::allocate(std::size_t pixels) {
+    m_pixels = std::vector<Accumulator>();
+    m_colour_sums = std::vector<Color>();
+    m_finite = std::vector<std::uint32_t>();
+    if (m_storage == Storage::Totals) m_pixels.resize(pixels);
+    if (m_storage != Storage::Totals) m_colour_sums.assign(pixels, Color(0.0f));
+    if (m_storage == Storage::Sums) m_finite.assign(pixels, 0);
+}
+
+// With allocate(): no pixel holds a sample, so restore_region's changes
+// are the whole film's.
+void Film::start_empty() {
+    std::fill(m_taken.begin(), m_taken.end(), 0u);
+    m_nonfinite_total.value.store(0, std::memory_order_relaxed);
+}
+
+void Film::change_storage(Storage storage) {
+    if (storage == m_storage) return;
+    const std::vector<Accumulator> all = accumulators();
+    m_storage = storage;
+    allocate(all.size());
+    start_empty();
+    restore_region(0, 0, m_width, m_height, all.data());
 }
 
 Film::Accumulator Film::accumulator(std::size_t index) const {
     if (m_storage == Storage::Totals) return m_pixels[index];
     Accumulator pixel;
     const Color sum = m_colour_sums[index];
+    if (m_storage == Storage::Sums) {
+        pixel.count = m_finite[index];
+        pixel.nonfinite = m_taken[index] - pixel.count;
+        pixel.sum = glm::dvec3(sum);
+        if (pixel.count > 0) pixel.sum_squares = pixel.sum * pixel.sum / double(pixel.count);
+        return pixel;
+    }
     if (std::isnan(sum.r)) {
         pixel.nonfinite = m_taken[index];
         return pixel;
@@ -42,6 +71,11 @@ std::vector<Film::Accumulator> Film::accumulators() const {
 
 Color Film::mean(int x, int y) const {
     const std::size_t index = std::size_t(y) * m_width + x;
+    if (m_storage == Storage::Sums) {
+        const std::uint32_t count = m_finite[index];
+        if (count == 0) return Color(0.0f);
+        return count == 1 ? m_colour_sums[index] : m_colour_sums[index] / float(count);
+    }
     if (m_storage == Storage::MeanOnly) {
         const Color sum = m_colour_sums[index];
         const std::uint32_t count = m_taken[index];
@@ -54,7 +88,7 @@ Color Film::mean(int x, int y) const {
 }
 
 Color Film::variance_of_mean(int x, int y) const {
-    if (m_storage == Storage::MeanOnly) return Color(0.0f);
+    if (m_storage != Storage::Totals) return Color(0.0f);
     const Accumulator& pixel = m_pixels[std::size_t(y) * m_width + x];
     if (pixel.count < 2) return Color(0.0f);
     const double n = double(pixel.count);
@@ -65,6 +99,7 @@ Color Film::variance_of_mean(int x, int y) const {
 
 std::uint32_t Film::sample_count(int x, int y) const {
     const std::size_t index = std::size_t(y) * m_width + x;
+    if (m_storage == Storage::Sums) return m_finite[index];
     if (m_storage == Storage::MeanOnly) return std::isnan(m_colour_sums[index].r) ? 0 : m_taken[index];
     return m_pixels[index].count;
 }
@@ -73,6 +108,14 @@ void Film::restore(std::vector<Accumulator> accumulators) {
     if (accumulators.size() != m_taken.size())
         throw std::invalid_argument("film restore: " + std::to_string(accumulators.size()) + " pixels for a " +
                                     std::to_string(m_width) + "x" + std::to_string(m_height) + " film");
+    if (m_storage == Storage::Sums) {
+        allocate(accumulators.size());
+        start_empty();
+        restore_region(0, 0, m_width, m_height, accumulators.data());
+        m_has_samples.value.store(std::any_of(m_taken.begin(), m_taken.end(), [](std::uint32_t n) { return n > 0; }),
+                                  std::memory_order_relaxed);
+        return;
+    }
     m_pixels = std::move(accumulators);
     m_storage = Storage::Totals;
     m_colour_sums = std::vector<Color>();
@@ -95,10 +138,14 @@ void Film::restore_region(int x0, int y0, int x1, int y1, const Accumulator* pix
         for (int x = x0; x < x1; ++x, ++pixels) {
             const std::size_t i = std::size_t(y) * m_width + x;
             nonfinite_change += std::int64_t(pixels->nonfinite) - std::int64_t(accumulator(i).nonfinite);
-            if (m_storage == Storage::MeanOnly)
+            if (m_storage == Storage::MeanOnly) {
                 m_colour_sums[i] = pixels->nonfinite > 0 ? Color(std::nanf("")) : Color(pixels->sum);
-            else
+            } else if (m_storage == Storage::Sums) {
+                m_colour_sums[i] = Color(pixels->sum);
+                m_finite[i] = pixels->count;
+            } else {
                 m_pixels[i] = *pixels;
+            }
             m_taken[i] = pixels->count + pixels->nonfinite;
             any = any || m_taken[i] > 0;
         }

@@ -459,14 +459,25 @@ bool takes_one_sample(const RenderScene& scene, const Integrator& integrator, co
     return fixed && !scene.camera().has_focal_blur() && options.samples_per_pixel <= 1;
 }
 
-Film::Storage film_storage_for(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options) {
-    return takes_one_sample(scene, integrator, options) ? Film::Storage::MeanOnly : Film::Storage::Totals;
+Film::Storage film_storage_for(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options,
+                               bool error_estimate_wanted) {
+    if (takes_one_sample(scene, integrator, options)) return Film::Storage::MeanOnly;
+    // Adaptive modes and the confidence of a deterministic focal blur read
+    // every pixel's variance.
+    const bool deterministic = integrator.is_deterministic();
+    const bool adaptive = !deterministic && (options.time_budget_seconds > 0.0 || options.noise_target > 0.0);
+    const bool confidence = deterministic && scene.camera().has_focal_blur();
+    return adaptive || confidence || error_estimate_wanted ? Film::Storage::Totals : Film::Storage::Sums;
 }
 
 RenderStats render_image(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options,
                          Film& film) {
-    if (film.storage() == Film::Storage::MeanOnly && !takes_one_sample(scene, integrator, options))
-        film.restore(film.accumulators());
+    // A film keeps at least what this render reads: MeanOnly < Sums < Totals.
+    const auto rank = [](Film::Storage storage) {
+        return storage == Film::Storage::MeanOnly ? 0 : storage == Film::Storage::Sums ? 1 : 2;
+    };
+    const Film::Storage needed = film_storage_for(scene, integrator, options);
+    if (rank(film.storage()) < rank(needed)) film.change_storage(needed);
     return ImageRender(scene, integrator, options, film).run();
 }
 

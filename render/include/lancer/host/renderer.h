@@ -99,20 +99,25 @@ struct RenderStats {
     std::uint32_t max_samples_per_pixel = 0;
     int passes = 0;
     // Estimated relative RMSE of the window (estimate.h); 0 for a
-    // deterministic integrator.
+    // deterministic integrator, and for a film that keeps no variance
+    // (Film::Storage::Sums or MeanOnly).
     double estimated_rel_rmse = 0.0;
     bool interrupted = false;  // options.cancel stopped the render
 };
 
 // The film storage a render needs: MeanOnly when no pixel takes more than
 // one sample (fixed at 1 sample, no focal blur), which then needs no
-// variance; Totals otherwise.
-Film::Storage film_storage_for(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options);
+// variance; Totals when something reads the variance (a time budget or a
+// noise target, a deterministic integrator's focal-blur confidence, or the
+// caller's wish for the error estimate, RenderStats::estimated_rel_rmse);
+// Sums otherwise (a fixed sample count).
+Film::Storage film_storage_for(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options,
+                               bool error_estimate_wanted = false);
 
 // Renders into `film` (of size width x height). Deterministic: the same
 // per-pixel sample counts give the same film bit for bit whatever the
-// thread count, tile size or pass schedule. A MeanOnly film given a render
-// that takes more samples a pixel becomes a Totals film first.
+// thread count, tile size or pass schedule. A film whose storage keeps less
+// than the render reads (film_storage_for) changes to that storage first.
 RenderStats render_image(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options,
                          Film& film);
 
