@@ -368,12 +368,14 @@ int settle_image_options(const RenderArguments& arguments, const sg::RenderSetti
     return 0;
 }
 
-// Memory before anything is allocated: the film holds one Accumulator per
-// pixel and writing the image needs a float RGBA copy. Refuses what the
-// machine cannot hold; announces a big one (docs/robustness.md).
-int check_film_fits(const RenderOptions& options) {
-    const double bytes =
-        double(options.width) * double(options.height) * double(sizeof(Film::Accumulator) + 4 * sizeof(float));
+// Memory before anything is allocated: the film's totals per pixel (what
+// film_storage_for will choose, at most: 20 bytes without a variance, 64
+// with one and the planning of --noise or --time) and the float RGBA copy
+// that writing some formats needs. Refuses what the machine cannot hold;
+// announces a big one (docs/robustness.md).
+int check_film_fits(const RenderOptions& options, bool keeps_variance) {
+    const double film_bytes = keeps_variance ? 64.0 : 20.0;
+    const double bytes = double(options.width) * double(options.height) * (film_bytes + 4 * sizeof(float));
     const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
     const double gib = double(1ull << 30);
     char estimate[160];
@@ -457,7 +459,8 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
     if (const int status = settle_image_options(arguments, settings, options)) return status;
     options.progress_share = job.progress;
 
-    if (const int status = check_film_fits(options)) return status;
+    const bool keeps_variance = arguments.time_option->count() || arguments.noise_option->count() || !job.stats.empty();
+    if (const int status = check_film_fits(options, keeps_variance)) return status;
 
     // Output: the scene's stem in the current folder unless named. Every
     // file this render writes is checked now, before any work: none may be

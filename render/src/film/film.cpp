@@ -18,12 +18,17 @@ Film::Film(int width, int height, Storage storage) : m_width(width), m_height(he
 }
 
 void Film::allocate(std::size_t pixels) {
-    m_pixels = std::vector<Accumulator>();
+    m_sums = std::vector<glm::dvec3>();
+    m_squares = std::vector<glm::dvec3>();
     m_colour_sums = std::vector<Color>();
     m_finite = std::vector<std::uint32_t>();
-    if (m_storage == Storage::Totals) m_pixels.resize(pixels);
-    if (m_storage != Storage::Totals) m_colour_sums.assign(pixels, Color(0.0f));
-    if (m_storage == Storage::Sums) m_finite.assign(pixels, 0);
+    if (m_storage == Storage::Totals) {
+        m_sums.assign(pixels, glm::dvec3(0.0));
+        m_squares.assign(pixels, glm::dvec3(0.0));
+    } else {
+        m_colour_sums.assign(pixels, Color(0.0f));
+    }
+    if (m_storage != Storage::MeanOnly) m_finite.assign(pixels, 0);
 }
 
 // With allocate(): no pixel holds a sample, so restore_region's changes
@@ -43,8 +48,14 @@ void Film::change_storage(Storage storage) {
 }
 
 Film::Accumulator Film::accumulator(std::size_t index) const {
-    if (m_storage == Storage::Totals) return m_pixels[index];
     Accumulator pixel;
+    if (m_storage == Storage::Totals) {
+        pixel.sum = m_sums[index];
+        pixel.sum_squares = m_squares[index];
+        pixel.count = m_finite[index];
+        pixel.nonfinite = m_taken[index] - pixel.count;
+        return pixel;
+    }
     const Color sum = m_colour_sums[index];
     if (m_storage == Storage::Sums) {
         pixel.count = m_finite[index];
@@ -82,49 +93,35 @@ Color Film::mean(int x, int y) const {
         if (count == 0 || std::isnan(sum.r)) return Color(0.0f);
         return count == 1 ? sum : sum / float(count);
     }
-    const Accumulator& pixel = m_pixels[index];
-    if (pixel.count == 0) return Color(0.0f);
-    return Color(pixel.sum / double(pixel.count));
+    const std::uint32_t count = m_finite[index];
+    if (count == 0) return Color(0.0f);
+    return Color(m_sums[index] / double(count));
 }
 
 Color Film::variance_of_mean(int x, int y) const {
     if (m_storage != Storage::Totals) return Color(0.0f);
-    const Accumulator& pixel = m_pixels[std::size_t(y) * m_width + x];
-    if (pixel.count < 2) return Color(0.0f);
-    const double n = double(pixel.count);
-    const glm::dvec3 mean = pixel.sum / n;
-    const glm::dvec3 variance = glm::max(pixel.sum_squares / n - mean * mean, glm::dvec3(0.0)) * (n / (n - 1.0));
+    const std::size_t index = std::size_t(y) * m_width + x;
+    if (m_finite[index] < 2) return Color(0.0f);
+    const double n = double(m_finite[index]);
+    const glm::dvec3 mean = m_sums[index] / n;
+    const glm::dvec3 variance = glm::max(m_squares[index] / n - mean * mean, glm::dvec3(0.0)) * (n / (n - 1.0));
     return Color(variance / n);
 }
 
 std::uint32_t Film::sample_count(int x, int y) const {
     const std::size_t index = std::size_t(y) * m_width + x;
-    if (m_storage == Storage::Sums) return m_finite[index];
     if (m_storage == Storage::MeanOnly) return std::isnan(m_colour_sums[index].r) ? 0 : m_taken[index];
-    return m_pixels[index].count;
+    return m_finite[index];
 }
 
 void Film::restore(std::vector<Accumulator> accumulators) {
     if (accumulators.size() != m_taken.size())
         throw std::invalid_argument("film restore: " + std::to_string(accumulators.size()) + " pixels for a " +
                                     std::to_string(m_width) + "x" + std::to_string(m_height) + " film");
-    if (m_storage == Storage::Sums) {
-        allocate(accumulators.size());
-        start_empty();
-        restore_region(0, 0, m_width, m_height, accumulators.data());
-        m_has_samples.value.store(std::any_of(m_taken.begin(), m_taken.end(), [](std::uint32_t n) { return n > 0; }),
-                                  std::memory_order_relaxed);
-        return;
-    }
-    m_pixels = std::move(accumulators);
-    m_storage = Storage::Totals;
-    m_colour_sums = std::vector<Color>();
-    std::uint64_t nonfinite = 0;
-    for (std::size_t i = 0; i < m_pixels.size(); ++i) {
-        nonfinite += m_pixels[i].nonfinite;
-        m_taken[i] = m_pixels[i].count + m_pixels[i].nonfinite;
-    }
-    m_nonfinite_total.value.store(nonfinite, std::memory_order_relaxed);
+    if (m_storage == Storage::MeanOnly) m_storage = Storage::Totals;
+    allocate(accumulators.size());
+    start_empty();
+    restore_region(0, 0, m_width, m_height, accumulators.data());
     m_has_samples.value.store(std::any_of(m_taken.begin(), m_taken.end(), [](std::uint32_t n) { return n > 0; }),
                               std::memory_order_relaxed);
 }
@@ -144,7 +141,9 @@ void Film::restore_region(int x0, int y0, int x1, int y1, const Accumulator* pix
                 m_colour_sums[i] = Color(pixels->sum);
                 m_finite[i] = pixels->count;
             } else {
-                m_pixels[i] = *pixels;
+                m_sums[i] = pixels->sum;
+                m_squares[i] = pixels->sum_squares;
+                m_finite[i] = pixels->count;
             }
             m_taken[i] = pixels->count + pixels->nonfinite;
             any = any || m_taken[i] > 0;

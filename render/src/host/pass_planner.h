@@ -52,11 +52,8 @@ class PassPlanner {
         // a pixel's share of it depends on its own count alone: planned()
         // works it out when asked, and no per-pixel plan is stored.
         m_plans_per_pixel = m_mode != PassMode::Fixed || options.checkpoint_interval_seconds > 0.0;
-        if (m_plans_per_pixel) {
-            m_wanted.assign(std::size_t(m_width) * m_height, 0);
-            m_plan.assign(m_wanted.size(), 0);
-        }
-        if (m_mode == PassMode::Adaptive) m_relative_variance.assign(std::size_t(m_width) * m_height, 0.0);
+        if (m_plans_per_pixel) m_plan.assign(std::size_t(m_width) * m_height, 0);
+        if (m_mode == PassMode::Adaptive) m_relative_variance.assign(std::size_t(m_width) * m_height, 0.0f);
     }
 
     PassMode mode() const { return m_mode; }
@@ -95,7 +92,7 @@ class PassPlanner {
                                                        film.accumulator(std::size_t(m_window.y0 + y) * film.width() +
                                                                         std::size_t(m_window.x0 + x)))
                                 : wanted_after(taken, x, y);
-                        if (m_plans_per_pixel) m_wanted[i] = m_plan[i] = wanted;
+                        if (m_plans_per_pixel) m_plan[i] = wanted;
                         sum.wanted += wanted;
                         sum.taken += taken;
                         sum.pixels_wanting += wanted > 0;
@@ -135,10 +132,10 @@ class PassPlanner {
         if (!m_plans_per_pixel) throw std::logic_error("PassPlanner::limit_to on a plan kept per count");
         auto total_at = [&](std::uint32_t limit) {
             std::uint64_t total = 0;
-            for (std::uint32_t wanted : m_wanted) total += std::min(wanted, limit);
+            for (std::uint32_t wanted : m_plan) total += std::min(wanted, limit);
             return total;
         };
-        std::uint32_t low = 0, high = *std::max_element(m_wanted.begin(), m_wanted.end());
+        std::uint32_t low = 0, high = *std::max_element(m_plan.begin(), m_plan.end());
         if (total_at(high) <= samples) return total_at(high);
         m_plan_completes = false;
         while (low < high) {  // largest limit whose total fits
@@ -149,7 +146,7 @@ class PassPlanner {
                 high = middle - 1;
         }
         if (low == 0 && samples > 0) return spread_one_sample(samples);
-        for (std::size_t i = 0; i < m_plan.size(); ++i) m_plan[i] = std::min(m_wanted[i], low);
+        for (std::uint32_t& planned : m_plan) planned = std::min(planned, low);
         return total_at(low);
     }
 
@@ -179,13 +176,13 @@ class PassPlanner {
         const double share = double(samples) / double(std::max<std::uint64_t>(pixels_wanting(), 1));
         double credit = 0.0;
         std::uint64_t total = 0;
-        for (std::size_t i = 0; i < m_plan.size(); ++i) {
-            m_plan[i] = 0;
-            if (m_wanted[i] == 0) continue;
+        for (std::uint32_t& planned : m_plan) {
+            if (planned == 0) continue;  // wants none
+            planned = 0;
             credit += share;
             if (credit >= 1.0) {
                 credit -= 1.0;
-                m_plan[i] = 1;
+                planned = 1;
                 ++total;
             }
         }
@@ -222,7 +219,8 @@ class PassPlanner {
     void update_relative_variance(const Film& film) {
         tbb::parallel_for(0, m_height, [&](int y) {
             for (int x = 0; x < m_width; ++x)
-                m_relative_variance[index(x, y)] = pixel_relative_variance(film, m_window.x0 + x, m_window.y0 + y);
+                m_relative_variance[index(x, y)] =
+                    float(pixel_relative_variance(film, m_window.x0 + x, m_window.y0 + y));
         });
     }
 
@@ -237,7 +235,7 @@ class PassPlanner {
                 sum += m_relative_variance[index(nx, ny)];
                 ++count;
             }
-        return std::max(m_relative_variance[index(x, y)], sum / count);
+        return std::max(double(m_relative_variance[index(x, y)]), sum / count);
     }
 
     CropWindow m_window;
@@ -246,14 +244,14 @@ class PassPlanner {
     std::uint32_t m_cap = 1;
     std::uint32_t m_min_samples = 16;
     double m_noise_target = 0.0;
-    std::vector<std::uint32_t> m_wanted;      // per pixel, before any time limit
-    std::vector<std::uint32_t> m_plan;        // per pixel, this pass
-    std::vector<double> m_relative_variance;  // per pixel, adaptive mode only
+    // Per pixel, this pass: what it wants, then lowered by limit_to.
+    std::vector<std::uint32_t> m_plan;
+    std::vector<float> m_relative_variance;  // per pixel, adaptive mode only
     std::uint64_t m_taken_at_plan = 0;
     std::uint64_t m_pixels_wanting = 0;
     std::uint64_t m_predicted_total = 0;
     bool m_plan_completes = false;
-    bool m_plans_per_pixel = true;  // else m_wanted and m_plan stay empty
+    bool m_plans_per_pixel = true;  // else m_plan stays empty
     const FocalBlurConfidence* m_confidence = nullptr;
 };
 

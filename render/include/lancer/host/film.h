@@ -26,7 +26,7 @@ class Film {
     };
 
     enum class Storage {
-        // Double sums and sums of squares: 60 bytes a pixel.
+        // Double sums and sums of squares, and the counts: 56 bytes a pixel.
         Totals,
         // A float sum and the count, 16 bytes a pixel, for renders whose
         // pixels take at most one sample (a variance needs two): exact for
@@ -73,15 +73,11 @@ class Film {
             ++m_finite[index];
             return;
         }
-        Accumulator& pixel = m_pixels[index];
-        if (!finite) {
-            ++pixel.nonfinite;
-            return;
-        }
+        if (!finite) return;
         const glm::dvec3 value(radiance);
-        pixel.sum += value;
-        pixel.sum_squares += value * value;
-        ++pixel.count;
+        m_sums[index] += value;
+        m_squares[index] += value * value;
+        ++m_finite[index];
     }
 
     // Asks the cache for a pixel's totals ahead of a coming add_sample. The
@@ -90,14 +86,17 @@ class Film {
     // joins the batch, its totals have arrived by then.
     void prefetch(int x, int y) const {
         const std::size_t index = std::size_t(y) * m_width + x;
-        if (m_storage != Storage::Totals) {
+        if (m_storage == Storage::Totals) {
+            // A dvec3 may straddle two cache lines.
+            for (const glm::dvec3* totals : {&m_sums[index], &m_squares[index]}) {
+                const char* first = reinterpret_cast<const char*>(totals);
+                __builtin_prefetch(first, 1);
+                __builtin_prefetch(first + sizeof(glm::dvec3) - 1, 1);
+            }
+        } else {
             __builtin_prefetch(&m_colour_sums[index], 1);
-            if (m_storage == Storage::Sums) __builtin_prefetch(&m_finite[index], 1);
-            return;
         }
-        const char* first = reinterpret_cast<const char*>(&m_pixels[index]);
-        __builtin_prefetch(first, 1);
-        __builtin_prefetch(first + sizeof(Accumulator) - 1, 1);
+        if (m_storage != Storage::MeanOnly) __builtin_prefetch(&m_finite[index], 1);
     }
 
     Color mean(int x, int y) const;                  // black if no samples
@@ -135,9 +134,13 @@ class Film {
     int m_width;
     int m_height;
     Storage m_storage;
-    std::vector<Accumulator> m_pixels;    // Totals
+    // By pixel, each kept by the storages named: one array a quantity, so
+    // a Totals pixel takes 56 bytes (an Accumulator's count of non-finite
+    // samples is the difference of the two counts).
+    std::vector<glm::dvec3> m_sums;       // Totals
+    std::vector<glm::dvec3> m_squares;    // Totals
     std::vector<Color> m_colour_sums;     // MeanOnly, Sums
-    std::vector<std::uint32_t> m_finite;  // Sums: finite samples
+    std::vector<std::uint32_t> m_finite;  // Totals, Sums: finite samples
     // Samples taken per pixel (count + nonfinite), apart from the totals:
     // the host's sweeps over the film read 4 bytes a pixel, not 56. Both
     // storages keep it.
