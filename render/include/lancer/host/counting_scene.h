@@ -56,9 +56,9 @@ class CountingScene final : public RenderScene {
     std::uint64_t rays() const;
 
   private:
-    // One counter per TBB thread slot, each on its own cache line; a slot is
-    // only written by the thread owning that index, so a relaxed load and
-    // store (no locked instruction) suffice.
+    // One counter per thread, each on its own cache line; a slot is only
+    // written by the thread that took it, so a relaxed load and store (no
+    // locked instruction) suffice.
     struct alignas(64) Slot {
         std::atomic<std::uint64_t> count{0};
     };
@@ -66,6 +66,8 @@ class CountingScene final : public RenderScene {
     const RenderScene& m_inner;
     std::unique_ptr<Slot[]> m_slots;
     int m_slot_count;
+    std::uint64_t m_id;                         // distinct for every CountingScene
+    mutable std::atomic<int> m_slots_taken{0};  // by threads, past the shared one
 };
 
 }  // namespace lancer
