@@ -293,7 +293,8 @@ std::vector<std::pair<std::string, std::string>> parameter_list(const ParameterS
 // which samples each pixel takes and what they are, but not the time
 // budget (a resumed render gets a budget of its own).
 CheckpointIdentity checkpoint_identity(const RenderArguments& arguments, const RenderOptions& options,
-                                       const std::string& integrator_name, const ParameterSet& parameters) {
+                                       const std::string& integrator_name, const ParameterSet& parameters,
+                                       Film::Storage storage) {
     std::string joined;
     for (const auto& [name, value] : parameters.values()) joined += name + "=" + value + ";";
     const CropWindow crop = options.crop.value_or(CropWindow{0, 0, options.width, options.height});
@@ -310,6 +311,9 @@ CheckpointIdentity checkpoint_identity(const RenderArguments& arguments, const R
         {"max_spp", std::to_string(options.max_samples_per_pixel)},
         {"noise", std::to_string(options.noise_target)},
         {"min_samples", std::to_string(options.min_samples)},
+        {"film", storage == Film::Storage::Totals ? "double totals"
+                 : storage == Film::Storage::Sums ? "float sums (without --stats)"
+                                                  : "one sample"},
     };
 }
 
@@ -368,13 +372,14 @@ int settle_image_options(const RenderArguments& arguments, const sg::RenderSetti
     return 0;
 }
 
-// Memory before anything is allocated: the film's totals per pixel (what
-// film_storage_for will choose, at most: 20 bytes without a variance, 64
-// with one and the planning of --noise or --time) and the float RGBA copy
-// that writing some formats needs. Refuses what the machine cannot hold;
-// announces a big one (docs/robustness.md).
+// Memory before anything is allocated: the film's totals per pixel (at
+// most what film_storage_for will choose: 24 bytes with the plan of a
+// checkpointed fixed count, 64 with a variance and the planning of --noise
+// or --time) and the float RGBA copy that writing some formats needs.
+// Refuses what the machine cannot hold; announces a big one
+// (docs/robustness.md).
 int check_film_fits(const RenderOptions& options, bool keeps_variance) {
-    const double film_bytes = keeps_variance ? 64.0 : 20.0;
+    const double film_bytes = keeps_variance ? 64.0 : 24.0;
     const double bytes = double(options.width) * double(options.height) * (film_bytes + 4 * sizeof(float));
     const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
     const double gib = double(1ull << 30);
@@ -459,7 +464,14 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
     if (const int status = settle_image_options(arguments, settings, options)) return status;
     options.progress_share = job.progress;
 
-    const bool keeps_variance = arguments.time_option->count() || arguments.noise_option->count() || !job.stats.empty();
+    // Whether the film may keep double totals (film_storage_for): before the
+    // integrator is known, the sample count may yet come from the scene, and
+    // focal blur may ask for more samples.
+    const bool focal_blur = graph->camera && graph->camera->aperture != 0.0 && graph->camera->blur_samples > 0;
+    const int most_samples = std::max(arguments.spp_option->count() ? arguments.spp : settings.samples.value_or(16),
+                                      focal_blur ? graph->camera->blur_samples : 0);
+    const bool keeps_variance = arguments.time_option->count() || arguments.noise_option->count() ||
+                                !job.stats.empty() || focal_blur || most_samples > kMostFloatSummedSamples;
     if (const int status = check_film_fits(options, keeps_variance)) return status;
 
     // Output: the scene's stem in the current folder unless named. Every
@@ -504,17 +516,21 @@ int render_frame(const RenderArguments& arguments, const FrameJob& job, const st
             return status;
 
         const std::string checkpoint_path = checkpoint_path_for(output);
-        const CheckpointIdentity identity = checkpoint_identity(arguments, options, integrator_name, parameters);
         const JobScene scene = compile_job_scene(arguments.scene, std::move(*graph));
         graph.reset();
         // The budget is set below, once parsing's share of it is known; the
         // film's storage only asks whether there is one.
         RenderOptions as_planned = options;
         if (arguments.time_option->count()) as_planned.time_budget_seconds = arguments.time_budget;
-        // The error estimate of a fixed sample count costs 40 bytes a
+        // The error estimate of a fixed sample count costs 36 bytes a
         // pixel: kept when --stats will report it.
         Film film(options.width, options.height,
                   film_storage_for(*scene.scene, *integrator, as_planned, !job.stats.empty()));
+        // A checkpoint resumes into the storage that wrote it: float sums
+        // continued as double ones (or the reverse) would round otherwise
+        // than the uninterrupted render, and variances would be missing.
+        const CheckpointIdentity identity =
+            checkpoint_identity(arguments, options, integrator_name, parameters, film.storage());
         // A render killed before its first checkpoint has nothing to resume:
         // it starts over, so `--resume` after a kill at any moment works.
         // Only the process that writes the files resumes: the others' film

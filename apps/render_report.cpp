@@ -109,7 +109,7 @@ void write_stats_json(const RenderReport& report, const std::string& path) {
 
 std::map<std::string, std::string> stats_metadata(const RenderReport& report) {
     const RenderStats& s = report.stats;
-    return {
+    std::map<std::string, std::string> metadata = {
         {"scene", report.scene},
         {"integrator", report.integrator},
         {"parameters", joined_parameters(report)},
@@ -124,9 +124,13 @@ std::map<std::string, std::string> stats_metadata(const RenderReport& report) {
         {"rays", number(s.rays)},
         {"rays_per_second", number(s.rays_per_second)},
         {"nonfinite_samples", number(s.nonfinite_samples)},
-        {"estimated_rel_rmse", number(s.estimated_rel_rmse)},
         {"interrupted", s.interrupted ? "true" : "false"},
     };
+    // Only an estimate there is: 0 would read as an image without noise
+    // where the film kept no variance (a fixed count without --stats, or
+    // a deterministic integrator).
+    if (s.estimated_rel_rmse > 0.0) metadata["estimated_rel_rmse"] = number(s.estimated_rel_rmse);
+    return metadata;
 }
 
 std::string summary_line(const RenderReport& report) {

@@ -286,6 +286,10 @@ TEST_F(CliProgressive, ResumeAfterKillNineIsBitIdentical) {
     CommandResult result = run_lancer(command(resumed, "--seed 8 --resume -q"));
     EXPECT_EQ(result.exit_code, 1) << result.output;
     EXPECT_CONTAINS(result.output, "seed: checkpoint has '7', this render '8'");
+    // ... as is --stats, whose error estimate needs a film of another kind ...
+    result = run_lancer(command(resumed, "--seed 7 --resume -q --stats '" + out("resumed.json") + "'"));
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_CONTAINS(result.output, "film: checkpoint has 'float sums (without --stats)', this render 'double totals'");
     // ... the same settings continue, on one thread ...
     result = run_lancer(command(resumed, "--seed 7 --resume --threads 1 -q"));
     ASSERT_EQ(result.exit_code, 0) << result.output;

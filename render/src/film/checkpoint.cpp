@@ -10,6 +10,7 @@
 #include <atomic>
 #include <bit>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -189,6 +190,8 @@ void read_checkpoint(const std::string& path, const CheckpointIdentity& expected
         for (int c = 0; c < 3; ++c) ok = ok && reader.get(pixel.sum_squares[c]);
         ok = ok && reader.get(pixel.count) && reader.get(pixel.nonfinite);
         if (!ok) corrupt("the file is truncated");
+        // The film counts samples taken in 32 bits.
+        if (std::uint64_t(pixel.count) + pixel.nonfinite > UINT32_MAX) corrupt("a pixel's sample counts overflow");
     }
     if (reader.offset() + 8 != bytes.size()) corrupt("unexpected data after the pixels");
     film.restore(std::move(pixels));

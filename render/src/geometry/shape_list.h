@@ -51,8 +51,9 @@ class ShapeList {
         unsigned geometry, primitive;
         bool casts_shadow;
     };
-    // The shapes' boxes by axis, one lane a shape (the lanes past the
-    // shapes are empty boxes), so one ray is tested against all at once.
+    // The shapes' boxes by axis, one lane a shape, so one ray is tested
+    // against all at once. The lanes past the shapes hold inverted boxes
+    // (lower FLT_MAX, upper -FLT_MAX) that boxes_met's mask leaves out.
     static constexpr int kLanes = 8;
     static_assert(kMostShapes <= kLanes);
     struct Boxes {

@@ -40,9 +40,13 @@ void CountingScene::count(std::uint64_t queries) const {
     if (mine.scene_id != m_id) {
         // A slot per thread (not per arena index: a thread may work in more
         // than one arena), while they last.
-        const int index = 1 + m_slots_taken.fetch_add(1, std::memory_order_relaxed);
+        // Taken only while some are left, so the counter cannot wrap.
+        int taken = m_slots_taken.load(std::memory_order_relaxed);
+        while (taken + 1 < m_slot_count &&
+               !m_slots_taken.compare_exchange_weak(taken, taken + 1, std::memory_order_relaxed)) {
+        }
         mine.scene_id = m_id;
-        mine.count = index < m_slot_count ? &m_slots[index].count : nullptr;
+        mine.count = taken + 1 < m_slot_count ? &m_slots[taken + 1].count : nullptr;
     }
     if (mine.count) {
         mine.count->store(mine.count->load(std::memory_order_relaxed) + queries, std::memory_order_relaxed);

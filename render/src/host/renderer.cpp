@@ -463,11 +463,17 @@ Film::Storage film_storage_for(const RenderScene& scene, const Integrator& integ
                                bool error_estimate_wanted) {
     if (takes_one_sample(scene, integrator, options)) return Film::Storage::MeanOnly;
     // Adaptive modes and the confidence of a deterministic focal blur read
-    // every pixel's variance.
+    // every pixel's variance; a deterministic integrator has no estimate.
     const bool deterministic = integrator.is_deterministic();
     const bool adaptive = !deterministic && (options.time_budget_seconds > 0.0 || options.noise_target > 0.0);
     const bool confidence = deterministic && scene.camera().has_focal_blur();
-    return adaptive || confidence || error_estimate_wanted ? Film::Storage::Totals : Film::Storage::Sums;
+    const bool estimate = error_estimate_wanted && !deterministic;
+    // Float sums of samples all alike drift by about n 1e-8 of their value:
+    // past kMostFloatSummedSamples a pixel sums in double.
+    int most = options.samples_per_pixel;
+    if (scene.camera().has_focal_blur()) most = std::max(most, scene.camera().focal_blur().samples);
+    const bool many = most > kMostFloatSummedSamples;
+    return adaptive || confidence || estimate || many ? Film::Storage::Totals : Film::Storage::Sums;
 }
 
 RenderStats render_image(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options,

@@ -37,8 +37,9 @@ class Film {
         // a pixel, for renders of a fixed sample count that read no
         // variance (no adaptive sampling, no error estimate asked for). No
         // variance: as if every sample of a pixel were alike. The sum
-        // rounds to float at each sample (a relative error near
-        // sqrt(n) 6e-8 after n samples).
+        // rounds to float at each sample: after n samples a relative error
+        // near sqrt(n) 6e-8 for random ones, up to about n 1e-8 for
+        // samples all alike (renderer.h: kMostFloatSummedSamples).
         Sums,
     };
 
@@ -142,8 +143,8 @@ class Film {
     std::vector<Color> m_colour_sums;     // MeanOnly, Sums
     std::vector<std::uint32_t> m_finite;  // Totals, Sums: finite samples
     // Samples taken per pixel (count + nonfinite), apart from the totals:
-    // the host's sweeps over the film read 4 bytes a pixel, not 56. Both
-    // storages keep it.
+    // the host's sweeps over the film read 4 bytes a pixel, not 56. Every
+    // storage keeps it.
     std::vector<std::uint32_t> m_taken;
     // A value threads update concurrently, copied along with the film.
     template <typename T>

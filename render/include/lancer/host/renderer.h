@@ -105,12 +105,17 @@ struct RenderStats {
     bool interrupted = false;  // options.cancel stopped the render
 };
 
+// The most samples a pixel sums in float (Film::Storage::Sums): samples all
+// alike then drift by up to about 4e-5 of their value.
+inline constexpr int kMostFloatSummedSamples = 4096;
+
 // The film storage a render needs: MeanOnly when no pixel takes more than
 // one sample (fixed at 1 sample, no focal blur), which then needs no
 // variance; Totals when something reads the variance (a time budget or a
 // noise target, a deterministic integrator's focal-blur confidence, or the
-// caller's wish for the error estimate, RenderStats::estimated_rel_rmse);
-// Sums otherwise (a fixed sample count).
+// caller's wish for a Monte Carlo integrator's error estimate,
+// RenderStats::estimated_rel_rmse) or a pixel takes more than
+// kMostFloatSummedSamples; Sums otherwise (a fixed sample count).
 Film::Storage film_storage_for(const RenderScene& scene, const Integrator& integrator, const RenderOptions& options,
                                bool error_estimate_wanted = false);
 
