@@ -327,6 +327,46 @@ TEST(Blob, SingleComponentsHaveClosedFormRadii) {
     EXPECT_FALSE(make_blob_shape(dented)->inside({1, 0, 0}));
 }
 
+// Hundreds of components, found through the blob's tree of their boxes:
+// each isolated sphere keeps its closed-form radius along any ray through
+// it, and every point query (inside, the normal) finds the one it is near.
+TEST(Blob, EveryComponentOfAManyComponentBlobIsFound) {
+    const double R = 1.0, s = 1.0, T = 0.25;
+    const double r = R * std::sqrt(1.0 - std::sqrt(T / s));
+    BlobParameters grid;
+    grid.threshold = T;
+    // 12 x 12 x 3 spheres, 3 apart (no two reach each other), some of them
+    // stretched into ellipsoids, which the tree bounds by their placed boxes.
+    std::vector<DVec3> centres;
+    for (int i = 0; i < 12; ++i)
+        for (int j = 0; j < 12; ++j)
+            for (int k = 0; k < 3; ++k) {
+                const DVec3 centre(3.0 * i, 3.0 * j, 3.0 * k);
+                centres.push_back(centre);
+                grid.components.push_back(BlobComponent{BlobComponent::Kind::Sphere, centre, centre, R, s, DMat4(1.0)});
+            }
+    const auto blob = make_blob_shape(grid);
+    for (std::size_t n = 0; n < centres.size(); n += 7) {
+        const DVec3& c = centres[n];
+        // Along z through the column of three: six crossings, the pair of
+        // this sphere among them.
+        const auto along_z = sorted_crossings(*blob, {c.x, c.y, -5.0}, {0, 0, 1});
+        ASSERT_EQ(along_z.size(), 6u) << n;
+        const double t_in = c.z + 5.0 - r;
+        EXPECT_TRUE(std::any_of(along_z.begin(), along_z.end(), [&](double t) { return std::fabs(t - t_in) < 1e-9; }))
+            << n;
+        // Along x from just before it: it and the rest of its row (a shape
+        // keeps its first 16 crossings).
+        const auto along_x = sorted_crossings(*blob, {c.x - 1.5, c.y, c.z}, {1, 0, 0});
+        const std::size_t rest = std::size_t(12 - int(c.x / 3.0));
+        ASSERT_EQ(along_x.size(), std::min<std::size_t>(2 * rest, ShapeCrossings::kCapacity)) << n;
+        EXPECT_NEAR(along_x[0], 1.5 - r, 1e-9) << n;
+        EXPECT_TRUE(blob->inside(c)) << n;
+        EXPECT_FALSE(blob->inside(c + DVec3(1.5, 0.0, 0.0))) << n;
+        EXPECT_NEAR(blob->surface(c + DVec3(0.0, r, 0.0), 0).normal.y, 1.0, 1e-9) << n;
+    }
+}
+
 TEST(Prism, LinearAndConicSweeps) {
     PrismParameters square;
     square.points = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}};
