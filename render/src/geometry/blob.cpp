@@ -84,10 +84,12 @@ class ComponentTree {
     explicit ComponentTree(const std::vector<Box>& boxes) : m_boxes(boxes) {
         m_order.resize(boxes.size());
         for (std::size_t i = 0; i < boxes.size(); ++i) m_order[i] = std::uint32_t(i);
-        if (!boxes.empty()) build(0, boxes.size());
+        if (boxes.empty()) return;
+        m_nodes.resize(1);
+        build(0, 0, boxes.size(), 0);
     }
 
-    // The components whose boxes `visit` accepts (a function of a Box),
+    // The components whose boxes `accept` takes (a function of a Box),
     // sorted by index, into `found`.
     template <class Accept>
     void collect(const Accept& accept, std::vector<std::uint32_t>& found) const {
@@ -117,19 +119,17 @@ class ComponentTree {
         std::uint32_t count = 0;  // leaf: components; 0 for an inner node
     };
 
-    // Node for m_order[begin, end), split at the median along its box's
-    // longest axis; returns its index.
-    std::uint32_t build(std::size_t begin, std::size_t end) {
-        const std::uint32_t index = std::uint32_t(m_nodes.size());
-        m_nodes.emplace_back();
+    // Fills node `index` for m_order[begin, end), split at the median along
+    // its box's longest axis into two children made next to each other.
+    void build(std::uint32_t index, std::size_t begin, std::size_t end, int depth) {
         Box box;
         for (std::size_t i = begin; i < end; ++i) box.add(m_boxes[m_order[i]]);
         m_nodes[index].box = box;
-        // A tree at most 32 deep: the traversal's stack holds two per level.
-        if (end - begin <= kLeafSize || m_depth >= 30) {
+        // A tree at most 31 deep: the traversal's stack holds two per level.
+        if (end - begin <= kLeafSize || depth >= 30) {
             m_nodes[index].first = std::uint32_t(begin);
             m_nodes[index].count = std::uint32_t(end - begin);
-            return index;
+            return;
         }
         const DVec3 extent = box.upper - box.lower;
         const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
@@ -139,27 +139,20 @@ class ComponentTree {
                              return m_boxes[a].lower[axis] + m_boxes[a].upper[axis] <
                                     m_boxes[b].lower[axis] + m_boxes[b].upper[axis];
                          });
-        // Children next to each other: the inner node names the first.
         const std::uint32_t children = std::uint32_t(m_nodes.size());
-        m_nodes.emplace_back();
-        m_nodes.emplace_back();
+        m_nodes.resize(m_nodes.size() + 2);
         m_nodes[index].first = children;
-        ++m_depth;
-        const std::uint32_t left = build(begin, middle), right = build(middle, end);
-        --m_depth;
-        m_nodes[children] = m_nodes[left];
-        m_nodes[children + 1] = m_nodes[right];
-        return index;
+        build(children, begin, middle, depth + 1);
+        build(children + 1, middle, end, depth + 1);
     }
 
     std::vector<Box> m_boxes;
     std::vector<std::uint32_t> m_order;
     std::vector<Node> m_nodes;
-    int m_depth = 0;
 };
 
-// The box in blob space of a component's reach.
-Box reach_of(const BlobComponent& c) {
+// The box in blob space of a component's reach: its placed corners.
+Box placed_box_of(const BlobComponent& c) {
     Box box;
     const DVec3 r(c.radius);
     const DVec3 ends[2] = {c.center, c.kind == BlobComponent::Kind::Cylinder ? c.apex : c.center};
@@ -170,7 +163,12 @@ Box reach_of(const BlobComponent& c) {
             box.lower = glm::min(box.lower, p);
             box.upper = glm::max(box.upper, p);
         }
-    // The corners' own rounding.
+    return box;
+}
+
+// The same, grown by the corners' own rounding, for the tree.
+Box reach_of(const BlobComponent& c) {
+    Box box = placed_box_of(c);
     const DVec3 margin = 1e-9 * (glm::abs(box.lower) + glm::abs(box.upper) + DVec3(1e-300));
     box.lower -= margin;
     box.upper += margin;
@@ -269,21 +267,10 @@ class BlobShape final : public Shape {
     bool inside(const DVec3& p) const override { return field(p) > m_blob.threshold - 1e-10; }
 
     bool bounds(DVec3& lower, DVec3& upper) const override {
-        lower = DVec3(INFINITY);
-        upper = DVec3(-INFINITY);
-        for (const Placed& placed : m_placed) {
-            const BlobComponent& c = placed.component;
-            const DVec3 r(c.radius);
-            const DVec3 ends[2] = {c.center, c.kind == BlobComponent::Kind::Cylinder ? c.apex : c.center};
-            for (const DVec3& end : ends)
-                for (int corner = 0; corner < 8; ++corner) {
-                    const DVec3 local =
-                        end + DVec3(corner & 1 ? r.x : -r.x, corner & 2 ? r.y : -r.y, corner & 4 ? r.z : -r.z);
-                    const DVec3 p(c.blob_from_component * glm::dvec4(local, 1.0));
-                    lower = glm::min(lower, p);
-                    upper = glm::max(upper, p);
-                }
-        }
+        Box all;
+        for (const Placed& placed : m_placed) all.add(placed_box_of(placed.component));
+        lower = all.lower;
+        upper = all.upper;
         // A threshold at or below 0 makes all space outside the components inside.
         return m_blob.threshold > 0.0 && lower.x <= upper.x;
     }

@@ -35,8 +35,7 @@ ShapeList::Boxes ShapeList::empty_boxes() {
 void ShapeList::add(const Instance& instance, std::uint32_t index, unsigned geometry, unsigned primitive) {
     if (m_shapes.size() >= std::size_t(kLanes)) throw std::logic_error("ShapeList: more shapes than it traces");
     const std::size_t lane = m_shapes.size();
-    m_shapes.push_back(
-        Entry{instance.bounds_lower, instance.bounds_upper, index, geometry, primitive, instance.casts_shadow});
+    m_shapes.push_back(Entry{index, geometry, primitive, instance.casts_shadow});
     for (int axis = 0; axis < 3; ++axis) {
         m_boxes.lower[axis][lane] = instance.bounds_lower[axis];
         m_boxes.upper[axis][lane] = instance.bounds_upper[axis];
@@ -151,9 +150,11 @@ bool ShapeList::may_meet_hull(const DVec3* points, int point_count, const DVec3*
             hull_max[a] = std::max(hull_max[a], x);
         }
     }
-    for (const Entry& shape : m_shapes) {
-        if (!shape.casts_shadow) continue;
-        const DVec3 lower = DVec3(shape.lower) - margin, upper = DVec3(shape.upper) + margin;
+    for (std::size_t lane = 0; lane < m_shapes.size(); ++lane) {
+        if (!m_shapes[lane].casts_shadow) continue;
+        const DVec3 shape_lower(m_boxes.lower[0][lane], m_boxes.lower[1][lane], m_boxes.lower[2][lane]);
+        const DVec3 shape_upper(m_boxes.upper[0][lane], m_boxes.upper[1][lane], m_boxes.upper[2][lane]);
+        const DVec3 lower = shape_lower - margin, upper = shape_upper + margin;
         // The world axes: the two boxes.
         if (glm::any(glm::lessThan(hull_upper, lower)) || glm::any(glm::lessThan(upper, hull_lower))) continue;
         const DVec3 centre = 0.5 * (lower + upper), half = 0.5 * (upper - lower);

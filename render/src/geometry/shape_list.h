@@ -45,8 +45,7 @@ class ShapeList {
     bool may_meet_hull(const DVec3* points, int point_count, const DVec3* axes, int axis_count, double margin) const;
 
   private:
-    struct Entry {
-        Vec3 lower, upper;  // world, conservative
+    struct Entry {  // its world box, conservative, is its lane of m_boxes
         std::uint32_t instance;
         unsigned geometry, primitive;
         bool casts_shadow;

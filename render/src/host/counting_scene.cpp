@@ -39,8 +39,8 @@ void CountingScene::count(std::uint64_t queries) const {
     ThreadSlot& mine = t_slot;
     if (mine.scene_id != m_id) {
         // A slot per thread (not per arena index: a thread may work in more
-        // than one arena), while they last.
-        // Taken only while some are left, so the counter cannot wrap.
+        // than one arena), taken only while some are left, so the counter
+        // cannot wrap.
         int taken = m_slots_taken.load(std::memory_order_relaxed);
         while (taken + 1 < m_slot_count &&
                !m_slots_taken.compare_exchange_weak(taken, taken + 1, std::memory_order_relaxed)) {

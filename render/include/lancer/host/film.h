@@ -68,17 +68,15 @@ class Film {
             m_colour_sums[index] = finite ? m_colour_sums[index] + radiance : Color(std::nanf(""));
             return;
         }
+        if (!finite) return;
+        ++m_finite[index];
         if (m_storage == Storage::Sums) {
-            if (!finite) return;
             m_colour_sums[index] += radiance;
-            ++m_finite[index];
             return;
         }
-        if (!finite) return;
         const glm::dvec3 value(radiance);
         m_sums[index] += value;
         m_squares[index] += value * value;
-        ++m_finite[index];
     }
 
     // Asks the cache for a pixel's totals ahead of a coming add_sample. The
