@@ -560,6 +560,7 @@ class Evaluator {
     // a FUNCTION_LITERAL, or FUNCTION_OPEN before a pattern, pigment or transform body.
     std::optional<Symbol> read_function(const RawToken& keyword);
     Symbol symbol_for_identifier(const RawToken& raw);
+    Symbol symbol_for_constant(const RawToken& raw);
     Kind token_for_value(const Value& value);
     Symbol make_symbol(Kind kind, const RawToken& raw, Value value = {});
     const RawToken* peek_raw();

@@ -373,7 +373,36 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
     if (keyword != keyword_table().end()) return make_symbol(keyword->second, raw);
     if (builtin_names().count(name)) return make_symbol(Parser::token::TOK_BUILTIN, raw);
 
-    // Constants and read-only built-in identifiers.
+    // Constants and read-only built-in identifiers: one set lookup keeps a
+    // scene's own names (most identifiers in a loop) off the chain below.
+    if (constant_names().count(name)) return symbol_for_constant(raw);
+    if (const Value* value = lookup(name)) {
+        if (auto deprecated = m_deprecated.find(name); deprecated != m_deprecated.end()) {
+            Deprecation& d = deprecated->second;
+            if (!d.once || !d.warned)
+                warning(raw.location, "'" + name + "' is deprecated" + (d.message.empty() ? "" : ": " + d.message));
+            d.warned = true;
+        }
+        Value copy = *value;
+        copy.boolean_literal = false;
+        Symbol symbol = make_symbol(token_for_value(copy), raw, std::move(copy));
+        if (std::optional<VariableReference> variable = variable_of(name))
+            m_last_identifier = IdentifierUse{symbol.location, std::move(*variable)};
+        return symbol;
+    }
+    if (unsupported_words().count(name)) {
+        error(raw.location, "'" + name + "' is a POV-Ray feature that lancer does not support");
+        m_suppress_syntax_errors = true;
+        abort_parse();
+        return make_symbol(Parser::token::TOK_UNSUPPORTED, raw);
+    }
+    m_last_undeclared = name;
+    return make_symbol(Parser::token::TOK_UNDECLARED_ID, raw);
+}
+
+// A constant or read-only built-in identifier (constant_names()).
+Evaluator::Symbol Evaluator::symbol_for_constant(const RawToken& raw) {
+    const std::string& name = raw.text;
     auto constant = [&](Value v) { return make_symbol(Parser::token::TOK_CONSTANT, raw, std::move(v)); };
     auto boolean = [&](bool on) {
         Value v = Value::number(on ? 1.0 : 0.0);
@@ -429,27 +458,8 @@ Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
         }
         return boolean(defined_target);
     }
-    if (const Value* value = lookup(name)) {
-        if (auto deprecated = m_deprecated.find(name); deprecated != m_deprecated.end()) {
-            Deprecation& d = deprecated->second;
-            if (!d.once || !d.warned)
-                warning(raw.location, "'" + name + "' is deprecated" + (d.message.empty() ? "" : ": " + d.message));
-            d.warned = true;
-        }
-        Value copy = *value;
-        copy.boolean_literal = false;
-        Symbol symbol = make_symbol(token_for_value(copy), raw, std::move(copy));
-        if (std::optional<VariableReference> variable = variable_of(name))
-            m_last_identifier = IdentifierUse{symbol.location, std::move(*variable)};
-        return symbol;
-    }
-    if (unsupported_words().count(name)) {
-        error(raw.location, "'" + name + "' is a POV-Ray feature that lancer does not support");
-        m_suppress_syntax_errors = true;
-        abort_parse();
-        return make_symbol(Parser::token::TOK_UNSUPPORTED, raw);
-    }
-    m_last_undeclared = name;
+    error(raw.location, "internal: '" + name + "' is listed as a constant but has no value");
+    abort_parse();
     return make_symbol(Parser::token::TOK_UNDECLARED_ID, raw);
 }
 
