@@ -75,7 +75,7 @@ Value Evaluator::make_array(const std::vector<int>& sizes, const ArrayInit& init
     }
     Value value;
     value.kind = Value::Kind::Array;
-    value.array = data;
+    value.payload = data;
     value.size = int(sizes.size());
     value.location = at;
     return value;
@@ -108,7 +108,7 @@ bool Evaluator::read_array_indices(const ArrayData& data, const sg::SourceLocati
 }
 
 Value Evaluator::array_element(const Value& array, const sg::SourceLocation& at, std::size_t* flat_index) {
-    const std::shared_ptr<ArrayData> data = array.array;  // the element outlives a reassignment
+    const std::shared_ptr<ArrayData> data = array.array();  // the element outlives a reassignment
     std::size_t flat = 0;
     std::vector<int> indices;
     if (!data || !read_array_indices(*data, at, flat, indices)) {
@@ -129,10 +129,10 @@ bool Evaluator::identifier_defined(const std::string& name, const sg::SourceLoca
     if (!found) return m_macros.count(name) > 0;
     // #ifdef (A[i]) and defined(A[i]): whether the element has a value.
     const RawToken* next = peek_raw();
-    if (found->kind != Value::Kind::Array || !found->array || !next || next->kind != RawKind::Punct ||
+    if (found->kind != Value::Kind::Array || !found->array() || !next || next->kind != RawKind::Punct ||
         next->text != "[")
         return true;
-    const std::shared_ptr<ArrayData> data = found->array;
+    const std::shared_ptr<ArrayData> data = found->array();
     std::size_t flat = 0;
     std::vector<int> indices;
     if (!read_array_indices(*data, at, flat, indices)) {
@@ -145,11 +145,11 @@ bool Evaluator::identifier_defined(const std::string& name, const sg::SourceLoca
 void Evaluator::assign_array_element(const std::string& name, const RawToken& directive, bool local,
                                      const sg::SourceLocation& where) {
     const Value* found = lookup(name);
-    if (!found || found->kind != Value::Kind::Array || !found->array) {
+    if (!found || found->kind != Value::Kind::Array || !found->array()) {
         error(where, "'" + name + "' is not an array; declare it first: #declare " + name + " = array[N];");
         return abort_parse();
     }
-    const std::shared_ptr<ArrayData> data = found->array;
+    const std::shared_ptr<ArrayData> data = found->array();
     std::size_t flat = 0;
     std::vector<int> indices;
     if (!read_array_indices(*data, where, flat, indices)) return abort_parse();

@@ -129,18 +129,18 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
 
     if (name == "dimensions" || name == "dimension_size") {
         const Value& a = args[0];
-        if (a.kind != Value::Kind::Array || !a.array) {
+        if (a.kind != Value::Kind::Array || !a.array()) {
             error(where.begin, name + "() needs an array, got " + describe(a));
             return Value::number(0.0);
         }
-        if (name == "dimensions") return number(double(a.array->sizes.size()));
+        if (name == "dimensions") return number(double(a.array()->sizes.size()));
         const double d = c.f(1);  // POV counts dimensions from 1
-        if (!(d >= 1.0) || d > double(a.array->sizes.size())) {
-            error(where.begin, "dimension_size(): the array has " + std::to_string(a.array->sizes.size()) +
+        if (!(d >= 1.0) || d > double(a.array()->sizes.size())) {
+            error(where.begin, "dimension_size(): the array has " + std::to_string(a.array()->sizes.size()) +
                                    " dimension(s), asked for " + std::to_string(d));
             return Value::number(0.0);
         }
-        return number(double(a.array->sizes[std::size_t(d) - 1]));
+        return number(double(a.array()->sizes[std::size_t(d) - 1]));
     }
 
     // Float functions.

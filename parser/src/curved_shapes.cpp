@@ -326,15 +326,15 @@ std::function<void(sg::HeightField&)> Evaluator::unsupported_height_field_format
 
 std::function<void(sg::HeightField&)> Evaluator::height_field_function(const Value& function,
                                                                        const sg::SourceLocation& at) {
-    if (function.kind != Value::Kind::Function || !function.function) return [](sg::HeightField&) {};
+    if (function.kind != Value::Kind::Function || !function.function()) return [](sg::HeightField&) {};
     if (!function.image_size) {
         error(at, "height_field: a function needs its image size, as in function 256, 256 { … }");
         return [](sg::HeightField&) {};
     }
-    if (const int missing = sg::first_unsupported_internal(*function.function); missing >= 0)
+    if (const int missing = sg::first_unsupported_internal(*function.function()); missing >= 0)
         error(at, "POV-Ray 3.7 has no internal function " + std::to_string(missing));
     const auto size = *function.image_size;
-    return [f = function.function, size, at](sg::HeightField& h) {
+    return [f = function.function(), size, at](sg::HeightField& h) {
         h.function = f;
         h.function_width = size.first;
         h.function_height = size.second;

@@ -137,13 +137,13 @@ void Evaluator::directive_declare(const RawToken& d, bool local) {
         warning(where, "missing ';' after the value of #" + d.text + " " + name +
                            " (POV-Ray 3.5+ requires it for floats, vectors, colours and strings)");
     }
-    if (value.kind == Value::Kind::Texture && value.texture && value.texture->name.empty()) {
-        auto named = std::make_shared<sg::Material>(*value.texture);
+    if (value.kind == Value::Kind::Texture && value.texture() && value.texture()->name.empty()) {
+        auto named = std::make_shared<sg::Material>(*value.texture());
         named->name = name;
-        value.texture = named;
+        value.payload = named;
     }
     // #declare B = A copies the array (a macro's argument stays A itself).
-    if (value.kind == Value::Kind::Array && value.array) value.array = std::make_shared<ArrayData>(*value.array);
+    if (value.kind == Value::Kind::Array && value.array()) value.payload = std::make_shared<ArrayData>(*value.array());
     // The ';' may close the value inside the macro (`Q;` as its last
     // words): the name still belongs where the directive stands.
     store(name, std::move(value), local, where, directive_scope);
@@ -639,10 +639,10 @@ void Evaluator::directive_default(const RawToken& d) {
         if (m_aborted) return;
         take_punct(";");
         switch (value.kind) {
-        case Value::Kind::Texture: *texture = *value.texture; break;
-        case Value::Kind::Pigment: texture->pigment = *value.pigment; break;
-        case Value::Kind::Finish: texture->finish = *value.finish; break;
-        case Value::Kind::Normal: texture->normal = value.normal; break;
+        case Value::Kind::Texture: *texture = *value.texture(); break;
+        case Value::Kind::Pigment: texture->pigment = *value.pigment(); break;
+        case Value::Kind::Finish: texture->finish = *value.finish(); break;
+        case Value::Kind::Normal: texture->normal = value.normal(); break;
         default:
             error(d.location, "#default expects a texture, pigment, normal or finish, found " + describe(value));
             return;

@@ -49,7 +49,7 @@ int channel_of(const std::string& member) {
 Value function_value(const sg::FunctionRef& f, const sg::SourceLocation& at) {
     Value value;
     value.kind = Value::Kind::Function;
-    value.function = f;
+    value.payload = f;
     value.location = at;
     return value;
 }
@@ -331,8 +331,8 @@ class FunctionCompiler {
         if (name == "true" || name == "yes" || name == "on") return constant(1.0);
         if (name == "false" || name == "no" || name == "off") return constant(0.0);
         if (const Value* value = m_ev.lookup(name)) {
-            if (value->kind == Value::Kind::Function && value->function) {
-                call(value->function, name);
+            if (value->kind == Value::Kind::Function && value->function()) {
+                call(value->function(), name);
                 return;
             }
             if (value->kind == Value::Kind::Float) return constant(value->v[0]);
@@ -529,7 +529,7 @@ Value Evaluator::call_function(const Value& function, const std::vector<Value>& 
     std::vector<double> numbers;
     for (std::size_t i = 0; i < arguments.size(); ++i) numbers.push_back(to_float(arguments[i], where, "an argument"));
     try {
-        const sg::Function& f = *function.function;
+        const sg::Function& f = *function.function();
         if (f.pigment) {
             if (!m_options.function_natives)
                 throw sg::FunctionError("a pigment function is evaluated only while rendering");
@@ -583,8 +583,8 @@ Value Evaluator::pigment_function(const std::shared_ptr<sg::Pigment>& pigment, c
 Value Evaluator::spline_function(const Value& spline, const sg::SourceLocation& at) {
     auto f = std::make_shared<sg::Function>();
     f->parameters = {"x", "y", "z"};
-    if (spline.kind == Value::Kind::Spline && spline.spline && !spline.spline->entries.empty()) {
-        std::shared_ptr<const SplineData> data = spline.spline;
+    if (spline.kind == Value::Kind::Spline && spline.spline() && !spline.spline()->entries.empty()) {
+        std::shared_ptr<const SplineData> data = spline.spline();
         f->spline = [data](double t) { return spline_at(*data, data->kind, t); };
         f->spline_terms = data->terms;
     } else {
@@ -602,7 +602,7 @@ Value Evaluator::transform_function(const sg::Mat4& transform, const sg::SourceL
 }
 
 Evaluator::PatternEdit Evaluator::function_pattern(const Value& function, const sg::SourceLocation& at) {
-    sg::FunctionRef f = function.function;
+    sg::FunctionRef f = function.function();
     if (f)
         if (const int missing = sg::first_unsupported_internal(*f); missing >= 0)
             error(at, "POV-Ray 3.7 has no internal function " + std::to_string(missing));

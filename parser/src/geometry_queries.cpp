@@ -15,7 +15,7 @@ namespace {
 constexpr double kUnboundedExtent = 1e10;
 
 std::shared_ptr<const sg::Object> shared_object(const Value& value) {
-    return std::shared_ptr<const sg::Object>(value.shape, &value.shape->object);
+    return std::shared_ptr<const sg::Object>(value.shape(), &value.shape()->object);
 }
 
 }  // namespace
@@ -38,7 +38,7 @@ Value Evaluator::trace(const Value& object, const SourceRange& wo, const Value& 
         return Value::vec3(sg::Vec3(0.0));
     }
     const sg::GeometryQueries* queries = geometry_queries("trace", where.begin);
-    if (!queries || !object.shape) return Value::vec3(sg::Vec3(0.0));
+    if (!queries || !object.shape()) return Value::vec3(sg::Vec3(0.0));
     sg::GeometryQueries::Crossing crossing;
     try {
         crossing = queries->trace(shared_object(object), from, along);
@@ -57,7 +57,7 @@ Value Evaluator::inside(const Value& object, const SourceRange& wo, const Value&
     const double components[3] = {p.x, p.y, p.z};
     if (!check_renderable(components, 3, wp, "inside()'s point")) return Value::number(0.0);
     const sg::GeometryQueries* queries = geometry_queries("inside", wo.begin);
-    if (!queries || !object.shape) return Value::number(0.0);
+    if (!queries || !object.shape()) return Value::number(0.0);
     try {
         return Value::number(queries->inside(shared_object(object), p) ? 1.0 : 0.0);
     } catch (const std::exception& e) {
@@ -69,7 +69,7 @@ Value Evaluator::inside(const Value& object, const SourceRange& wo, const Value&
 Value Evaluator::extent(const Value& object, const SourceRange& wo, bool upper_corner) {
     const std::string what = upper_corner ? "max_extent" : "min_extent";
     const sg::GeometryQueries* queries = geometry_queries(what, wo.begin);
-    if (!queries || !object.shape) return Value::vec3(sg::Vec3(0.0));
+    if (!queries || !object.shape()) return Value::vec3(sg::Vec3(0.0));
     sg::Vec3 lower(-kUnboundedExtent), upper(kUnboundedExtent);
     try {
         if (!queries->bounds(shared_object(object), lower, upper)) {

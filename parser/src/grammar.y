@@ -179,10 +179,10 @@ Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
 %nterm <std::function<void(sg::Fog&)>> fog_item
 %nterm <Edits<sg::Media>> media_items scattering_items
 %nterm <std::function<void(sg::Media&)>> media_item
-%nterm <sg::Light> light
+%nterm <std::shared_ptr<sg::Light>> light
 %nterm <Edits<sg::Light>> light_items
 %nterm <std::function<void(sg::Light&)>> light_item
-%nterm <CameraSpec> camera
+%nterm <std::shared_ptr<CameraSpec>> camera
 %nterm <Edits<CameraSpec>> camera_items
 %nterm <std::function<void(CameraSpec&)>> camera_item
 %nterm <sg::Camera::Projection> camera_type
@@ -332,8 +332,8 @@ scene_items
 
 scene_item
   : object             { ev.add_object($1); }
-  | light              { ev.add_light($1, sg::Mat4(1.0)); }
-  | camera             { ev.set_camera($1); }
+  | light              { ev.add_light(*$1, sg::Mat4(1.0)); }
+  | camera             { ev.set_camera(*$1); }
   | "background" "{" colour "}"   {
         const sg::Color colour = ev.to_color($3, @3);
         ev.scene().background = colour.rgb;
@@ -356,20 +356,20 @@ declared_value
 /* Everything a declaration holds but a float, vector, colour or string. */
 declared_non_scalar
   : object             { $$ = ev.object_value($1); }
-  | texture_layers end_value { $$.kind = Value::Kind::Texture; $$.texture = $1; }
-  | pigment            { $$.kind = Value::Kind::Pigment; $$.pigment = $1; }
-  | finish             { $$.kind = Value::Kind::Finish; $$.finish = $1; }
-  | interior           { $$.kind = Value::Kind::Interior; $$.interior = $1; }
-  | media              { $$.kind = Value::Kind::Media; $$.media = $1; }
-  | sky_sphere         { $$.kind = Value::Kind::SkySphere; $$.sky_sphere = $1; }
-  | fog                { $$.kind = Value::Kind::Fog; $$.fog = $1; }
-  | rainbow            { $$.kind = Value::Kind::Rainbow; $$.rainbow = $1; }
-  | "density" "{" pigment_edits "}" { $$.kind = Value::Kind::Pigment; $$.pigment = ev.build_density($3, LOC(@1)); }
-  | material           { $$.kind = Value::Kind::Texture; $$.texture = $1; }
-  | camera             { $$.kind = Value::Kind::Camera; $$.camera = std::make_shared<CameraSpec>($1); }
-  | light              { $$.kind = Value::Kind::Light; $$.light = std::make_shared<sg::Light>($1); }
-  | transform_block    { $$.kind = Value::Kind::Transform; $$.transform = $1; }
-  | normal             { $$.kind = Value::Kind::Normal; $$.normal = $1; }
+  | texture_layers end_value { $$.kind = Value::Kind::Texture; $$.payload = $1; }
+  | pigment            { $$.kind = Value::Kind::Pigment; $$.payload = $1; }
+  | finish             { $$.kind = Value::Kind::Finish; $$.payload = $1; }
+  | interior           { $$.kind = Value::Kind::Interior; $$.payload = $1; }
+  | media              { $$.kind = Value::Kind::Media; $$.payload = $1; }
+  | sky_sphere         { $$.kind = Value::Kind::SkySphere; $$.payload = $1; }
+  | fog                { $$.kind = Value::Kind::Fog; $$.payload = $1; }
+  | rainbow            { $$.kind = Value::Kind::Rainbow; $$.payload = $1; }
+  | "density" "{" pigment_edits "}" { $$.kind = Value::Kind::Pigment; $$.payload = ev.build_density($3, LOC(@1)); }
+  | material           { $$.kind = Value::Kind::Texture; $$.payload = $1; }
+  | camera             { $$.kind = Value::Kind::Camera; $$.payload = std::move($1); }
+  | light              { $$.kind = Value::Kind::Light; $$.payload = std::move($1); }
+  | transform_block    { $$.kind = Value::Kind::Transform; $$.set_transform($1); }
+  | normal             { $$.kind = Value::Kind::Normal; $$.payload = $1; }
   | FUNCTION_LITERAL   { $$ = std::move($1.value); }
   /* The barrier keeps a directive after `array[N]` (no ; needed) unrun
    * while it is only looked at. */
@@ -380,9 +380,9 @@ declared_non_scalar
   | FUNCTION_OPEN transform_block "}" { $$ = ev.transform_function($2, LOC(@1)); }
   | FUNCTION_OPEN spline_literal "}" { $$ = ev.spline_function($2, LOC(@1)); }
   | spline_literal     { $$ = std::move($1); }
-  | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
-  | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
-  | normal_map         { $$.kind = Value::Kind::NormalMap; $$.normal_map = $1; }
+  | color_map          { $$.kind = Value::Kind::ColorMap; $$.payload = $1; }
+  | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.payload = $1; }
+  | normal_map         { $$.kind = Value::Kind::NormalMap; $$.payload = $1; }
   | declared_identifier { $$ = std::move($1); }
   ;
 
@@ -489,11 +489,11 @@ object
   | "mesh" "{" mesh_items "}"
       { $$ = ev.make_mesh(LOC(@1)); ev.apply($$, $3); ev.finish_mesh(*$$, LOC(@1)); }
   | "mesh" "{" OBJECT_ID object_mods "}"
-      { $$ = ev.declared_mesh($3.value.shape, $3.text, sg::Object::Kind::Mesh, LOC(@1)); ev.apply($$, $4); }
+      { $$ = ev.declared_mesh($3.value.shape(), $3.text, sg::Object::Kind::Mesh, LOC(@1)); ev.apply($$, $4); }
   | "mesh2" "{" mesh2_sections object_mods "}"
       { $$ = ev.make_mesh2($3, LOC(@1)); ev.apply($$, $4); }
   | "mesh2" "{" OBJECT_ID object_mods "}"
-      { $$ = ev.declared_mesh($3.value.shape, $3.text, sg::Object::Kind::Mesh2, LOC(@1)); ev.apply($$, $4); }
+      { $$ = ev.declared_mesh($3.value.shape(), $3.text, sg::Object::Kind::Mesh2, LOC(@1)); ev.apply($$, $4); }
   | "obj_mesh" "{" expr object_mods "}"
       { $$ = ev.make_obj_mesh($3, @3, LOC(@1)); ev.apply($$, $4); }
   | "union" "{" union_items "}"
@@ -511,9 +511,9 @@ object
   ;
 
 object_ref
-  : OBJECT_ID          { $$ = std::make_shared<ShapeValue>(*$1.value.shape); $$->object.name = $1.text; }
+  : OBJECT_ID          { $$ = std::make_shared<ShapeValue>(*$1.value.shape()); $$->object.name = $1.text; }
   | object             { $$ = std::move($1); }
-  | LIGHT_ID           { $$ = ev.make_union(LOC(@1)); $$->lights.push_back(*$1.value.light); }
+  | LIGHT_ID           { $$ = ev.make_union(LOC(@1)); $$->lights.push_back(*$1.value.light()); }
   | UNDECLARED_ID      { ev.unknown_identifier($1.text, LOC(@1), "an object"); $$ = ev.make_union(LOC(@1)); }
   ;
 
@@ -551,7 +551,7 @@ object_mod
 clip_objects
   : %empty             {}
   | clip_objects object { $$ = std::move($1); $$.push_back($2); }
-  | clip_objects OBJECT_ID { $$ = std::move($1); $$.push_back(std::make_shared<ShapeValue>(*$2.value.shape)); }
+  | clip_objects OBJECT_ID { $$ = std::move($1); $$.push_back(std::make_shared<ShapeValue>(*$2.value.shape())); }
   | clip_objects transform_item { $$ = std::move($1);
                                   for (auto& o : $$) { auto moved = std::make_shared<ShapeValue>(*o);
                                                        ev.apply(moved, {ev.transform_edit($2)}); o = moved; } }
@@ -754,7 +754,7 @@ union_items
 
 union_item
   : object             { $$ = ev.child_edit($1); }
-  | light              { sg::Light light = $1; $$ = [light](ShapeValue& s) { s.lights.push_back(light); }; }
+  | light              { sg::Light light = *$1; $$ = [light](ShapeValue& s) { s.lights.push_back(light); }; }
   | object_mod         { $$ = std::move($1); }
   ;
 
@@ -844,14 +844,14 @@ transform_item
   ;
 
 transform_block
-  : "transform" TRANSFORM_ID { $$ = $2.value.transform; }
+  : "transform" TRANSFORM_ID { $$ = $2.value.transform(); }
   | "transform" "{" transform_items "}" { $$ = std::move($3); }
   ;
 
 transform_items
   : %empty             { $$ = sg::Mat4(1.0); }
   | transform_items transform_item { $$ = $2 * $1; }
-  | transform_items TRANSFORM_ID   { $$ = $2.value.transform * $1; }
+  | transform_items TRANSFORM_ID   { $$ = $2.value.transform() * $1; }
   | transform_items "inverse"      { $$ = ev.inverse($1, @2); }
   ;
 
@@ -886,7 +886,7 @@ texture_map_entries
 
 texture_items
   : %empty %prec OPT_EMPTY {}
-  | texture_items TEXTURE_ID { $$ = std::move($1); auto t = $2.value.texture;
+  | texture_items TEXTURE_ID { $$ = std::move($1); auto t = $2.value.texture();
                                $$.push_back([t](sg::Material& m) { m = *t; }); }
   | texture_items UNDECLARED_ID { $$ = std::move($1); ev.unknown_identifier($2.text, LOC(@2), "a texture"); }
   | texture_items pigment_block { $$ = std::move($1); $$.push_back(ev.material_pigment_edit($2, LOC(@2))); }
@@ -918,7 +918,7 @@ material
 material_items
   : %empty             {}
   /* A declared material: its texture and its interior. */
-  | material_items TEXTURE_ID { $$ = std::move($1); auto t = $2.value.texture;
+  | material_items TEXTURE_ID { $$ = std::move($1); auto t = $2.value.texture();
                                 $$.push_back([t](sg::Material& m) { m = *t; }); }
   | material_items texture  { $$ = std::move($1); auto t = $2;
                               $$.push_back([t](sg::Material& m) { sg::Interior keep = m.interior; const bool had = m.has_interior;
@@ -953,7 +953,7 @@ pigment_edits
 
 pigment_start
   : %empty %prec OPT_EMPTY { $$ = [](sg::Pigment&) {}; }
-  | PIGMENT_ID         { auto p = $1.value.pigment; $$ = [p](sg::Pigment& target) { target = *p; }; }
+  | PIGMENT_ID         { auto p = $1.value.pigment(); $$ = [p](sg::Pigment& target) { target = *p; }; }
   | colour             { sg::Color c = ev.to_color($1, @1);
                          $$ = [c](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Solid; p.color = c; }; }
   /* POV also reads a colour given by its channels alone: pigment { red 1 green 0.5 } */
@@ -978,7 +978,7 @@ unweighted_pigment
   ;
 
 unweighted_start
-  : PIGMENT_ID         { auto p = $1.value.pigment; $$ = [p](sg::Pigment& target) { target = *p; }; }
+  : PIGMENT_ID         { auto p = $1.value.pigment(); $$ = [p](sg::Pigment& target) { target = *p; }; }
   | pattern_name       { $$ = ev.patterned_pigment($1, LOC(@1)); }
   | block_pattern_name { $$ = ev.patterned_pigment($1, LOC(@1)); }
   ;
@@ -1143,7 +1143,7 @@ color_map
   ;
 
 color_map_body
-  : COLOR_MAP_ID       { $$ = $1.value.color_map; }
+  : COLOR_MAP_ID       { $$ = $1.value.color_map(); }
   | color_map_entries  { $$ = ev.build_color_map($1, LOC(@1)); }
   ;
 
@@ -1160,7 +1160,7 @@ colour_seq
   ;
 
 pigment_map
-  : "pigment_map" "{" PIGMENT_MAP_ID "}" { $$ = std::make_shared<std::vector<sg::PigmentMapEntry>>(*$3.value.pigment_map); }
+  : "pigment_map" "{" PIGMENT_MAP_ID "}" { $$ = std::make_shared<std::vector<sg::PigmentMapEntry>>(*$3.value.pigment_map()); }
   | "pigment_map" "{" pigment_map_entries "}" { $$ = $3; }
   /* A density's map of densities (POV's density_map): a pigment_map of them. */
   | "density_map" "{" density_map_entries "}" { $$ = $3; }
@@ -1172,7 +1172,7 @@ density_map_entries
       { $$ = $1; $$->push_back(sg::PigmentMapEntry{ev.to_float($3, @3, "a map value"), ev.build_density($7, LOC(@5))}); }
   /* A declared density (#declare D = density { … }) as the entry. */
   | density_map_entries "[" arith opt_comma PIGMENT_ID "]"
-      { $$ = $1; $$->push_back(sg::PigmentMapEntry{ev.to_float($3, @3, "a map value"), $5.value.pigment}); }
+      { $$ = $1; $$->push_back(sg::PigmentMapEntry{ev.to_float($3, @3, "a map value"), $5.value.pigment()}); }
   ;
 
 pigment_map_entries
@@ -1207,7 +1207,7 @@ normal_edits
 
 normal_start
   : %empty %prec OPT_EMPTY { $$ = [](sg::Normal&) {}; }
-  | NORMAL_ID          { auto n = $1.value.normal; $$ = [n](sg::Normal& target) { target = *n; }; }
+  | NORMAL_ID          { auto n = $1.value.normal(); $$ = [n](sg::Normal& target) { target = *n; }; }
   | pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
   | block_pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
   | block_pattern_name opt_amount block_normals { $$ = ev.block_normal($1, $2, $3, LOC(@1)); }
@@ -1263,7 +1263,7 @@ block_normals
   ;
 
 normal_map
-  : "normal_map" "{" NORMAL_MAP_ID "}" { $$ = std::make_shared<std::vector<sg::NormalMapEntry>>(*$3.value.normal_map); }
+  : "normal_map" "{" NORMAL_MAP_ID "}" { $$ = std::make_shared<std::vector<sg::NormalMapEntry>>(*$3.value.normal_map()); }
   | "normal_map" "{" normal_map_entries "}" { $$ = $3; }
   ;
 
@@ -1340,7 +1340,7 @@ opt_albedo
   ;
 
 finish_item
-  : FINISH_ID          { auto f = $1.value.finish; $$ = [f](sg::Finish& target) { target = *f; }; }
+  : FINISH_ID          { auto f = $1.value.finish(); $$ = [f](sg::Finish& target) { target = *f; }; }
   | "ambient" colour   { sg::Vec3 c = ev.to_color($2, @2).rgb; $$ = [c](sg::Finish& f) { f.ambient = c; }; }
   | "emission" colour  { sg::Vec3 c = ev.to_color($2, @2).rgb; $$ = [c](sg::Finish& f) { f.emission = c; }; }
   | "diffuse" opt_albedo expr { $$ = ev.finish_scalar("diffuse", $2, $3, @3); }
@@ -1409,7 +1409,7 @@ interior
 
 interior_items
   : %empty             {}
-  | interior_items INTERIOR_ID { $$ = std::move($1); auto i = $2.value.interior;
+  | interior_items INTERIOR_ID { $$ = std::move($1); auto i = $2.value.interior();
                                  $$.push_back([i](sg::Interior& target) { target = *i; }); }
   | interior_items "ior" expr { $$ = std::move($1); double v = ev.positive($3, @3, "ior");
                                 $$.push_back([v](sg::Interior& i) { i.ior = v; }); }
@@ -1438,7 +1438,7 @@ media
 
 media_items
   : %empty             {}
-  | media_items MEDIA_ID { $$ = std::move($1); auto m = $2.value.media;
+  | media_items MEDIA_ID { $$ = std::move($1); auto m = $2.value.media();
                            $$.push_back([m](sg::Media& target) { target = *m; }); }
   | media_items media_item { $$ = std::move($1); $$.push_back($2); }
   ;
@@ -1473,7 +1473,7 @@ sky_sphere
 
 sky_sphere_items
   : %empty             {}
-  | sky_sphere_items SKY_SPHERE_ID { $$ = std::move($1); auto s = $2.value.sky_sphere;
+  | sky_sphere_items SKY_SPHERE_ID { $$ = std::move($1); auto s = $2.value.sky_sphere();
                            $$.push_back([s](sg::SkySphere& target) { target = *s; }); }
   | sky_sphere_items pigment { $$ = std::move($1); auto p = $2;
                            $$.push_back([p](sg::SkySphere& s) { s.pigments.push_back(*p); }); }
@@ -1493,7 +1493,7 @@ fog
 
 fog_items
   : %empty             {}
-  | fog_items FOG_ID   { $$ = std::move($1); auto f = $2.value.fog;
+  | fog_items FOG_ID   { $$ = std::move($1); auto f = $2.value.fog();
                          $$.push_back([f](sg::Fog& target) { target = *f; }); }
   | fog_items fog_item { $$ = std::move($1); $$.push_back($2); }
   ;
@@ -1525,7 +1525,7 @@ rainbow
 
 rainbow_items
   : %empty             {}
-  | rainbow_items RAINBOW_ID { $$ = std::move($1); auto r = $2.value.rainbow;
+  | rainbow_items RAINBOW_ID { $$ = std::move($1); auto r = $2.value.rainbow();
                          $$.push_back([r](sg::Rainbow& target) { target = *r; }); }
   | rainbow_items rainbow_item { $$ = std::move($1); $$.push_back($2); }
   ;
@@ -1744,10 +1744,10 @@ macro_arg
   | COLOR_MAP_ID       { $$ = std::move($1.value); }
   | PIGMENT_MAP_ID     { $$ = std::move($1.value); }
   | NORMAL_MAP_ID      { $$ = std::move($1.value); }
-  | texture            { $$.kind = Value::Kind::Texture; $$.texture = $1; }
-  | pigment            { $$.kind = Value::Kind::Pigment; $$.pigment = $1; }
-  | finish             { $$.kind = Value::Kind::Finish; $$.finish = $1; }
-  | normal             { $$.kind = Value::Kind::Normal; $$.normal = $1; }
+  | texture            { $$.kind = Value::Kind::Texture; $$.payload = $1; }
+  | pigment            { $$.kind = Value::Kind::Pigment; $$.payload = $1; }
+  | finish             { $$.kind = Value::Kind::Finish; $$.payload = $1; }
+  | normal             { $$.kind = Value::Kind::Normal; $$.payload = $1; }
   | FUNCTION_LITERAL   { $$ = std::move($1.value); }
   /* The barrier keeps a directive after `array[N]` (no ; needed) unrun
    * while it is only looked at. */
@@ -1757,20 +1757,20 @@ macro_arg
   | FUNCTION_OPEN pigment "}" { $$ = ev.pigment_function($2, LOC(@1)); }
   | FUNCTION_OPEN transform_block "}" { $$ = ev.transform_function($2, LOC(@1)); }
   | FUNCTION_OPEN spline_literal "}" { $$ = ev.spline_function($2, LOC(@1)); }
-  | transform_block    { $$.kind = Value::Kind::Transform; $$.transform = $1; }
-  | color_map          { $$.kind = Value::Kind::ColorMap; $$.color_map = $1; }
-  | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.pigment_map = $1; }
-  | normal_map         { $$.kind = Value::Kind::NormalMap; $$.normal_map = $1; }
+  | transform_block    { $$.kind = Value::Kind::Transform; $$.set_transform($1); }
+  | color_map          { $$.kind = Value::Kind::ColorMap; $$.payload = $1; }
+  | pigment_map        { $$.kind = Value::Kind::PigmentMap; $$.payload = $1; }
+  | normal_map         { $$.kind = Value::Kind::NormalMap; $$.payload = $1; }
   /* What a #declare may hold, a macro may be given (advanced/mediasky.pov:
    * `SkyShell(1000, 1300, interior { media { … } })`). */
-  | interior           { $$.kind = Value::Kind::Interior; $$.interior = $1; }
-  | media              { $$.kind = Value::Kind::Media; $$.media = $1; }
-  | "density" "{" pigment_edits "}" { $$.kind = Value::Kind::Pigment; $$.pigment = ev.build_density($3, LOC(@1)); }
-  | material           { $$.kind = Value::Kind::Texture; $$.texture = $1; }
-  | sky_sphere         { $$.kind = Value::Kind::SkySphere; $$.sky_sphere = $1; }
-  | fog                { $$.kind = Value::Kind::Fog; $$.fog = $1; }
-  | rainbow            { $$.kind = Value::Kind::Rainbow; $$.rainbow = $1; }
-  | camera             { $$.kind = Value::Kind::Camera; $$.camera = std::make_shared<CameraSpec>($1); }
+  | interior           { $$.kind = Value::Kind::Interior; $$.payload = $1; }
+  | media              { $$.kind = Value::Kind::Media; $$.payload = $1; }
+  | "density" "{" pigment_edits "}" { $$.kind = Value::Kind::Pigment; $$.payload = ev.build_density($3, LOC(@1)); }
+  | material           { $$.kind = Value::Kind::Texture; $$.payload = $1; }
+  | sky_sphere         { $$.kind = Value::Kind::SkySphere; $$.payload = $1; }
+  | fog                { $$.kind = Value::Kind::Fog; $$.payload = $1; }
+  | rainbow            { $$.kind = Value::Kind::Rainbow; $$.payload = $1; }
+  | camera             { $$.kind = Value::Kind::Camera; $$.payload = std::move($1); }
   | spline_literal     { $$ = std::move($1); }
   | MEDIA_ID           { $$ = std::move($1.value); }
   | SKY_SPHERE_ID      { $$ = std::move($1.value); }
@@ -1782,9 +1782,9 @@ macro_arg
 
 light
   : "light_source" "{" arith opt_comma colour light_items "}"
-      { $$ = ev.make_light($3, @3, $5, @5, LOC(@1)); ev.apply_light($$, $6); }
+      { $$ = std::make_shared<sg::Light>(ev.make_light($3, @3, $5, @5, LOC(@1))); ev.apply_light(*$$, $6); }
   | "light_source" "{" LIGHT_ID light_items "}"
-      { $$ = *$3.value.light; ev.apply_light($$, $4); }
+      { $$ = std::make_shared<sg::Light>(*$3.value.light()); ev.apply_light(*$$, $4); }
   ;
 
 light_items
@@ -1828,7 +1828,7 @@ light_item
 
 camera
   : "camera" "{" camera_items "}"
-      { $$.location_in_source = LOC(@1); for (auto& edit : $3) edit($$); }
+      { $$ = std::make_shared<CameraSpec>(); $$->location_in_source = LOC(@1); for (auto& edit : $3) edit(*$$); }
   ;
 
 camera_items
@@ -1837,7 +1837,7 @@ camera_items
   ;
 
 camera_item
-  : CAMERA_ID          { CameraSpec c = *$1.value.camera; $$ = [c](CameraSpec& target) { target = c; }; }
+  : CAMERA_ID          { CameraSpec c = *$1.value.camera(); $$ = [c](CameraSpec& target) { target = c; }; }
   | camera_type        { auto p = $1; auto at = LOC(@1); $$ = [p, at](CameraSpec& c) { c.set_projection(p, at); }; }
   | mesh_camera        { $$ = std::move($1); }
   | "location" expr    { auto v = ev.to_vec3($2, @2); $$ = [v](CameraSpec& c) { c.location = v; c.other_item_seen = true; }; }

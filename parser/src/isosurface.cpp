@@ -65,12 +65,12 @@ ShapePtr Evaluator::make_isosurface(const Value& function, const SourceRange& wh
     auto shape = new_shape(sg::Object::Kind::Isosurface, at);
     sg::Isosurface iso;
     iso.location = where.begin;
-    if (function.kind != Value::Kind::Function || !function.function) {
+    if (function.kind != Value::Kind::Function || !function.function()) {
         error(where.begin, "isosurface needs a function { … } first");
-    } else if (function.function->pigment) {
+    } else if (function.function()->pigment) {
         error(where.begin, "isosurface: a pigment function has a colour, not a value; use one of its channels");
     } else {
-        iso.function = function.function;
+        iso.function = function.function();
         if (const int missing = sg::first_unsupported_internal(*iso.function); missing >= 0)
             error(where.begin, "POV-Ray 3.7 has no internal function " + std::to_string(missing));
     }

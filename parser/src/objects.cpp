@@ -237,7 +237,7 @@ void Evaluator::apply(ShapePtr& shape, const Edits<ShapeValue>& edits) {
 Value Evaluator::object_value(const ShapePtr& shape) {
     Value value;
     value.kind = Value::Kind::Object;
-    value.shape = shape;
+    value.payload = shape;
     return value;
 }
 

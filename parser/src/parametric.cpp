@@ -75,15 +75,15 @@ ShapePtr Evaluator::make_parametric(const std::array<Value, 3>& functions, const
     for (std::size_t i = 0; i < 3; ++i) {
         const Value& function = functions[i];
         const std::string which = std::string("parametric: the ") + kCoordinate[i] + " function";
-        if (function.kind != Value::Kind::Function || !function.function) {
+        if (function.kind != Value::Kind::Function || !function.function()) {
             error(where[i].begin, which + " must be a function { … } of u and v");
-        } else if (function.function->pigment) {
+        } else if (function.function()->pigment) {
             error(where[i].begin, which +
                                       " is a pigment function: it has a colour, not a value; use one of its "
                                       "channels");
         } else {
-            parametric.functions[i] = function.function;
-            if (const int missing = sg::first_unsupported_internal(*function.function); missing >= 0)
+            parametric.functions[i] = function.function();
+            if (const int missing = sg::first_unsupported_internal(*function.function()); missing >= 0)
                 error(where[i].begin, "POV-Ray 3.7 has no internal function " + std::to_string(missing));
         }
     }

@@ -107,7 +107,7 @@ std::array<double, 5> spline_at(const SplineData& s, SplineData::Kind kind, doub
 
 Value Evaluator::make_spline(const Value& base, const std::vector<int>& kinds, const std::vector<Value>& entries,
                              const sg::SourceLocation& at) {
-    auto spline = base.spline ? std::make_shared<SplineData>(*base.spline) : std::make_shared<SplineData>();
+    auto spline = base.spline() ? std::make_shared<SplineData>(*base.spline()) : std::make_shared<SplineData>();
     if (!kinds.empty()) spline->kind = SplineData::Kind(kinds.back());
     if (entries.size() % 2 != 0) {
         error(entries.back().location.file ? entries.back().location : at,
@@ -148,15 +148,15 @@ Value Evaluator::make_spline(const Value& base, const std::vector<int>& kinds, c
     if (spline->entries.empty()) error(at, "spline: it needs at least one entry (t, <v>)");
     Value result;
     result.kind = Value::Kind::Spline;
-    result.spline = std::move(spline);
+    result.payload = std::move(spline);
     result.location = at;
     return result;
 }
 
 Value Evaluator::call_spline(const Value& spline, const Value& time, const SourceRange& where, int kind) {
     const double t = to_float(time, where, "a float time");
-    if (!spline.spline || spline.spline->entries.empty()) return Value::number(0.0);
-    const SplineData& s = *spline.spline;
+    if (!spline.spline() || spline.spline()->entries.empty()) return Value::number(0.0);
+    const SplineData& s = *spline.spline();
     const std::array<double, 5> v = spline_at(s, kind >= 0 ? SplineData::Kind(kind) : s.kind, t);
     Value result;
     result.kind = Value::Kind::Vector;

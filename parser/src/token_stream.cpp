@@ -293,7 +293,7 @@ Evaluator::Symbol Evaluator::read_token() {
             if (const Value* named = lookup(raw->text); named && named->kind == Value::Kind::Array) {
                 const RawToken* next = peek_raw();
                 if (next && next->kind == RawKind::Punct && next->text == "[") {
-                    const std::shared_ptr<ArrayData> data = named->array;
+                    const std::shared_ptr<ArrayData> data = named->array();
                     std::size_t flat = 0;
                     Value element = array_element(*named, raw->location, &flat);
                     m_last_returned.reset();
@@ -338,18 +338,19 @@ Evaluator::Symbol Evaluator::classify(const RawToken& raw) {
     case RawKind::Vector: return make_symbol(Parser::token::TOK_VECTOR_LITERAL, raw, vector_literal(raw));
     case RawKind::Mesh2Section: return make_symbol(Parser::token::TOK_MESH2_SECTION, raw, mesh2_section_token(raw));
     case RawKind::Punct: {
-        if (raw.text == "{") m_block_names.push_back(m_previous_word);
-        if (raw.text == "}" && !m_block_names.empty()) {
+        const char bracket = raw.text.size() == 1 ? raw.text[0] : '\0';
+        if (bracket == '{') m_block_names.push_back(m_previous_word);
+        if (bracket == '}' && !m_block_names.empty()) {
             m_last_closed_block = m_block_names.back();
             m_block_names.pop_back();
         }
-        if (raw.text == "{" || raw.text == "(" || raw.text == "[") {
+        if (bracket == '{' || bracket == '(' || bracket == '[') {
             if (++m_nesting > m_options.max_nesting_depth) {
                 error(raw.location,
                       "nesting too deep: more than " + std::to_string(m_options.max_nesting_depth) + " open brackets");
                 abort_parse();
             }
-        } else if (raw.text == "}" || raw.text == ")" || raw.text == "]") {
+        } else if (bracket == '}' || bracket == ')' || bracket == ']') {
             --m_nesting;
         }
         return make_symbol(punct_table().at(raw.text), raw);

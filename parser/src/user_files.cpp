@@ -49,19 +49,19 @@ std::shared_ptr<UserFile> Evaluator::user_file_argument(const RawToken& d, bool 
     sg::SourceLocation where = d.location;
     handle = expect_raw_identifier("in #" + d.text, &where);
     const Value* value = handle.empty() ? nullptr : lookup(handle);
-    if (!value || value->kind != Value::Kind::File || !value->file || !value->file->open) {
+    if (!value || value->kind != Value::Kind::File || !value->file() || !value->file()->open) {
         error(where, "#" + d.text + " needs a file opened with #fopen" +
                          (handle.empty() ? std::string() : ", and '" + handle + "' is none"));
         abort_parse();
         return nullptr;
     }
-    if (value->file->reading != reading) {
-        error(where, reading ? "cannot #read from \"" + value->file->name + "\": it was opened to write"
-                             : "cannot #write to \"" + value->file->name + "\": it was opened to read");
+    if (value->file()->reading != reading) {
+        error(where, reading ? "cannot #read from \"" + value->file()->name + "\": it was opened to write"
+                             : "cannot #write to \"" + value->file()->name + "\": it was opened to read");
         abort_parse();
         return nullptr;
     }
-    return value->file;
+    return value->file();
 }
 
 void Evaluator::directive_fopen(const RawToken& d) {
@@ -121,7 +121,7 @@ void Evaluator::directive_fopen(const RawToken& d) {
     }
     Value value;
     value.kind = Value::Kind::File;
-    value.file = std::move(file);
+    value.payload = std::move(file);
     value.location = where;
     store(handle, std::move(value), false, where);
 }
@@ -132,7 +132,7 @@ void Evaluator::directive_fclose(const RawToken& d) {
     // POV quietly accepts #fclose of a file already closed by reading it out.
     const Value* value = handle.empty() ? nullptr : lookup(handle);
     if (!value) return;
-    if (value->kind != Value::Kind::File || !value->file) {
+    if (value->kind != Value::Kind::File || !value->file()) {
         error(where, "#fclose needs a file opened with #fopen, and '" + handle + "' is none");
         return abort_parse();
     }
@@ -141,9 +141,9 @@ void Evaluator::directive_fclose(const RawToken& d) {
 
 void Evaluator::close_user_file(const std::string& handle) {
     const Value* value = lookup(handle);
-    if (value && value->kind == Value::Kind::File && value->file) {
-        value->file->open = false;
-        if (value->file->out.is_open()) value->file->out.close();
+    if (value && value->kind == Value::Kind::File && value->file()) {
+        value->file()->open = false;
+        if (value->file()->out.is_open()) value->file()->out.close();
     }
     for (auto scope = m_scopes.rbegin(); scope != m_scopes.rend(); ++scope)
         if (scope->erase(handle)) return;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "lancer/scene_graph.h"
@@ -111,35 +112,63 @@ struct Value {
         Fog,
         Rainbow
     };
+    // What a non-scalar value holds: one shared payload, chosen by kind. An
+    // array and a #fopen'd file are shared and mutable; the rest immutable.
+    // One variant, not a member for each kind, keeps a Value small: the
+    // grammar moves and destroys several for every token it reads.
+    using Payload = std::variant<
+        std::monostate, std::shared_ptr<const ShapeValue>, std::shared_ptr<const sg::Material>,
+        std::shared_ptr<const sg::Pigment>, std::shared_ptr<const sg::Finish>, std::shared_ptr<const sg::Interior>,
+        std::shared_ptr<const sg::Media>, std::shared_ptr<const sg::SkySphere>, std::shared_ptr<const sg::Fog>,
+        std::shared_ptr<const sg::Rainbow>, std::shared_ptr<const CameraSpec>, std::shared_ptr<const sg::Light>,
+        sg::NormalRef, sg::ColorMapRef, std::shared_ptr<const std::vector<sg::PigmentMapEntry>>,
+        std::shared_ptr<const std::vector<sg::NormalMapEntry>>, sg::FunctionRef, std::shared_ptr<ArrayData>,
+        std::shared_ptr<UserFile>, std::shared_ptr<const SplineData>, std::shared_ptr<const sg::Mat4>>;
+
     Kind kind = Kind::Float;
-    // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
-    std::array<double, 5> v{0.0, 0.0, 0.0, 0.0, 0.0};
     int size = 1;
     bool boolean_literal = false;  // written as on/off/true/false/yes/no
-    std::string text;              // String
-    std::shared_ptr<const ShapeValue> shape;
-    std::shared_ptr<const sg::Material> texture;  // Texture
-    std::shared_ptr<const sg::Pigment> pigment;
-    std::shared_ptr<const sg::Finish> finish;
-    std::shared_ptr<const sg::Interior> interior;
-    std::shared_ptr<const sg::Media> media;
-    std::shared_ptr<const sg::SkySphere> sky_sphere;
-    std::shared_ptr<const sg::Fog> fog;
-    std::shared_ptr<const sg::Rainbow> rainbow;
-    std::shared_ptr<const CameraSpec> camera;
-    std::shared_ptr<const sg::Light> light;
-    sg::NormalRef normal;
-    sg::ColorMapRef color_map;
-    std::shared_ptr<const std::vector<sg::PigmentMapEntry>> pigment_map;
-    std::shared_ptr<const std::vector<sg::NormalMapEntry>> normal_map;
-    sg::FunctionRef function;
-    std::shared_ptr<ArrayData> array;  // Array: shared by reference (macro arguments), copied by #declare
-    std::shared_ptr<UserFile> file;    // File: a #fopen'd file, shared by every copy of its handle
-    std::shared_ptr<const SplineData> spline;
+    // Float: v[0]. Vector: v[0..size). Color: r g b filter transmit.
+    std::array<double, 5> v{0.0, 0.0, 0.0, 0.0, 0.0};
+    std::string text;  // String
+    Payload payload;
     // `function W, H { … }`: the size of the image POV makes of the function.
     std::optional<std::pair<int, int>> image_size;
-    sg::Mat4 transform{1.0};
     sg::SourceLocation location;  // where it was written, when a check needs it later
+
+    // The payload of each kind; empty when the value holds another.
+    const std::shared_ptr<const ShapeValue>& shape() const { return held<std::shared_ptr<const ShapeValue>>(); }
+    const std::shared_ptr<const sg::Material>& texture() const { return held<std::shared_ptr<const sg::Material>>(); }
+    const std::shared_ptr<const sg::Pigment>& pigment() const { return held<std::shared_ptr<const sg::Pigment>>(); }
+    const std::shared_ptr<const sg::Finish>& finish() const { return held<std::shared_ptr<const sg::Finish>>(); }
+    const std::shared_ptr<const sg::Interior>& interior() const { return held<std::shared_ptr<const sg::Interior>>(); }
+    const std::shared_ptr<const sg::Media>& media() const { return held<std::shared_ptr<const sg::Media>>(); }
+    const std::shared_ptr<const sg::SkySphere>& sky_sphere() const {
+        return held<std::shared_ptr<const sg::SkySphere>>();
+    }
+    const std::shared_ptr<const sg::Fog>& fog() const { return held<std::shared_ptr<const sg::Fog>>(); }
+    const std::shared_ptr<const sg::Rainbow>& rainbow() const { return held<std::shared_ptr<const sg::Rainbow>>(); }
+    const std::shared_ptr<const CameraSpec>& camera() const { return held<std::shared_ptr<const CameraSpec>>(); }
+    const std::shared_ptr<const sg::Light>& light() const { return held<std::shared_ptr<const sg::Light>>(); }
+    const sg::NormalRef& normal() const { return held<sg::NormalRef>(); }
+    const sg::ColorMapRef& color_map() const { return held<sg::ColorMapRef>(); }
+    const std::shared_ptr<const std::vector<sg::PigmentMapEntry>>& pigment_map() const {
+        return held<std::shared_ptr<const std::vector<sg::PigmentMapEntry>>>();
+    }
+    const std::shared_ptr<const std::vector<sg::NormalMapEntry>>& normal_map() const {
+        return held<std::shared_ptr<const std::vector<sg::NormalMapEntry>>>();
+    }
+    const sg::FunctionRef& function() const { return held<sg::FunctionRef>(); }
+    const std::shared_ptr<ArrayData>& array() const { return held<std::shared_ptr<ArrayData>>(); }
+    const std::shared_ptr<UserFile>& file() const { return held<std::shared_ptr<UserFile>>(); }
+    const std::shared_ptr<const SplineData>& spline() const { return held<std::shared_ptr<const SplineData>>(); }
+    // A Transform's matrix; the identity for any other value.
+    const sg::Mat4& transform() const {
+        static const sg::Mat4 identity{1.0};
+        const auto& matrix = held<std::shared_ptr<const sg::Mat4>>();
+        return matrix ? *matrix : identity;
+    }
+    void set_transform(const sg::Mat4& matrix) { payload = std::make_shared<const sg::Mat4>(matrix); }
 
     static Value number(double x) { return Value{}.with_float(x); }
     static Value vector(std::initializer_list<double> components);
@@ -152,6 +181,14 @@ struct Value {
         Value result;
         result.v[0] = x;
         return result;
+    }
+
+  private:
+    template <class Held>
+    const Held& held() const {
+        static const Held none;
+        const Held* found = std::get_if<Held>(&payload);
+        return found ? *found : none;
     }
 };
 
