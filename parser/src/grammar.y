@@ -35,6 +35,17 @@ namespace lancer::parse { class Evaluator; }
 #include "evaluator.h"
 namespace lancer::parse {
 Parser::symbol_type yylex(Evaluator& ev) { return ev.next_token(); }
+
+// Bison's stack pushes a default-made symbol and then moves the new one into
+// it: a zero-fill and two moves through the switch over every semantic type,
+// for each shift and each reduction, which is a quarter of a loop's parse. One
+// move construction does the same (the moved-from symbol is left empty,
+// as bison's own move leaves it). Written for bison 3.8's lalr1.cc, whose
+// stack is std::vector; another skeleton's stack fails to compile here.
+template <>
+void Parser::stack<Parser::stack_symbol_type, std::vector<Parser::stack_symbol_type>>::push(stack_symbol_type&& symbol) {
+    seq_.emplace_back(std::move(symbol));
+}
 }
 #define LOC(range) (range).begin
 }
