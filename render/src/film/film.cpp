@@ -14,21 +14,15 @@ Film::Film(int width, int height, Storage storage) : m_width(width), m_height(he
     if (width <= 0 || height <= 0) throw std::invalid_argument("film size must be positive");
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     allocate(pixels);
-    m_taken.resize(pixels, 0);
+    m_taken = ZeroedArray<std::uint32_t>(pixels);
 }
 
 void Film::allocate(std::size_t pixels) {
-    m_sums = std::vector<glm::dvec3>();
-    m_squares = std::vector<glm::dvec3>();
-    m_colour_sums = std::vector<Color>();
-    m_finite = std::vector<std::uint32_t>();
-    if (m_storage == Storage::Totals) {
-        m_sums.assign(pixels, glm::dvec3(0.0));
-        m_squares.assign(pixels, glm::dvec3(0.0));
-    } else {
-        m_colour_sums.assign(pixels, Color(0.0f));
-    }
-    if (m_storage != Storage::MeanOnly) m_finite.assign(pixels, 0);
+    const bool totals = m_storage == Storage::Totals;
+    m_sums = ZeroedArray<glm::dvec3>(totals ? pixels : 0);
+    m_squares = ZeroedArray<glm::dvec3>(totals ? pixels : 0);
+    m_colour_sums = ZeroedArray<Color>(totals ? 0 : pixels);
+    m_finite = ZeroedArray<std::uint32_t>(m_storage == Storage::MeanOnly ? 0 : pixels);
 }
 
 // With allocate(): no pixel holds a sample, so restore_region's changes

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "lancer/host/zeroed_array.h"
 #include "lancer/ray.h"
 
 namespace lancer {
@@ -136,14 +137,14 @@ class Film {
     // By pixel, each kept by the storages named: one array a quantity, so
     // a Totals pixel takes 56 bytes (an Accumulator's count of non-finite
     // samples is the difference of the two counts).
-    std::vector<glm::dvec3> m_sums;       // Totals
-    std::vector<glm::dvec3> m_squares;    // Totals
-    std::vector<Color> m_colour_sums;     // MeanOnly, Sums
-    std::vector<std::uint32_t> m_finite;  // Totals, Sums: finite samples
+    ZeroedArray<glm::dvec3> m_sums;       // Totals
+    ZeroedArray<glm::dvec3> m_squares;    // Totals
+    ZeroedArray<Color> m_colour_sums;     // MeanOnly, Sums
+    ZeroedArray<std::uint32_t> m_finite;  // Totals, Sums: finite samples
     // Samples taken per pixel (count + nonfinite), apart from the totals:
     // the host's sweeps over the film read 4 bytes a pixel, not 56. Every
     // storage keeps it.
-    std::vector<std::uint32_t> m_taken;
+    ZeroedArray<std::uint32_t> m_taken;
     // A value threads update concurrently, copied along with the film.
     template <typename T>
     struct Shared {
