@@ -2,6 +2,7 @@
 // errors (sqrt(-1), log(0), ...) are located errors, never NaN or infinity.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -19,14 +20,88 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// The functions, told apart by number once their name is looked up.
+enum class Builtin : std::uint8_t {
+    Abs,
+    Sqrt,
+    Sqr,
+    Pow,
+    Exp,
+    Log,
+    Ln,
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Atan2,
+    Sinh,
+    Cosh,
+    Tanh,
+    Asinh,
+    Acosh,
+    Atanh,
+    Min,
+    Max,
+    Floor,
+    Ceil,
+    Mod,
+    Int,
+    Div,
+    Radians,
+    Degrees,
+    Vlength,
+    Vnormalize,
+    Vcross,
+    Vdot,
+    Vrotate,
+    VaxisRotate,
+    Seed,
+    Rand,
+    Select,
+    Concat,
+    Str,
+    Strlen,
+    Substr,
+    Chr,
+    Val,
+    Strupr,
+    Strlwr,
+    Vstr,
+    Asc,
+    BitwiseAnd,
+    BitwiseOr,
+    FileExists,
+    Dimensions,
+    DimensionSize,
+    Vturbulence,
+    BitwiseXor,
+    Strcmp,
+    Datetime,
+};
+
+struct BuiltinEntry {
+    Builtin id;
+    int least_arguments;
+    int most_arguments;
+};
+
 struct Call {
     Evaluator& ev;
     const std::string& name;
     const std::vector<Value>& args;
     const SourceRange& where;
 
+    // The messages are built only when needed: a loop calls these a
+    // million times.
     double f(size_t i) {
+        if (args[i].kind == Value::Kind::Float) return args[i].v[0];
         return ev.to_float(args[i], where, "a float argument " + std::to_string(i + 1) + " of " + name + "()");
+    }
+    Value number(double x) {
+        if (std::isfinite(x)) return Value::number(x);
+        return ev.checked(Value::number(x), where, "the result of " + name + "()");
     }
     sg::Vec3 vec(size_t i) { return ev.to_vec3(args[i], where); }
     std::string s(size_t i) { return ev.to_string(args[i], where); }
@@ -93,47 +168,90 @@ Value builtin_rand(Evaluator& ev, const std::vector<Value>& args, const SourceRa
 }
 
 Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>& args, const SourceRange& where) {
-    // clang-format off
-    static const std::unordered_map<std::string, std::pair<int, int>> arity = {
-        {"abs", {1, 1}},           {"sqrt", {1, 1}},        {"sqr", {1, 1}},          {"pow", {2, 2}},
-        {"exp", {1, 1}},           {"log", {1, 1}},         {"ln", {1, 1}},           {"sin", {1, 1}},
-        {"cos", {1, 1}},           {"tan", {1, 1}},         {"asin", {1, 1}},         {"acos", {1, 1}},
-        {"atan", {1, 1}},          {"atan2", {2, 2}},       {"sinh", {1, 1}},         {"cosh", {1, 1}},
-        {"tanh", {1, 1}},          {"asinh", {1, 1}},       {"acosh", {1, 1}},        {"atanh", {1, 1}},
-        {"min", {1, 99}},          {"max", {1, 99}},        {"floor", {1, 1}},        {"ceil", {1, 1}},
-        {"mod", {2, 2}},           {"int", {1, 1}},         {"div", {2, 2}},          {"radians", {1, 1}},
-        {"degrees", {1, 1}},       {"vlength", {1, 1}},     {"vnormalize", {1, 1}},   {"vcross", {2, 2}},
-        {"vdot", {2, 2}},          {"vrotate", {2, 2}},     {"vaxis_rotate", {3, 3}}, {"seed", {1, 1}},
-        {"rand", {1, 1}},          {"select", {3, 4}},      {"concat", {1, 99}},      {"str", {3, 3}},
-        {"strlen", {1, 1}},        {"substr", {3, 3}},      {"chr", {1, 1}},          {"val", {1, 1}},
-        {"strupr", {1, 1}},        {"strlwr", {1, 1}},      {"vstr", {5, 5}},         {"asc", {1, 1}},
-        {"bitwise_and", {2, 99}},  {"bitwise_or", {2, 99}}, {"file_exists", {1, 1}},  {"dimensions", {1, 1}},
-        {"dimension_size", {2, 2}}, {"vturbulence", {4, 4}},  {"bitwise_xor", {2, 99}}, {"strcmp", {2, 2}},
-        {"datetime", {1, 2}}};
-    // clang-format on
-    auto expected = arity.find(name);
-    if (expected == arity.end()) {
+    static const std::unordered_map<std::string, BuiltinEntry> table = {
+        {"abs", {Builtin::Abs, 1, 1}},
+        {"sqrt", {Builtin::Sqrt, 1, 1}},
+        {"sqr", {Builtin::Sqr, 1, 1}},
+        {"pow", {Builtin::Pow, 2, 2}},
+        {"exp", {Builtin::Exp, 1, 1}},
+        {"log", {Builtin::Log, 1, 1}},
+        {"ln", {Builtin::Ln, 1, 1}},
+        {"sin", {Builtin::Sin, 1, 1}},
+        {"cos", {Builtin::Cos, 1, 1}},
+        {"tan", {Builtin::Tan, 1, 1}},
+        {"asin", {Builtin::Asin, 1, 1}},
+        {"acos", {Builtin::Acos, 1, 1}},
+        {"atan", {Builtin::Atan, 1, 1}},
+        {"atan2", {Builtin::Atan2, 2, 2}},
+        {"sinh", {Builtin::Sinh, 1, 1}},
+        {"cosh", {Builtin::Cosh, 1, 1}},
+        {"tanh", {Builtin::Tanh, 1, 1}},
+        {"asinh", {Builtin::Asinh, 1, 1}},
+        {"acosh", {Builtin::Acosh, 1, 1}},
+        {"atanh", {Builtin::Atanh, 1, 1}},
+        {"min", {Builtin::Min, 1, 99}},
+        {"max", {Builtin::Max, 1, 99}},
+        {"floor", {Builtin::Floor, 1, 1}},
+        {"ceil", {Builtin::Ceil, 1, 1}},
+        {"mod", {Builtin::Mod, 2, 2}},
+        {"int", {Builtin::Int, 1, 1}},
+        {"div", {Builtin::Div, 2, 2}},
+        {"radians", {Builtin::Radians, 1, 1}},
+        {"degrees", {Builtin::Degrees, 1, 1}},
+        {"vlength", {Builtin::Vlength, 1, 1}},
+        {"vnormalize", {Builtin::Vnormalize, 1, 1}},
+        {"vcross", {Builtin::Vcross, 2, 2}},
+        {"vdot", {Builtin::Vdot, 2, 2}},
+        {"vrotate", {Builtin::Vrotate, 2, 2}},
+        {"vaxis_rotate", {Builtin::VaxisRotate, 3, 3}},
+        {"seed", {Builtin::Seed, 1, 1}},
+        {"rand", {Builtin::Rand, 1, 1}},
+        {"select", {Builtin::Select, 3, 4}},
+        {"concat", {Builtin::Concat, 1, 99}},
+        {"str", {Builtin::Str, 3, 3}},
+        {"strlen", {Builtin::Strlen, 1, 1}},
+        {"substr", {Builtin::Substr, 3, 3}},
+        {"chr", {Builtin::Chr, 1, 1}},
+        {"val", {Builtin::Val, 1, 1}},
+        {"strupr", {Builtin::Strupr, 1, 1}},
+        {"strlwr", {Builtin::Strlwr, 1, 1}},
+        {"vstr", {Builtin::Vstr, 5, 5}},
+        {"asc", {Builtin::Asc, 1, 1}},
+        {"bitwise_and", {Builtin::BitwiseAnd, 2, 99}},
+        {"bitwise_or", {Builtin::BitwiseOr, 2, 99}},
+        {"file_exists", {Builtin::FileExists, 1, 1}},
+        {"dimensions", {Builtin::Dimensions, 1, 1}},
+        {"dimension_size", {Builtin::DimensionSize, 2, 2}},
+        {"vturbulence", {Builtin::Vturbulence, 4, 4}},
+        {"bitwise_xor", {Builtin::BitwiseXor, 2, 99}},
+        {"strcmp", {Builtin::Strcmp, 2, 2}},
+        {"datetime", {Builtin::Datetime, 1, 2}},
+    };
+    const auto entry = table.find(name);
+    if (entry == table.end()) {
         error(where.begin, "unknown function '" + name + "'");
         return Value::number(0.0);
     }
     int count = static_cast<int>(args.size());
-    if (count < expected->second.first || count > expected->second.second) {
-        std::string wanted = expected->second.first == expected->second.second
-                                 ? std::to_string(expected->second.first)
-                                 : std::to_string(expected->second.first) + " or more";
+    const BuiltinEntry& expected = entry->second;
+    if (count < expected.least_arguments || count > expected.most_arguments) {
+        std::string wanted = expected.least_arguments == expected.most_arguments
+                                 ? std::to_string(expected.least_arguments)
+                                 : std::to_string(expected.least_arguments) + " or more";
         error(where.begin, name + "() takes " + wanted + " argument(s), " + std::to_string(count) + " given");
         return Value::number(0.0);
     }
     Call c{*this, name, args, where};
-    auto number = [&](double x) { return checked(Value::number(x), where, "the result of " + name + "()"); };
+    auto number = [&c](double x) { return c.number(x); };
+    const Builtin id = expected.id;
 
-    if (name == "dimensions" || name == "dimension_size") {
+    if (id == Builtin::Dimensions || id == Builtin::DimensionSize) {
         const Value& a = args[0];
         if (a.kind != Value::Kind::Array || !a.array()) {
             error(where.begin, name + "() needs an array, got " + describe(a));
             return Value::number(0.0);
         }
-        if (name == "dimensions") return number(double(a.array()->sizes.size()));
+        if (id == Builtin::Dimensions) return number(double(a.array()->sizes.size()));
         const double d = c.f(1);  // POV counts dimensions from 1
         if (!(d >= 1.0) || d > double(a.array()->sizes.size())) {
             error(where.begin, "dimension_size(): the array has " + std::to_string(a.array()->sizes.size()) +
@@ -144,8 +262,8 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
     }
 
     // Float functions.
-    if (name == "abs") return number(std::fabs(c.f(0)));
-    if (name == "sqrt") {
+    if (id == Builtin::Abs) return number(std::fabs(c.f(0)));
+    if (id == Builtin::Sqrt) {
         double x = c.f(0);
         if (x < 0) {
             c.domain("square root of a negative number (" + std::to_string(x) + ")");
@@ -153,8 +271,8 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         }
         return number(std::sqrt(x));
     }
-    if (name == "sqr") return number(c.f(0) * c.f(0));
-    if (name == "pow") {
+    if (id == Builtin::Sqr) return number(c.f(0) * c.f(0));
+    if (id == Builtin::Pow) {
         double base = c.f(0), exponent = c.f(1);
         if (base == 0.0 && exponent < 0.0) {
             c.domain("zero to a negative power");
@@ -166,71 +284,71 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         }
         return number(std::pow(base, exponent));
     }
-    if (name == "exp") return number(std::exp(c.f(0)));
-    if (name == "log" || name == "ln") {
+    if (id == Builtin::Exp) return number(std::exp(c.f(0)));
+    if (id == Builtin::Log || id == Builtin::Ln) {
         double x = c.f(0);
         if (x <= 0) {
             c.domain("logarithm of a non-positive number (" + std::to_string(x) + ")");
             return Value::number(0.0);
         }
-        return number(name == "log" ? std::log10(x) : std::log(x));
+        return number(id == Builtin::Log ? std::log10(x) : std::log(x));
     }
-    if (name == "sin") return number(std::sin(c.f(0)));
-    if (name == "cos") return number(std::cos(c.f(0)));
-    if (name == "tan") return number(std::tan(c.f(0)));
-    if (name == "asin" || name == "acos") {
+    if (id == Builtin::Sin) return number(std::sin(c.f(0)));
+    if (id == Builtin::Cos) return number(std::cos(c.f(0)));
+    if (id == Builtin::Tan) return number(std::tan(c.f(0)));
+    if (id == Builtin::Asin || id == Builtin::Acos) {
         double x = c.f(0);
         if (x < -1.0 || x > 1.0) {
             c.domain("argument " + std::to_string(x) + " outside [-1, 1]");
             return Value::number(0.0);
         }
-        return number(name == "asin" ? std::asin(x) : std::acos(x));
+        return number(id == Builtin::Asin ? std::asin(x) : std::acos(x));
     }
-    if (name == "atan") return number(std::atan(c.f(0)));
-    if (name == "atan2") return number(std::atan2(c.f(0), c.f(1)));
-    if (name == "sinh") return number(std::sinh(c.f(0)));
-    if (name == "cosh") return number(std::cosh(c.f(0)));
-    if (name == "tanh") return number(std::tanh(c.f(0)));
-    if (name == "asinh") return number(std::asinh(c.f(0)));
-    if (name == "acosh") return number(std::acosh(c.f(0)));
-    if (name == "atanh") return number(std::atanh(c.f(0)));
-    if (name == "min" || name == "max") {
+    if (id == Builtin::Atan) return number(std::atan(c.f(0)));
+    if (id == Builtin::Atan2) return number(std::atan2(c.f(0), c.f(1)));
+    if (id == Builtin::Sinh) return number(std::sinh(c.f(0)));
+    if (id == Builtin::Cosh) return number(std::cosh(c.f(0)));
+    if (id == Builtin::Tanh) return number(std::tanh(c.f(0)));
+    if (id == Builtin::Asinh) return number(std::asinh(c.f(0)));
+    if (id == Builtin::Acosh) return number(std::acosh(c.f(0)));
+    if (id == Builtin::Atanh) return number(std::atanh(c.f(0)));
+    if (id == Builtin::Min || id == Builtin::Max) {
         double r = c.f(0);
-        for (size_t i = 1; i < args.size(); ++i) r = name == "min" ? std::min(r, c.f(i)) : std::max(r, c.f(i));
+        for (size_t i = 1; i < args.size(); ++i) r = id == Builtin::Min ? std::min(r, c.f(i)) : std::max(r, c.f(i));
         return number(r);
     }
-    if (name == "floor") return number(std::floor(c.f(0)));
-    if (name == "ceil") return number(std::ceil(c.f(0)));
-    if (name == "int") return number(std::trunc(c.f(0)));
-    if (name == "mod" || name == "div") {
+    if (id == Builtin::Floor) return number(std::floor(c.f(0)));
+    if (id == Builtin::Ceil) return number(std::ceil(c.f(0)));
+    if (id == Builtin::Int) return number(std::trunc(c.f(0)));
+    if (id == Builtin::Mod || id == Builtin::Div) {
         double a = c.f(0), b = c.f(1);
         if (b == 0.0) {
             c.domain("division by zero");
             return Value::number(0.0);
         }
-        return number(name == "mod" ? std::fmod(a, b) : std::trunc(a / b));
+        return number(id == Builtin::Mod ? std::fmod(a, b) : std::trunc(a / b));
     }
-    if (name == "radians") return number(c.f(0) * kPi / 180.0);
-    if (name == "degrees") return number(c.f(0) * 180.0 / kPi);
-    if (name == "select") {
+    if (id == Builtin::Radians) return number(c.f(0) * kPi / 180.0);
+    if (id == Builtin::Degrees) return number(c.f(0) * 180.0 / kPi);
+    if (id == Builtin::Select) {
         double s = c.f(0);
         if (args.size() == 3) return s < 0 ? args[1] : args[2];
         return s < 0 ? args[1] : s == 0 ? args[2] : args[3];
     }
-    if (name == "bitwise_and" || name == "bitwise_or" || name == "bitwise_xor") {
+    if (id == Builtin::BitwiseAnd || id == Builtin::BitwiseOr || id == Builtin::BitwiseXor) {
         long r = static_cast<long>(c.f(0));
         for (size_t i = 1; i < args.size(); ++i) {
             const long operand = static_cast<long>(c.f(i));
-            r = name == "bitwise_and" ? r & operand : name == "bitwise_or" ? r | operand : r ^ operand;
+            r = id == Builtin::BitwiseAnd ? r & operand : id == Builtin::BitwiseOr ? r | operand : r ^ operand;
         }
         return number(static_cast<double>(r));
     }
-    if (name == "seed") return builtin_seed(*this, args, where);
-    if (name == "rand") return builtin_rand(*this, args, where);
+    if (id == Builtin::Seed) return builtin_seed(*this, args, where);
+    if (id == Builtin::Rand) return builtin_rand(*this, args, where);
 
     // Vector functions.
-    if (name == "vlength") return number(glm::length(c.vec(0)));
-    if (name == "vnormalize") {
+    if (id == Builtin::Vlength) return number(glm::length(c.vec(0)));
+    if (id == Builtin::Vnormalize) {
         sg::Vec3 v = c.vec(0);
         if (glm::length(v) == 0.0) {
             c.domain("cannot normalize a zero vector");
@@ -238,10 +356,10 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         }
         return Value::vec3(glm::normalize(v));
     }
-    if (name == "vcross") return checked(Value::vec3(glm::cross(c.vec(0), c.vec(1))), where, "vcross()");
-    if (name == "vdot") return number(glm::dot(c.vec(0), c.vec(1)));
-    if (name == "vrotate") return checked(Value::vec3(rotate_degrees(c.vec(0), c.vec(1))), where, "vrotate()");
-    if (name == "vaxis_rotate") {
+    if (id == Builtin::Vcross) return checked(Value::vec3(glm::cross(c.vec(0), c.vec(1))), where, "vcross()");
+    if (id == Builtin::Vdot) return number(glm::dot(c.vec(0), c.vec(1)));
+    if (id == Builtin::Vrotate) return checked(Value::vec3(rotate_degrees(c.vec(0), c.vec(1))), where, "vrotate()");
+    if (id == Builtin::VaxisRotate) {
         sg::Vec3 axis = c.vec(1);
         if (glm::length(axis) == 0.0) {
             c.domain("zero rotation axis");
@@ -251,7 +369,7 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         return checked(Value::vec3(sg::Vec3(m * glm::dvec4(c.vec(0), 0.0))), where, "vaxis_rotate()");
     }
 
-    if (name == "vturbulence") {
+    if (id == Builtin::Vturbulence) {
         const double lambda = c.f(0), omega = c.f(1), octaves = c.f(2);
         const sg::Vec3 point = c.vec(3);
         if (!m_options.function_natives) {
@@ -273,7 +391,7 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
     }
 
     // String functions.
-    if (name == "concat") {
+    if (id == Builtin::Concat) {
         std::size_t length = 0;
         for (size_t i = 0; i < args.size(); ++i) length += c.s(i).size();
         // Strings are the one value a scene can grow without bound (a
@@ -293,9 +411,9 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         for (size_t i = 0; i < args.size(); ++i) r += c.s(i);
         return Value::string(r);
     }
-    if (name == "str")
+    if (id == Builtin::Str)
         return Value::string(format_number(c.f(0), saturated_int(c.f(1)), c.f(2) < 0 ? 6 : saturated_int(c.f(2))));
-    if (name == "vstr") {
+    if (id == Builtin::Vstr) {
         int dims = saturated_int(c.f(0));
         const Value& v = args[1];
         std::string sep = c.s(2), r;
@@ -305,8 +423,8 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         }
         return Value::string(r);
     }
-    if (name == "strlen") return number(static_cast<double>(c.s(0).size()));
-    if (name == "substr") {
+    if (id == Builtin::Strlen) return number(static_cast<double>(c.s(0).size()));
+    if (id == Builtin::Substr) {
         std::string s = c.s(0);
         long start = static_cast<long>(c.f(1)), length = static_cast<long>(c.f(2));
         if (start < 1 || length < 0 || start - 1 + length > static_cast<long>(s.size())) {
@@ -315,7 +433,7 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         }
         return Value::string(s.substr(start - 1, length));
     }
-    if (name == "chr") {
+    if (id == Builtin::Chr) {
         long code = static_cast<long>(c.f(0));
         if (code < 1 || code > 127) {
             c.domain("only ASCII codes 1..127 are supported");
@@ -323,22 +441,22 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         }
         return Value::string(std::string(1, static_cast<char>(code)));
     }
-    if (name == "asc") {
+    if (id == Builtin::Asc) {
         std::string s = c.s(0);
         return number(s.empty() ? 0.0 : static_cast<unsigned char>(s[0]));
     }
-    if (name == "val") {
+    if (id == Builtin::Val) {
         std::string s = c.s(0);
         char* end = nullptr;
         double x = std::strtod(s.c_str(), &end);
         return number(end == s.c_str() ? 0.0 : x);
     }
-    if (name == "strupr" || name == "strlwr") {
+    if (id == Builtin::Strupr || id == Builtin::Strlwr) {
         std::string s = c.s(0);
-        for (auto& ch : s) ch = name == "strupr" ? std::toupper(ch) : std::tolower(ch);
+        for (auto& ch : s) ch = id == Builtin::Strupr ? std::toupper(ch) : std::tolower(ch);
         return Value::string(s);
     }
-    if (name == "strcmp") {
+    if (id == Builtin::Strcmp) {
         // POV's: the difference of the first characters that differ (here
         // bytes of the UTF-8 text), 0 when equal.
         const std::string a = c.s(0), b = c.s(1);
@@ -348,7 +466,7 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         const int right = i < b.size() ? static_cast<unsigned char>(b[i]) : 0;
         return number(static_cast<double>(left - right));
     }
-    if (name == "datetime") {
+    if (id == Builtin::Datetime) {
         const std::string format = args.size() > 1 ? c.s(1) : "%Y-%m-%d %H:%M:%SZ";
         if (format.empty() || format.size() > kLongestDatetimeText) {
             c.domain(format.empty() ? "the format is empty"
@@ -360,7 +478,7 @@ Value Evaluator::call_builtin(const std::string& name, const std::vector<Value>&
         if (!text) c.domain("the date is outside the years 1400 to 9999 (POV-Ray's range)");
         return Value::string(text.value_or(""));
     }
-    if (name == "file_exists") {
+    if (id == Builtin::FileExists) {
         std::error_code ec;
         // Under --safe a path outside the allowed folders does not exist: the
         // scene must not learn what is on the disk outside.
