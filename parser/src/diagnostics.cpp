@@ -138,9 +138,15 @@ size_t edit_distance(const std::string& a, const std::string& b) {
 
 std::string Evaluator::suggestion(const std::string& name) const {
     std::vector<std::string> candidates;
-    for (const auto& scope : m_scopes)
-        for (const auto& [declared, value] : scope) candidates.push_back(declared);
-    for (const auto& [macro, definition] : m_macros) candidates.push_back(macro);
+    // In each table's alphabetical order, so that a tie goes to the same
+    // name on every run.
+    auto add_sorted = [&candidates](const auto& table) {
+        const std::size_t first = candidates.size();
+        for (const auto& entry : table) candidates.push_back(entry.first);
+        std::sort(candidates.begin() + std::ptrdiff_t(first), candidates.end());
+    };
+    for (const auto& scope : m_scopes) add_sorted(scope);
+    add_sorted(m_macros);
     for (int k = Parser::symbol_kind::S_SPHERE; k < Parser::symbol_kind::YYNTOKENS; ++k)
         candidates.push_back(Parser::symbol_name(static_cast<Parser::symbol_kind_type>(k)));
     std::string best;

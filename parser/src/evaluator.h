@@ -37,6 +37,7 @@
 #include "grammar.tab.hpp"
 #include "lancer/parser.h"
 #include "memory_budget.h"
+#include "name_table.h"
 #include "raw_token.h"
 #include "value.h"
 
@@ -553,6 +554,14 @@ class Evaluator {
     bool take_raw(RawKind kind, std::string_view text);
     bool push_file(std::string text, const std::string& label, const std::string& path, const std::string& folder,
                    const sg::SourceLocation& included_from);
+    // Where a name resolves, innermost scope first: its value (null when
+    // undeclared), the scope holding it, and the caller's variable when it
+    // is a macro parameter that stands for one.
+    struct NameLookup {
+        const Value* value = nullptr;
+        std::size_t scope = 0;
+        const VariableReference* reference = nullptr;
+    };
     Symbol classify(const RawToken& raw);
     // The value of a RawKind::Vector token read from a file in m_buffers.
     Value vector_literal(const RawToken& raw) const;
@@ -560,6 +569,7 @@ class Evaluator {
     // a FUNCTION_LITERAL, or FUNCTION_OPEN before a pattern, pigment or transform body.
     std::optional<Symbol> read_function(const RawToken& keyword);
     Symbol symbol_for_identifier(const RawToken& raw);
+    Symbol symbol_for_identifier(const RawToken& raw, const NameLookup& found);
     Symbol symbol_for_constant(const RawToken& raw);
     Kind token_for_value(const Value& value);
     Symbol make_symbol(Kind kind, const RawToken& raw, Value value = {});
@@ -614,6 +624,7 @@ class Evaluator {
     void store(const std::string& name, Value value, bool local, const sg::SourceLocation& where,
                std::optional<std::size_t> local_scope = std::nullopt);
     const Value* lookup(const std::string& name) const;
+    NameLookup find_name(const HashedName& name) const;
     // #ifdef's and defined()'s test: a declared identifier or macro, or for
     // Name[i]… an array element that has a value (the indices are read).
     bool identifier_defined(const std::string& name, const sg::SourceLocation& at);
@@ -632,13 +643,11 @@ class Evaluator {
     std::vector<std::shared_ptr<Frame>> m_frames;
     std::vector<Pending> m_pending;
     std::optional<Pending> m_last_returned;
-    std::vector<std::map<std::string, Value>> m_scopes;
+    std::vector<NameMap<Value>> m_scopes;
     // Per scope, the macro parameters that stand for a caller's variable.
-    std::vector<std::map<std::string, VariableReference>> m_references;
+    std::vector<NameMap<VariableReference>> m_references;
     void push_scope();
     void pop_scope();
-    // The variable a name (or a reference to one) resolves to, innermost first.
-    std::optional<VariableReference> variable_of(const std::string& name) const;
     const Value* referenced_value(const VariableReference& reference) const;
     void write_reference(const VariableReference& reference, Value value);
     // The identifier token read last: where it stood and what it names.
@@ -647,7 +656,8 @@ class Evaluator {
         VariableReference variable;
     };
     std::optional<IdentifierUse> m_last_identifier;
-    std::map<std::string, std::shared_ptr<const Macro>> m_macros;
+    void remember_identifier(const SourceRange& range, const std::string& name, const NameLookup& found);
+    NameMap<std::shared_ptr<const Macro>> m_macros;
     // Every inclusion gets its own label pointer; its include chain is kept here.
     std::map<const std::string*, std::vector<sg::SourceLocation>> m_include_chains;
     std::map<const std::string*, std::shared_ptr<const TokenBuffer>> m_buffers;

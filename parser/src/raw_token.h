@@ -32,8 +32,26 @@ enum class RawKind : std::uint8_t {
 // mesh data is most of a big scene's text, and a token costs far more than
 // its numbers. Its text is "<"; its components are TokenBuffer::vector_components
 // from index `number`, `vector_size` of them.
+// What an identifier's spelling makes it, whatever the scene declares:
+// found in the word tables the first time the token is read and kept, as a
+// loop reads the same token again at each pass.
+enum class WordClass : std::uint8_t {
+    Unknown,  // not looked up yet
+    Keyword,  // RawToken::keyword_token holds its token kind
+    // Before a '{', a block lancer skips with a warning (radiosity { … }):
+    IgnoredBlock,    // a word that is nothing else
+    IgnoredKeyword,  // a keyword too (mm_per_unit), as Keyword otherwise
+    Builtin,         // a built-in function
+    Constant,        // x, pi, clock, true ...
+    Unsupported,     // a POV-Ray word lancer refuses with a clear error
+    Name,            // none of these: a scene's own name (or undeclared)
+};
+
 struct RawToken {
     RawKind kind = RawKind::Punct;
+    // Identifiers only. Both fit in what would be padding before vector_size.
+    mutable WordClass word_class = WordClass::Unknown;
+    mutable std::int16_t keyword_token = 0;
     std::uint32_t vector_size = 0;
     std::string text;
     double number = 0.0;

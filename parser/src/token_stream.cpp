@@ -274,23 +274,24 @@ Evaluator::Symbol Evaluator::read_token() {
             continue;
         }
         if (raw->kind == RawKind::Identifier) {
-            if (skip_ignored_block(*raw)) continue;
+            const NameLookup found = find_name(HashedName(raw->text));
+            if (!found.value && skip_ignored_block(*raw)) continue;
             // POV still reads the old `default { … }` as #default.
-            if (raw->text == "default" && !lookup(raw->text) && !directives_blocked()) {
+            if (raw->text == "default" && !found.value && !directives_blocked()) {
                 const RawToken* next = peek_raw();
                 if (next && next->kind == RawKind::Punct && next->text == "{") {
                     directive_default(*raw);
                     continue;
                 }
             }
-            if (raw->text == "function" && !lookup(raw->text)) {
+            if (raw->text == "function" && !found.value) {
                 if (std::optional<Symbol> function = read_function(*raw)) {
                     m_last_returned.reset();
                     return std::move(*function);
                 }
                 continue;
             }
-            if (const Value* named = lookup(raw->text); named && named->kind == Value::Kind::Array) {
+            if (const Value* named = found.value; named && named->kind == Value::Kind::Array) {
                 const RawToken* next = peek_raw();
                 if (next && next->kind == RawKind::Punct && next->text == "[") {
                     const std::shared_ptr<ArrayData> data = named->array();
@@ -304,8 +305,8 @@ Evaluator::Symbol Evaluator::read_token() {
                     return symbol;
                 }
             }
-            auto macro = m_macros.find(raw->text);
-            if (macro != m_macros.end() && !lookup(raw->text)) {
+            auto macro = found.value || m_macros.empty() ? m_macros.end() : m_macros.find(HashedName(raw->text));
+            if (macro != m_macros.end()) {
                 if (macro_waits_for_value_end()) {
                     m_last_returned = Pending{raw, nullptr, frame, index, false};
                     return make_symbol(Parser::token::TOK_DIRECTIVE, *raw, Value::string(raw->text));
@@ -314,6 +315,9 @@ Evaluator::Symbol Evaluator::read_token() {
                 expand_macro(*raw, *keep);
                 continue;
             }
+            m_last_returned = Pending{raw, nullptr, frame, index, false};
+            m_previous_word = raw->text;
+            return symbol_for_identifier(*raw, found);
         }
         m_last_returned = Pending{raw, nullptr, frame, index, raw->kind == RawKind::Punct};
         return classify(*raw);
@@ -361,37 +365,57 @@ Evaluator::Symbol Evaluator::classify(const RawToken& raw) {
     return make_symbol(Parser::token::TOK_DIRECTIVE, raw);
 }
 
-Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
+namespace {
+WordClass word_class_of(const RawToken& raw) {
+    if (raw.word_class != WordClass::Unknown) return raw.word_class;
     const std::string& name = raw.text;
-    auto keyword = keyword_table().find(name);
+    if (auto keyword = keyword_table().find(name); keyword != keyword_table().end()) {
+        raw.keyword_token = static_cast<std::int16_t>(keyword->second);
+        raw.word_class = ignored_blocks().count(name) ? WordClass::IgnoredKeyword : WordClass::Keyword;
+    } else {
+        raw.word_class = ignored_blocks().count(name)      ? WordClass::IgnoredBlock
+                         : builtin_names().count(name)     ? WordClass::Builtin
+                         : constant_names().count(name)    ? WordClass::Constant
+                         : unsupported_words().count(name) ? WordClass::Unsupported
+                                                           : WordClass::Name;
+    }
+    return raw.word_class;
+}
+}  // namespace
+
+Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
+    return symbol_for_identifier(raw, find_name(HashedName(raw.text)));
+}
+
+Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw, const NameLookup& found) {
+    const std::string& name = raw.text;
+    WordClass word = word_class_of(raw);
+    if (word == WordClass::IgnoredKeyword) word = WordClass::Keyword;
     // Integrator parameter names are free words, even when they spell a
     // keyword (whitted { fresnel on }); colour keywords stay values.
-    if (keyword != keyword_table().end() && !m_block_names.empty() && m_block_names.back() == "integrator" &&
+    if (word == WordClass::Keyword && !m_block_names.empty() && m_block_names.back() == "integrator" &&
         name.find("rgb") == std::string::npos && name != "color" && name != "colour") {
         m_last_undeclared = name;
         return make_symbol(Parser::token::TOK_UNDECLARED_ID, raw);
     }
-    if (keyword != keyword_table().end()) return make_symbol(keyword->second, raw);
-    if (builtin_names().count(name)) return make_symbol(Parser::token::TOK_BUILTIN, raw);
-
-    // Constants and read-only built-in identifiers: one set lookup keeps a
-    // scene's own names (most identifiers in a loop) off the chain below.
-    if (constant_names().count(name)) return symbol_for_constant(raw);
-    if (const Value* value = lookup(name)) {
-        if (auto deprecated = m_deprecated.find(name); deprecated != m_deprecated.end()) {
-            Deprecation& d = deprecated->second;
-            if (!d.once || !d.warned)
-                warning(raw.location, "'" + name + "' is deprecated" + (d.message.empty() ? "" : ": " + d.message));
-            d.warned = true;
-        }
-        Value copy = *value;
+    if (word == WordClass::Keyword) return make_symbol(static_cast<Kind>(raw.keyword_token), raw);
+    if (word == WordClass::Builtin) return make_symbol(Parser::token::TOK_BUILTIN, raw);
+    if (word == WordClass::Constant) return symbol_for_constant(raw);
+    if (found.value) {
+        if (!m_deprecated.empty())
+            if (auto deprecated = m_deprecated.find(name); deprecated != m_deprecated.end()) {
+                Deprecation& d = deprecated->second;
+                if (!d.once || !d.warned)
+                    warning(raw.location, "'" + name + "' is deprecated" + (d.message.empty() ? "" : ": " + d.message));
+                d.warned = true;
+            }
+        Value copy = *found.value;
         copy.boolean_literal = false;
         Symbol symbol = make_symbol(token_for_value(copy), raw, std::move(copy));
-        if (std::optional<VariableReference> variable = variable_of(name))
-            m_last_identifier = IdentifierUse{symbol.location, std::move(*variable)};
+        remember_identifier(symbol.location, name, found);
         return symbol;
     }
-    if (unsupported_words().count(name)) {
+    if (word == WordClass::Unsupported) {
         error(raw.location, "'" + name + "' is a POV-Ray feature that lancer does not support");
         m_suppress_syntax_errors = true;
         abort_parse();
@@ -490,8 +514,10 @@ Evaluator::Kind Evaluator::token_for_value(const Value& value) {
     }
 }
 
+// The caller has found that no variable has the keyword's name.
 bool Evaluator::skip_ignored_block(const RawToken& keyword) {
-    if (!ignored_blocks().count(keyword.text) || lookup(keyword.text)) return false;
+    const WordClass word = word_class_of(keyword);
+    if (word != WordClass::IgnoredBlock && word != WordClass::IgnoredKeyword) return false;
     const RawToken* next = peek_raw();
     if (!next || next->kind != RawKind::Punct || next->text != "{") return false;
     Frame& frame = *m_frames.back();
@@ -520,12 +546,19 @@ void Evaluator::pop_scope() {
     m_references.pop_back();
 }
 
-std::optional<VariableReference> Evaluator::variable_of(const std::string& name) const {
-    for (std::size_t i = m_scopes.size(); i-- > 0;) {
-        if (auto reference = m_references[i].find(name); reference != m_references[i].end()) return reference->second;
-        if (m_scopes[i].count(name)) return VariableReference{i, name, nullptr, 0};
+// Assigned in place: the last use's strings keep their room, so a loop
+// that reads names allocates nothing here.
+void Evaluator::remember_identifier(const SourceRange& range, const std::string& name, const NameLookup& found) {
+    IdentifierUse& use = m_last_identifier ? *m_last_identifier : m_last_identifier.emplace();
+    use.range = range;
+    if (found.reference) {
+        use.variable = *found.reference;
+        return;
     }
-    return std::nullopt;
+    use.variable.scope = found.scope;
+    use.variable.name.assign(name);
+    use.variable.array.reset();
+    use.variable.element = 0;
 }
 
 const Value* Evaluator::referenced_value(const VariableReference& reference) const {
@@ -548,14 +581,19 @@ void Evaluator::write_reference(const VariableReference& reference, Value value)
     if (reference.scope < m_scopes.size()) m_scopes[reference.scope][reference.name] = std::move(value);
 }
 
-const Value* Evaluator::lookup(const std::string& name) const {
+Evaluator::NameLookup Evaluator::find_name(const HashedName& name) const {
     for (std::size_t i = m_scopes.size(); i-- > 0;) {
-        if (auto reference = m_references[i].find(name); reference != m_references[i].end())
-            return referenced_value(reference->second);
+        if (!m_references[i].empty())
+            if (auto reference = m_references[i].find(name); reference != m_references[i].end())
+                return NameLookup{referenced_value(reference->second), i, &reference->second};
         auto found = m_scopes[i].find(name);
-        if (found != m_scopes[i].end()) return &found->second;
+        if (found != m_scopes[i].end()) return NameLookup{&found->second, i, nullptr};
     }
-    return nullptr;
+    return NameLookup{};
+}
+
+const Value* Evaluator::lookup(const std::string& name) const {
+    return find_name(HashedName(name)).value;
 }
 
 void Evaluator::store(const std::string& name, Value value, bool local, const sg::SourceLocation& where,
