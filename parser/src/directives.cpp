@@ -124,7 +124,8 @@ void Evaluator::directive_declare(const RawToken& d, bool local) {
     }
     const std::size_t directive_depth = m_frames.size();
     const std::size_t directive_scope = m_scopes.size() - 1;
-    Value value = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
+    std::optional<Value> plain = read_plain_value();
+    Value value = plain ? std::move(*plain) : parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
     if (m_aborted) return;
     // A value that a macro wrote (#local M = Matrix_Trans(…)) may end where
     // the macro's text does: leave the macro first, so the ';' is looked for

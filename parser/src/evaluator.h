@@ -59,6 +59,8 @@ void transform_light(sg::Light& light, const sg::Mat4& world_from_local);
 // `sky_along_view` (when not null) is set when look_at looks along the sky.
 sg::Camera resolve_camera(const CameraSpec& spec, bool* sky_along_view = nullptr);
 bool is_reserved_word(const std::string& name);
+// What an identifier token's spelling makes it (kept on the token).
+WordClass word_class_of(const RawToken& raw);
 // A number POV truncates to an integer, without overflow: values past
 // int's range (clamped to +-2e9) are out of every setting's range anyway,
 // and the caller's checks report them; NaN gives 0.
@@ -573,6 +575,12 @@ class Evaluator {
     Symbol symbol_for_constant(const RawToken& raw);
     Kind token_for_value(const Value& value);
     Symbol make_symbol(Kind kind, const RawToken& raw, Value value = {});
+    SourceRange token_range(const RawToken& raw) const;  // what its symbol spans
+    // A declared value that is a plain expression ending in ';', read and
+    // evaluated without the grammar (plain_values.cpp), the ';' left to
+    // take; none, with nothing read, for any other value.
+    class PlainValueReader;
+    std::optional<Value> read_plain_value();
     const RawToken* peek_raw();
     const RawToken* take_raw();
     bool directives_blocked() const;

@@ -125,9 +125,14 @@ Evaluator::Evaluator(const ParseOptions& options) : m_options(options) {
     }
 }
 
-Evaluator::Symbol Evaluator::make_symbol(Kind kind, const RawToken& raw, Value value) {
+SourceRange Evaluator::token_range(const RawToken& raw) const {
     SourceRange range{raw.location, raw.location};
     range.end.column += static_cast<int>(std::max<size_t>(raw.text.size(), 1)) - 1;
+    return range;
+}
+
+Evaluator::Symbol Evaluator::make_symbol(Kind kind, const RawToken& raw, Value value) {
+    const SourceRange range = token_range(raw);
     if (is_valued(kind)) return Symbol(kind, TokenValue{raw.text, std::move(value)}, range);
     return Symbol(kind, range);
 }
@@ -365,7 +370,6 @@ Evaluator::Symbol Evaluator::classify(const RawToken& raw) {
     return make_symbol(Parser::token::TOK_DIRECTIVE, raw);
 }
 
-namespace {
 WordClass word_class_of(const RawToken& raw) {
     if (raw.word_class != WordClass::Unknown) return raw.word_class;
     const std::string& name = raw.text;
@@ -381,7 +385,6 @@ WordClass word_class_of(const RawToken& raw) {
     }
     return raw.word_class;
 }
-}  // namespace
 
 Evaluator::Symbol Evaluator::symbol_for_identifier(const RawToken& raw) {
     return symbol_for_identifier(raw, find_name(HashedName(raw.text)));

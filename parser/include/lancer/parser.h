@@ -76,6 +76,11 @@ struct ParseOptions {
     int max_include_depth = 64;
     int max_macro_depth = 200;
     int max_nesting_depth = 256;
+    // A #declare'd value that is a plain expression (numbers, variables,
+    // built-in calls, operators) is read straight from its tokens, not by
+    // the grammar: loops run several times faster, with the same values and
+    // messages. false: the grammar reads every value (the tests compare).
+    bool plain_values = true;
     // Triangles in the whole scene (mesh, mesh2, obj_mesh): ~100 bytes each
     // once the renderer holds them, so the default stops at ~5 GiB.
     long max_triangles = 50'000'000;
