@@ -164,7 +164,8 @@ void Evaluator::directive_undef(const RawToken& d) {
 }
 
 bool Evaluator::evaluate_condition(const RawToken& d, const std::string& what) {
-    Value value = parse_nested(Parser::token::TOK_START_COND, d.location, true);
+    std::optional<Value> plain = read_plain_condition();
+    Value value = plain ? std::move(*plain) : parse_nested(Parser::token::TOK_START_COND, d.location, true);
     rewind_lookahead();
     if (m_aborted) return false;
     SourceRange where{d.location, d.location};

@@ -581,6 +581,11 @@ class Evaluator {
     // take; none, with nothing read, for any other value.
     class PlainValueReader;
     std::optional<Value> read_plain_value();
+    // The same for a directive's `(condition)`, read with its parentheses.
+    std::optional<Value> read_plain_condition();
+    bool may_read_plain() const;
+    std::optional<Value> read_plain(std::size_t first, char terminator, bool take_terminator,
+                                    Parser::symbol_kind_type terminator_kind);
     const RawToken* peek_raw();
     const RawToken* take_raw();
     bool directives_blocked() const;

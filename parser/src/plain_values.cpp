@@ -61,14 +61,14 @@ class Evaluator::PlainValueReader {
     PlainValueReader(Evaluator& ev, const std::vector<RawToken>& tokens, std::size_t first, std::size_t end)
         : m_ev(ev), m_tokens(tokens), m_first(first), m_end(end) {}
 
-    // Checks the value; on success, the index of its ';'.
-    std::optional<std::size_t> check() {
+    // Checks the value; on success, the index of the `terminator` after it.
+    std::optional<std::size_t> check(char terminator) {
         m_evaluating = false;
         m_at = m_first;
         m_ok = true;
         m_names.clear();
         expression(0, false);
-        if (!m_ok || m_at >= m_end || !is_punct(m_tokens[m_at], ';')) return std::nullopt;
+        if (!m_ok || m_at >= m_end || !is_punct(m_tokens[m_at], terminator)) return std::nullopt;
         return m_at;
     }
 
@@ -357,32 +357,51 @@ class Evaluator::PlainValueReader {
     std::size_t m_name_index = 0;
 };
 
-std::optional<Value> Evaluator::read_plain_value() {
-    if (!m_options.plain_values || !m_pending.empty() || m_frames.empty() || m_aborted) return std::nullopt;
-    // Keywords are free words inside an integrator's block: the grammar's.
-    if (!m_block_names.empty() && m_block_names.back() == "integrator") return std::nullopt;
-    if (m_nesting + kDeepestNesting > m_options.max_nesting_depth) return std::nullopt;
+// The expression from `first` to `terminator` in the innermost frame, or
+// none (nothing read). `take_terminator`: whether it is read too (else it
+// is left for the caller to take, as the grammar leaves its lookahead).
+std::optional<Value> Evaluator::read_plain(std::size_t first, char terminator, bool take_terminator,
+                                           Parser::symbol_kind_type terminator_kind) {
     Frame& frame = *m_frames.back();
-    PlainValueReader reader(*this, frame.buffer->tokens, frame.position, frame.end);
-    const std::optional<std::size_t> semicolon = reader.check();
-    if (!semicolon) return std::nullopt;
-    const std::size_t read = *semicolon - frame.position + 1;  // with the ';' the grammar looks ahead to
+    PlainValueReader reader(*this, frame.buffer->tokens, first, frame.end);
+    const std::optional<std::size_t> end = reader.check(terminator);
+    if (!end) return std::nullopt;
+    const std::size_t read = *end - frame.position + 1;  // with the terminator the grammar reads
     if (m_tokens_read + long(read) > 50'000'000L + 20 * m_options.max_loop_iterations) return std::nullopt;
     SourceRange range;
     Value value = reader.evaluate(range);
     m_tokens_read += long(read);
     // What reading the tokens one by one would have left behind.
-    for (std::size_t i = *semicolon; i-- > frame.position;)
+    for (std::size_t i = *end; i-- > frame.position;)
         if (frame.buffer->tokens[i].kind == RawKind::Identifier) {
             m_previous_word = frame.buffer->tokens[i].text;
             break;
         }
-    const RawToken& end = frame.buffer->tokens[*semicolon];
-    m_last_location = end.location;
-    m_last_location.column += static_cast<int>(end.text.size());
-    m_previous_kind = Parser::symbol_kind::S_SEMI;
-    frame.position = *semicolon;  // take_punct(";") takes it
+    const RawToken& last = frame.buffer->tokens[*end];
+    m_last_location = last.location;
+    m_last_location.column += static_cast<int>(last.text.size());
+    m_previous_kind = terminator_kind;
+    frame.position = take_terminator ? *end + 1 : *end;
     return value;
+}
+
+bool Evaluator::may_read_plain() const {
+    if (!m_options.plain_values || !m_pending.empty() || m_frames.empty() || m_aborted) return false;
+    // Keywords are free words inside an integrator's block: the grammar's.
+    if (!m_block_names.empty() && m_block_names.back() == "integrator") return false;
+    return m_nesting + 1 + kDeepestNesting <= m_options.max_nesting_depth;
+}
+
+std::optional<Value> Evaluator::read_plain_value() {
+    if (!may_read_plain()) return std::nullopt;
+    return read_plain(m_frames.back()->position, ';', false, Parser::symbol_kind::S_SEMI);
+}
+
+std::optional<Value> Evaluator::read_plain_condition() {
+    if (!may_read_plain()) return std::nullopt;
+    const Frame& frame = *m_frames.back();
+    if (frame.position >= frame.end || !is_punct(frame.buffer->tokens[frame.position], '(')) return std::nullopt;
+    return read_plain(frame.position + 1, ')', true, Parser::symbol_kind::S_RPAREN);
 }
 
 }  // namespace lancer::parse

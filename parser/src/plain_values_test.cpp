@@ -171,7 +171,8 @@ TEST(ParserPlainValues, ReadAsTheGrammarReadsThem) {
 
 TEST(ParserPlainValues, DeclarationsAroundTheValueAreTheGrammars) {
     // #local in a macro, a value that a macro writes, no ';', a value
-    // ending in a macro's text, deprecated names, nested loops.
+    // ending in a macro's text, deprecated names, nested loops, and the
+    // conditions of #if, #elseif and #while.
     const std::vector<std::string> scenes = {
         "#macro M(A) #local Q = A * 2; Q #end #declare R = M(3); #debug str(R, 0, 3)",
         "#macro Two() 2 #end #declare R = 1 + Two(); #debug str(R, 0, 3)",
@@ -184,6 +185,18 @@ TEST(ParserPlainValues, DeclarationsAroundTheValueAreTheGrammars) {
         "#declare R = <1, 2, 3>\n#declare Q = R.x; #debug str(Q, 0, 0)",
         "#declare P = function(u) { u * 2 } #declare R = P(3); #debug str(R, 0, 0)",
         "#declare R = 1; #declare R = R + R; #undef R #declare R = 3; #debug str(R, 0, 0)",
+        // conditions, read with their parentheses
+        "#declare A = 2; #if (A > 1 & A < 3) #debug \"in\" #else #debug \"out\" #end",
+        "#declare A = 2; #if (A = 1) #debug \"one\" #elseif (A = 2) #debug \"two\" #end",
+        "#if ((1 + 1) * 2 = 4) #debug \"yes\" #end",
+        "#if (\"a\") #end",
+        "#if (1 / 0) #end",
+        "#if (Nope < 3) #end",
+        "#if (1 < 2 #end",
+        "#if 1 #end",
+        "#declare I = 0; #while (I < 3 & rand(seed(1)) >= 0) #declare I = I + 1; #end #debug str(I, 0, 0)",
+        "#declare I = 0; #while (I < 3) #declare I = I + 1; #end #if (I = 3) #debug \"three\" #end",
+        "#declare V = <1, 2, 3>; #if (V.y = 2) #debug \"y\" #end #if (V) #end",
     };
     for (const std::string& scene : scenes) {
         SCOPED_TRACE(scene);
