@@ -581,11 +581,12 @@ class Evaluator {
     // take; none, with nothing read, for any other value.
     class PlainValueReader;
     std::optional<Value> read_plain_value();
-    // The same for a directive's `(condition)`, read with its parentheses.
+    // The same for a directive's `(condition)`, read with its parentheses,
+    // and for an item of #write's list (ending in ',' or ')', left to take).
     std::optional<Value> read_plain_condition();
+    std::optional<Value> read_plain_item();
     bool may_read_plain() const;
-    std::optional<Value> read_plain(std::size_t first, char terminator, bool take_terminator,
-                                    Parser::symbol_kind_type terminator_kind);
+    std::optional<Value> read_plain(std::size_t first, std::string_view terminators, bool take_terminator);
     const RawToken* peek_raw();
     const RawToken* take_raw();
     bool directives_blocked() const;

@@ -15,6 +15,7 @@
 // evaluate, so a value read here has no side effect the grammar would
 // repeat (rand() advances its stream once).
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "evaluator.h"
@@ -61,14 +62,19 @@ class Evaluator::PlainValueReader {
     PlainValueReader(Evaluator& ev, const std::vector<RawToken>& tokens, std::size_t first, std::size_t end)
         : m_ev(ev), m_tokens(tokens), m_first(first), m_end(end) {}
 
-    // Checks the value; on success, the index of the `terminator` after it.
-    std::optional<std::size_t> check(char terminator) {
+    // Checks the value; on success, the index of the terminator after it
+    // (one of `terminators`' punctuation characters).
+    std::optional<std::size_t> check(std::string_view terminators) {
         m_evaluating = false;
         m_at = m_first;
         m_ok = true;
         m_names.clear();
         expression(0, false);
-        if (!m_ok || m_at >= m_end || !is_punct(m_tokens[m_at], terminator)) return std::nullopt;
+        if (!m_ok || m_at >= m_end) return std::nullopt;
+        const RawToken& last = m_tokens[m_at];
+        if (last.kind != RawKind::Punct || last.text.size() != 1 ||
+            terminators.find(last.text[0]) == std::string_view::npos)
+            return std::nullopt;
         return m_at;
     }
 
@@ -357,14 +363,14 @@ class Evaluator::PlainValueReader {
     std::size_t m_name_index = 0;
 };
 
-// The expression from `first` to `terminator` in the innermost frame, or
-// none (nothing read). `take_terminator`: whether it is read too (else it
-// is left for the caller to take, as the grammar leaves its lookahead).
-std::optional<Value> Evaluator::read_plain(std::size_t first, char terminator, bool take_terminator,
-                                           Parser::symbol_kind_type terminator_kind) {
+// The expression from `first` to one of `terminators` in the innermost
+// frame, or none (nothing read). `take_terminator`: whether it is read too
+// (else it is left for the caller to take, as the grammar leaves its
+// lookahead).
+std::optional<Value> Evaluator::read_plain(std::size_t first, std::string_view terminators, bool take_terminator) {
     Frame& frame = *m_frames.back();
     PlainValueReader reader(*this, frame.buffer->tokens, first, frame.end);
-    const std::optional<std::size_t> end = reader.check(terminator);
+    const std::optional<std::size_t> end = reader.check(terminators);
     if (!end) return std::nullopt;
     const std::size_t read = *end - frame.position + 1;  // with the terminator the grammar reads
     if (m_tokens_read + long(read) > 50'000'000L + 20 * m_options.max_loop_iterations) return std::nullopt;
@@ -380,7 +386,9 @@ std::optional<Value> Evaluator::read_plain(std::size_t first, char terminator, b
     const RawToken& last = frame.buffer->tokens[*end];
     m_last_location = last.location;
     m_last_location.column += static_cast<int>(last.text.size());
-    m_previous_kind = terminator_kind;
+    m_previous_kind = last.text[0] == ';'   ? Parser::symbol_kind::S_SEMI
+                      : last.text[0] == ',' ? Parser::symbol_kind::S_COMMA
+                                            : Parser::symbol_kind::S_RPAREN;
     frame.position = take_terminator ? *end + 1 : *end;
     return value;
 }
@@ -394,14 +402,19 @@ bool Evaluator::may_read_plain() const {
 
 std::optional<Value> Evaluator::read_plain_value() {
     if (!may_read_plain()) return std::nullopt;
-    return read_plain(m_frames.back()->position, ';', false, Parser::symbol_kind::S_SEMI);
+    return read_plain(m_frames.back()->position, ";", false);
+}
+
+std::optional<Value> Evaluator::read_plain_item() {
+    if (!may_read_plain()) return std::nullopt;
+    return read_plain(m_frames.back()->position, ",)", false);
 }
 
 std::optional<Value> Evaluator::read_plain_condition() {
     if (!may_read_plain()) return std::nullopt;
     const Frame& frame = *m_frames.back();
     if (frame.position >= frame.end || !is_punct(frame.buffer->tokens[frame.position], '(')) return std::nullopt;
-    return read_plain(frame.position + 1, ')', true, Parser::symbol_kind::S_RPAREN);
+    return read_plain(frame.position + 1, ")", true);
 }
 
 }  // namespace lancer::parse

@@ -1,6 +1,11 @@
 // A #declare'd plain expression is read without the grammar
 // (plain_values.cpp): every value, message and side effect must be what the
 // grammar gives for the same text (ParseOptions::plain_values false).
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <vector>
 
 #include "parse_test_helpers.h"
@@ -207,6 +212,36 @@ TEST(ParserPlainValues, DeclarationsAroundTheValueAreTheGrammars) {
             return std::string(result.ok() ? "ok\n" : "failed\n") + all_diagnostics(result);
         };
         EXPECT_EQ(read(true), read(false));
+    }
+}
+
+TEST(ParserPlainValues, WriteItemsAreWrittenAsTheGrammarWritesThem) {
+    const std::string items[] = {
+        R"("a", 1.5, <1, 2, 3>, "\n")",
+        R"("tri{", "<", str(V.x, 0, 16), ",", str(V.y * 2, 0, 3), ">", "}", "\n")",
+        R"(V * 2 + 1, -F, F > 1, rgb 1, C)",
+        R"("x" "y", 2)",  // no comma: the grammar reads on
+        R"(1 / 0, "after")",
+        R"(sphere { 0, 1 })",
+        R"(uint8 65, "B")",
+    };
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / ("lancer_plain_write_" + std::to_string(::getpid()) + ".txt");
+    for (const std::string& list : items) {
+        SCOPED_TRACE(list);
+        auto written = [&](bool plain) {
+            ParseOptions options;
+            options.plain_values = plain;
+            const std::string scene = std::string(kPrelude) + "#fopen Out \"" + file.string() +
+                                      "\" write\n#write (Out, " + list + ")\n#fclose Out\n";
+            const ParseResult result = parse_snippet(scene, "plain.pov", options);
+            std::ifstream in(file, std::ios::binary);
+            std::ostringstream content;
+            content << in.rdbuf();
+            return std::string(result.ok() ? "ok\n" : "failed\n") + all_diagnostics(result) + content.str();
+        };
+        EXPECT_EQ(written(true), written(false));
+        std::filesystem::remove(file);
     }
 }
 

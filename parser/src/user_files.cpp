@@ -161,7 +161,8 @@ void Evaluator::directive_write(const RawToken& d) {
             write_binary_values(d, type, text);
             continue;
         }
-        Value item = parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
+        std::optional<Value> plain = read_plain_item();
+        Value item = plain ? std::move(*plain) : parse_nested(Parser::token::TOK_START_VALUE, d.location, false);
         if (m_aborted) return;
         if (item.kind == Value::Kind::String) {
             text += item.text;
