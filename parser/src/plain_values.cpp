@@ -306,6 +306,8 @@ class Evaluator::PlainValueReader {
             return result;
         }
         if (word == WordClass::Builtin) return builtin_call(at, std::move(result));
+        if (word == WordClass::Keyword && token.keyword_token == Parser::token::TOK_TRACE)
+            return trace_call(std::move(result));
         if (word != WordClass::Name && word != WordClass::IgnoredBlock) {
             fail();
             return result;
@@ -319,7 +321,7 @@ class Evaluator::PlainValueReader {
             value = m_ev.find_name(HashedName(token.text)).value;
             const bool plain = value && (value->kind == Value::Kind::Float || value->kind == Value::Kind::Vector ||
                                          value->kind == Value::Kind::Color || value->kind == Value::Kind::String);
-            if (!plain || (!m_ev.m_deprecated.empty() && m_ev.m_deprecated.count(token.text))) {
+            if (!plain || deprecated(token)) {
                 fail();
                 return result;
             }
@@ -329,6 +331,80 @@ class Evaluator::PlainValueReader {
         result.value = *value;
         result.value.boolean_literal = false;
         return result;
+    }
+
+    // Using a deprecated name warns: the grammar's.
+    bool deprecated(const RawToken& name) const {
+        return !m_ev.m_deprecated.empty() && m_ev.m_deprecated.count(name.text) > 0;
+    }
+
+    bool take_comma() {
+        if (!more() || !is_punct(next(), ',')) return fail();
+        ++m_at;
+        return true;
+    }
+
+    // trace(Object, start, direction [, Name]): Name receives the normal
+    // (as a #declare), before anything after the call is read.
+    Operand trace_call(Operand result) {
+        if (!more() || !is_punct(next(), '(') || ++m_depth > kDeepestNesting) {
+            fail();
+            return result;
+        }
+        ++m_at;
+        if (!more() || next().kind != RawKind::Identifier) {
+            fail();
+            return result;
+        }
+        const std::size_t object_at = m_at++;
+        const Value* object = nullptr;
+        if (m_evaluating) {
+            object = m_names[m_name_index++];
+        } else {
+            const RawToken& name = m_tokens[object_at];
+            const WordClass word = word_class_of(name);
+            if (word == WordClass::Name || word == WordClass::IgnoredBlock)
+                object = m_ev.find_name(HashedName(name.text)).value;
+            if (!object || object->kind != Value::Kind::Object || deprecated(name)) {
+                fail();
+                return result;
+            }
+            m_names.push_back(object);
+        }
+        if (!take_comma()) return result;
+        Operand from = expression(0, false);
+        if (!take_comma()) return result;
+        Operand along = expression(0, false);
+        std::optional<std::size_t> normal_at;
+        if (more() && is_punct(next(), ',')) {
+            ++m_at;
+            if (!more() || next().kind != RawKind::Identifier) {
+                fail();
+                return result;
+            }
+            normal_at = m_at++;
+            if (!m_evaluating && !normal_name(m_tokens[*normal_at])) {
+                fail();
+                return result;
+            }
+        }
+        if (!take_closing(')', result) || !m_evaluating) return result;
+        const std::string normal = normal_at ? m_tokens[*normal_at].text : std::string();
+        if (normal_at && !m_ev.find_name(HashedName(normal)).value) m_ev.m_last_undeclared = normal;
+        result.value = m_ev.trace(*object, token_range(object_at), from.value, from.range, along.value, along.range,
+                                  normal, result.range);
+        return result;
+    }
+
+    // The grammar's trace_normal: a value's name or an undeclared word
+    // (not a macro's, which would be called).
+    bool normal_name(const RawToken& name) const {
+        const WordClass word = word_class_of(name);
+        if (word != WordClass::Name && word != WordClass::IgnoredBlock) return false;
+        if (deprecated(name)) return false;
+        const Value* value = m_ev.find_name(HashedName(name.text)).value;
+        if (value) return m_ev.token_for_value(*value) == Parser::token::TOK_VALUE_ID;
+        return m_ev.m_macros.find(name.text) == m_ev.m_macros.end();
     }
 
     Operand builtin_call(std::size_t at, Operand result) {

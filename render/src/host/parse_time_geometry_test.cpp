@@ -47,6 +47,41 @@ TEST(ParseTimeGeometry, TraceGivesPointAndNormalOrZerosOnAMiss) {
     expect_near(answer(parsed, 3), sg::Vec3(0.5));  // an undeclared normal name is declared
 }
 
+// A #declare'd trace() is read without the grammar when its value is a
+// plain expression (parser/src/plain_values.cpp): the same values, normals
+// stored at the same moment, the same messages.
+TEST(ParseTimeGeometry, DeclaredTracesReadAsTheGrammarReadsThem) {
+    const std::string scene = R"(
+        #declare Ball = sphere { <0, 1, 0>, 1 scale <2, 1, 1> }
+        #declare N = <9, 9, 9>;
+        #declare P = trace(Ball, <5, 1, 0>, <-1, 0, 0>, N) + N;
+        #declare Q = N + trace(Ball, <1, 5, 0>, <0, -1, 0>, N);
+        #declare R = trace(Ball, <5, 5, 0>, <1, 0, 0>, M) + 2 * trace(Ball, <0, 1, -5>, z);
+        #declare S = trace(Ball, <5, 1, 0>, <0, 0, 0>);
+        #if (vlength(trace(Ball, <0, 9, 0>, -y, N)) > 1) #debug "hit" #end
+        #debug concat(vstr(3, P, ",", 0, 17), " ", vstr(3, Q, ",", 0, 17), " ", vstr(3, R, ",", 0, 17))
+        #debug concat(vstr(3, N, ",", 0, 17), " ", vstr(3, M, ",", 0, 17), " ", vstr(3, S, ",", 0, 17))
+        #declare T = trace(N, <5, 1, 0>, x);
+        #declare U = trace(Ball, <5, 1, 0>, x, Ball);
+    )";
+    auto read = [&scene](bool plain) {
+        Parsed parsed;
+        ParseOptions options;
+        options.geometry_queries = parsed.queries.get();
+        options.plain_values = plain;
+        const ParseResult result = parse_scene_string(scene, "queries.pov", options);
+        std::string text = result.ok() ? "ok\n" : "failed\n";
+        for (const Diagnostic& d : result.diagnostics) text += format_diagnostic(d);
+        return text;
+    };
+    const std::string plain = read(true);
+    EXPECT_EQ(plain, read(false));
+    EXPECT_NE(plain.find("#debug: hit"), std::string::npos) << plain;
+    // P: the point <2, 1, 0> plus the normal trace() has just stored in N.
+    EXPECT_NE(plain.find("#debug: 3.00000000000000000,1.00000000000000000,0.00000000000000000"), std::string::npos)
+        << plain;
+}
+
 TEST(ParseTimeGeometry, TraceThroughCsg) {
     const Parsed parsed = parse_with_queries(R"(
         #declare D = difference { box { -1, 1 } sphere { 0, 0.5 } }
