@@ -1,19 +1,22 @@
-// A #declare or #local whose value is a plain expression (numbers, strings,
-// float, vector, colour and string variables, constants, built-in calls,
+// A value that is a plain expression (numbers, strings, float, vector,
+// colour and string variables, constants, built-in calls, trace(),
 // arithmetic, comparisons, logic, ?:, parentheses, vectors and their
-// components) ending in ';' is read here from the raw tokens, without the
-// grammar: a loop's declarations are most of its tokens, and the grammar's
-// own steps (a symbol pushed, moved and popped per rule) cost ten times the
-// arithmetic. The value is evaluated by the same Evaluator calls, in the same
-// order and with the same source ranges as the grammar's actions, so
-// results, warnings and errors are the grammar's.
+// components) is read here from the raw tokens, without the grammar: a
+// #declare or #local value ending in ';', an #if/#elseif/#while condition in
+// its parentheses, a #write item ending in ',' or ')'. A loop's values are
+// most of its tokens, and the grammar's own steps (a symbol pushed, moved
+// and popped per rule) cost ten times the arithmetic. The value is evaluated
+// by the same Evaluator calls, in the same order and with the same source
+// ranges as the grammar's actions, so results, warnings and errors are the
+// grammar's.
 //
 // A first pass only checks: anything else (a keyword, a macro, an array,
 // a user function, a directive, a value that ends in another frame or
-// without ';', a comparison at a vector's own level) leaves every token
-// unread and the grammar reads the value. Only then does the second pass
-// evaluate, so a value read here has no side effect the grammar would
-// repeat (rand() advances its stream once).
+// without its terminator, a comparison at a vector's own level) leaves
+// every token unread and the grammar reads the value. Only then does the
+// second pass evaluate, so a value read here has no side effect the grammar
+// would repeat (rand() advances its stream once, trace() stores its normal
+// once).
 #include <string>
 #include <string_view>
 #include <vector>
