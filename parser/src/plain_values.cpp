@@ -81,13 +81,11 @@ class Evaluator::PlainValueReader {
         return m_at;
     }
 
-    Value evaluate(SourceRange& range) {
+    Value evaluate() {
         m_evaluating = true;
         m_at = m_first;
         m_name_index = 0;
-        Operand value = expression(0, false);
-        range = value.range;
-        return std::move(value.value);
+        return std::move(expression(0, false).value);
     }
 
   private:
@@ -453,8 +451,7 @@ std::optional<Value> Evaluator::read_plain(std::size_t first, std::string_view t
     if (!end) return std::nullopt;
     const std::size_t read = *end - frame.position + 1;  // with the terminator the grammar reads
     if (m_tokens_read + long(read) > 50'000'000L + 20 * m_options.max_loop_iterations) return std::nullopt;
-    SourceRange range;
-    Value value = reader.evaluate(range);
+    Value value = reader.evaluate();
     m_tokens_read += long(read);
     // What reading the tokens one by one would have left behind.
     for (std::size_t i = *end; i-- > frame.position;)

@@ -6,10 +6,10 @@
 // and a large array asks for huge pages, so the faults are few.
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <type_traits>
+#include <utility>
 
 namespace lancer {
 
