@@ -45,6 +45,10 @@ namespace lancer::parse {
 
 // Pattern and light transforms, shared by grammar actions and objects.cpp.
 void transform_pattern(sg::Pigment& pigment, const sg::Mat4& world_from_local);
+// A pigment's pattern, to write to. A solid pigment has none until then
+// (sg::Pigment::pattern); the one made here starts from the moves the
+// pigment met, as if it had been there all along.
+sg::Pattern& pigment_pattern_of(sg::Pigment& pigment);
 // POV's hollow: on a CSG or union, every part is hollow too (Set_CSG_Children_Flag).
 void set_hollow(sg::Object& object, bool hollow);
 // A transform written in a media block: moves the densities given before it (POV's Transform_Density).

@@ -61,7 +61,7 @@ TEST(ParserFunctions, PatternsAndPigmentsAsFunctions) {
         "#declare P = function { pattern { agate scale 2 } }\n"
         "#declare C = function { pigment { checker rgb 1, rgb 0 } }\n"
         "plane { z, 0 pigment { function { P(x, y, z) * C(x, y, z).red } color_map { [0 rgb 0] [1 rgb 1] } } }");
-    const sg::Pattern& p = scene.objects[0].material->pigment.pattern;
+    const sg::Pattern& p = *scene.objects[0].material->pigment.pattern;
     EXPECT_EQ(p.kind, sg::Pattern::Kind::Function);
     ASSERT_TRUE(p.function);
     ASSERT_EQ(p.function->callees.size(), 2u);

@@ -971,7 +971,7 @@ pigment_start
   | bare_colour        { sg::Color c = ev.to_color($1, @1);
                          $$ = [c](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Solid; p.color = c; }; }
   | image_map          { sg::ImageMap image = $1;
-                         $$ = [image](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Image; p.image = image; }; }
+                         $$ = [image](sg::Pigment& p) { pigment_pattern_of(p); p.kind = sg::Pigment::Kind::Image; p.image = image; }; }
   | pattern_name       { $$ = ev.patterned_pigment($1, LOC(@1)); }
   | block_pattern_name { $$ = ev.patterned_pigment($1, LOC(@1)); }
   | block_pattern_name block_colours { $$ = ev.block_pigment($1, $2, @2, LOC(@1)); }
@@ -1213,7 +1213,7 @@ normal_body
 normal_edits
   : normal_start normal_mods { $$ = std::move($2); $$.insert($$.begin(), $1); }
   | "uv_mapping" normal_start normal_mods
-      { $$ = std::move($3); $$.insert($$.begin(), $2); $$.push_back([](sg::Normal& n) { n.pattern.uv_mapping = true; }); }
+      { $$ = std::move($3); $$.insert($$.begin(), $2); $$.push_back([](sg::Normal& n) { n.pattern->uv_mapping = true; }); }
   ;
 
 normal_start
@@ -1264,7 +1264,7 @@ normal_mod
   | "use_color"        { $$ = [](sg::Normal& n) { n.bump_map_use_color = true; }; }
   | "use_colour"       { $$ = [](sg::Normal& n) { n.bump_map_use_color = true; }; }
   | "use_index"        { $$ = [](sg::Normal& n) { n.bump_map_use_color = false; }; }
-  | "uv_mapping"       { $$ = [](sg::Normal& n) { n.pattern.uv_mapping = true; }; }
+  | "uv_mapping"       { $$ = [](sg::Normal& n) { n.pattern->uv_mapping = true; }; }
   ;
 
 /* checker normal { … } normal { … }: one normal per block. */

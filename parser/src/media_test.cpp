@@ -72,7 +72,7 @@ TEST(ParserMedia, DeclaredMediaAndDensityAndAtmosphere) {
     const sg::Media& m = first_media(scene);
     EXPECT_EQ(m.emission, sg::Vec3(0.5));
     ASSERT_EQ(m.densities.size(), 1u);
-    EXPECT_EQ(m.densities[0]->pattern.kind, sg::Pattern::Kind::Spherical);
+    EXPECT_EQ(m.densities[0]->pattern->kind, sg::Pattern::Kind::Spherical);
 }
 
 TEST(ParserMedia, DensityMapAndLightsMediaSwitches) {

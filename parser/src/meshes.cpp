@@ -591,13 +591,14 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
             }
             if (fs::is_regular_file(texture, ec)) {
                 material->pigment.kind = sg::Pigment::Kind::Image;
-                material->pigment.image.path = texture.string();
-                material->pigment.image.location = where.begin;
+                sg::ImageMap& image = *material->pigment.image;
+                image.path = texture.string();
+                image.location = where.begin;
                 // An OBJ texture lies on the mesh's texcoords, filtered.
-                material->pigment.image.map_type = sg::MapType::UV;
-                material->pigment.pattern.uv_mapping = true;
-                material->pigment.image.interpolate = 2;
-                finish_image_map(material->pigment.image, where.begin);
+                image.map_type = sg::MapType::UV;
+                pigment_pattern_of(material->pigment).uv_mapping = true;
+                image.interpolate = 2;
+                finish_image_map(image, where.begin);
             } else {
                 warning(where.begin,
                         "OBJ material '" + m.name + "': texture \"" + m.diffuse_texname + "\" not found; using Kd");

@@ -100,11 +100,11 @@ void map_by_uv(sg::Material& material) {
     }
     material.uv_mapping = true;
     if (material.pattern) material.pattern->uv_mapping = true;
-    material.pigment.pattern.uv_mapping = true;
-    material.pigment.image.map_type = sg::MapType::UV;
+    pigment_pattern_of(material.pigment).uv_mapping = true;
+    material.pigment.image->map_type = sg::MapType::UV;
     if (material.normal) {
         auto normal = std::make_shared<sg::Normal>(*material.normal);
-        normal->pattern.uv_mapping = true;
+        normal->pattern->uv_mapping = true;
         material.normal = normal;
     }
 }

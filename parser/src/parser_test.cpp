@@ -272,11 +272,11 @@ TEST(ParserObjects, ObjectUvMappingComesBeforeItsTexture) {
     auto scene = parse_ok("sphere { 0, 1 uv_mapping pigment { checker } normal { bumps 0.5 } translate x }");
     const sg::Material& material = *scene.objects.at(0).material;
     EXPECT_TRUE(material.uv_mapping);
-    EXPECT_TRUE(material.pigment.pattern.uv_mapping);
+    EXPECT_TRUE(material.pigment.pattern->uv_mapping);
     ASSERT_TRUE(material.normal);
-    EXPECT_TRUE(material.normal->pattern.uv_mapping);
+    EXPECT_TRUE(material.normal->pattern->uv_mapping);
     // The pattern stays on the surface: the translate does not move it.
-    EXPECT_EQ(material.pigment.pattern.pattern_from_object, sg::Mat4(1.0));
+    EXPECT_EQ(material.pigment.pattern->pattern_from_object, sg::Mat4(1.0));
     EXPECT_NE(
         test::first_error("sphere { 0, 1 pigment { checker } uv_mapping }").message.find("before the object's texture"),
         std::string::npos);
@@ -477,12 +477,12 @@ TEST(ParserMaterials, CheckerAndPatternTransformFollowsObject) {
     auto m = scene.objects[0].material;
     ASSERT_TRUE(m);
     EXPECT_EQ(m->pigment.kind, sg::Pigment::Kind::Patterned);
-    EXPECT_EQ(m->pigment.pattern.kind, sg::Pattern::Kind::Checker);
+    EXPECT_EQ(m->pigment.pattern->kind, sg::Pattern::Kind::Checker);
     ASSERT_EQ(m->pigment.block_pigments.size(), 2u);
     expect_vec(m->pigment.block_pigments[0]->color.rgb, {1, 1, 1});
     expect_vec(m->pigment.block_pigments[1]->color.rgb, {0, 0, 0});
     // Object space point (2,0,0) is pattern point (1,0,0): the later translate moves the pattern too.
-    expect_vec(apply(m->pigment.pattern.pattern_from_object, {2, 0, 0}), {1, 0, 0});
+    expect_vec(apply(m->pigment.pattern->pattern_from_object, {2, 0, 0}), {1, 0, 0});
 }
 
 TEST(ParserMaterials, DeclaredTexturesPigmentsFinishesReusable) {
@@ -817,7 +817,7 @@ TEST(ParserObjects, NoShadowHollowAndIgnoredKeywordsWarn) {
     EXPECT_EQ(result.scene->objects[0].double_illuminate, std::optional<bool>(true));
     EXPECT_EQ(test::count_warnings(result), 1);  // no_radiosity (hollow has a meaning: media)
     ASSERT_TRUE(result.scene->objects[0].material && result.scene->objects[0].material->normal);
-    EXPECT_EQ(result.scene->objects[0].material->normal->pattern.kind, sg::Pattern::Kind::Bumps);
+    EXPECT_EQ(result.scene->objects[0].material->normal->pattern->kind, sg::Pattern::Kind::Bumps);
     EXPECT_DOUBLE_EQ(result.scene->objects[0].material->normal->bump_size, 0.5);
     for (const auto& d : result.diagnostics) EXPECT_EQ(d.location.line, 1);
 }
@@ -865,8 +865,8 @@ TEST(ParserObjects, InteriorTextureSitsBesideTheTexture) {
     const sg::Object& first = result.scene->objects[0];
     ASSERT_TRUE(first.material && first.material->interior_texture);
     EXPECT_EQ(first.material->pigment.color.rgb, sg::Vec3(1.0, 0.0, 0.0));
-    const sg::Mat4& inside = first.material->interior_texture->pigment.pattern.pattern_from_object;
-    const sg::Mat4& as_texture = result.scene->objects[2].material->pigment.pattern.pattern_from_object;
+    const sg::Mat4& inside = first.material->interior_texture->pigment.pattern->pattern_from_object;
+    const sg::Mat4& as_texture = result.scene->objects[2].material->pigment.pattern->pattern_from_object;
     for (int column = 0; column < 4; ++column)
         for (int row = 0; row < 4; ++row) EXPECT_NEAR(inside[column][row], as_texture[column][row], 1e-12);
     EXPECT_NE(inside, sg::Mat4(1.0));  // the comparison means something

@@ -124,12 +124,16 @@ void move_pattern(sg::Pattern& pattern, const sg::Mat4& inner_from_outer) {
 // the parent moves only the parent's own pattern. A uv-mapped pattern lives
 // on the surface: moving the object does not move it.
 void move_pigment(sg::Pigment& pigment, const sg::Mat4& inner_from_outer, bool object_move = false) {
+    // A solid pigment without a pattern keeps its moves here alone.
+    if (pigment.kind != sg::Pigment::Kind::Solid || pigment.pattern.has_value()) {
+        sg::Pattern& pattern = pigment_pattern_of(pigment);
+        if (!(object_move && pattern.uv_mapping)) move_pattern(pattern, inner_from_outer);
+    }
     pigment.pattern_from_object = pigment.pattern_from_object * inner_from_outer;
-    if (!(object_move && pigment.pattern.uv_mapping)) move_pattern(pigment.pattern, inner_from_outer);
 }
 
 void move_normal(sg::Normal& normal, const sg::Mat4& inner_from_outer, bool object_move = false) {
-    if (!(object_move && normal.pattern.uv_mapping)) move_pattern(normal.pattern, inner_from_outer);
+    if (!(object_move && normal.pattern->uv_mapping)) move_pattern(*normal.pattern, inner_from_outer);
 }
 
 sg::NormalRef moved_normal(const sg::NormalRef& normal, const sg::Mat4& inner_from_outer, bool object_move) {
@@ -153,6 +157,11 @@ void add_warp(sg::Pattern& pattern, const sg::Warp& warp) {
 }
 
 }  // namespace
+
+sg::Pattern& pigment_pattern_of(sg::Pigment& pigment) {
+    if (!pigment.pattern.has_value()) pigment.pattern->pattern_from_object = pigment.pattern_from_object;
+    return *pigment.pattern;
+}
 
 void transform_pattern(sg::Pigment& pigment, const sg::Mat4& world_from_local) {
     move_pigment(pigment, glm::inverse(world_from_local));
@@ -589,7 +598,7 @@ Evaluator::PigmentEdit Evaluator::patterned_pigment(const PatternEdit& pattern, 
     // as POV scenes do, before the objects).
     return [pattern, at, waves = m_scene.global.number_of_waves](sg::Pigment& p) {
         p.kind = sg::Pigment::Kind::Patterned;
-        restart_pattern(p.pattern, pattern, waves, at);
+        restart_pattern(pigment_pattern_of(p), pattern, waves, at);
         p.color_map.reset();
         p.pigment_map.clear();
         p.block_pigments.clear();
@@ -620,6 +629,7 @@ Evaluator::PigmentEdit Evaluator::block_pigment(const PatternEdit& pattern,
 
 Evaluator::PigmentEdit Evaluator::average_pigment(const sg::SourceLocation& at) {
     return [at](sg::Pigment& p) {
+        pigment_pattern_of(p);  // the entries are read at its pattern's point
         p.kind = sg::Pigment::Kind::Average;
         p.location = at;
     };
@@ -627,8 +637,8 @@ Evaluator::PigmentEdit Evaluator::average_pigment(const sg::SourceLocation& at) 
 
 Evaluator::PigmentEdit Evaluator::uv_mapping_pigment() {
     return [](sg::Pigment& p) {
-        p.pattern.uv_mapping = true;
-        p.image.map_type = sg::MapType::UV;
+        pigment_pattern_of(p).uv_mapping = true;
+        p.image->map_type = sg::MapType::UV;
     };
 }
 
@@ -646,7 +656,7 @@ Evaluator::PigmentEdit Evaluator::pigment_pattern_edit(const PatternEdit& edit, 
     // POV accepts pattern modifiers on any pigment; on one without a
     // pattern (a plain colour, an image) they change nothing.
     return [edit](sg::Pigment& p) {
-        if (p.kind != sg::Pigment::Kind::Solid) edit(p.pattern);
+        if (p.kind != sg::Pigment::Kind::Solid) edit(pigment_pattern_of(p));
     };
 }
 
@@ -656,8 +666,8 @@ Evaluator::PigmentEdit Evaluator::color_map_edit(const sg::ColorMapRef& map, con
             warning(at, "color_map on a pigment without a pattern is ignored (write the pattern first)");
             return;
         }
-        if (is_block_pattern(p.pattern.kind)) {
-            error(at, std::string("a ") + block_pattern_name(p.pattern.kind) +
+        if (is_block_pattern(p.pattern->kind)) {
+            error(at, std::string("a ") + block_pattern_name(p.pattern->kind) +
                           " pattern takes a list of colours, not a color_map");
             return;
         }
@@ -673,8 +683,8 @@ Evaluator::PigmentEdit Evaluator::pigment_map_edit(const std::shared_ptr<std::ve
             warning(at, "pigment_map on a pigment without a pattern is ignored (write the pattern first)");
             return;
         }
-        if (p.kind == sg::Pigment::Kind::Patterned && is_block_pattern(p.pattern.kind)) {
-            error(at, std::string("a ") + block_pattern_name(p.pattern.kind) +
+        if (p.kind == sg::Pigment::Kind::Patterned && is_block_pattern(p.pattern->kind)) {
+            error(at, std::string("a ") + block_pattern_name(p.pattern->kind) +
                           " pattern takes a list of pigments, not a pigment_map");
             return;
         }
@@ -724,7 +734,7 @@ std::shared_ptr<sg::Pigment> Evaluator::build_density(const Edits<sg::Pigment>& 
     auto density = std::make_shared<sg::Pigment>();
     density->color = sg::Color{sg::Vec3(1.0)};  // an empty density is 1: it changes nothing
     for (const auto& edit : edits) edit(*density);
-    if (density->kind == sg::Pigment::Kind::Patterned && !is_block_pattern(density->pattern.kind) &&
+    if (density->kind == sg::Pigment::Kind::Patterned && !is_block_pattern(density->pattern->kind) &&
         !density->color_map && density->pigment_map.empty())
         density->color_map = default_color_map(PatternKind::Gradient);
     settle_pigment(*density, at);
@@ -735,7 +745,7 @@ void Evaluator::settle_pigment(sg::Pigment& settled, const sg::SourceLocation& a
     sg::Pigment* pigment = &settled;
     pigment->location = at;
     if (pigment->kind == sg::Pigment::Kind::Patterned) {
-        const PatternKind kind = pigment->pattern.kind;
+        const PatternKind kind = pigment->pattern->kind;
         if (is_block_pattern(kind)) {
             const std::vector<sg::Color> defaults = default_block_colours(kind);
             if (pigment->block_pigments.size() > defaults.size()) {
@@ -833,7 +843,7 @@ Evaluator::NormalEdit Evaluator::patterned_normal(const PatternEdit& pattern,
     if (amount) size = to_float(amount->first, amount->second, "a bump size");
     return [pattern, size, at, waves = m_scene.global.number_of_waves](sg::Normal& n) {
         n.kind = sg::Normal::Kind::Patterned;
-        restart_pattern(n.pattern, pattern, waves, at);
+        restart_pattern(*n.pattern, pattern, waves, at);
         if (size) n.bump_size = *size;
     };
 }
@@ -846,9 +856,9 @@ Evaluator::NormalEdit Evaluator::block_normal(const PatternEdit& pattern,
         start(n);
         n.normal_map.clear();
         n.block_normals = normals;
-        const std::size_t count = default_block_colours(n.pattern.kind).size();
+        const std::size_t count = default_block_colours(n.pattern->kind).size();
         if (n.block_normals.size() > count) {
-            error(at, std::string(block_pattern_name(n.pattern.kind)) + " takes at most " + std::to_string(count) +
+            error(at, std::string(block_pattern_name(n.pattern->kind)) + " takes at most " + std::to_string(count) +
                           " normals, got " + std::to_string(n.block_normals.size()));
             n.block_normals.resize(count);
         }
@@ -915,7 +925,7 @@ Evaluator::NormalEdit Evaluator::bump_map_normal(const sg::ImageMap& image,
 }
 
 Evaluator::NormalEdit Evaluator::normal_pattern_edit(const PatternEdit& edit, const sg::SourceLocation&) {
-    return [edit](sg::Normal& n) { edit(n.pattern); };
+    return [edit](sg::Normal& n) { edit(*n.pattern); };
 }
 
 Evaluator::NormalEdit Evaluator::normal_accuracy(const Value& v, const SourceRange& where) {

@@ -50,7 +50,7 @@ TEST(ParserPatterns, ColorMapBothFormsAndDefaults) {
         "plane { y, 0 pigment { granite } }");
     const sg::Pigment& p = material_of(scene, 0).pigment;
     ASSERT_EQ(p.kind, sg::Pigment::Kind::Patterned);
-    EXPECT_EQ(p.pattern.kind, sg::Pattern::Kind::Gradient);
+    EXPECT_EQ(p.pattern->kind, sg::Pattern::Kind::Gradient);
     ASSERT_TRUE(p.color_map);
     ASSERT_EQ(p.color_map->size(), 3u);  // the old [v1 v2 c1 c2] form is two entries
     EXPECT_DOUBLE_EQ((*p.color_map)[1].value, 0.5);
@@ -61,10 +61,10 @@ TEST(ParserPatterns, ColorMapBothFormsAndDefaults) {
     ASSERT_TRUE(wood.color_map);
     EXPECT_EQ(wood.color_map->size(), 2u);
     EXPECT_NEAR((*wood.color_map)[0].color.rgb.x, 0.666, 1e-12);
-    EXPECT_EQ(wood.pattern.wave, sg::WaveType::Triangle);
+    EXPECT_EQ(wood.pattern->wave, sg::WaveType::Triangle);
     const sg::Pigment& granite = material_of(scene, 2).pigment;
     ASSERT_TRUE(granite.color_map);
-    EXPECT_EQ(granite.pattern.wave, sg::WaveType::Ramp);
+    EXPECT_EQ(granite.pattern->wave, sg::WaveType::Ramp);
     EXPECT_EQ(granite.color_map->back().color.rgb, sg::Vec3(1.0));
 }
 
@@ -93,18 +93,18 @@ TEST(ParserPatterns, DeclaredMapsAndNormalsReusable) {
     ASSERT_TRUE(a.pigment.color_map);
     EXPECT_EQ(a.pigment.color_map->front().color.rgb, sg::Vec3(1, 0, 0));
     ASSERT_TRUE(a.normal);
-    EXPECT_EQ(a.normal->pattern.kind, sg::Pattern::Kind::Bumps);
+    EXPECT_EQ(a.normal->pattern->kind, sg::Pattern::Kind::Bumps);
     EXPECT_NEAR(a.normal->bump_size, 0.3, 1e-12);
     const sg::Material& b = material_of(scene, 1);
     ASSERT_EQ(b.pigment.pigment_map.size(), 2u);
-    EXPECT_EQ(b.pigment.pigment_map[1].pigment->pattern.kind, sg::Pattern::Kind::Checker);
+    EXPECT_EQ(b.pigment.pigment_map[1].pigment->pattern->kind, sg::Pattern::Kind::Checker);
 }
 
 TEST(ParserPatterns, TransformsAndWarpsKeepTheirOrder) {
     auto scene = parse_ok(
         "plane { y, 0 pigment { bozo scale 2 warp { turbulence 0.5 } translate x } }\n"
         "plane { y, 0 pigment { bozo warp { repeat x * 0.5 flip y } } }");
-    const sg::Pattern& p = material_of(scene, 0).pigment.pattern;
+    const sg::Pattern& p = *material_of(scene, 0).pigment.pattern;
     ASSERT_EQ(p.warps.size(), 2u);  // the scale before the warp becomes a step of its own
     EXPECT_EQ(p.warps[0].kind, sg::Warp::Kind::Transform);
     EXPECT_EQ(p.warps[1].kind, sg::Warp::Kind::Turbulence);
@@ -112,10 +112,42 @@ TEST(ParserPatterns, TransformsAndWarpsKeepTheirOrder) {
     // The translate after the warp is what the point meets first.
     EXPECT_EQ(apply(p.pattern_from_object, {1, 0, 0}), sg::Vec3(0, 0, 0));
     EXPECT_EQ(apply(p.warps[0].inner_from_outer, {2, 0, 0}), sg::Vec3(1, 0, 0));
-    const sg::Warp& repeat = material_of(scene, 1).pigment.pattern.warps.at(0);
+    const sg::Warp& repeat = material_of(scene, 1).pigment.pattern->warps.at(0);
     EXPECT_EQ(repeat.kind, sg::Warp::Kind::Repeat);
     EXPECT_EQ(repeat.repeat, sg::Vec3(0.5, 0, 0));
     EXPECT_EQ(repeat.flip, sg::Vec3(0, 1, 0));
+}
+
+// A plain colour keeps no pattern (sg::OnDemand): a loop of coloured
+// objects would otherwise carry one each. The moves it meets still reach
+// a pattern made later (uv_mapping here).
+TEST(ParserPatterns, APlainColourKeepsNoPatternYetALaterPatternMeetsItsMoves) {
+    auto scene = parse_ok(
+        "#declare Moved = pigment { rgb 1 scale 2 }\n"
+        "sphere { 0, 1 pigment { rgb <1, 0, 0> scale 3 } translate x }\n"
+        "sphere { 0, 1 pigment { Moved uv_mapping } }\n"
+        "sphere { 0, 1 pigment { Moved warp { turbulence 0.5 } } }\n"
+        "sphere { 0, 1 uv_mapping pigment { rgb 1 scale 4 } translate y }\n");
+    // Moved: the move is kept, no pattern made.
+    const sg::Pigment& plain = material_of(scene, 0).pigment;
+    EXPECT_FALSE(plain.pattern.has_value());
+    EXPECT_FALSE(plain.image.has_value());
+    EXPECT_EQ(apply(plain.pattern_from_object, {3, 0, 0}), sg::Vec3(1, 0, 0));
+    EXPECT_EQ(apply(plain.pattern->pattern_from_object, {3, 0, 0}), sg::Vec3(3, 0, 0));  // the default's
+
+    const sg::Pigment& uv = material_of(scene, 1).pigment;
+    ASSERT_TRUE(uv.pattern.has_value());
+    EXPECT_TRUE(uv.pattern->uv_mapping);
+    EXPECT_EQ(apply(uv.pattern->pattern_from_object, {2, 0, 0}), sg::Vec3(1, 0, 0));
+
+    // A pattern modifier on a plain colour changes nothing (POV).
+    EXPECT_FALSE(material_of(scene, 2).pigment.pattern.has_value());
+
+    // The scale reaches the pattern the object's uv_mapping makes.
+    const sg::Pigment& on_surface = material_of(scene, 3).pigment;
+    ASSERT_TRUE(on_surface.pattern.has_value());
+    EXPECT_TRUE(on_surface.pattern->uv_mapping);
+    EXPECT_EQ(apply(on_surface.pattern->pattern_from_object, {4, 0, 0}), sg::Vec3(1, 0, 0));
 }
 
 TEST(ParserPatterns, MapEntriesLiveInTheirParentsPatternSpace) {
@@ -124,8 +156,8 @@ TEST(ParserPatterns, MapEntriesLiveInTheirParentsPatternSpace) {
     auto scene =
         parse_ok("plane { y, 0 pigment { gradient x pigment_map { [0 checker scale 0.5] [1 rgb 1] } scale 4 } }");
     const sg::Pigment& p = material_of(scene).pigment;
-    EXPECT_EQ(apply(p.pattern.pattern_from_object, {4, 0, 0}), sg::Vec3(1, 0, 0));
-    EXPECT_EQ(apply(p.pigment_map[0].pigment->pattern.pattern_from_object, {1, 0, 0}), sg::Vec3(2, 0, 0));
+    EXPECT_EQ(apply(p.pattern->pattern_from_object, {4, 0, 0}), sg::Vec3(1, 0, 0));
+    EXPECT_EQ(apply(p.pigment_map[0].pigment->pattern->pattern_from_object, {1, 0, 0}), sg::Vec3(2, 0, 0));
 }
 
 TEST(ParserPatterns, BlockPatternsTakeListsAndFillDefaults) {
@@ -139,7 +171,7 @@ TEST(ParserPatterns, BlockPatternsTakeListsAndFillDefaults) {
     EXPECT_EQ(hexagon.block_pigments[2]->color.rgb, sg::Vec3(1, 0, 0));
     const sg::Pigment& brick = material_of(scene, 1).pigment;
     ASSERT_EQ(brick.block_pigments.size(), 2u);
-    EXPECT_EQ(brick.block_pigments[1]->pattern.kind, sg::Pattern::Kind::Bozo);
+    EXPECT_EQ(brick.block_pigments[1]->pattern->kind, sg::Pattern::Kind::Bozo);
     const Diagnostic too_many = first_error("plane { y, 0 pigment { checker rgb 1, rgb 0, rgb 0.5 } }");
     EXPECT_NE(too_many.message.find("checker takes at most 2"), std::string::npos) << too_many.message;
     const Diagnostic map = first_error("plane { y, 0 pigment { hexagon color_map { [0 rgb 0] } } }");
@@ -169,7 +201,7 @@ TEST(ParserNormals, SlopeMapNormalMapAndAccuracy) {
     EXPECT_DOUBLE_EQ(a.slope_map[0].slope, 1.0);
     const sg::Normal& b = *material_of(scene, 1).normal;
     ASSERT_EQ(b.normal_map.size(), 2u);
-    EXPECT_EQ(b.normal_map[1].normal->pattern.kind, sg::Pattern::Kind::Dents);
+    EXPECT_EQ(b.normal_map[1].normal->pattern->kind, sg::Pattern::Kind::Dents);
     EXPECT_NEAR(b.normal_map[1].normal->bump_size, 0.2, 1e-12);
 }
 
@@ -181,7 +213,7 @@ TEST(ParserTextures, LayeredTexturesStackOnObjectsAndInDeclarations) {
         "sphere { 0, 1 texture { pigment { rgb <1, 0, 0> } } texture { pigment { rgbt <0, 0, 1, 0.5> } } }");
     const sg::Material& declared = material_of(scene, 0);
     ASSERT_EQ(declared.layers_above.size(), 1u);
-    EXPECT_EQ(declared.layers_above[0]->pigment.pattern.kind, sg::Pattern::Kind::Bozo);
+    EXPECT_EQ(declared.layers_above[0]->pigment.pattern->kind, sg::Pattern::Kind::Bozo);
     EXPECT_DOUBLE_EQ(declared.layers_above[0]->finish.phong, 1.0);
     const sg::Material& object = material_of(scene, 1);
     EXPECT_EQ(object.pigment.color.rgb, sg::Vec3(1, 0, 0));
@@ -263,13 +295,13 @@ TEST(ParserTextures, BlocksEditWhatTheTextureHas) {
         EXPECT_EQ(m.pigment.color.rgb, sg::Vec3(1, 0, 0)) << i;
     }
     const sg::Pigment& bozo = material_of(scene, 2).pigment;
-    EXPECT_EQ(bozo.pattern.kind, sg::Pattern::Kind::Bozo);
-    EXPECT_EQ(apply(bozo.pattern.pattern_from_object, {0.2, 0, 0}), sg::Vec3(1, 0, 0));
+    EXPECT_EQ(bozo.pattern->kind, sg::Pattern::Kind::Bozo);
+    EXPECT_EQ(apply(bozo.pattern->pattern_from_object, {0.2, 0, 0}), sg::Vec3(1, 0, 0));
     const sg::Normal& onion = *material_of(scene, 3).normal;
-    EXPECT_EQ(onion.pattern.kind, sg::Pattern::Kind::Onion);
+    EXPECT_EQ(onion.pattern->kind, sg::Pattern::Kind::Onion);
     EXPECT_NEAR(onion.bump_size, 0.8, 1e-12);
     EXPECT_EQ(onion.slope_map.size(), 2u);
-    EXPECT_NEAR(apply(onion.pattern.pattern_from_object, {0.4, 0, 0}).x, 1.0, 1e-12);
+    EXPECT_NEAR(apply(onion.pattern->pattern_from_object, {0.4, 0, 0}).x, 1.0, 1e-12);
     // A finish after a layered texture changes its top layer.
     const sg::Material& layered = material_of(scene, 4);
     ASSERT_EQ(layered.layers_above.size(), 1u);
@@ -336,7 +368,7 @@ TEST(ParserPatterns, AveragePigmentEntriesMayLeaveOutTheirWeight) {
     const sg::Pigment& p = material_of(scene).pigment;
     ASSERT_EQ(p.pigment_map.size(), 3u);
     EXPECT_DOUBLE_EQ(p.pigment_map[0].value, 1.0);
-    EXPECT_EQ(p.pigment_map[0].pigment->pattern.kind, sg::Pattern::Kind::Function);
+    EXPECT_EQ(p.pigment_map[0].pigment->pattern->kind, sg::Pattern::Kind::Function);
     EXPECT_DOUBLE_EQ(p.pigment_map[1].value, 1.0);
     EXPECT_DOUBLE_EQ(p.pigment_map[2].value, 2.0);
     EXPECT_NE(
@@ -397,10 +429,10 @@ TEST(ParserPatterns, BlockPatternNormalsOnePerBlock) {
         "box { 0, 1 normal { hexagon 0.5 normal { bumps } } }");
     const sg::NormalRef& checker = material_of(scene, 0).normal;
     ASSERT_TRUE(checker);
-    EXPECT_EQ(checker->pattern.kind, sg::Pattern::Kind::Checker);
+    EXPECT_EQ(checker->pattern->kind, sg::Pattern::Kind::Checker);
     ASSERT_EQ(checker->block_normals.size(), 2u);
-    EXPECT_EQ(checker->block_normals[0]->pattern.kind, sg::Pattern::Kind::Marble);
-    EXPECT_EQ(checker->block_normals[1]->pattern.kind, sg::Pattern::Kind::Radial);
+    EXPECT_EQ(checker->block_normals[0]->pattern->kind, sg::Pattern::Kind::Marble);
+    EXPECT_EQ(checker->block_normals[1]->pattern->kind, sg::Pattern::Kind::Radial);
     const sg::NormalRef& hexagon = material_of(scene, 1).normal;
     ASSERT_TRUE(hexagon);
     ASSERT_EQ(hexagon->block_normals.size(), 3u);  // the missing blocks stay flat
@@ -442,8 +474,8 @@ TEST(ParserPatterns, ObjectPatternIsAListOfTwo) {
         "plane { z, 0 normal { object { S normal { bumps } } } }\n"
         "plane { z, 0 texture { object { S texture { pigment { rgb 1 } }, texture { pigment { rgb 0 } } } } }");
     const sg::Pigment& colours = material_of(scene, 0).pigment;
-    EXPECT_EQ(colours.pattern.kind, sg::Pattern::Kind::Object);
-    ASSERT_TRUE(colours.pattern.object);
+    EXPECT_EQ(colours.pattern->kind, sg::Pattern::Kind::Object);
+    ASSERT_TRUE(colours.pattern->object);
     ASSERT_EQ(colours.block_pigments.size(), 2u);
     EXPECT_EQ(colours.block_pigments[1]->color.rgb, sg::Vec3(0, 1, 0));  // inside
     const sg::Pigment& defaults = material_of(scene, 1).pigment;
@@ -498,9 +530,9 @@ TEST(ParserPatterns, ImageMapColoursAreDecodedOnlyInA37Scene) {
     legacy.language_version = 3.6;
     const sg::SceneGraph scene =
         parse_ok("global_settings { assumed_gamma 1 }\n" + map + map_with_gamma + "#version 3.7;\n" + map, legacy);
-    EXPECT_FALSE(material_of(scene, 0).pigment.image.srgb);
-    EXPECT_TRUE(material_of(scene, 1).pigment.image.srgb);
-    EXPECT_TRUE(material_of(scene, 2).pigment.image.srgb);
+    EXPECT_FALSE(material_of(scene, 0).pigment.image->srgb);
+    EXPECT_TRUE(material_of(scene, 1).pigment.image->srgb);
+    EXPECT_TRUE(material_of(scene, 2).pigment.image->srgb);
 }
 
 TEST(ParserPatterns, ImagePatternReadsItsImageAsStored) {
@@ -511,15 +543,15 @@ TEST(ParserPatterns, ImagePatternReadsItsImageAsStored) {
                  "\" use_alpha once } color_map { [0 rgb 0] [1 rgb 1] } } }\n"
                  "plane { y, 0 pigment { image_pattern { png \"" +
                  image + "\" gamma 2.2 } } }\n" + "plane { y, 0 pigment { image_map { png \"" + image + "\" } } }");
-    const sg::Pattern& masked = material_of(scene, 0).pigment.pattern;
+    const sg::Pattern& masked = *material_of(scene, 0).pigment.pattern;
     EXPECT_EQ(masked.kind, sg::Pattern::Kind::ImagePattern);
     ASSERT_TRUE(masked.image);
     EXPECT_TRUE(masked.image->use_alpha);
     EXPECT_TRUE(masked.image->once);
     EXPECT_FALSE(masked.image->srgb);  // data, not colour: no decoding unless gamma is given
-    EXPECT_TRUE(material_of(scene, 1).pigment.pattern.image->srgb);
+    EXPECT_TRUE(material_of(scene, 1).pigment.pattern->image->srgb);
     // POV's image_map defaults: planar, no interpolation, decoded colours.
-    const sg::ImageMap& colours = material_of(scene, 2).pigment.image;
+    const sg::ImageMap& colours = *material_of(scene, 2).pigment.image;
     EXPECT_EQ(colours.map_type, sg::MapType::Planar);
     EXPECT_EQ(colours.interpolate, 0);
     EXPECT_TRUE(colours.srgb);
@@ -536,7 +568,7 @@ TEST(ParserPatterns, ImageMapPaletteSettingsKeepTheirOrder) {
     const std::string& image = placeholder.path;
     auto scene = parse_ok("plane { y, 0 pigment { image_map { gif \"" + image +
                           "\" transmit 2, 1 filter all 0.25 transmit 3 0.5 filter 2.995, 0 } } }");
-    const sg::ImageMap& map = material_of(scene, 0).pigment.image;
+    const sg::ImageMap& map = *material_of(scene, 0).pigment.image;
     EXPECT_EQ(map.format, sg::ImageFormat::Gif);
     ASSERT_EQ(map.palette_settings.size(), 4u);
     const sg::PaletteSetting& first = map.palette_settings[0];

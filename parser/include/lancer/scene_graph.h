@@ -21,6 +21,7 @@
 #include <glm/glm.hpp>
 
 #include "lancer/function.h"
+#include "lancer/on_demand.h"
 
 namespace lancer::sg {
 
@@ -279,12 +280,15 @@ struct Pigment {
     // weighted by their values.
     enum class Kind { Solid, Image, Patterned, Average };
     Kind kind = Kind::Solid;
-    Color color;     // Solid; POV default pigment is black
-    ImageMap image;  // Image
+    Color color;               // Solid; POV default pigment is black
+    OnDemand<ImageMap> image;  // Image
     // Patterned: exactly one of color_map, pigment_map, block_pigments
     // holds the pattern's values (the parser fills POV's default map when
-    // the scene gives none).
-    Pattern pattern;
+    // the scene gives none). A solid pigment keeps none until one is
+    // written: the moves it meets until then are pattern_from_object's
+    // below, which a pattern made later starts from (the parser's
+    // pigment_pattern_of).
+    OnDemand<Pattern> pattern;
     ColorMapRef color_map;
     std::vector<PigmentMapEntry> pigment_map;  // also Average's list
     std::vector<PigmentRef> block_pigments;    // block patterns' list, in order
@@ -299,7 +303,7 @@ struct Pigment {
 inline Pigment checker_pigment(const Vec3& first, const Vec3& second) {
     Pigment pigment;
     pigment.kind = Pigment::Kind::Patterned;
-    pigment.pattern.kind = Pattern::Kind::Checker;
+    pigment.pattern->kind = Pattern::Kind::Checker;
     for (const Vec3& rgb : {first, second}) {
         auto block = std::make_shared<Pigment>();
         block->color.rgb = rgb;
@@ -328,7 +332,7 @@ struct SlopeMapEntry {
 struct Normal {
     enum class Kind { Patterned, BumpMap, Average };
     Kind kind = Kind::Patterned;
-    Pattern pattern;
+    OnDemand<Pattern> pattern;
     double bump_size = 0.5;  // POV's amount
     double accuracy = 0.02;
     std::vector<SlopeMapEntry> slope_map;
@@ -419,7 +423,7 @@ struct Material {
     bool has_interior = false;
     // Patterned: the pattern whose value picks among texture_map's entries
     // (blended between two) or block_textures (one per block).
-    std::optional<Pattern> pattern;
+    OnDemand<Pattern> pattern;  // empty: not patterned
     std::vector<TextureMapEntry> texture_map;
     std::vector<MaterialRef> block_textures;
     std::vector<MaterialRef> layers_above;  // bottom to top
@@ -584,7 +588,9 @@ struct BicubicPatch {
     int type = -1;  // required: 0 or 1
     double flatness = 0.0;
     int u_steps = 0, v_steps = 0;
-    Vec3 points[16];
+    // Always 16; on the heap, so that every object (all sharing the shape
+    // variant's size) does not carry 384 bytes for the rare patch.
+    std::vector<Vec3> points = std::vector<Vec3>(16);
     Vec2 uv_corners[4] = {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};
 };
 

@@ -21,7 +21,7 @@ std::unique_ptr<PointPigment> solid(double grey) {
 std::unique_ptr<PointPigment> right_half_open(double right) {
     sg::Pigment pigment;
     pigment.kind = sg::Pigment::Kind::Patterned;
-    pigment.pattern.kind = sg::Pattern::Kind::Gradient;
+    pigment.pattern->kind = sg::Pattern::Kind::Gradient;
     auto entries = std::make_shared<std::vector<sg::ColorMapEntry>>();
     entries->push_back(sg::ColorMapEntry{0.5, sg::Color{}});
     sg::Color open;

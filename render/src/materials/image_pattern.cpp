@@ -13,7 +13,7 @@ namespace {
 class ImagePointPigment final : public PointPigment {
   public:
     ImagePointPigment(const sg::Pigment& pigment, const MaterialBuild& build)
-        : m_image(open_image(pigment.image, build)), m_warps(pigment.pattern, build.generator) {}
+        : m_image(open_image(*pigment.image, build)), m_warps(*pigment.pattern, build.generator) {}
 
     TextureSample at(const glm::dvec3& point, const PatternContext&) const override {
         // POV moves the point (transforms, turbulence, warp { }) before it

@@ -42,7 +42,7 @@ class SolidPointPigment final : public PointPigment {
 class ColorMapPigment final : public PointPigment {
   public:
     ColorMapPigment(const sg::Pigment& pigment, const MaterialBuild& build)
-        : m_pattern(compile_pattern(pigment.pattern, build)) {
+        : m_pattern(compile_pattern(*pigment.pattern, build)) {
         for (const auto& entry : *pigment.color_map) {
             m_values.push_back(float(entry.value));
             m_colours.push_back(to_sample(entry.color));
@@ -78,7 +78,7 @@ class ColorMapPigment final : public PointPigment {
 class PigmentMapPigment final : public PointPigment {
   public:
     PigmentMapPigment(const sg::Pigment& pigment, const MaterialBuild& build)
-        : m_pattern(compile_pattern(pigment.pattern, build)) {
+        : m_pattern(compile_pattern(*pigment.pattern, build)) {
         for (const auto& entry : pigment.pigment_map) {
             m_values.push_back(float(entry.value));
             m_pigments.push_back(make_point_pigment(*entry.pigment, build));
@@ -107,7 +107,7 @@ class PigmentMapPigment final : public PointPigment {
 class BlockPigment final : public PointPigment {
   public:
     BlockPigment(const sg::Pigment& pigment, const MaterialBuild& build)
-        : m_pattern(compile_block_pattern(pigment.pattern, build)) {
+        : m_pattern(compile_block_pattern(*pigment.pattern, build)) {
         for (const auto& block : pigment.block_pigments) m_blocks.push_back(make_point_pigment(*block, build));
     }
     TextureSample at(const glm::dvec3& point, const PatternContext& context) const override {
@@ -129,7 +129,7 @@ class BlockPigment final : public PointPigment {
 class AveragePigment final : public PointPigment {
   public:
     AveragePigment(const sg::Pigment& pigment, const MaterialBuild& build)
-        : m_warps(compile_pattern(pigment.pattern, build)) {
+        : m_warps(compile_pattern(*pigment.pattern, build)) {
         std::vector<double> values;
         for (const auto& entry : pigment.pigment_map) {
             values.push_back(entry.value);
@@ -231,8 +231,8 @@ class PatternTexture final : public Texture {
           m_spaces(spaces),
           // An image through the surface's (u,v) is uv-mapped however it was
           // asked for (uv_mapping, or an OBJ material's texture).
-          m_uv_mapping(pigment.pattern.uv_mapping ||
-                       (pigment.kind == sg::Pigment::Kind::Image && pigment.image.map_type == sg::MapType::UV)),
+          m_uv_mapping(pigment.pattern->uv_mapping ||
+                       (pigment.kind == sg::Pigment::Kind::Image && pigment.image->map_type == sg::MapType::UV)),
           m_average(m_pigment->average()) {}
     TextureSample evaluate(const Hit& hit) const override {
         return m_pigment->at(surface_point(hit, m_spaces, m_uv_mapping), surface_context(hit));

@@ -59,8 +59,8 @@ std::unique_ptr<NormalNode> make_node(const sg::Normal& normal, const MaterialBu
 class PatternNormalNode final : public NormalNode {
   public:
     PatternNormalNode(const sg::Normal& normal, const MaterialBuild& build)
-        : m_pattern(normal.block_normals.empty() ? compile_pattern(normal.pattern, build)
-                                                 : compile_block_pattern(normal.pattern, build)),
+        : m_pattern(normal.block_normals.empty() ? compile_pattern(*normal.pattern, build)
+                                                 : compile_block_pattern(*normal.pattern, build)),
           m_amount(normal.bump_size),
           m_accuracy(normal.accuracy),
           m_own_normal(m_pattern.has_own_normal()) {
@@ -136,7 +136,7 @@ class PatternNormalNode final : public NormalNode {
 class AverageNormalNode final : public NormalNode {
   public:
     AverageNormalNode(const sg::Normal& normal, const MaterialBuild& build)
-        : m_warps(compile_pattern(normal.pattern, build)) {
+        : m_warps(compile_pattern(*normal.pattern, build)) {
         std::vector<double> values;
         for (const auto& entry : normal.normal_map) {
             values.push_back(entry.value);
@@ -168,7 +168,7 @@ class AverageNormalNode final : public NormalNode {
 class BumpMapNode final : public NormalNode {
   public:
     BumpMapNode(const sg::Normal& normal, const MaterialBuild& build)
-        : m_warps(normal.pattern, build.generator),
+        : m_warps(*normal.pattern, build.generator),
           m_image(open_image(normal.bump_map, build)),
           m_amount(normal.bump_size),
           m_interpolate(normal.bump_map.interpolate != 0) {
@@ -260,7 +260,7 @@ std::unique_ptr<NormalNode> make_node(const sg::Normal& normal, const MaterialBu
 class SurfaceNormal final : public NormalPerturbation {
   public:
     SurfaceNormal(const sg::Normal& normal, const TextureSpaces& spaces, const MaterialBuild& build)
-        : m_root(make_node(normal, build)), m_spaces(spaces), m_uv_mapping(normal.pattern.uv_mapping) {}
+        : m_root(make_node(normal, build)), m_spaces(spaces), m_uv_mapping(normal.pattern->uv_mapping) {}
 
     Vec3 perturb(const Hit& hit, const Vec3& shading_normal) const override {
         const glm::dmat3 object_from_world =

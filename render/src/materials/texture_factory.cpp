@@ -16,7 +16,7 @@ namespace {
 
 // A checker of two colours needs no pattern machinery.
 bool is_plain_checker(const sg::Pigment& pigment) {
-    const sg::Pattern& p = pigment.pattern;
+    const sg::Pattern& p = *pigment.pattern;
     if (pigment.kind != sg::Pigment::Kind::Patterned || p.kind != sg::Pattern::Kind::Checker) return false;
     if (!p.warps.empty() || p.turbulence != sg::Vec3(0.0) || p.uv_mapping || pigment.block_pigments.size() != 2)
         return false;
@@ -35,7 +35,7 @@ std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
         if (is_plain_checker(pigment))
             return make_checker_texture(to_sample(pigment.block_pigments[0]->color),
                                         to_sample(pigment.block_pigments[1]->color),
-                                        pigment.pattern.pattern_from_object, m_spaces);
+                                        pigment.pattern->pattern_from_object, m_spaces);
         try {
             return make_pattern_texture(pigment, m_spaces, build());
         } catch (const SceneError&) {

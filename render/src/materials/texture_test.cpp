@@ -37,7 +37,7 @@ TEST(Textures, CheckerAlternatesUnitCellsInPatternSpace) {
 
     // Scaled by 2 in the pigment, and moved with the object by +1 x.
     auto scaled = std::make_shared<sg::Material>(*m);
-    scaled->pigment.pattern.pattern_from_object = glm::scale(glm::dmat4(1.0), glm::dvec3(0.5));
+    scaled->pigment.pattern->pattern_from_object = glm::scale(glm::dmat4(1.0), glm::dvec3(0.5));
     sg::Object plane = plane_object({0, 1, 0}, 0.0, scaled);
     plane.parent_from_object = glm::translate(glm::dmat4(1.0), glm::dvec3(1, 0, 0));
     sg::SceneGraph moved;
@@ -64,9 +64,9 @@ TEST(Textures, ImageMapThroughUvDecodesSrgb) {
     fs::create_directories(dir);
     auto m = std::make_shared<sg::Material>();
     m->pigment.kind = sg::Pigment::Kind::Image;
-    m->pigment.image.path = write_test_png(dir);
-    m->pigment.image.map_type = sg::MapType::UV;
-    m->pigment.image.interpolate = 0;  // nearest texel: exact values
+    m->pigment.image->path = write_test_png(dir);
+    m->pigment.image->map_type = sg::MapType::UV;
+    m->pigment.image->interpolate = 0;  // nearest texel: exact values
     sg::SceneGraph graph;
     // A plane's (u, v) is the hit's world (x, y), as POV-Ray's; v = 1 is
     // the image's top.
@@ -100,10 +100,10 @@ struct PaletteSample {
 PaletteSample sample_palette(const std::string& path, std::vector<sg::PaletteSetting> settings, int interpolate = 0) {
     auto m = std::make_shared<sg::Material>();
     m->pigment.kind = sg::Pigment::Kind::Image;
-    m->pigment.image.path = path;
-    m->pigment.image.map_type = sg::MapType::UV;
-    m->pigment.image.interpolate = interpolate;
-    m->pigment.image.palette_settings = std::move(settings);
+    m->pigment.image->path = path;
+    m->pigment.image->map_type = sg::MapType::UV;
+    m->pigment.image->interpolate = interpolate;
+    m->pigment.image->palette_settings = std::move(settings);
     sg::SceneGraph graph;
     // A plane's (u, v) is the hit's world (x, y), as POV-Ray's.
     graph.objects.push_back(plane_object({0, 0, -1}, 0.0, m));
@@ -174,9 +174,9 @@ TEST(Textures, PaletteSettingsNeedAPaletteAndAnEntry) {
 TEST(Textures, MissingImageIsASceneErrorAtTheImageMap) {
     auto m = std::make_shared<sg::Material>();
     m->pigment.kind = sg::Pigment::Kind::Image;
-    m->pigment.image.path = "/nonexistent/lancer/image.png";
-    m->pigment.image.location.line = 42;
-    m->pigment.image.location.column = 7;
+    m->pigment.image->path = "/nonexistent/lancer/image.png";
+    m->pigment.image->location.line = 42;
+    m->pigment.image->location.column = 7;
     sg::SceneGraph graph;
     graph.objects.push_back(sphere_object({0, 0, 0}, 1.0, m));
     try {
@@ -200,8 +200,8 @@ namespace {
 TEST(Normals, BentTowardsTheRayOnEitherSide) {
     auto m = std::make_shared<sg::Material>();
     auto normal = std::make_shared<sg::Normal>();
-    normal->pattern.kind = sg::Pattern::Kind::Gradient;
-    normal->pattern.vector = {1, 0, 0};
+    normal->pattern->kind = sg::Pattern::Kind::Gradient;
+    normal->pattern->vector = {1, 0, 0};
     normal->bump_size = 1.0;
     m->normal = normal;
     sg::SceneGraph graph;
