@@ -104,8 +104,10 @@ TEST(ShadowIntegrator, ShadowlessLightCastsNoShadow) {
 
 TEST(ShadowIntegrator, FullyTransmittingBlockerCastsNoShadow) {
     sg::SceneGraph graph = floating_sphere_scene();
+    EXPECT_TRUE(compile_scene(graph)->opaque_surfaces());  // blocked shadow rays black at once
     graph.objects[1].material = material([](sg::Material& m) { m.pigment.color.transmit = 1.0; });
     const auto scene = compile_scene(graph);
+    EXPECT_FALSE(scene->opaque_surfaces());  // each blocker is looked at
     const auto shadow = load_integrator("shadow", *scene);
     EXPECT_NEAR(mean_radiance(*shadow, *scene, ray_to_ground(0.0)).g, lit_ground_radiance(0.0), 1e-4f);
 }

@@ -95,6 +95,11 @@ class RenderScene {
         static const InteriorStack kNone;
         return kNone;
     }
+    // True when no surface lets light through anywhere (no filter or
+    // transmit in any pigment): a shadow ray blocked by anything is then
+    // black, and need not find what blocked it. False whenever the scene
+    // cannot tell.
+    virtual bool opaque_surfaces() const { return false; }
 };
 
 }  // namespace lancer

@@ -142,6 +142,7 @@ class EmbreeScene final : public RenderScene {
     const SceneOptions& options() const override { return m_data->options; }
     Bounds bounds() const override { return m_data->bounds; }
     bool has_media() const override { return m_data->has_media; }
+    bool opaque_surfaces() const override { return m_data->opaque_surfaces; }
     MediumRegion atmosphere() const override { return m_data->atmosphere; }
     const SceneFog* fog() const override { return m_data->fog.get(); }
     const SceneRainbows* rainbows() const override { return m_data->rainbows.get(); }

@@ -112,6 +112,8 @@ struct SceneData {
     MediumRegion atmosphere;
     bool has_media = false;
     bool has_refraction = false;  // some material's ior is not 1: what bends depends on the objects a ray is in
+    // No material's pigment has filter or transmit anywhere (RenderScene::opaque_surfaces).
+    bool opaque_surfaces = true;
     std::vector<std::unique_ptr<Light>> owned_lights;
     std::vector<const Light*> lights;
     std::vector<const Light*> local_lights;

@@ -19,6 +19,7 @@
 #include "lancer/host/scene_compiler.h"
 #include "lancer/scene_error.h"
 #include "materials/average_weights.h"
+#include "materials/opaque_pigment.h"
 #include "materials/point_pigment.h"
 
 namespace lancer {
@@ -287,6 +288,7 @@ class Builder {
     const Material* build_material(const sg::Material& written, bool hollow, const MaterialEntries* entries) {
         sg::Material source = flatten_patterned_texture(written);
         sg::NormalRef surface_normal = source.normal;
+        if (!pigment_is_opaque(source.pigment)) m_data->opaque_surfaces = false;
         if (written.layers_above.empty()) {
             m_data->textures.push_back(m_data->texture_factory->make(source.pigment));
         } else {
@@ -297,6 +299,7 @@ class Builder {
             averages.push_back(layers.back()->average());
             for (const auto& layer : written.layers_above) {
                 const sg::Material flat = flatten_patterned_texture(*layer);
+                if (!pigment_is_opaque(flat.pigment)) m_data->opaque_surfaces = false;
                 layers.push_back(m_data->texture_factory->make(flat.pigment));
                 averages.push_back(layers.back()->average());
                 finishes.push_back(flat.finish);

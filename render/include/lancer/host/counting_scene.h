@@ -47,6 +47,7 @@ class CountingScene final : public RenderScene {
     const SceneOptions& options() const override { return m_inner.options(); }
     Bounds bounds() const override { return m_inner.bounds(); }
     bool has_media() const override { return m_inner.has_media(); }
+    bool opaque_surfaces() const override { return m_inner.opaque_surfaces(); }
     MediumRegion atmosphere() const override { return m_inner.atmosphere(); }
     const SceneFog* fog() const override { return m_inner.fog(); }
     const SceneRainbows* rainbows() const override { return m_inner.rainbows(); }

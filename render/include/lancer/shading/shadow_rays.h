@@ -74,6 +74,9 @@ inline Color dimming_on_the_way(const RenderScene& scene, const Ray& ray, const 
 inline Color surfaces_transmittance(const RenderScene& scene, Ray ray, const Vec3& target, const Light* own_light,
                                     const InteriorStack* inside = nullptr) {
     if (!scene.occluded(ray)) return Color(1.0f);  // the common case: one cheap query
+    // Whatever blocked it lets nothing through, unless it is this light's
+    // own surface (which never blocks it): a delta light has none.
+    if (scene.opaque_surfaces() && (own_light == nullptr || own_light->is_delta())) return Color(0.0f);
     InteriorStack listed = inside ? *inside : InteriorStack{};
 
     // Walk the surfaces in between, nearest first. The bound only guards
