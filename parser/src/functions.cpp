@@ -569,7 +569,7 @@ namespace lancer::parse {
 Value Evaluator::pattern_function(const Edits<sg::Pigment>& edits, const sg::SourceLocation& at) {
     auto f = std::make_shared<sg::Function>();
     f->parameters = {"x", "y", "z"};
-    f->pattern = std::make_shared<sg::Pattern>(*build_pigment(edits, at)->pattern);
+    f->pattern = std::make_shared<sg::Pattern>(pigment_pattern_of(*build_pigment(edits, at)));
     return function_value(f, at);
 }
 

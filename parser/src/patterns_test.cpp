@@ -134,6 +134,7 @@ TEST(ParserPatterns, APlainColourKeepsNoPatternYetALaterPatternMeetsItsMoves) {
     EXPECT_FALSE(plain.image.has_value());
     EXPECT_EQ(apply(plain.pattern_from_object, {3, 0, 0}), sg::Vec3(1, 0, 0));
     EXPECT_EQ(apply(plain.pattern->pattern_from_object, {3, 0, 0}), sg::Vec3(3, 0, 0));  // the default's
+    EXPECT_FALSE(plain.pattern.has_value());                                             // reading made none
 
     const sg::Pigment& uv = material_of(scene, 1).pigment;
     ASSERT_TRUE(uv.pattern.has_value());

@@ -112,6 +112,19 @@ TEST(ShadowIntegrator, FullyTransmittingBlockerCastsNoShadow) {
     EXPECT_NEAR(mean_radiance(*shadow, *scene, ray_to_ground(0.0)).g, lit_ground_radiance(0.0), 1e-4f);
 }
 
+// With every surface opaque a blocked shadow ray is black at once; an
+// object that casts no shadow is still no blocker.
+TEST(ShadowIntegrator, NoShadowObjectLetsTheLightThroughInAnOpaqueScene) {
+    sg::SceneGraph graph = floating_sphere_scene();
+    graph.objects[1].no_shadow = true;
+    const auto scene = compile_scene(graph);
+    ASSERT_TRUE(scene->opaque_surfaces());
+    for (const char* integrator : {"shadow", "whitted"})
+        EXPECT_NEAR(mean_radiance(*load_integrator(integrator, *scene), *scene, ray_to_ground(0.0)).g,
+                    lit_ground_radiance(0.0), 1e-4f)
+            << integrator;
+}
+
 // A square lamp (side 2) at height 10 above the sphere: through its proxy
 // the shadow stays hard; with area_samples the rim of the umbra becomes a
 // penumbra, lit by a fraction of the lamp.

@@ -292,9 +292,11 @@ struct Pigment {
     ColorMapRef color_map;
     std::vector<PigmentMapEntry> pigment_map;  // also Average's list
     std::vector<PigmentRef> block_pigments;    // block patterns' list, in order
-    // Image: the pigment-space transform (scale/rotate/translate written
-    // inside the pigment or texture); maps object space to pattern space.
-    // Patterned pigments keep theirs in pattern.pattern_from_object.
+    // Every move the pigment met (scale/rotate/translate written inside the
+    // pigment or texture, and its object's): maps object space to pigment
+    // space. The renderer reads only the pattern's own, which warps and
+    // uv_mapping may make differ; a solid pigment keeps its moves here
+    // alone until a pattern is made from them.
     Mat4 pattern_from_object{1.0};
     SourceLocation location;
 };
