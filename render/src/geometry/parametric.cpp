@@ -73,8 +73,10 @@ class ParametricShape final : public Shape {
 
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
         double enter = 0.0, exit = 0.0;
+        // A chord of no length (a flat box, a ray along an edge) holds no
+        // crossing: POV-Ray searches such a ray from its origin instead,
+        // which finds the surface outside the container.
         if (!container_chord(o, d, enter, exit)) return;
-        if (enter == exit) enter = 0.0;
         enter += 4.0 * m_p.accuracy;
         if (enter > exit) return;
 

@@ -111,6 +111,19 @@ TEST(Parametric, TheContainerCutsTheSurface) {
     EXPECT_EQ(upper, DVec3(1.1, 0.5, 1.1));
 }
 
+// A flat box (fuzz_shapes found it) lets through no surface outside it:
+// the ray meets the sphere at x = -1, outside the slab x = 0.5.
+TEST(Parametric, AFlatContainerHoldsNoSurfaceOutsideIt) {
+    ParametricParameters p = unit_sphere();
+    p.container.sphere = false;
+    p.container.box_lower = DVec3(0.5, -1.1, -1.1);
+    p.container.box_upper = DVec3(0.5, 1.1, 1.1);
+    const auto shape = make_parametric_shape(p);
+    ASSERT_TRUE(shape);
+    ShapeCrossing hit;
+    EXPECT_FALSE(shape->nearest(DVec3(-3, 0.1, 0.05), DVec3(1, 0, 0.02), 1e-6, 100.0, hit));
+}
+
 TEST(Parametric, PrecomputeFindsTheSameCrossings) {
     ParametricParameters p = unit_sphere();
     const auto plain = make_parametric_shape(p);
