@@ -77,14 +77,14 @@ class PatternCollector {
     }
     void pigment(const lancer::sg::Pigment& p) {
         using Kind = lancer::sg::Pigment::Kind;
-        if (p.kind == Kind::Patterned || p.kind == Kind::Average) add(p.pattern);
+        if (p.kind == Kind::Patterned || p.kind == Kind::Average) add(*p.pattern);
         for (const auto& entry : p.pigment_map)
             if (entry.pigment) pigment(*entry.pigment);
         for (const auto& block : p.block_pigments)
             if (block) pigment(*block);
     }
     void normal(const lancer::sg::Normal& n) {
-        if (n.kind != lancer::sg::Normal::Kind::BumpMap) add(n.pattern);
+        if (n.kind != lancer::sg::Normal::Kind::BumpMap) add(*n.pattern);
         for (const auto& entry : n.normal_map)
             if (entry.normal) normal(*entry.normal);
         for (const auto& block : n.block_normals)
