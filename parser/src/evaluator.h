@@ -366,6 +366,8 @@ class Evaluator {
     PigmentEdit patterned_pigment(const PatternEdit& pattern, const sg::SourceLocation& at);
     PigmentEdit block_pigment(const PatternEdit& pattern, const std::vector<Value>& colours, const SourceRange& where,
                               const sg::SourceLocation& at);
+    PigmentEdit block_pigment(const PatternEdit& pattern, const std::vector<sg::PigmentRef>& pigments,
+                              const sg::SourceLocation& at);
     PigmentEdit block_pigment(const PatternEdit& pattern, const std::vector<std::shared_ptr<sg::Pigment>>& pigments,
                               const sg::SourceLocation& at);
     PigmentEdit average_pigment(const sg::SourceLocation& at);

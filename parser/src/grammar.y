@@ -171,7 +171,7 @@ void Parser::stack<Parser::stack_symbol_type, std::vector<Parser::stack_symbol_t
 %nterm <Edits<sg::Material>> texture_items material_items
 %nterm <std::shared_ptr<sg::Pigment>> pigment
 %nterm <Edits<sg::Pigment>> pigment_mods pigment_block pigment_edits
-%nterm <std::function<void(sg::Pigment&)>> pigment_start unweighted_start
+%nterm <std::function<void(sg::Pigment&)>> pigment_start pigment_type unweighted_start
 %nterm <std::shared_ptr<sg::Pigment>> unweighted_pigment
 %nterm <sg::ImageMap> image_map image_items
 %nterm <std::shared_ptr<sg::Finish>> finish
@@ -244,7 +244,7 @@ void Parser::stack<Parser::stack_symbol_type, std::vector<Parser::stack_symbol_t
 %nterm <sg::NormalRef> normal normal_body
 %nterm <std::vector<sg::NormalRef>> block_normals
 %nterm <Edits<sg::Normal>> normal_mods normal_block normal_edits
-%nterm <std::function<void(sg::Normal&)>> normal_start normal_mod
+%nterm <std::function<void(sg::Normal&)>> normal_start normal_type normal_mod
 %nterm <std::shared_ptr<std::vector<sg::NormalMapEntry>>> normal_map normal_map_entries
 %nterm <std::vector<sg::SlopeMapEntry>> slope_map_entries
 %nterm <std::optional<std::pair<Value, SourceRange>>> opt_amount
@@ -965,7 +965,14 @@ pigment_edits
 pigment_start
   : %empty %prec OPT_EMPTY { $$ = [](sg::Pigment&) {}; }
   | PIGMENT_ID         { auto p = $1.value.pigment(); $$ = [p](sg::Pigment& target) { target = *p; }; }
-  | colour             { sg::Color c = ev.to_color($1, @1);
+  /* POV-Ray: a pigment identifier, then a new colour or pattern for it. */
+  | PIGMENT_ID pigment_type
+      { auto p = $1.value.pigment(); auto type = $2; $$ = [p, type](sg::Pigment& target) { target = *p; type(target); }; }
+  | pigment_type       { $$ = std::move($1); }
+  ;
+
+pigment_type
+  : colour             { sg::Color c = ev.to_color($1, @1);
                          $$ = [c](sg::Pigment& p) { p.kind = sg::Pigment::Kind::Solid; p.color = c; }; }
   /* POV also reads a colour given by its channels alone: pigment { red 1 green 0.5 } */
   | bare_colour        { sg::Color c = ev.to_color($1, @1);
@@ -973,10 +980,11 @@ pigment_start
   | image_map          { sg::ImageMap image = $1;
                          $$ = [image](sg::Pigment& p) { pigment_pattern_of(p); p.kind = sg::Pigment::Kind::Image; p.image = image; }; }
   | pattern_name       { $$ = ev.patterned_pigment($1, LOC(@1)); }
-  | block_pattern_name { $$ = ev.patterned_pigment($1, LOC(@1)); }
+  | block_pattern_name { $$ = ev.block_pigment($1, std::vector<Value>{}, @1, LOC(@1)); }
   | block_pattern_name block_colours { $$ = ev.block_pigment($1, $2, @2, LOC(@1)); }
   | block_pattern_name block_pigments { $$ = ev.block_pigment($1, $2, LOC(@1)); }
-  | "object" "{" object_ref "}" { $$ = ev.patterned_pigment(ev.object_pattern($3, LOC(@1)), LOC(@1)); }
+  | "object" "{" object_ref "}"
+      { $$ = ev.block_pigment(ev.object_pattern($3, LOC(@1)), std::vector<Value>{}, @1, LOC(@1)); }
   | "object" "{" object_ref block_colours "}"
       { $$ = ev.block_pigment(ev.object_pattern($3, LOC(@1)), $4, @4, LOC(@1)); }
   | "object" "{" object_ref block_pigments "}"
@@ -991,7 +999,7 @@ unweighted_pigment
 unweighted_start
   : PIGMENT_ID         { auto p = $1.value.pigment(); $$ = [p](sg::Pigment& target) { target = *p; }; }
   | pattern_name       { $$ = ev.patterned_pigment($1, LOC(@1)); }
-  | block_pattern_name { $$ = ev.patterned_pigment($1, LOC(@1)); }
+  | block_pattern_name { $$ = ev.block_pigment($1, std::vector<Value>{}, @1, LOC(@1)); }
   ;
 
 block_colours
@@ -1219,7 +1227,14 @@ normal_edits
 normal_start
   : %empty %prec OPT_EMPTY { $$ = [](sg::Normal&) {}; }
   | NORMAL_ID          { auto n = $1.value.normal(); $$ = [n](sg::Normal& target) { target = *n; }; }
-  | pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
+  /* POV-Ray: a normal identifier, then a new pattern for it. */
+  | NORMAL_ID normal_type
+      { auto n = $1.value.normal(); auto type = $2; $$ = [n, type](sg::Normal& target) { target = *n; type(target); }; }
+  | normal_type        { $$ = std::move($1); }
+  ;
+
+normal_type
+  : pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
   | block_pattern_name opt_amount { $$ = ev.patterned_normal($1, $2, LOC(@1)); }
   | block_pattern_name opt_amount block_normals { $$ = ev.block_normal($1, $2, $3, LOC(@1)); }
   | "object" "{" object_ref "}" { $$ = ev.block_normal(ev.object_pattern($3, LOC(@1)), std::nullopt, {}, LOC(@1)); }

@@ -76,6 +76,15 @@ sg::ColorMapRef default_color_map(PatternKind kind) {
     }
 }
 
+// Whether `map` is one settle_pigment gave a pattern written without one.
+bool is_default_color_map(const sg::ColorMapRef& map) {
+    if (!map) return false;
+    for (PatternKind kind : {PatternKind::Gradient, PatternKind::Mandel, PatternKind::Bozo, PatternKind::Wood,
+                             PatternKind::Marble, PatternKind::Radial, PatternKind::Agate})
+        if (map == default_color_map(kind)) return true;
+    return false;
+}
+
 // Block patterns' default colours and how many entries each takes.
 std::vector<sg::Color> default_block_colours(PatternKind kind) {
     switch (kind) {
@@ -219,6 +228,11 @@ void restart_pattern(sg::Pattern& pattern, const std::function<void(sg::Pattern&
     sg::Pattern fresh;
     fresh.pattern_from_object = pattern.pattern_from_object;
     fresh.warps = pattern.warps;
+    // POV-Ray 3.7 keeps classic turbulence among the warps.
+    fresh.turbulence = pattern.turbulence;
+    fresh.octaves = pattern.octaves;
+    fresh.omega = pattern.omega;
+    fresh.lambda = pattern.lambda;
     fresh.number_of_waves = waves;
     pattern = fresh;
     kind(pattern);
@@ -593,15 +607,32 @@ std::function<void(sg::Warp&)> Evaluator::planar_warp(const Value& normal, const
 
 // ----------------------------------------------------------------- pigments
 
+// A pattern written into a pigment that already has one (after a pigment
+// identifier, or in a texture's pigment edit) keeps, as in POV-Ray, the
+// pigment's moves, warps and turbulence; the map is the next functions'.
+namespace {
+void start_pattern(sg::Pigment& p, const Evaluator::PatternEdit& pattern, int waves, const sg::SourceLocation& at) {
+    p.kind = sg::Pigment::Kind::Patterned;
+    restart_pattern(pigment_pattern_of(p), pattern, waves, at);
+}
+}  // namespace
+
 Evaluator::PigmentEdit Evaluator::patterned_pigment(const PatternEdit& pattern, const sg::SourceLocation& at) {
     // ripples and waves take global_settings' number_of_waves (written,
     // as POV scenes do, before the objects).
     return [pattern, at, waves = m_scene.global.number_of_waves](sg::Pigment& p) {
-        p.kind = sg::Pigment::Kind::Patterned;
-        restart_pattern(pigment_pattern_of(p), pattern, waves, at);
-        p.color_map.reset();
-        p.pigment_map.clear();
-        p.block_pigments.clear();
+        start_pattern(p, pattern, waves, at);
+        // POV-Ray keeps the map the pigment was given, and reads a block
+        // pattern's list as a map with entry i at value i. A map the
+        // earlier pattern had only by default is its own, not kept.
+        if (is_default_color_map(p.color_map)) p.color_map.reset();
+        if (!p.block_pigments.empty()) {
+            p.color_map.reset();
+            p.pigment_map.clear();
+            for (std::size_t i = 0; i < p.block_pigments.size(); ++i)
+                p.pigment_map.push_back(sg::PigmentMapEntry{double(i), p.block_pigments[i]});
+            p.block_pigments.clear();
+        }
     };
 }
 
@@ -609,20 +640,23 @@ Evaluator::PigmentEdit Evaluator::block_pigment(const PatternEdit& pattern, cons
                                                 const SourceRange& where, const sg::SourceLocation& at) {
     std::vector<sg::PigmentRef> pigments;
     for (const Value& colour : colours) pigments.push_back(solid_pigment(to_color(colour, where)));
-    PigmentEdit start = patterned_pigment(pattern, at);
-    return [start, pigments](sg::Pigment& p) {
-        start(p);
-        p.block_pigments = pigments;
-    };
+    return block_pigment(pattern, pigments, at);
 }
 
 Evaluator::PigmentEdit Evaluator::block_pigment(const PatternEdit& pattern,
                                                 const std::vector<std::shared_ptr<sg::Pigment>>& list,
                                                 const sg::SourceLocation& at) {
-    std::vector<sg::PigmentRef> pigments(list.begin(), list.end());
-    PigmentEdit start = patterned_pigment(pattern, at);
-    return [start, pigments](sg::Pigment& p) {
-        start(p);
+    return block_pigment(pattern, std::vector<sg::PigmentRef>(list.begin(), list.end()), at);
+}
+
+// A block pattern's list (the missing entries its defaults, filled in when
+// the pigment is settled) replaces any map, as in POV-Ray.
+Evaluator::PigmentEdit Evaluator::block_pigment(const PatternEdit& pattern, const std::vector<sg::PigmentRef>& pigments,
+                                                const sg::SourceLocation& at) {
+    return [pattern, at, waves = m_scene.global.number_of_waves, pigments](sg::Pigment& p) {
+        start_pattern(p, pattern, waves, at);
+        p.color_map.reset();
+        p.pigment_map.clear();
         p.block_pigments = pigments;
     };
 }

@@ -118,6 +118,81 @@ TEST(ParserPatterns, TransformsAndWarpsKeepTheirOrder) {
     EXPECT_EQ(repeat.flip, sg::Vec3(0, 1, 0));
 }
 
+// POV-Ray reads a new colour or pattern after a pigment or normal
+// identifier: the pattern changes and the identifier's moves, warps and
+// turbulence stay. Its map stays too, unless the pattern had it only by
+// default; a block pattern's list becomes a map with entry i at value i;
+// a block pattern brings its own list. (Each case checked against
+// povray 3.7's pixels.)
+TEST(ParserPatterns, ANewPatternAfterAnIdentifierKeepsItsMovesAndMap) {
+    auto scene = parse_ok(
+        "#declare Blocks = pigment { checker rgb <1, 0, 0>, rgb <0, 0, 1> scale 0.5 }\n"
+        "#declare Mapped = pigment { bozo color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] } turbulence 0.5 }\n"
+        "#declare Bare = pigment { bozo scale 0.3 }\n"
+        "#declare Bumpy = normal { bumps 0.8 scale 0.2 }\n"
+        "plane { z, 0 pigment { Blocks } }\n"
+        "plane { z, 0 pigment { Blocks checker rgb 0, rgb 1 } }\n"
+        "plane { z, 0 pigment { Blocks gradient x } }\n"
+        "plane { z, 0 pigment { Mapped gradient x } }\n"
+        "plane { z, 0 pigment { Bare gradient x } }\n"
+        "plane { z, 0 pigment { Mapped hexagon } }\n"
+        "plane { z, 0 normal { Bumpy dents 0.9 } }\n"
+        "plane { z, 0 pigment { Mapped rgb 0.5 } }\n");
+    const sg::Pigment& blocks = material_of(scene, 0).pigment;
+    const sg::Pigment& checker = material_of(scene, 1).pigment;
+    EXPECT_EQ(checker.pattern->kind, sg::Pattern::Kind::Checker);
+    EXPECT_EQ(checker.pattern->pattern_from_object, blocks.pattern->pattern_from_object);
+    ASSERT_EQ(checker.block_pigments.size(), 2u);
+    EXPECT_EQ(checker.block_pigments[1]->color.rgb, sg::Vec3(1));
+
+    const sg::Pigment& from_blocks = material_of(scene, 2).pigment;
+    EXPECT_EQ(from_blocks.pattern->kind, sg::Pattern::Kind::Gradient);
+    EXPECT_EQ(from_blocks.pattern->pattern_from_object, blocks.pattern->pattern_from_object);
+    EXPECT_TRUE(from_blocks.block_pigments.empty());
+    EXPECT_FALSE(from_blocks.color_map);
+    ASSERT_EQ(from_blocks.pigment_map.size(), 2u);
+    EXPECT_EQ(from_blocks.pigment_map[1].value, 1.0);
+    EXPECT_EQ(from_blocks.pigment_map[1].pigment->color.rgb, sg::Vec3(0, 0, 1));
+
+    const sg::Pigment& from_mapped = material_of(scene, 3).pigment;
+    EXPECT_EQ(from_mapped.pattern->kind, sg::Pattern::Kind::Gradient);
+    EXPECT_EQ(from_mapped.pattern->turbulence, sg::Vec3(0.5));
+    ASSERT_TRUE(from_mapped.color_map);
+    EXPECT_EQ(from_mapped.color_map->front().color.rgb, sg::Vec3(1, 0, 0));
+
+    // bozo's own colours were its default: gradient gets its own, grey.
+    const sg::Pigment& from_bare = material_of(scene, 4).pigment;
+    ASSERT_TRUE(from_bare.color_map);
+    EXPECT_EQ(from_bare.color_map->front().color.rgb, sg::Vec3(0));
+    EXPECT_EQ(from_bare.color_map->back().color.rgb, sg::Vec3(1));
+
+    const sg::Pigment& hexagon = material_of(scene, 5).pigment;
+    EXPECT_FALSE(hexagon.color_map);
+    ASSERT_EQ(hexagon.block_pigments.size(), 3u);  // POV's defaults
+    EXPECT_EQ(hexagon.block_pigments[0]->color.rgb, sg::Vec3(0, 0, 1));
+
+    ASSERT_TRUE(material_of(scene, 6).normal);
+    const sg::Normal& dents = *material_of(scene, 6).normal;
+    EXPECT_EQ(dents.pattern->kind, sg::Pattern::Kind::Dents);
+    EXPECT_NEAR(dents.bump_size, 0.9, 1e-12);
+    EXPECT_EQ(apply(dents.pattern->pattern_from_object, {0.2, 0, 0}), sg::Vec3(1, 0, 0));
+
+    const sg::Pigment& plain = material_of(scene, 7).pigment;
+    EXPECT_EQ(plain.kind, sg::Pigment::Kind::Solid);
+    EXPECT_EQ(plain.color.rgb, sg::Vec3(0.5));
+}
+
+// A texture's pigment edit keeps the map of the pigment it edits (POV-Ray).
+TEST(ParserPatterns, APatternWrittenIntoATexturesPigmentKeepsItsMap) {
+    auto scene = parse_ok(
+        "#declare T = texture { pigment { gradient x color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] } } }\n"
+        "plane { z, 0 texture { T pigment { bozo } } }\n");
+    const sg::Pigment& p = material_of(scene).pigment;
+    EXPECT_EQ(p.pattern->kind, sg::Pattern::Kind::Bozo);
+    ASSERT_TRUE(p.color_map);
+    EXPECT_EQ(p.color_map->back().color.rgb, sg::Vec3(0, 0, 1));
+}
+
 // A plain colour keeps no pattern (sg::OnDemand): a loop of coloured
 // objects would otherwise carry one each. The moves it meets still reach
 // a pattern made later (uv_mapping here).
