@@ -82,13 +82,19 @@ inline void aim_reflection(const ShadingContext& at, SpecularSplit& split) {
         split.reflected_tint = at.material.iridescence(at.film_thickness, at.normal, at.wo, split.reflected);
 }
 
-// The mirror alone: what a layer below the top of a layered texture
-// reflects (POV-Ray refracts only through the top layer).
-inline SpecularSplit split_mirror(const ShadingContext& at, const SpecularOptions& options) {
+// The mirror's weights, not yet aimed.
+inline SpecularSplit unaimed_mirror(const ShadingContext& at, const SpecularOptions& options) {
     SpecularSplit split;
     const Color mirror = at.material.mirror_reflectance(at.surface, glm::dot(at.normal, at.wo), fresnel_ior(at));
     if (!options.additive_reflection) split.diffuse_scale = glm::max(Color(1.0f) - mirror, Color(0.0f));
     split.reflection = mirror;
+    return split;
+}
+
+// The mirror alone: what a layer below the top of a layered texture
+// reflects (POV-Ray refracts only through the top layer).
+inline SpecularSplit split_mirror(const ShadingContext& at, const SpecularOptions& options) {
+    SpecularSplit split = unaimed_mirror(at, options);
     aim_reflection(at, split);
     return split;
 }
@@ -100,7 +106,7 @@ inline SpecularSplit split_mirror(const ShadingContext& at, const SpecularOption
 // material alone.
 inline SpecularSplit split_specular(const ShadingContext& at, const SpecularOptions& options, float depth = 0.0f,
                                     const Color* layers_passed = nullptr) {
-    SpecularSplit split = split_mirror(at, options);
+    SpecularSplit split = unaimed_mirror(at, options);
     const Vec3 incident = -at.wo;
     const float cos_i = glm::dot(at.normal, at.wo);
     const Color mirror = split.reflection;
