@@ -64,6 +64,7 @@ struct EncodedImage {
     bool png = false;
     ImageFileWrite header;  // its `pixels` unset
     std::function<void(int row, float* samples)> row;
+    std::function<void(int row, unsigned char* codes)> code_row;  // 8-bit PNG codes straight from the film, or unset
 
     PngPixels png_pixels() const {
         PngPixels out;
@@ -72,6 +73,7 @@ struct EncodedImage {
         out.channels = int(header.channel_names.size());
         out.bits = header.file_type == SampleType::UInt16 ? 16 : 8;
         out.rows = row;
+        if (out.bits == 8) out.code_rows = code_row;
         out.text = header.text_attributes;
         return out;
     }
@@ -149,6 +151,18 @@ EncodedImage encode_for(const Film& film, const std::string& path, const ImageWr
 
     EncodedImage encoded;
     encoded.png = png;
+    // The common PNG, colour alone in the working gamma, skips the floats:
+    // its codes come straight from the film's means.
+    if (srgb8_table && !has_alpha && options.layers.empty() && !sample_channel &&
+        !(options.gamma_correction && options.working_gamma != 1.0))
+        encoded.code_row = [&film, width](int y, unsigned char* codes) {
+            std::vector<float> linear(std::size_t(width) * 3);
+            for (int x = 0; x < width; ++x) {
+                const Color c = film.mean(x, y);
+                for (int k = 0; k < 3; ++k) linear[std::size_t(x) * 3 + std::size_t(k)] = c[k];
+            }
+            linear_to_srgb8(linear.data(), codes, linear.size());
+        };
     ImageFileWrite& header = encoded.header;
     header.width = width;
     header.height = height;

@@ -70,6 +70,11 @@ bool run_libpng(png_structp png, png_infop info, const EncodeJob& job) {
     const unsigned top = pixels.bits == 8 ? 255u : 65535u;
     const std::size_t row_samples = std::size_t(pixels.width) * std::size_t(pixels.channels);
     for (int y = 0; y < pixels.height; ++y) {
+        if (pixels.bits == 8 && pixels.code_rows) {
+            pixels.code_rows(y, job.row);
+            png_write_row(png, job.row);
+            continue;
+        }
         const float* samples = job.samples_row;
         if (pixels.rows)
             pixels.rows(y, job.samples_row);
@@ -95,7 +100,9 @@ void encode(const PngPixels& pixels, std::FILE* file, std::vector<unsigned char>
     if (pixels.bits != 8 && pixels.bits != 16) throw std::invalid_argument("PNG: 8 or 16 bits");
     std::vector<unsigned char> row(std::size_t(pixels.width) * std::size_t(pixels.channels) *
                                    std::size_t(pixels.bits / 8));
-    std::vector<float> samples_row(pixels.rows ? std::size_t(pixels.width) * std::size_t(pixels.channels) : 0);
+    std::vector<float> samples_row(pixels.rows && !(pixels.bits == 8 && pixels.code_rows)
+                                       ? std::size_t(pixels.width) * std::size_t(pixels.channels)
+                                       : 0);
     std::vector<png_text> text(pixels.text.size());
     for (std::size_t i = 0; i < text.size(); ++i) {
         text[i].compression = PNG_TEXT_COMPRESSION_NONE;

@@ -19,7 +19,9 @@ struct PngPixels {
     int channels = 3;
     int bits = 8;
     const float* samples = nullptr;                     // every row, row-major; or
-    std::function<void(int row, float* samples)> rows;  // fills one row when asked
+    std::function<void(int row, float* samples)> rows;  // fills one row when asked; or
+    // (8 bits only) fills one row of codes when asked
+    std::function<void(int row, unsigned char* codes)> code_rows;
     // tEXt chunks (keywords of 1 to 79 Latin-1 characters).
     std::vector<std::pair<std::string, std::string>> text;
 };

@@ -65,6 +65,22 @@ TEST(PngEncoder, EightBitSamplesRoundToNearestAndClamp) {
     for (std::size_t i = 0; i < kSamples.size(); ++i) EXPECT_EQ(image.values[i] / 257, expected[i]) << "sample " << i;
 }
 
+TEST(PngEncoder, CodeRowsAreWrittenAsGiven) {
+    test::TempFolder folder;
+    const std::string path = (folder.path() / "codes.png").string();
+    PngPixels pixels;
+    pixels.width = 2;
+    pixels.height = 3;
+    pixels.code_rows = [](int y, unsigned char* codes) {
+        for (int i = 0; i < 6; ++i) codes[i] = (unsigned char)(40 * y + 7 * i);
+    };
+    write_png_file(path, pixels);
+    const ReadBack image = read_back(path);
+    ASSERT_EQ(image.spec.height, 3);
+    for (int y = 0; y < 3; ++y)
+        for (int i = 0; i < 6; ++i) EXPECT_EQ(image.values[std::size_t(6 * y + i)] / 257, 40 * y + 7 * i);
+}
+
 TEST(PngEncoder, SixteenBitsWithStraightAlpha) {
     test::TempFolder folder;
     const std::string path = (folder.path() / "rgba.png").string();

@@ -52,15 +52,23 @@ const Srgb8Table& table() {
     return built;
 }
 
-}  // namespace
-
-std::uint8_t linear_to_srgb8(float linear) {
+std::uint8_t code_from(const Srgb8Table& t, float linear) {
     if (!(linear > 0.0f)) return 0;  // NaN too
     if (linear >= 1.0f) return 255;
-    const Srgb8Table& t = table();
     unsigned code = t.group_start[std::bit_cast<std::uint32_t>(linear) >> kGroupShift];
     if (linear >= t.threshold[code + 1]) ++code;
     return std::uint8_t(code);
+}
+
+}  // namespace
+
+std::uint8_t linear_to_srgb8(float linear) {
+    return code_from(table(), linear);
+}
+
+void linear_to_srgb8(const float* linear, std::uint8_t* codes, std::size_t count) {
+    const Srgb8Table& t = table();
+    for (std::size_t i = 0; i < count; ++i) codes[i] = code_from(t, linear[i]);
 }
 
 }  // namespace lancer

@@ -7,6 +7,7 @@
 
 #include <bit>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "lancer/host/image_io.h"
@@ -52,6 +53,14 @@ TEST(Srgb8, ValuesOutsideTheUnitInterval) {
     EXPECT_EQ(linear_to_srgb8(7.5f), 255);
     EXPECT_EQ(linear_to_srgb8(std::numeric_limits<float>::infinity()), 255);
     EXPECT_EQ(linear_to_srgb8(0.5f), 188);  // 255 (1.055 * 0.5^(1/2.4) - 0.055) = 187.5...
+}
+
+TEST(Srgb8, ARowGetsEachValuesCode) {
+    const float row[] = {
+        -1.0f, 0.0f, 0.0031308f, 0.2f, 0.5f, 0.99999994f, 1.0f, std::numeric_limits<float>::quiet_NaN(), 3.0f};
+    std::uint8_t codes[std::size(row)] = {};
+    linear_to_srgb8(row, codes, std::size(row));
+    for (std::size_t i = 0; i < std::size(row); ++i) EXPECT_EQ(codes[i], formula_code(row[i])) << "x = " << row[i];
 }
 
 }  // namespace
