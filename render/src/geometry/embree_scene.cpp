@@ -110,6 +110,7 @@ void EmbreeScene::build() {
     });
     std::size_t bounded_shapes = 0;
     for (const auto& [kind, group] : groups) bounded_shapes += group->instances.size();
+    m_has_meshes = has_meshes;
     m_traces_list = !has_meshes && bounded_shapes <= ShapeList::kMostShapes;
     for (auto& [kind, group] : groups) {
         RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);

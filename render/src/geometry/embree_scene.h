@@ -191,6 +191,7 @@ class EmbreeScene final : public RenderScene {
     // A scene of a few analytic shapes: traced from this list, not the BVH.
     ShapeList m_few_shapes;
     bool m_traces_list = false;
+    bool m_has_meshes = false;  // without, camera packets prefetch no triangles
     std::string m_device_error;
     InteriorStack m_camera_interiors;
     bool m_has_no_shadow_mesh = false;

@@ -28,13 +28,16 @@ bool intersect_plane(const AnalyticPlane& p, const DVec3& o, const DVec3& d, dou
     return true;
 }
 
+AnalyticPlane::AnalyticPlane(const DVec3& unit_normal, double plane_distance)
+    : normal(unit_normal), distance(plane_distance) {
+    tangent_frame(normal, tangent1, tangent2);
+}
+
 SurfaceGeometry plane_surface(const AnalyticPlane& plane, const DVec3& p) {
     SurfaceGeometry g;
     g.normal = plane.normal;
     g.point = p - (glm::dot(plane.normal, p) - plane.distance) * plane.normal;
-    DVec3 t1, t2;
-    tangent_frame(plane.normal, t1, t2);
-    g.uv = Vec2(float(glm::dot(g.point, t1)), float(glm::dot(g.point, t2)));
+    g.uv = Vec2(float(glm::dot(g.point, plane.tangent1)), float(glm::dot(g.point, plane.tangent2)));
     return g;
 }
 

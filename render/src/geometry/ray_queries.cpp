@@ -223,9 +223,9 @@ void EmbreeScene::intersect_batch(const Ray* rays, int count, Hit* hits, bool* f
         if (step < packets) {
             PacketAnswers& traced = answers[step % kDepth];
             trace_packet(rays + step * kPacketLanes, lanes_of(step), traced);
-            prefetch_corner_indices(traced, lanes_of(step));
+            if (m_has_meshes) prefetch_corner_indices(traced, lanes_of(step));
         }
-        if (const int previous = step - 1; previous >= 0 && previous < packets)
+        if (const int previous = step - 1; m_has_meshes && previous >= 0 && previous < packets)
             prefetch_corners(answers[previous % kDepth], lanes_of(previous));
         if (const int ready = step - 2; ready >= 0)
             complete_packet(rays + ready * kPacketLanes, answers[ready % kDepth], lanes_of(ready),

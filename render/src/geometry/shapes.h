@@ -53,8 +53,11 @@ struct AnalyticBox {
     DVec3 upper{1.0};
 };
 struct AnalyticPlane {
-    DVec3 normal{0.0, 1.0, 0.0};  // unit
-    double distance = 0.0;        // dot(p, normal) = distance
+    AnalyticPlane() : AnalyticPlane(DVec3(0.0, 1.0, 0.0), 0.0) {}
+    AnalyticPlane(const DVec3& unit_normal, double distance);
+    DVec3 normal;              // unit
+    double distance;           // dot(p, normal) = distance
+    DVec3 tangent1, tangent2;  // the (u, v) axes, made once (plane_surface)
 };
 // A parallelogram centre ± axis1/2 ± axis2/2 (rectangle area lights), in
 // world space.

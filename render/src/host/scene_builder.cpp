@@ -662,7 +662,7 @@ class Builder {
             instance.bounded = false;
             const double length = glm::length(plane->normal);
             if (!(length > 0.0)) throw SceneError(object.location, "plane normal has zero length");
-            instance.plane = {plane->normal / length, plane->distance};
+            instance.plane = AnalyticPlane(plane->normal / length, plane->distance);
         } else if (const auto* mesh_ref = std::get_if<sg::MeshRef>(&object.shape)) {
             if (!*mesh_ref) return false;
             instance.kind = ShapeKind::Mesh;
