@@ -155,7 +155,13 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
     const DVec3 world = instance.placement.point_to_world(g.point);
     hit.position = Vec3(world);
     hit.position_error = instance.placement.world_point_error(g.point, world);
-    hit.geometric_normal = Vec3(instance.placement.normal_to_world_unit(g.normal));
+    // A sphere's, a box's and a plane's normals are unit already: in world
+    // coordinates they need no second normalisation (two double divisions
+    // and a square root a hit).
+    const bool unit_in_world =
+        instance.placement.identity &&
+        (instance.kind == ShapeKind::Sphere || instance.kind == ShapeKind::Box || instance.kind == ShapeKind::Plane);
+    hit.geometric_normal = Vec3(unit_in_world ? g.normal : instance.placement.normal_to_world_unit(g.normal));
     if (g.shading_normal != DVec3(0.0)) {
         // A mesh's written normals may disagree with its winding: the
         // facet's normal is turned to the shading side, as for meshes out
