@@ -112,7 +112,11 @@ Color Material::mirror_reflectance(const SurfaceSample& surface, float cos_i, fl
         const float fresnel = glm::clamp(0.5f * a * a * (1.0f + b * b), 0.0f, 1.0f);
         return metallic_reflection(surface, cos_i, fresnel * r_max + (1.0f - fresnel) * r_min);
     }
-    const float w = std::pow(1.0f - cos_i, m_params.reflection_falloff);
+    // A plain `reflection R` has no range to fall off over (and POV's
+    // default falloff, 1, needs no pow): every mirror hit asks.
+    if (r_min == r_max) return metallic_reflection(surface, cos_i, r_max);
+    const float falloff = m_params.reflection_falloff;
+    const float w = falloff == 1.0f ? 1.0f - cos_i : std::pow(1.0f - cos_i, falloff);
     return metallic_reflection(surface, cos_i, w * r_max + (1.0f - w) * r_min);
 }
 
