@@ -28,8 +28,8 @@ constexpr int kThreads = 2;
 sg::MaterialRef matte(sg::Vec3 rgb) {
     auto m = std::make_shared<sg::Material>();
     m->pigment.color.rgb = rgb;
-    m->finish.ambient = sg::Vec3(0.0);
-    m->finish.diffuse = 1.0;
+    m->finish->ambient = sg::Vec3(0.0);
+    m->finish->diffuse = 1.0;
     return m;
 }
 

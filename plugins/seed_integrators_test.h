@@ -38,8 +38,8 @@ inline sg::MaterialRef default_material() {
 inline sg::MaterialRef flat_colour(const sg::Vec3& rgb) {
     return material([&](sg::Material& m) {
         m.pigment.color.rgb = rgb;
-        m.finish.ambient = sg::Vec3(1.0);
-        m.finish.diffuse = 0.0;
+        m.finish->ambient = sg::Vec3(1.0);
+        m.finish->diffuse = 0.0;
     });
 }
 

@@ -25,8 +25,8 @@ sg::MaterialRef matte_white() {
     auto material = std::make_shared<sg::Material>();
     material->pigment.kind = sg::Pigment::Kind::Solid;
     material->pigment.color.rgb = sg::Vec3(1.0);
-    material->finish.diffuse = 1.0;
-    material->finish.ambient = sg::Vec3(0.0);
+    material->finish->diffuse = 1.0;
+    material->finish->ambient = sg::Vec3(0.0);
     return material;
 }
 
@@ -129,8 +129,8 @@ TEST(RaycastIntegrator, AmbientAndEmissionAreAdded) {
     graph.lights.clear();
     auto material = std::make_shared<sg::Material>(*matte_white());
     material->pigment.color.rgb = sg::Vec3(0.5, 0.25, 1.0);
-    material->finish.ambient = sg::Vec3(0.2);
-    material->finish.emission = sg::Vec3(0.1);
+    material->finish->ambient = sg::Vec3(0.2);
+    material->finish->emission = sg::Vec3(0.1);
     graph.objects[0].material = material;
     graph.global.ambient_light = sg::Vec3(1.0);
     const Film film = render(graph, *raycast.integrator, 5, 1);
@@ -160,8 +160,8 @@ sg::SceneGraph busy_scene() {
         ball.shape = sg::Sphere{sg::Vec3(-2.0 + i, 0.3 * i - 0.6, 4.0), 0.45};
         auto material = std::make_shared<sg::Material>(*matte_white());
         material->pigment.color.rgb = sg::Vec3(0.2 * i, 0.5, 1.0 - 0.2 * i);
-        material->finish.phong = 0.5;
-        material->finish.ambient = sg::Vec3(0.05);
+        material->finish->phong = 0.5;
+        material->finish->ambient = sg::Vec3(0.05);
         ball.material = material;
         graph.objects.push_back(ball);
     }

@@ -73,7 +73,7 @@ TEST(ParserDirectives, DirectivesInsideBlocks) {
             #declare Offset = 2;
             translate x * Offset
         })");
-    EXPECT_DOUBLE_EQ(scene.objects[0].material->finish.phong, 1.0);
+    EXPECT_DOUBLE_EQ(scene.objects[0].material->finish->phong, 1.0);
     EXPECT_DOUBLE_EQ(scene.objects[0].parent_from_object[3][0], 2.0);
 }
 
@@ -190,12 +190,12 @@ TEST(ParserDirectives, MacroArgumentsMayBeBlocks) {
         WithMedia(media { emission 0.3 })
         At(spline { linear_spline 0, <0, 0, 0> 1, <2, 4, 6> }))");
     ASSERT_EQ(scene.objects.size(), 4u);
-    const sg::Interior& shell = scene.objects[0].material->interior;
+    const sg::Interior& shell = *scene.objects[0].material->interior;
     EXPECT_DOUBLE_EQ(shell.ior, 1.5);
     ASSERT_EQ(shell.media.size(), 1u);
     EXPECT_DOUBLE_EQ(shell.media[0].emission.x, 0.2);
-    EXPECT_DOUBLE_EQ(scene.objects[1].material->interior.media.at(0).emission.x, 0.1);
-    EXPECT_DOUBLE_EQ(scene.objects[2].material->interior.media.at(0).emission.x, 0.3);
+    EXPECT_DOUBLE_EQ(scene.objects[1].material->interior->media.at(0).emission.x, 0.1);
+    EXPECT_DOUBLE_EQ(scene.objects[2].material->interior->media.at(0).emission.x, 0.3);
     EXPECT_EQ(std::get<sg::Sphere>(scene.objects[3].shape).center, sg::Vec3(1, 2, 3));
 }
 
@@ -214,7 +214,7 @@ TEST(ParserDirectives, DeclareWithoutSemicolonWarns) {
 TEST(ParserDirectives, DefaultTexture) {
     auto scene = parse_ok("#default { finish { ambient 0 } } sphere { 0, 1 } sphere { 0, 1 pigment { rgb 1 } }");
     ASSERT_TRUE(scene.objects[0].material);
-    EXPECT_DOUBLE_EQ(scene.objects[0].material->finish.ambient.x, 0.0);
+    EXPECT_DOUBLE_EQ(scene.objects[0].material->finish->ambient.x, 0.0);
 }
 
 class IncludeTest : public ::testing::Test {
@@ -304,7 +304,7 @@ TEST_F(IncludeTest, ObjMeshWithMtlMaterials) {
     ASSERT_EQ(mesh->materials.size(), 1u);
     EXPECT_EQ(mesh->faces[0].material, 0);
     EXPECT_DOUBLE_EQ(mesh->materials[0]->pigment.color.rgb.x, 1.0);
-    EXPECT_DOUBLE_EQ(mesh->materials[0]->finish.roughness, 0.01);
+    EXPECT_DOUBLE_EQ(mesh->materials[0]->finish->roughness, 0.01);
     EXPECT_EQ(mesh->faces[0].uv[1], 1);
     // A texture on the object replaces the MTL materials.
     auto textured = std::get<sg::MeshRef>(result.scene->objects[1].shape);

@@ -23,11 +23,11 @@ struct MaterialWalker {
         const double transparency = pigment.kind == sg::Pigment::Kind::Solid
                                         ? std::clamp(pigment.color.filter + pigment.color.transmit, 0.0, 1.0)
                                         : 0.0;
-        const double bound = finish_reflectance_bound(material->finish, peak, transparency);
+        const double bound = finish_reflectance_bound(*material->finish, peak, transparency);
         if (!(bound > 1.0 + 1e-9)) return;
         Diagnostic warning;
         warning.severity = Diagnostic::Severity::Warning;
-        warning.location = material->finish.location.file ? material->finish.location : material->location;
+        warning.location = material->finish->location.file ? material->finish->location : material->location;
         char share[32];
         std::snprintf(share, sizeof share, "%.3g", bound);
         warning.message = std::string("this finish returns up to ") + share +

@@ -932,7 +932,7 @@ material_items
   | material_items TEXTURE_ID { $$ = std::move($1); auto t = $2.value.texture();
                                 $$.push_back([t](sg::Material& m) { m = *t; }); }
   | material_items texture  { $$ = std::move($1); auto t = $2;
-                              $$.push_back([t](sg::Material& m) { sg::Interior keep = m.interior; const bool had = m.has_interior;
+                              $$.push_back([t](sg::Material& m) { sg::CopyOnWrite<sg::Interior> keep = m.interior; const bool had = m.has_interior;
                                                                   m = *t; m.interior = keep; m.has_interior = had; }); }
   | material_items interior { $$ = std::move($1); auto i = $2;
                               $$.push_back([i](sg::Material& m) { m.interior = *i; m.has_interior = true; }); }

@@ -10,7 +10,7 @@ using test::first_error;
 using test::parse_ok;
 
 const sg::Media& first_media(const sg::SceneGraph& scene) {
-    return scene.objects.at(0).material->interior.media.at(0);
+    return scene.objects.at(0).material->interior->media.at(0);
 }
 
 TEST(ParserMedia, DefaultsAreThoseOfPovRay37) {
@@ -39,7 +39,7 @@ TEST(ParserMedia, EveryKeyword) {
         "  aa_level 5 aa_threshold 0.05 jitter 0.3\n"
         "  density { spherical } density { rgb <1, 0.5, 0.25> }\n"
         "} media { absorption 1 } } }");
-    const auto& media = scene.objects[0].material->interior.media;
+    const auto& media = scene.objects[0].material->interior->media;
     ASSERT_EQ(media.size(), 2u);
     const sg::Media& m = media[0];
     EXPECT_EQ(m.emission, sg::Vec3(0.1, 0.2, 0.3));

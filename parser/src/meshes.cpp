@@ -604,16 +604,16 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
                         "OBJ material '" + m.name + "': texture \"" + m.diffuse_texname + "\" not found; using Kd");
             }
         }
-        material->finish.ambient = sg::Vec3(m.ambient[0], m.ambient[1], m.ambient[2]);
-        material->finish.diffuse = 1.0;
-        material->finish.specular = (m.specular[0] + m.specular[1] + m.specular[2]) / 3.0;
-        material->finish.roughness = 1.0 / std::max<double>(m.shininess, 1.0);
-        for (int c = 0; c < 3; ++c) material->finish.emission[c] = kd[c] > 0 ? m.emission[c] / kd[c] : m.emission[c];
+        material->finish->ambient = sg::Vec3(m.ambient[0], m.ambient[1], m.ambient[2]);
+        material->finish->diffuse = 1.0;
+        material->finish->specular = (m.specular[0] + m.specular[1] + m.specular[2]) / 3.0;
+        material->finish->roughness = 1.0 / std::max<double>(m.shininess, 1.0);
+        for (int c = 0; c < 3; ++c) material->finish->emission[c] = kd[c] > 0 ? m.emission[c] / kd[c] : m.emission[c];
         if (m.illum == 3 || m.illum == 5 || m.illum == 7) {
-            material->finish.reflection.min = material->finish.reflection.max =
+            material->finish->reflection.min = material->finish->reflection.max =
                 sg::Vec3(m.specular[0], m.specular[1], m.specular[2]);
         }
-        material->interior.ior = m.ior > 0 ? m.ior : 1.0;
+        material->interior->ior = m.ior > 0 ? m.ior : 1.0;
         mesh->materials.push_back(material);
     }
 

@@ -22,7 +22,7 @@ using MaterialPtr = std::shared_ptr<const sg::Material>;
 
 // Re-expresses a material given in the parent's space in a child's space.
 MaterialPtr in_child_space(const MaterialPtr& material, const sg::Mat4& parent_from_child) {
-    const bool has_densities = std::any_of(material->interior.media.begin(), material->interior.media.end(),
+    const bool has_densities = std::any_of(material->interior->media.begin(), material->interior->media.end(),
                                            [](const sg::Media& m) { return !m.densities.empty(); });
     if (material->pigment.kind == sg::Pigment::Kind::Solid && !material->normal && !has_densities &&
         !material->interior_texture)
@@ -418,7 +418,7 @@ std::shared_ptr<sg::Material> Evaluator::build_texture(const Edits<sg::Material>
 
 std::shared_ptr<sg::Finish> Evaluator::build_finish(const Edits<sg::Finish>& edits, const sg::SourceLocation& at) {
     // POV modifies the finish a texture starts with: #default's.
-    auto finish = std::make_shared<sg::Finish>(m_default_texture ? m_default_texture->finish : sg::Finish{});
+    auto finish = std::make_shared<sg::Finish>(m_default_texture ? *m_default_texture->finish : sg::Finish{});
     for (const auto& edit : edits) edit(*finish);
     settle_finish(*finish, at);
     return finish;

@@ -205,11 +205,11 @@ TEST(ParserMaterials, EveryModifierOnAGroupReachesChildrenWithoutTextures) {
     const auto& children = std::get<sg::Group>(scene.objects[0].shape).children;
     ASSERT_EQ(children.size(), 2u);
     ASSERT_TRUE(children[0].material);
-    EXPECT_DOUBLE_EQ(children[0].material->finish.phong, 0.7);
+    EXPECT_DOUBLE_EQ(children[0].material->finish->phong, 0.7);
     EXPECT_DOUBLE_EQ(children[0].material->pigment.color.rgb.y, 1.0);
     // The box's own texture stays.
     EXPECT_DOUBLE_EQ(children[1].material->pigment.color.rgb.z, 1.0);
-    EXPECT_DOUBLE_EQ(children[1].material->finish.phong, 0.0);
+    EXPECT_DOUBLE_EQ(children[1].material->finish->phong, 0.0);
 }
 
 TEST(ParserObjects, QuadricFamilyArguments) {
@@ -345,15 +345,15 @@ TEST(ParserMaterials, AGroupsInteriorReachesPartsWithoutOne) {
         sphere { 0, 1 pigment { rgbf 1 } })");
     const auto& parts = std::get<sg::Group>(scene.objects.at(0).shape).children;
     ASSERT_EQ(parts.size(), 5u);
-    EXPECT_DOUBLE_EQ(parts[0].material->interior.ior, 1.6);
-    EXPECT_DOUBLE_EQ(std::get<sg::Group>(parts[1].shape).children.at(0).material->interior.ior, 1.6);
-    EXPECT_DOUBLE_EQ(parts[2].material->interior.ior, 1.1);
-    EXPECT_DOUBLE_EQ(parts[3].material->interior.ior, 1.2);
+    EXPECT_DOUBLE_EQ(parts[0].material->interior->ior, 1.6);
+    EXPECT_DOUBLE_EQ(std::get<sg::Group>(parts[1].shape).children.at(0).material->interior->ior, 1.6);
+    EXPECT_DOUBLE_EQ(parts[2].material->interior->ior, 1.1);
+    EXPECT_DOUBLE_EQ(parts[3].material->interior->ior, 1.2);
     // A part that takes its texture from a nested group takes the interior too.
-    EXPECT_DOUBLE_EQ(std::get<sg::Group>(parts[4].shape).children.at(0).material->interior.ior, 1.6);
+    EXPECT_DOUBLE_EQ(std::get<sg::Group>(parts[4].shape).children.at(0).material->interior->ior, 1.6);
     const auto& later = std::get<sg::Group>(scene.objects.at(1).shape).children;
-    EXPECT_DOUBLE_EQ(later.at(0).material->interior.ior, 1.4);
-    EXPECT_DOUBLE_EQ(scene.objects.at(2).material->interior.ior, 1.0);
+    EXPECT_DOUBLE_EQ(later.at(0).material->interior->ior, 1.4);
+    EXPECT_DOUBLE_EQ(scene.objects.at(2).material->interior->ior, 1.0);
 }
 
 TEST(ParserMaterials, TextureFinishDefaultsAndValues) {
@@ -367,20 +367,20 @@ TEST(ParserMaterials, TextureFinishDefaultsAndValues) {
     expect_vec(m->pigment.color.rgb, {0.1, 0.2, 0.3});
     EXPECT_DOUBLE_EQ(m->pigment.color.filter, 0.4);
     EXPECT_DOUBLE_EQ(m->pigment.color.transmit, 0.5);
-    expect_vec(m->finish.ambient, {0.2, 0.2, 0.2});
-    EXPECT_DOUBLE_EQ(m->finish.diffuse, 0.7);
-    EXPECT_DOUBLE_EQ(m->finish.brilliance, 2);
-    EXPECT_DOUBLE_EQ(m->finish.specular, 0.3);
-    EXPECT_DOUBLE_EQ(m->finish.roughness, 0.01);
-    EXPECT_DOUBLE_EQ(m->finish.phong, 0.4);
-    EXPECT_DOUBLE_EQ(m->finish.phong_size, 60);
-    EXPECT_DOUBLE_EQ(m->finish.metallic, 1.0);
-    expect_vec(m->finish.reflection.min, {0.1, 0.1, 0.1});
-    expect_vec(m->finish.reflection.max, {0.9, 0.9, 0.9});
-    EXPECT_DOUBLE_EQ(m->finish.reflection.falloff, 2);
-    EXPECT_DOUBLE_EQ(m->finish.reflection.exponent, 1.5);
-    expect_vec(m->finish.emission, {1, 2, 3});
-    EXPECT_DOUBLE_EQ(m->interior.ior, 1.5);
+    expect_vec(m->finish->ambient, {0.2, 0.2, 0.2});
+    EXPECT_DOUBLE_EQ(m->finish->diffuse, 0.7);
+    EXPECT_DOUBLE_EQ(m->finish->brilliance, 2);
+    EXPECT_DOUBLE_EQ(m->finish->specular, 0.3);
+    EXPECT_DOUBLE_EQ(m->finish->roughness, 0.01);
+    EXPECT_DOUBLE_EQ(m->finish->phong, 0.4);
+    EXPECT_DOUBLE_EQ(m->finish->phong_size, 60);
+    EXPECT_DOUBLE_EQ(m->finish->metallic, 1.0);
+    expect_vec(m->finish->reflection.min, {0.1, 0.1, 0.1});
+    expect_vec(m->finish->reflection.max, {0.9, 0.9, 0.9});
+    EXPECT_DOUBLE_EQ(m->finish->reflection.falloff, 2);
+    EXPECT_DOUBLE_EQ(m->finish->reflection.exponent, 1.5);
+    expect_vec(m->finish->emission, {1, 2, 3});
+    EXPECT_DOUBLE_EQ(m->interior->ior, 1.5);
 }
 
 // The older `reflection_exponent` sets the same exponent, which a later
@@ -388,7 +388,7 @@ TEST(ParserMaterials, TextureFinishDefaultsAndValues) {
 // divides by it).
 TEST(ParserMaterials, ReflectionExponentOldAndNew) {
     auto scene = parse_ok("sphere { 0, 1 finish { reflection_exponent 0.5 reflection { 0.3 } } }");
-    EXPECT_DOUBLE_EQ(scene.objects[0].material->finish.reflection.exponent, 0.5);
+    EXPECT_DOUBLE_EQ(scene.objects[0].material->finish->reflection.exponent, 0.5);
     const Diagnostic error = test::first_error("sphere { 0, 1 finish { reflection { 0.3 exponent 0 } } }");
     EXPECT_NE(error.message.find("reflection exponent must be positive"), std::string::npos) << error.message;
     EXPECT_EQ(error.location.line, 1);
@@ -402,24 +402,24 @@ TEST(ParserMaterials, AlbedoBecomesPovsPeak) {
         sphere { 0, 1 finish { F } }
         sphere { 0, 1 finish { specular albedo 0.2 roughness 0.1 conserve_energy } }
         sphere { 0, 1 finish { F phong_size 99 } })");
-    const auto& first = scene.objects[0].material->finish;
+    const auto& first = *scene.objects[0].material->finish;
     EXPECT_DOUBLE_EQ(first.phong, 0.5 * (9.0 + 1.0) / 2.0);
     EXPECT_DOUBLE_EQ(first.diffuse, 0.6 * (3.0 + 1.0) / 2.0);
-    const auto& second = scene.objects[1].material->finish;
+    const auto& second = *scene.objects[1].material->finish;
     EXPECT_NEAR(second.specular, 0.2 * 12.0 / (4.0 * (2.0 - std::pow(2.0, -5.0))), 1e-12);
     EXPECT_TRUE(second.conserve_energy);
     // A declared finish was rescaled once, when it was read.
-    EXPECT_DOUBLE_EQ(scene.objects[2].material->finish.phong, 2.5);
+    EXPECT_DOUBLE_EQ(scene.objects[2].material->finish->phong, 2.5);
 }
 
 TEST(ParserMaterials, FinishDefaultsArePovs) {
     auto scene = parse_ok("sphere { 0, 1 finish { } }");
     auto m = scene.objects[0].material;
     ASSERT_TRUE(m);
-    expect_vec(m->finish.ambient, {0.1, 0.1, 0.1});
-    EXPECT_DOUBLE_EQ(m->finish.diffuse, 0.6);
-    EXPECT_DOUBLE_EQ(m->finish.phong_size, 40);
-    EXPECT_DOUBLE_EQ(m->finish.roughness, 0.05);
+    expect_vec(m->finish->ambient, {0.1, 0.1, 0.1});
+    EXPECT_DOUBLE_EQ(m->finish->diffuse, 0.6);
+    EXPECT_DOUBLE_EQ(m->finish->phong_size, 40);
+    EXPECT_DOUBLE_EQ(m->finish->roughness, 0.05);
     expect_vec(m->pigment.color.rgb, {0, 0, 0});  // POV's default pigment is black
 }
 
@@ -493,9 +493,9 @@ TEST(ParserMaterials, DeclaredTexturesPigmentsFinishesReusable) {
         sphere { 0, 1 texture { T } }
         sphere { 0, 1 pigment { P } finish { F } })");
     EXPECT_EQ(scene.objects[0].material->name, "T");
-    EXPECT_DOUBLE_EQ(scene.objects[0].material->finish.phong, 1);
+    EXPECT_DOUBLE_EQ(scene.objects[0].material->finish->phong, 1);
     expect_vec(scene.objects[1].material->pigment.color.rgb, {0, 0, 1});
-    EXPECT_DOUBLE_EQ(scene.objects[1].material->finish.phong, 1);
+    EXPECT_DOUBLE_EQ(scene.objects[1].material->finish->phong, 1);
 }
 
 TEST(ParserLights, ShadowlessIsKeptOnPointAndParallelLights) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 #include "evaluator.h"
 
@@ -194,13 +195,19 @@ void transform_material(sg::Material& material, const sg::Mat4& world_from_local
 
 void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer, bool object_move) {
     move_pigment(material.pigment, inner_from_outer, object_move);
-    // Interior media's densities move with the object, as its pigment does.
-    for (sg::Media& media : material.interior.media)
-        for (auto& density : media.densities) {
-            auto moved = std::make_shared<sg::Pigment>(*density);
-            move_pigment(*moved, inner_from_outer, object_move);
-            density = moved;
-        }
+    // Interior media's densities move with the object, as its pigment does
+    // (asked through a const view first: writing would unshare the interior).
+    const std::vector<sg::Media>& media_read = std::as_const(material).interior->media;
+    const bool has_densities =
+        std::any_of(media_read.begin(), media_read.end(), [](const sg::Media& m) { return !m.densities.empty(); });
+    if (has_densities) {
+        for (sg::Media& media : material.interior->media)
+            for (auto& density : media.densities) {
+                auto moved = std::make_shared<sg::Pigment>(*density);
+                move_pigment(*moved, inner_from_outer, object_move);
+                density = moved;
+            }
+    }
     material.normal = moved_normal(material.normal, inner_from_outer, object_move);
     // A patterned texture's entries live in its pattern space: only the
     // pattern moves. Layers are whole textures of their own: each moves.
@@ -865,8 +872,9 @@ std::function<void(sg::Material&)> Evaluator::material_finish_edit(const Edits<s
                                                                    const sg::SourceLocation& at) {
     return [this, edits, at](sg::Material& m) {
         sg::Material& target = top_layer(m);
-        for (const auto& edit : edits) edit(target.finish);
-        settle_finish(target.finish, at);
+        sg::Finish& finish = *target.finish;
+        for (const auto& edit : edits) edit(finish);
+        settle_finish(finish, at);
     };
 }
 

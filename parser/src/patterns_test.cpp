@@ -290,7 +290,7 @@ TEST(ParserTextures, LayeredTexturesStackOnObjectsAndInDeclarations) {
     const sg::Material& declared = material_of(scene, 0);
     ASSERT_EQ(declared.layers_above.size(), 1u);
     EXPECT_EQ(declared.layers_above[0]->pigment.pattern->kind, sg::Pattern::Kind::Bozo);
-    EXPECT_DOUBLE_EQ(declared.layers_above[0]->finish.phong, 1.0);
+    EXPECT_DOUBLE_EQ(declared.layers_above[0]->finish->phong, 1.0);
     const sg::Material& object = material_of(scene, 1);
     EXPECT_EQ(object.pigment.color.rgb, sg::Vec3(1, 0, 0));
     ASSERT_EQ(object.layers_above.size(), 1u);
@@ -311,11 +311,11 @@ TEST(ParserTextures, ATextureAfterAPigmentLiesOnTopOfIt) {
     ASSERT_EQ(pigmented.layers_above.size(), 1u);
     EXPECT_DOUBLE_EQ(pigmented.layers_above[0]->pigment.color.filter, 1.0);
     const sg::Material& finished = material_of(scene, 1);
-    EXPECT_DOUBLE_EQ(finished.finish.phong, 1.0);
+    EXPECT_DOUBLE_EQ(finished.finish->phong, 1.0);
     EXPECT_EQ(finished.layers_above.size(), 1u);
     const sg::Material& interior_only = material_of(scene, 2);
     EXPECT_TRUE(interior_only.layers_above.empty());
-    EXPECT_DOUBLE_EQ(interior_only.interior.ior, 1.5);
+    EXPECT_DOUBLE_EQ(interior_only.interior->ior, 1.5);
 }
 
 TEST(ParserTextures, TextureMapAndBlockTextures) {
@@ -327,7 +327,7 @@ TEST(ParserTextures, TextureMapAndBlockTextures) {
     ASSERT_TRUE(map.pattern);
     EXPECT_EQ(map.pattern->kind, sg::Pattern::Kind::Gradient);
     ASSERT_EQ(map.texture_map.size(), 2u);
-    EXPECT_DOUBLE_EQ(map.texture_map[0].texture->finish.phong, 1.0);
+    EXPECT_DOUBLE_EQ(map.texture_map[0].texture->finish->phong, 1.0);
     EXPECT_EQ(apply(map.pattern->pattern_from_object, {2, 0, 0}), sg::Vec3(1, 0, 0));
     const sg::Material& blocks = material_of(scene, 1);
     ASSERT_EQ(blocks.block_textures.size(), 2u);
@@ -346,10 +346,10 @@ TEST(ParserTextures, DefaultFinishReachesPigmentOnlyObjectsAndTextures) {
         "sphere { 0, 1 }");
     for (std::size_t i = 0; i < 4; ++i) {
         const sg::Material& m = material_of(scene, i);
-        EXPECT_DOUBLE_EQ(m.finish.diffuse, 0.9) << "object " << i;
-        EXPECT_EQ(m.finish.ambient, sg::Vec3(0.0)) << "object " << i;
+        EXPECT_DOUBLE_EQ(m.finish->diffuse, 0.9) << "object " << i;
+        EXPECT_EQ(m.finish->ambient, sg::Vec3(0.0)) << "object " << i;
     }
-    EXPECT_DOUBLE_EQ(material_of(scene, 2).finish.phong, 1.0);
+    EXPECT_DOUBLE_EQ(material_of(scene, 2).finish->phong, 1.0);
 }
 
 TEST(ParserTextures, BlocksEditWhatTheTextureHas) {
@@ -365,9 +365,9 @@ TEST(ParserTextures, BlocksEditWhatTheTextureHas) {
         "sphere { 0, 1 texture { L finish { ambient 1 } } }");
     for (std::size_t i = 0; i < 2; ++i) {
         const sg::Material& m = material_of(scene, i);
-        EXPECT_DOUBLE_EQ(m.finish.phong, 1.0) << i;
-        EXPECT_EQ(m.finish.ambient, sg::Vec3(0.5)) << i;
-        EXPECT_DOUBLE_EQ(m.finish.diffuse, 0.3) << i;
+        EXPECT_DOUBLE_EQ(m.finish->phong, 1.0) << i;
+        EXPECT_EQ(m.finish->ambient, sg::Vec3(0.5)) << i;
+        EXPECT_DOUBLE_EQ(m.finish->diffuse, 0.3) << i;
         EXPECT_EQ(m.pigment.color.rgb, sg::Vec3(1, 0, 0)) << i;
     }
     const sg::Pigment& bozo = material_of(scene, 2).pigment;
@@ -381,8 +381,8 @@ TEST(ParserTextures, BlocksEditWhatTheTextureHas) {
     // A finish after a layered texture changes its top layer.
     const sg::Material& layered = material_of(scene, 4);
     ASSERT_EQ(layered.layers_above.size(), 1u);
-    EXPECT_EQ(layered.layers_above[0]->finish.ambient, sg::Vec3(1.0));
-    EXPECT_NE(layered.finish.ambient, sg::Vec3(1.0));
+    EXPECT_EQ(layered.layers_above[0]->finish->ambient, sg::Vec3(1.0));
+    EXPECT_NE(layered.finish->ambient, sg::Vec3(1.0));
 }
 
 TEST(ParserDirectives, DeclaringAnIgnoredBlockDeclaresNothingAndReadsNoFurther) {
@@ -397,7 +397,7 @@ TEST(ParserDirectives, DeclaringAnIgnoredBlockDeclaresNothingAndReadsNoFurther) 
 
 TEST(ParserDirectives, OldDefaultWithoutHashIsRead) {
     auto scene = parse_ok("default { finish { ambient 0 diffuse 0.9 } }\nsphere { 0, 1 pigment { rgb 1 } }");
-    EXPECT_DOUBLE_EQ(material_of(scene).finish.diffuse, 0.9);
+    EXPECT_DOUBLE_EQ(material_of(scene).finish->diffuse, 0.9);
 }
 
 TEST(ParserDirectives, DeprecatedDeclarationWarnsOnUse) {

@@ -25,9 +25,9 @@ namespace {
 sg::MaterialRef make_material(double diffuse, double emission, sg::Vec3 pigment = sg::Vec3(1.0)) {
     auto m = std::make_shared<sg::Material>();
     m->pigment.color.rgb = pigment;
-    m->finish.diffuse = diffuse;
-    m->finish.emission = sg::Vec3(emission);
-    m->finish.ambient = sg::Vec3(0.0);
+    m->finish->diffuse = diffuse;
+    m->finish->emission = sg::Vec3(emission);
+    m->finish->ambient = sg::Vec3(0.0);
     return m;
 }
 
@@ -271,12 +271,12 @@ sg::SceneGraph glossy_area_scene() {
     sg::SceneGraph graph;
     graph.camera = camera_at(sg::Vec3(0.0, 1.5, -3.0), sg::Vec3(0.0, 0.4, 0.0));
     auto floor = make_material(0.4, 0.0);
-    std::const_pointer_cast<sg::Material>(floor)->finish.phong = 0.4;
-    std::const_pointer_cast<sg::Material>(floor)->finish.phong_size = 20.0;
+    std::const_pointer_cast<sg::Material>(floor)->finish->phong = 0.4;
+    std::const_pointer_cast<sg::Material>(floor)->finish->phong_size = 20.0;
     graph.objects.push_back(plane(sg::Vec3(0.0, 1.0, 0.0), 0.0, floor));
     auto ball = make_material(0.5, 0.0, sg::Vec3(0.3, 0.6, 0.9));
-    std::const_pointer_cast<sg::Material>(ball)->finish.specular = 0.3;
-    std::const_pointer_cast<sg::Material>(ball)->finish.roughness = 0.1;
+    std::const_pointer_cast<sg::Material>(ball)->finish->specular = 0.3;
+    std::const_pointer_cast<sg::Material>(ball)->finish->roughness = 0.1;
     graph.objects.push_back(sphere(sg::Vec3(0.0, 0.5, 0.0), 0.5, ball));
     sg::Light light;
     light.kind = sg::Light::Kind::AreaRectangle;
@@ -417,8 +417,8 @@ TEST_F(PathFixture, StatCompareSeparatesNoiseFromTwoPercentBias) {
 // by power it is an unbiased estimate of the same value.
 TEST_F(PathFixture, DirectLightingEqualsShadow) {
     sg::SceneGraph graph = lit_floor_scene(false);
-    std::const_pointer_cast<sg::Material>(graph.objects[1].material)->finish.phong = 0.3;
-    std::const_pointer_cast<sg::Material>(graph.objects[0].material)->finish.specular = 0.2;
+    std::const_pointer_cast<sg::Material>(graph.objects[1].material)->finish->phong = 0.3;
+    std::const_pointer_cast<sg::Material>(graph.objects[0].material)->finish->specular = 0.2;
     sg::Light sun;
     sun.kind = sg::Light::Kind::Directional;
     sun.parallel = true;

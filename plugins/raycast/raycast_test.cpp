@@ -56,7 +56,7 @@ sg::SceneGraph sphere_scene() {
     sg::Object shiny = sphere;
     shiny.shape = sg::Sphere{sg::Vec3(1.2, 0.8, 0.5), 0.5};
     auto shiny_material = std::make_shared<sg::Material>(*material);
-    shiny_material->finish.phong = 0.7;
+    shiny_material->finish->phong = 0.7;
     shiny.material = shiny_material;
     graph.objects.push_back(shiny);
     sg::Object checkered = sphere;

@@ -17,11 +17,11 @@ sg::SceneGraph room(std::optional<sg::Object> extra) {
     graph.camera = camera({0.0, 1.5, -5.0}, {0.0, -0.2, 1.0});
     graph.objects.push_back(plane({0.0, 1.0, 0.0}, 0.0, material([](sg::Material& m) {
                                       m.pigment = sg::checker_pigment({1, 1, 1}, {0, 1, 0});
-                                      m.finish.specular = 0.3;
+                                      m.finish->specular = 0.3;
                                   })));
     graph.objects.push_back(plane({0.0, 0.0, -1.0}, -4.0, material([](sg::Material& m) {
                                       m.pigment.color.rgb = {0.8, 0.4, 0.2};
-                                      m.finish.phong = 0.4;
+                                      m.finish->phong = 0.4;
                                   })));
     // POV's point light does not fall off: colour 1.5 lights the room about as
     // the physical lamp beside it does.
@@ -36,7 +36,7 @@ TEST(WhittedIntegrator, FullyTransmittingSphereWithIorOneIsInvisible) {
     // diffuse, no ambient and casts no shadow.
     sg::Object glass = sphere({0.0, 1.0, 0.0}, 1.0, material([](sg::Material& m) {
                                   m.pigment.color.transmit = 1.0;
-                                  m.interior.ior = 1.0;
+                                  m.interior->ior = 1.0;
                               }));
     const auto with_sphere = compile_scene(room(glass));
     const auto without_sphere = compile_scene(room(std::nullopt));
@@ -74,15 +74,15 @@ const Ray kDownAt45 = ray_towards(Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 0.0f, 1.0f)
 TEST(WhittedIntegrator, LayeredTextureLightsEachLayerWithItsOwnFinish) {
     auto layered = std::make_shared<sg::Material>(*material([](sg::Material& m) {
         m.pigment.color.rgb = {0.4, 1.0, 1.0};
-        m.finish.ambient = sg::Vec3(1.0);
-        m.finish.diffuse = 0.0;
-        m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.5);
+        m.finish->ambient = sg::Vec3(1.0);
+        m.finish->diffuse = 0.0;
+        m.finish->reflection.min = m.finish->reflection.max = sg::Vec3(0.5);
     }));
     layered->layers_above.push_back(material([](sg::Material& m) {
         m.pigment.color.rgb = {1.0, 0.5, 0.0};
         m.pigment.color.filter = 0.5;
-        m.finish.ambient = sg::Vec3(0.2);
-        m.finish.diffuse = 0.0;
+        m.finish->ambient = sg::Vec3(0.2);
+        m.finish->diffuse = 0.0;
     }));
     const auto scene = compile_scene(mirror_facing_wall(layered));
     const Color own(0.3f, 0.3f, 0.0f);
@@ -98,9 +98,9 @@ TEST(WhittedIntegrator, LayeredTextureLightsEachLayerWithItsOwnFinish) {
 
 TEST(WhittedIntegrator, MirrorShowsWallColourTimesReflectance) {
     const auto scene = compile_scene(mirror_facing_wall(material([](sg::Material& m) {
-        m.finish.diffuse = 0.0;
-        m.finish.ambient = sg::Vec3(0.0);
-        m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.7);
+        m.finish->diffuse = 0.0;
+        m.finish->ambient = sg::Vec3(0.0);
+        m.finish->reflection.min = m.finish->reflection.max = sg::Vec3(0.7);
     })));
     const auto whitted = load_integrator("whitted", *scene);
     const Color seen = mean_radiance(*whitted, *scene, kDownAt45);
@@ -112,7 +112,7 @@ TEST(WhittedIntegrator, MirrorAddsToTheDiffuseUnlessAdditiveReflectionIsOff) {
     // above. POV-Ray's sum (the default) keeps the diffuse and ambient terms
     // on top of the reflected wall.
     const auto scene = compile_scene(mirror_facing_wall(
-        material([](sg::Material& m) { m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(1.0); })));
+        material([](sg::Material& m) { m.finish->reflection.min = m.finish->reflection.max = sg::Vec3(1.0); })));
     const auto whitted = load_integrator("whitted", *scene);
     EXPECT_GT(mean_radiance(*whitted, *scene, kDownAt45).r, float(kWallColour[0]) + 0.1f);
 
@@ -132,11 +132,11 @@ TEST(WhittedIntegrator, ReflectionExponentAndMetallicAsPovRay) {
     const auto mirror = [](double exponent, double metallic) {
         return material([=](sg::Material& m) {
             m.pigment.color.rgb = {1.0, 0.5, 0.25};
-            m.finish.diffuse = 0.0;
-            m.finish.ambient = sg::Vec3(0.0);
-            m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.7);
-            m.finish.reflection.exponent = exponent;
-            m.finish.reflection.metallic = metallic;
+            m.finish->diffuse = 0.0;
+            m.finish->ambient = sg::Vec3(0.0);
+            m.finish->reflection.min = m.finish->reflection.max = sg::Vec3(0.7);
+            m.finish->reflection.exponent = exponent;
+            m.finish->reflection.metallic = metallic;
         });
     };
     const auto rooted = compile_scene(mirror_facing_wall(mirror(2.0, 0.0)));
@@ -159,8 +159,8 @@ TEST(WhittedIntegrator, ConserveEnergyTakesTheReflectionFromTheTransmission) {
         sg::SceneGraph graph;
         graph.objects.push_back(plane({0.0, 0.0, 1.0}, 0.0, material([=](sg::Material& m) {
                                           m.pigment.color.transmit = 1.0;
-                                          m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.4);
-                                          m.finish.conserve_energy = conserve;
+                                          m.finish->reflection.min = m.finish->reflection.max = sg::Vec3(0.4);
+                                          m.finish->conserve_energy = conserve;
                                       })));
         graph.objects.push_back(plane({0.0, 0.0, 1.0}, 10.0, flat_colour(kWallColour)));
         return compile_scene(std::move(graph));
@@ -183,9 +183,9 @@ sg::SceneGraph glass_slab() {
     graph.background = {1.0, 0.0, 0.0};
     graph.objects.push_back(box({-100.0, -1.0, -100.0}, {100.0, 0.0, 100.0}, material([](sg::Material& m) {
                                     m.pigment.color.transmit = 1.0;
-                                    m.finish.ambient = sg::Vec3(0.0);
-                                    m.finish.diffuse = 0.0;
-                                    m.interior.ior = 1.5;
+                                    m.finish->ambient = sg::Vec3(0.0);
+                                    m.finish->diffuse = 0.0;
+                                    m.interior->ior = 1.5;
                                 })));
     graph.objects.push_back(sphere({10.0, -0.5, 0.0}, 0.3, flat_colour({0.0, 1.0, 0.0})));
     graph.objects.push_back(plane({0.0, 1.0, 0.0}, -2.0, flat_colour({0.0, 0.0, 0.0})));
@@ -211,10 +211,10 @@ TEST(WhittedIntegrator, TotalInternalReflectionReflectsEverythingAsPovRay) {
     sg::SceneGraph graph = glass_slab();
     graph.objects[0].material = material([](sg::Material& m) {
         m.pigment.color.transmit = 0.5;
-        m.finish.ambient = sg::Vec3(0.0);
-        m.finish.diffuse = 0.0;
-        m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.3);
-        m.interior.ior = 1.5;
+        m.finish->ambient = sg::Vec3(0.0);
+        m.finish->diffuse = 0.0;
+        m.finish->reflection.min = m.finish->reflection.max = sg::Vec3(0.3);
+        m.interior->ior = 1.5;
     });
     const auto scene = compile_scene(std::move(graph));
     const Ray grazing{Vec3(0.0f, -0.5f, 0.0f), glm::normalize(Vec3(1.0f, 0.1f, 0.0f))};
@@ -241,11 +241,11 @@ TEST(WhittedIntegrator, FresnelGlassWithFresnelReflectionReflectsOnce) {
     graph.background = {1.0, 1.0, 1.0};
     graph.objects.push_back(box({-10.0, -1.0, -10.0}, {10.0, 0.0, 10.0}, material([](sg::Material& m) {
                                     m.pigment.color.filter = 1.0;
-                                    m.finish.ambient = sg::Vec3(0.0);
-                                    m.finish.diffuse = 0.0;
-                                    m.finish.reflection.max = sg::Vec3(1.0);
-                                    m.finish.reflection.fresnel = true;
-                                    m.interior.ior = 1.5;
+                                    m.finish->ambient = sg::Vec3(0.0);
+                                    m.finish->diffuse = 0.0;
+                                    m.finish->reflection.max = sg::Vec3(1.0);
+                                    m.finish->reflection.fresnel = true;
+                                    m.interior->ior = 1.5;
                                 })));
     graph.objects.push_back(plane({0.0, 1.0, 0.0}, -2.0, flat_colour({0.0, 0.0, 0.0})));
     const auto scene = compile_scene(graph);
@@ -264,9 +264,9 @@ TEST(WhittedIntegrator, FresnelGlassWithFresnelReflectionReflectsOnce) {
 sg::SceneGraph facing_half_mirrors(double adc_bailout) {
     sg::SceneGraph graph;
     const auto half_mirror = material([](sg::Material& m) {
-        m.finish.ambient = sg::Vec3(1.0);
-        m.finish.diffuse = 0.0;
-        m.finish.reflection.min = m.finish.reflection.max = sg::Vec3(0.5);
+        m.finish->ambient = sg::Vec3(1.0);
+        m.finish->diffuse = 0.0;
+        m.finish->reflection.min = m.finish->reflection.max = sg::Vec3(0.5);
     });
     graph.objects.push_back(plane({0.0, 0.0, 1.0}, 1.0, half_mirror));
     graph.objects.push_back(plane({0.0, 0.0, 1.0}, -1.0, half_mirror));

@@ -13,8 +13,8 @@ namespace lancer::testing {
 inline sg::MaterialRef solid_material(const glm::dvec3& rgb, double diffuse = 0.6, glm::dvec3 emission = {}) {
     auto m = std::make_shared<sg::Material>();
     m->pigment.color.rgb = rgb;
-    m->finish.diffuse = diffuse;
-    m->finish.emission = emission;
+    m->finish->diffuse = diffuse;
+    m->finish->emission = emission;
     return m;
 }
 

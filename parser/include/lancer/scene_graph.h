@@ -20,6 +20,7 @@
 
 #include <glm/glm.hpp>
 
+#include "lancer/copy_on_write.h"
 #include "lancer/function.h"
 #include "lancer/on_demand.h"
 
@@ -418,8 +419,10 @@ struct TextureMapEntry {
 struct Material {
     Pigment pigment;
     NormalRef normal;  // null: the surface's own normal
-    Finish finish;
-    Interior interior;
+    // Shared with the texture they came from until written (most objects
+    // keep the default texture's).
+    CopyOnWrite<Finish> finish;
+    CopyOnWrite<Interior> interior;
     // An interior { } was written for it (on the object, or in its
     // material { }): else, as in POV-Ray, the object takes its group's.
     bool has_interior = false;

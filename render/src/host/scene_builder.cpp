@@ -29,33 +29,33 @@ MaterialParameters to_parameters(const sg::Material& m, const Texture* pigment, 
     MaterialParameters p;
     p.pigment = pigment;
     p.normal = normal;
-    p.ambient = Color(m.finish.ambient);
-    p.emission = Color(m.finish.emission);
-    p.diffuse = float(m.finish.diffuse);
-    p.brilliance = float(m.finish.brilliance);
-    p.specular = float(m.finish.specular);
-    p.roughness = float(m.finish.roughness);
-    p.phong = float(m.finish.phong);
-    p.phong_size = float(m.finish.phong_size);
-    p.metallic = float(m.finish.metallic);
-    p.reflection_min = Color(m.finish.reflection.min);
-    p.reflection_max = Color(m.finish.reflection.max);
-    p.reflection_falloff = float(m.finish.reflection.falloff);
-    p.reflection_fresnel = m.finish.reflection.fresnel;
-    p.reflection_metallic = float(m.finish.reflection.metallic);
+    p.ambient = Color(m.finish->ambient);
+    p.emission = Color(m.finish->emission);
+    p.diffuse = float(m.finish->diffuse);
+    p.brilliance = float(m.finish->brilliance);
+    p.specular = float(m.finish->specular);
+    p.roughness = float(m.finish->roughness);
+    p.phong = float(m.finish->phong);
+    p.phong_size = float(m.finish->phong_size);
+    p.metallic = float(m.finish->metallic);
+    p.reflection_min = Color(m.finish->reflection.min);
+    p.reflection_max = Color(m.finish->reflection.max);
+    p.reflection_falloff = float(m.finish->reflection.falloff);
+    p.reflection_fresnel = m.finish->reflection.fresnel;
+    p.reflection_metallic = float(m.finish->reflection.metallic);
     // POV raises the reflected colour to 1 / exponent (its Reflect_Exp).
-    p.reflection_exponent = float(1.0 / m.finish.reflection.exponent);
-    p.conserve_energy = m.finish.conserve_energy;
-    p.diffuse_back = float(m.finish.diffuse_back);
-    p.crand = float(m.finish.crand);
-    p.irid = float(m.finish.irid);
-    p.irid_thickness = float(m.finish.irid_thickness);
-    p.irid_turbulence = float(m.finish.irid_turbulence);
-    p.ior = float(m.interior.ior);
-    p.caustics = float(45.0 * m.interior.caustics);  // POV-Ray's scale (Parse_Interior)
-    p.fade_distance = float(m.interior.fade_distance);
-    p.fade_power = float(m.interior.fade_power);
-    p.fade_color = Color(m.interior.fade_color);
+    p.reflection_exponent = float(1.0 / m.finish->reflection.exponent);
+    p.conserve_energy = m.finish->conserve_energy;
+    p.diffuse_back = float(m.finish->diffuse_back);
+    p.crand = float(m.finish->crand);
+    p.irid = float(m.finish->irid);
+    p.irid_thickness = float(m.finish->irid_thickness);
+    p.irid_turbulence = float(m.finish->irid_turbulence);
+    p.ior = float(m.interior->ior);
+    p.caustics = float(45.0 * m.interior->caustics);  // POV-Ray's scale (Parse_Interior)
+    p.fade_distance = float(m.interior->fade_distance);
+    p.fade_power = float(m.interior->fade_power);
+    p.fade_color = Color(m.interior->fade_color);
     return p;
 }
 
@@ -282,7 +282,7 @@ class Builder {
     }
 
     const Material* make_material(const sg::Material& written, bool hollow = false) {
-        return build_material(written, hollow, material_entries(written, written.interior, hollow, {}));
+        return build_material(written, hollow, material_entries(written, *written.interior, hollow, {}));
     }
 
     const Material* build_material(const sg::Material& written, bool hollow, const MaterialEntries* entries) {
@@ -294,7 +294,7 @@ class Builder {
         } else {
             std::vector<std::unique_ptr<Texture>> layers;
             std::vector<TextureSample> averages;
-            std::vector<sg::Finish> finishes{source.finish};
+            std::vector<sg::Finish> finishes{*source.finish};
             layers.push_back(m_data->texture_factory->make(source.pigment));
             averages.push_back(layers.back()->average());
             for (const auto& layer : written.layers_above) {
@@ -302,7 +302,7 @@ class Builder {
                 if (!pigment_is_opaque(flat.pigment)) m_data->opaque_surfaces = false;
                 layers.push_back(m_data->texture_factory->make(flat.pigment));
                 averages.push_back(layers.back()->average());
-                finishes.push_back(flat.finish);
+                finishes.push_back(*flat.finish);
                 if (flat.normal) surface_normal = flat.normal;  // the topmost bumps show
             }
             source.finish = blend_finishes(finishes, layer_visibility(averages));
@@ -321,7 +321,7 @@ class Builder {
         parameters.legacy_opacity = int(m_graph.global.language_version * 100.0 + 0.5) < 370;
         parameters.hollow = hollow;
         // POV shows an interior's media only inside a hollow object.
-        if (hollow && !source.interior.media.empty()) parameters.medium = make_medium(source.interior.media);
+        if (hollow && !source.interior->media.empty()) parameters.medium = make_medium(source.interior->media);
         parameters.entries = entries;
         if (!written.layers_above.empty()) parameters.layers = material_layers(written, hollow);
         if (parameters.ior != 1.0f) m_data->has_refraction = true;
@@ -615,7 +615,7 @@ class Builder {
         if (object.bounded_by.empty() || std::holds_alternative<sg::Group>(object.shape) ||
             std::holds_alternative<sg::MeshRef>(object.shape))
             return false;
-        const bool glows = material && material->finish.emission != sg::Vec3(0.0);
+        const bool glows = material && material->finish->emission != sg::Vec3(0.0);
         return keeps_ray_bounds(object) || !glows;
     }
 

@@ -20,7 +20,7 @@ using namespace lancer::testing;
 sg::MaterialRef texture_with_diffuse(double diffuse) {
     auto m = std::make_shared<sg::Material>();
     m->pigment.color.rgb = {1.0, 1.0, 1.0};
-    m->finish.diffuse = diffuse;
+    m->finish->diffuse = diffuse;
     return m;
 }
 

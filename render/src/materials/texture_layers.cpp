@@ -80,7 +80,7 @@ sg::Material average_of(const std::vector<sg::Material>& entries, const std::vec
     std::vector<sg::Finish> finishes;
     for (std::size_t i = 0; i < entries.size(); ++i) {
         result.pigment.pigment_map.push_back({weights[i], std::make_shared<sg::Pigment>(entries[i].pigment)});
-        finishes.push_back(entries[i].finish);
+        finishes.push_back(*entries[i].finish);
     }
     result.finish = blend_finishes(finishes, weights);
     const bool any_normal =
