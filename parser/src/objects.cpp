@@ -418,7 +418,8 @@ std::shared_ptr<sg::Material> Evaluator::build_texture(const Edits<sg::Material>
 
 std::shared_ptr<sg::Finish> Evaluator::build_finish(const Edits<sg::Finish>& edits, const sg::SourceLocation& at) {
     // POV modifies the finish a texture starts with: #default's.
-    auto finish = std::make_shared<sg::Finish>(m_default_texture ? *m_default_texture->finish : sg::Finish{});
+    auto finish =
+        std::make_shared<sg::Finish>(m_default_texture ? *std::as_const(*m_default_texture).finish : sg::Finish{});
     for (const auto& edit : edits) edit(*finish);
     settle_finish(*finish, at);
     return finish;

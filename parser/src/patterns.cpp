@@ -887,6 +887,14 @@ Evaluator::NormalEdit Evaluator::patterned_normal(const PatternEdit& pattern,
         n.kind = sg::Normal::Kind::Patterned;
         restart_pattern(*n.pattern, pattern, waves, at);
         if (size) n.bump_size = *size;
+        // As for pigments: a block pattern's list, followed by a pattern
+        // that is not one, reads as a map with entry i at value i.
+        if (!n.block_normals.empty() && !is_block_pattern(n.pattern->kind)) {
+            n.normal_map.clear();
+            for (std::size_t i = 0; i < n.block_normals.size(); ++i)
+                n.normal_map.push_back(sg::NormalMapEntry{double(i), n.block_normals[i]});
+            n.block_normals.clear();
+        }
     };
 }
 

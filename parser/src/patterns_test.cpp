@@ -130,6 +130,7 @@ TEST(ParserPatterns, ANewPatternAfterAnIdentifierKeepsItsMovesAndMap) {
         "#declare Mapped = pigment { bozo color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] } turbulence 0.5 }\n"
         "#declare Bare = pigment { bozo scale 0.3 }\n"
         "#declare Bumpy = normal { bumps 0.8 scale 0.2 }\n"
+        "#declare Tiled = normal { checker normal { bumps 0.5 } normal { dents 0.5 } }\n"
         "plane { z, 0 pigment { Blocks } }\n"
         "plane { z, 0 pigment { Blocks checker rgb 0, rgb 1 } }\n"
         "plane { z, 0 pigment { Blocks gradient x } }\n"
@@ -137,7 +138,8 @@ TEST(ParserPatterns, ANewPatternAfterAnIdentifierKeepsItsMovesAndMap) {
         "plane { z, 0 pigment { Bare gradient x } }\n"
         "plane { z, 0 pigment { Mapped hexagon } }\n"
         "plane { z, 0 normal { Bumpy dents 0.9 } }\n"
-        "plane { z, 0 pigment { Mapped rgb 0.5 } }\n");
+        "plane { z, 0 pigment { Mapped rgb 0.5 } }\n"
+        "plane { z, 0 normal { Tiled wrinkles } }\n");
     const sg::Pigment& blocks = material_of(scene, 0).pigment;
     const sg::Pigment& checker = material_of(scene, 1).pigment;
     EXPECT_EQ(checker.pattern->kind, sg::Pattern::Kind::Checker);
@@ -180,6 +182,16 @@ TEST(ParserPatterns, ANewPatternAfterAnIdentifierKeepsItsMovesAndMap) {
     const sg::Pigment& plain = material_of(scene, 7).pigment;
     EXPECT_EQ(plain.kind, sg::Pigment::Kind::Solid);
     EXPECT_EQ(plain.color.rgb, sg::Vec3(0.5));
+
+    // A normal's block list, followed by a pattern that is not a block
+    // pattern, becomes its map as a pigment's does.
+    ASSERT_TRUE(material_of(scene, 8).normal);
+    const sg::Normal& wrinkles = *material_of(scene, 8).normal;
+    EXPECT_EQ(wrinkles.pattern->kind, sg::Pattern::Kind::Wrinkles);
+    EXPECT_TRUE(wrinkles.block_normals.empty());
+    ASSERT_EQ(wrinkles.normal_map.size(), 2u);
+    EXPECT_EQ(wrinkles.normal_map[1].value, 1.0);
+    EXPECT_EQ(wrinkles.normal_map[1].normal->pattern->kind, sg::Pattern::Kind::Dents);
 }
 
 // A texture's pigment edit keeps the map of the pigment it edits (POV-Ray).
