@@ -59,6 +59,8 @@ void transform_material(sg::Material& material, const sg::Mat4& world_from_local
 // maps) for a point that is first mapped by `inner_from_outer`: what
 // attaching a texture to a transformed object does.
 void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer, bool object_move = true);
+// Whether a medium of the interior has a density (a pattern that moves with the object).
+bool has_media_densities(const sg::Interior& interior);
 void transform_light(sg::Light& light, const sg::Mat4& world_from_local);
 // `sky_along_view` (when not null) is set when look_at looks along the sky.
 sg::Camera resolve_camera(const CameraSpec& spec, bool* sky_along_view = nullptr);

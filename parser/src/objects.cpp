@@ -22,10 +22,8 @@ using MaterialPtr = std::shared_ptr<const sg::Material>;
 
 // Re-expresses a material given in the parent's space in a child's space.
 MaterialPtr in_child_space(const MaterialPtr& material, const sg::Mat4& parent_from_child) {
-    const bool has_densities = std::any_of(material->interior->media.begin(), material->interior->media.end(),
-                                           [](const sg::Media& m) { return !m.densities.empty(); });
-    if (material->pigment.kind == sg::Pigment::Kind::Solid && !material->normal && !has_densities &&
-        !material->interior_texture)
+    if (material->pigment.kind == sg::Pigment::Kind::Solid && !material->normal &&
+        !has_media_densities(*material->interior) && !material->interior_texture)
         return material;  // nothing to move
     auto moved = std::make_shared<sg::Material>(*material);
     move_patterns(*moved, parent_from_child);

@@ -193,14 +193,16 @@ void transform_material(sg::Material& material, const sg::Mat4& world_from_local
     move_patterns(material, glm::inverse(world_from_local), false);
 }
 
+bool has_media_densities(const sg::Interior& interior) {
+    return std::any_of(interior.media.begin(), interior.media.end(),
+                       [](const sg::Media& m) { return !m.densities.empty(); });
+}
+
 void move_patterns(sg::Material& material, const sg::Mat4& inner_from_outer, bool object_move) {
     move_pigment(material.pigment, inner_from_outer, object_move);
     // Interior media's densities move with the object, as its pigment does
     // (asked through a const view first: writing would unshare the interior).
-    const std::vector<sg::Media>& media_read = std::as_const(material).interior->media;
-    const bool has_densities =
-        std::any_of(media_read.begin(), media_read.end(), [](const sg::Media& m) { return !m.densities.empty(); });
-    if (has_densities) {
+    if (has_media_densities(*std::as_const(material).interior)) {
         for (sg::Media& media : material.interior->media)
             for (auto& density : media.densities) {
                 auto moved = std::make_shared<sg::Pigment>(*density);
