@@ -268,6 +268,8 @@ class Material {
     }
     // sample_surface() is the same at every hit.
     bool pigment_is_constant() const { return m_pigment_is_constant; }
+    // What sample_surface() returns at every hit when pigment_is_constant().
+    const SurfaceSample& constant_surface() const { return m_constant_pigment; }
     bool has_glossy() const { return m_params.phong > 0.0f || m_params.specular > 0.0f; }
     bool is_emissive() const { return max_component(m_params.emission) > 0.0f; }
 

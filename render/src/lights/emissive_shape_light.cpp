@@ -6,7 +6,6 @@
 #include "lights/lights.h"
 
 namespace lancer {
-namespace {}  // namespace
 
 EmissiveShapeLight::EmissiveShapeLight(std::unique_ptr<SurfaceSampler> surface, std::uint32_t object_id,
                                        const Material* material, const SphereShape* sphere)
@@ -49,32 +48,45 @@ Color EmissiveShapeLight::radiance_at(const Hit& hit) const {
 LightSample EmissiveShapeLight::sample(const Vec3& p, const Vec2& u) const {
     LightSample s;
     const DVec3 origin(p);
-    Hit hit;
+    DVec3 position, normal;
+    const Material* material = m_material;
     float pdf = 0.0f;
     ConeSample cone;
-    if (m_has_sphere && sample_sphere_cone(m_sphere.world.center, m_sphere.world.radius, origin, u, cone)) {
-        hit.position = Vec3(cone.point);
-        hit.geometric_normal = Vec3(cone.normal);
-        hit.uv = sphere_surface(m_sphere.object, m_sphere.placement.point_to_object(cone.point)).uv;
+    SurfacePoint point;
+    const bool on_cone =
+        m_has_sphere && sample_sphere_cone(m_sphere.world.center, m_sphere.world.radius, origin, u, cone);
+    if (on_cone) {
+        position = cone.point;
+        normal = cone.normal;
         pdf = float(cone.pdf);
     } else {
-        const SurfacePoint point = m_surface->sample(u);
+        point = m_surface->sample(u);
         if (!(point.pdf_area > 0.0)) return s;
-        hit.position = Vec3(point.position);
-        hit.geometric_normal = Vec3(point.normal);
-        hit.uv = point.uv;
-        hit.material = point.material;
+        position = point.position;
+        normal = point.normal;
+        if (point.material) material = point.material;
         pdf = area_to_solid_angle(point.pdf_area, origin, point.position, point.normal);
     }
     if (!(pdf > 0.0f)) return s;
-    hit.shading_normal = hit.geometric_normal;
-    hit.object_id = m_object_id;
-    if (!hit.material) hit.material = m_material;
-    const DVec3 target = lift_towards(DVec3(hit.position), DVec3(hit.geometric_normal), origin);
+    // Lifted from the point as a hit holds it (in float), as before.
+    const DVec3 target = lift_towards(DVec3(Vec3(position)), DVec3(Vec3(normal)), origin);
     const DVec3 offset = target - origin;
     const double distance = glm::length(offset);
     if (!(distance > 0.0)) return s;
-    s.radiance = radiance_at(hit);
+    // An emitter of one colour needs no hit to look its pigment up at (most
+    // lamps): the hit, and a sphere's (u, v), are made only for a pattern.
+    if (material && material->pigment_is_constant()) {
+        s.radiance = material->emitted(material->constant_surface());
+    } else {
+        Hit hit;
+        hit.position = Vec3(position);
+        hit.geometric_normal = hit.shading_normal = Vec3(normal);
+        hit.uv =
+            on_cone ? sphere_surface(m_sphere.object, m_sphere.placement.point_to_object(cone.point)).uv : point.uv;
+        hit.object_id = m_object_id;
+        hit.material = material;
+        s.radiance = radiance_at(hit);
+    }
     s.wi = Vec3(offset / distance);
     s.distance = float(distance);
     s.point = Vec3(target);
