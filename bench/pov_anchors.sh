@@ -5,7 +5,11 @@
 # without anti-aliasing, in one run: medians of wall time, CPU time (user +
 # system) and peak memory, and lancer's ratios to POV-Ray's.
 #
-#   bench/pov_anchors.sh [LANCER] [RUNS] [WIDTH HEIGHT]
+#   bench/pov_anchors.sh [LANCER] [RUNS] [WIDTH HEIGHT] [FOLDER]
+#
+# FOLDER holds the three scenes (default bench/anchors; bench/anchors/variants
+# has a second set written apart from the first, with patterns, highlights,
+# two lights and deeper mirrors).
 #
 # POV-Ray runs with +WT<cores> (as many threads as lancer) and -D (no
 # display). A 1x1 render of each scene with lancer gives the memory that
@@ -15,7 +19,7 @@ lancer=$(realpath "${1:-build/bin/lancer}")
 runs=${2:-5}
 width=${3:-1280}
 height=${4:-960}
-anchors=$(realpath "$(dirname "$0")/anchors")
+anchors=$(realpath "${5:-$(dirname "$0")/anchors}")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 . "$(dirname "$0")/measure.sh"
