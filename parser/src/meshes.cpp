@@ -9,6 +9,7 @@
 #include <tiny_obj_loader.h>
 
 #include "evaluator.h"
+#include "obj_faces.h"
 #include "polygon_triangulation.h"
 
 namespace lancer::parse {
@@ -28,10 +29,8 @@ constexpr std::size_t kMaxObjFaceVertices = 1000000;
 
 // The first face line tinyobjloader would misread, as "line N: why", or
 // empty: a face with more than kMaxObjFaceVertices vertices, or an index
-// outside int (tinyobjloader wraps 2^32 + 4 to 4). `sizes` receives the
-// number of vertices of each face line, in order: tinyobjloader keeps a
-// face's size in an unsigned char (a face of 300 vertices reads as 44).
-std::string scan_obj_faces(const std::string& text, std::vector<std::size_t>& sizes) {
+// outside int (tinyobjloader wraps 2^32 + 4 to 4).
+std::string scan_obj_faces(const std::string& text) {
     std::size_t line_number = 0;
     for (std::size_t start = 0; start < text.size();) {
         // Lines end at \n, \r\n or a lone \r, as tinyobjloader reads them.
@@ -67,7 +66,6 @@ std::string scan_obj_faces(const std::string& text, std::vector<std::size_t>& si
                 return "line " + std::to_string(line_number) + ": a face of " + std::to_string(vertices) +
                        " vertices (lancer takes at most " + std::to_string(kMaxObjFaceVertices) +
                        " per face; split it into smaller polygons)";
-            sizes.push_back(vertices);
         }
         start = next;
     }
@@ -493,26 +491,35 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         error(where.begin, "OBJ file \"" + name + "\" " + problem);
         return shape;
     }
-    std::vector<std::size_t> face_sizes;
-    if (const std::string face = scan_obj_faces(text, face_sizes); !face.empty()) {
+    if (const std::string face = scan_obj_faces(text); !face.empty()) {
         error(where.begin, "OBJ \"" + name + "\", " + face);
         return shape;
     }
 
     ObjMaterialReader materials(*this, found.parent_path());
-    tinyobj::attrib_t attrib;
-    std::vector<tinyobj::shape_t> obj_shapes;
-    std::vector<tinyobj::material_t> obj_materials;
+    ObjFaceReader faces(*mesh);
     std::string obj_warning, obj_error;
     // Read in place: a string stream would copy the text.
     struct TextBuffer : std::streambuf {
         explicit TextBuffer(std::string& text) { setg(text.data(), text.data(), text.data() + text.size()); }
     } buffer(text);
     std::istream stream(&buffer);
-    // Faces as written: tinyobjloader's triangulation takes time growing with
-    // the square of a face's size; lancer's takes O(n log n).
-    bool loaded = tinyobj::LoadObj(&attrib, &obj_shapes, &obj_materials, &obj_warning, &obj_error, &stream, &materials,
-                                   /*triangulate=*/false, /*default_vcols_fallback=*/false);
+    // Streamed: each face goes into the mesh as it is read (obj_faces.h).
+    // Faces as written: tinyobjloader's triangulation takes time growing
+    // with the square of a face's size; lancer's takes O(n log n).
+    struct NamesFollower : tinyobj::MaterialReader {
+        NamesFollower(ObjMaterialReader& reader, ObjFaceReader& faces) : reader(reader), faces(faces) {}
+        bool operator()(const std::string& id, std::vector<tinyobj::material_t>* list, std::map<std::string, int>* map,
+                        std::string* warn, std::string* err) override {
+            faces.use_material_names(map);
+            return reader(id, list, map, warn, err);
+        }
+        ObjMaterialReader& reader;
+        ObjFaceReader& faces;
+    } material_files(materials, faces);
+    const bool loaded = tinyobj::LoadObjWithCallback(stream, ObjFaceReader::callbacks(), &faces, &material_files,
+                                                     &obj_warning, &obj_error);
+    std::string().swap(text);  // read
     if (materials.refused) {
         refuse_file(where.begin, "MTL file", materials.refused_name);
         return shape;
@@ -522,27 +529,37 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
               "cannot read OBJ file \"" + name + "\": " + (obj_error.empty() ? "parse error" : first_lines(obj_error)));
         return shape;
     }
+    obj_warning += faces.warnings;
     for (const auto& missing : materials.missing)
         warning(where.begin,
                 "OBJ \"" + name + "\": MTL file \"" + missing + "\" not found; its faces get the default material");
     if (!obj_error.empty()) warning(where.begin, "OBJ \"" + name + "\": " + first_lines(obj_error));
     if (!obj_warning.empty() && materials.missing.empty())
         warning(where.begin, "OBJ \"" + name + "\": " + first_lines(obj_warning));
-    for (float coordinate : attrib.vertices) {
-        if (!std::isfinite(coordinate)) {
-            error(where.begin, "OBJ \"" + name + "\" has a vertex coordinate that is not a finite number");
-            return shape;
-        }
+    if (faces.non_finite_vertex) {
+        error(where.begin, "OBJ \"" + name + "\" has a vertex coordinate that is not a finite number");
+        return shape;
     }
-    std::string().swap(text);  // read: its memory is the mesh's now
-    mesh->positions.reserve(attrib.vertices.size() / 3);
-    mesh->faces.reserve(face_sizes.size());
-    for (size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
-        mesh->positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]);
-    for (size_t i = 0; i + 2 < attrib.normals.size(); i += 3)
-        mesh->normals.emplace_back(attrib.normals[i], attrib.normals[i + 1], attrib.normals[i + 2]);
-    for (size_t i = 0; i + 1 < attrib.texcoords.size(); i += 2)
-        mesh->uvs.emplace_back(attrib.texcoords[i], attrib.texcoords[i + 1]);
+    if (!faces.finish()) {
+        error(where.begin, "OBJ \"" + name + "\": " + faces.bad_face + " refers to a vertex that does not exist");
+        return shape;
+    }
+    std::vector<tinyobj::material_t>& obj_materials = faces.materials;
+    auto count_of = [](std::size_t n, const char* one, const char* many) {
+        return std::to_string(n) + " " + (n == 1 ? one : many);
+    };
+    if (faces.short_faces)
+        warning(where.begin, "OBJ \"" + name + "\": " + count_of(faces.short_faces, "face has", "faces have") +
+                                 " fewer than three vertices and " + (faces.short_faces == 1 ? "is" : "are") +
+                                 " left out");
+    if (faces.misnamed_normals)
+        warning(where.begin, "OBJ \"" + name +
+                                 "\": " + count_of(faces.misnamed_normals, "triangle names", "triangles name") +
+                                 " a normal that does not exist; shaded flat");
+    if (faces.misnamed_uvs)
+        warning(where.begin, "OBJ \"" + name +
+                                 "\": " + count_of(faces.misnamed_uvs, "triangle names", "triangles name") +
+                                 " texture coordinates that do not exist; mapped by the triangle's own (u, v)");
 
     // MTL materials, mapped onto POV's model (documented in docs/scene-language.md).
     for (auto& m : obj_materials) {
@@ -617,79 +634,8 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         mesh->materials.push_back(material);
     }
 
-    // Each face, checked and triangulated: a fan where it is convex, monotone
-    // pieces where it is not; a face that crosses itself becomes a fan and
-    // one without area (corners on one line) is left out, both reported.
-    struct Skipped {
-        size_t count = 0;
-        std::string first;
-    } crossing, flat;
-    auto note = [&](Skipped& skipped, size_t face, const std::string& shape_name) {
-        if (skipped.count++ == 0)
-            skipped.first = "face " + std::to_string(face) + (shape_name.empty() ? "" : " of '" + shape_name + "'");
-    };
-    std::vector<sg::Vec3> corners;
-    // Face sizes from lancer's scan (tinyobjloader's are modulo 256); it
-    // drops faces of fewer than 3 vertices.
-    size_t next_size = 0;
-    for (const auto& obj_shape : obj_shapes) {
-        const auto& indices = obj_shape.mesh.indices;
-        size_t offset = 0;
-        for (size_t f = 0; f < obj_shape.mesh.num_face_vertices.size(); ++f) {
-            while (next_size < face_sizes.size() && face_sizes[next_size] < 3) ++next_size;
-            const size_t count = next_size < face_sizes.size() ? face_sizes[next_size++] : 0;
-            if (count < 3 || count % 256 != obj_shape.mesh.num_face_vertices[f] || offset + count > indices.size()) {
-                error(where.begin,
-                      "cannot read OBJ file \"" + name + "\": the vertices of face " + std::to_string(f + 1) +
-                          (obj_shape.name.empty() ? "" : " of '" + obj_shape.name + "'") + " do not match its line");
-                return shape;
-            }
-            bool valid = true;
-            for (size_t k = 0; k < count; ++k) {
-                const int vertex = indices[offset + k].vertex_index;
-                if (vertex < 0 || static_cast<size_t>(vertex) >= mesh->positions.size()) valid = false;
-            }
-            if (!valid) {
-                error(where.begin, "OBJ \"" + name + "\": face " + std::to_string(f + 1) +
-                                       (obj_shape.name.empty() ? "" : " of '" + obj_shape.name + "'") +
-                                       " refers to a vertex that does not exist");
-                return shape;
-            }
-            static const PolygonTriangulation one_triangle{PolygonTriangulation::Kind::Convex, {{0, 1, 2}}};
-            PolygonTriangulation triangulation;
-            if (count != 3) {
-                corners.clear();
-                for (size_t k = 0; k < count; ++k) corners.push_back(mesh->positions[indices[offset + k].vertex_index]);
-                triangulation = triangulate_polygon(corners);
-                if (triangulation.kind == PolygonTriangulation::Kind::NotSimple) note(crossing, f + 1, obj_shape.name);
-                if (triangulation.kind == PolygonTriangulation::Kind::NoArea) note(flat, f + 1, obj_shape.name);
-            }
-            const int material_id = f < obj_shape.mesh.material_ids.size() ? obj_shape.mesh.material_ids[f] : -1;
-            for (const auto& triangle : (count == 3 ? one_triangle : triangulation).triangles) {
-                sg::TriangleMesh::Face face;
-                for (int i = 0; i < 3; ++i) {
-                    const auto& index = indices[offset + triangle[i]];
-                    face.position[i] = index.vertex_index;
-                    face.normal[i] =
-                        index.normal_index >= 0 && static_cast<size_t>(index.normal_index) < mesh->normals.size()
-                            ? index.normal_index
-                            : -1;
-                    face.uv[i] =
-                        index.texcoord_index >= 0 && static_cast<size_t>(index.texcoord_index) < mesh->uvs.size()
-                            ? index.texcoord_index
-                            : -1;
-                }
-                // All three normals or none, all three uvs or none.
-                if (face.normal[0] < 0 || face.normal[1] < 0 || face.normal[2] < 0)
-                    face.normal[0] = face.normal[1] = face.normal[2] = -1;
-                if (face.uv[0] < 0 || face.uv[1] < 0 || face.uv[2] < 0) face.uv[0] = face.uv[1] = face.uv[2] = -1;
-                face.material =
-                    material_id >= 0 && static_cast<size_t>(material_id) < mesh->materials.size() ? material_id : -1;
-                mesh->faces.push_back(face);
-            }
-            offset += count;
-        }
-    }
+    const ObjFaceReader::Skipped& crossing = faces.crossing;
+    const ObjFaceReader::Skipped& flat = faces.flat;
     if (crossing.count)
         warning(where.begin, "OBJ \"" + name + "\": " + std::to_string(crossing.count) +
                                  (crossing.count == 1 ? " face crosses its" : " faces cross their") +
