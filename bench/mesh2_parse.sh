@@ -40,6 +40,30 @@ awk -v nx="$columns" -v ny="$rows" 'BEGIN {
     printf "f %d %d %d\nf %d %d %d\n", a, a + 1, a + nx, a + 1, a + nx + 1, a + nx
   }
 }' > "$work/big.obj"
+# The same grid as exporters write it with texture coordinates and normals
+# (v, vt, vn, then f v/vt/vn): about three times the text.
+awk -v nx="$columns" -v ny="$rows" 'BEGIN {
+  for (j = 0; j < ny; j++) for (i = 0; i < nx; i++) {
+    u = i / (nx - 1); v = j / (ny - 1)
+    printf "v %.6f %.6f %.6f\n", u * 4 - 2, 0.2 * sin(u * 20) * cos(v * 13), v * 2 - 1
+  }
+  for (j = 0; j < ny; j++) for (i = 0; i < nx; i++) printf "vt %.6f %.6f\n", i / (nx - 1), j / (ny - 1)
+  for (j = 0; j < ny; j++) for (i = 0; i < nx; i++) {
+    u = i / (nx - 1); v = j / (ny - 1)
+    a = -cos(u * 20) * cos(v * 13); c = 1.3 * sin(u * 20) * sin(v * 13); l = sqrt(a * a + 1 + c * c)
+    printf "vn %.6f %.6f %.6f\n", a / l, 1 / l, c / l
+  }
+  for (j = 0; j < ny - 1; j++) for (i = 0; i < nx - 1; i++) {
+    a = j * nx + i + 1; b = a + 1; c = a + nx; d = a + nx + 1
+    printf "f %d/%d/%d %d/%d/%d %d/%d/%d\nf %d/%d/%d %d/%d/%d %d/%d/%d\n", a, a, a, b, b, b, c, c, c, b, b, b, d, d, d, c, c, c
+  }
+}' > "$work/full.obj"
+cat > "$work/obj_full.pov" <<'EOF'
+#version 3.7;
+camera { location <0, 3, -3> look_at 0 }
+light_source { <3, 5, -4> color rgb 1 }
+obj_mesh { "full.obj" pigment { rgb <0.8, 0.6, 0.4> } }
+EOF
 cat > "$work/obj.pov" <<'EOF'
 #version 3.7;
 camera { location <0, 3, -3> look_at 0 }
@@ -61,6 +85,7 @@ echo "scene: $triangles triangles, include of $(du -m "$work/big.inc" | cut -f1)
 cd "$work"
 check=$(measure "$lancer" check big.pov)
 check_obj=$(measure "$lancer" check obj.pov)
+check_obj_full=$(measure "$lancer" check obj_full.pov)
 render=$(measure "$lancer" render big.pov -o lancer.png --width 1280 --height 960 -i raycast -q)
 empty_scene=$(printf '#version 3.7;\ncamera { location -z look_at 0 }\n' > empty.pov; measure "$lancer" check empty.pov)
 if command -v povray > /dev/null; then
@@ -76,6 +101,7 @@ row() {
 }
 row "lancer check (mesh2)" "$check"
 row "lancer check (OBJ)" "$check_obj"
+row "lancer check (OBJ with vt and vn)" "$check_obj_full"
 row "lancer check, empty scene" "$empty_scene"
 row "lancer render raycast 1280x960" "$render"
 [ -n "$pov" ] && row "povray 1280x960 (+WT2 -A)" "$pov"

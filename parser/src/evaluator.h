@@ -531,6 +531,9 @@ class Evaluator {
     // only place --safe lets a scene's #fopen write).
     bool allowed_write(const std::string& path) const;
     void refuse_file(const sg::SourceLocation& where, const std::string& what, const std::string& name);
+    // True when the file is no larger than max_file_bytes (or its size is
+    // unknown); else false with a located error.
+    bool within_file_limit(const std::string& path, const sg::SourceLocation& where, const std::string& what);
     // Reads a whole file after checking its size against max_file_bytes;
     // false with a located error when it cannot.
     bool read_file(const std::string& path, const sg::SourceLocation& where, const std::string& what,

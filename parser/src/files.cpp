@@ -114,15 +114,20 @@ Evaluator::FileSearch Evaluator::find_file(const std::string& name, const std::v
     return FileSearch::Missing;
 }
 
+bool Evaluator::within_file_limit(const std::string& path, const sg::SourceLocation& where, const std::string& what) {
+    std::error_code ec;
+    const auto size = fs::file_size(path, ec);
+    if (ec || size <= static_cast<std::uintmax_t>(m_options.max_file_bytes)) return true;
+    error(where, what + " \"" + path + "\" is too large: " + std::to_string(size) + " bytes (the limit is " +
+                     std::to_string(m_options.max_file_bytes) + ")");
+    return false;
+}
+
 bool Evaluator::read_file(const std::string& path, const sg::SourceLocation& where, const std::string& what,
                           std::string& text) {
+    if (!within_file_limit(path, where, what)) return false;
     std::error_code ec;
     auto size = fs::file_size(path, ec);
-    if (!ec && size > static_cast<std::uintmax_t>(m_options.max_file_bytes)) {
-        error(where, what + " \"" + path + "\" is too large: " + std::to_string(size) + " bytes (the limit is " +
-                         std::to_string(m_options.max_file_bytes) + ")");
-        return false;
-    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         error(where, "cannot read " + what + " \"" + path + "\"");

@@ -10,6 +10,7 @@
 
 #include "evaluator.h"
 #include "obj_faces.h"
+#include "obj_text_check.h"
 #include "polygon_triangulation.h"
 
 namespace lancer::parse {
@@ -20,67 +21,6 @@ namespace fs = std::filesystem;
 
 sg::TriangleMesh& mutable_mesh(ShapeValue& shape) {
     return const_cast<sg::TriangleMesh&>(*std::get<sg::MeshRef>(shape.object.shape));
-}
-
-// Vertices one OBJ face may have. Faces are triangulated in O(n log n)
-// (polygon_triangulation.h); a concave face of a million vertices (a star)
-// took 3.4 s and 150 MB on a loaded two-core machine.
-constexpr std::size_t kMaxObjFaceVertices = 1000000;
-
-// The first face line tinyobjloader would misread, as "line N: why", or
-// empty: a face with more than kMaxObjFaceVertices vertices, or an index
-// outside int (tinyobjloader wraps 2^32 + 4 to 4).
-std::string scan_obj_faces(const std::string& text) {
-    std::size_t line_number = 0;
-    for (std::size_t start = 0; start < text.size();) {
-        // Lines end at \n, \r\n or a lone \r, as tinyobjloader reads them.
-        std::size_t end = text.find_first_of("\r\n", start);
-        if (end == std::string::npos) end = text.size();
-        std::size_t next = end + (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n' ? 2 : 1);
-        ++line_number;
-        std::size_t i = start;
-        while (i < end && (text[i] == ' ' || text[i] == '\t')) ++i;
-        if (i + 1 < end && text[i] == 'f' && (text[i + 1] == ' ' || text[i + 1] == '\t')) {
-            std::size_t vertices = 0;
-            for (i += 1; i < end;) {
-                while (i < end && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r')) ++i;
-                if (i >= end || text[i] == '#') break;
-                ++vertices;
-                // v, v/t, v//n, v/t/n: every number must fit an int.
-                while (i < end && text[i] != ' ' && text[i] != '\t' && text[i] != '\r') {
-                    std::size_t digits = 0;
-                    double value = 0.0;
-                    if (text[i] == '-' || text[i] == '+') ++i;
-                    for (; i < end && text[i] >= '0' && text[i] <= '9'; ++i, ++digits)
-                        value = value * 10.0 + (text[i] - '0');
-                    if (digits > 0 && value > 2147483647.0)
-                        return "line " + std::to_string(line_number) + ": face index " +
-                               text.substr(i - digits, digits) + " is out of range";
-                    if (i < end && text[i] == '/')
-                        ++i;
-                    else if (i < end && text[i] != ' ' && text[i] != '\t' && text[i] != '\r')
-                        ++i;
-                }
-            }
-            if (vertices > kMaxObjFaceVertices)
-                return "line " + std::to_string(line_number) + ": a face of " + std::to_string(vertices) +
-                       " vertices (lancer takes at most " + std::to_string(kMaxObjFaceVertices) +
-                       " per face; split it into smaller polygons)";
-        }
-        start = next;
-    }
-    return {};
-}
-
-// Why `text` cannot be an OBJ/MTL file, or null when it may be one.
-const char* not_text(const std::string& text) {
-    if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF')))
-        return "is UTF-16 text; save it as UTF-8 or ASCII";
-    if (text.find('\0') != std::string::npos) {
-        if (text.compare(0, 4, "\x89PNG") == 0) return "is a PNG image, not text";
-        return "is a binary file, not text (or UTF-16 without a byte order mark)";
-    }
-    return nullptr;
 }
 
 // The first few lines of tinyobjloader's messages: it reports per line, and
@@ -483,27 +423,49 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
     fs::path found = found_name;
     mesh->source = found.string();
 
-    // The text first: tinyobjloader reads anything as OBJ (a PNG gives a
-    // mesh with no faces), so say what the file really is.
+    // The text is checked first (obj_text_check.h), then read by
+    // tinyobjloader, each from the file a piece at a time: a file is read
+    // twice rather than held whole. What cannot be read twice (a pipe) is
+    // read into memory once.
+    ObjTextCheck check;
     std::string text;
-    if (!read_file(found.string(), where.begin, "OBJ file", text)) return shape;
-    if (const char* problem = not_text(text)) {
+    std::unique_ptr<std::istream> source;
+    struct TextBuffer : std::streambuf {
+        explicit TextBuffer(std::string& text) { setg(text.data(), text.data(), text.data() + text.size()); }
+    };
+    std::unique_ptr<TextBuffer> text_buffer;
+    std::error_code ec;
+    if (fs::is_regular_file(found, ec)) {
+        if (!within_file_limit(found.string(), where.begin, "OBJ file")) return shape;
+        std::ifstream in(found, std::ios::binary);
+        std::vector<char> piece(1 << 20);
+        while (in && (in.read(piece.data(), std::streamsize(piece.size())) || in.gcount() > 0))
+            check.feed(piece.data(), std::size_t(in.gcount()));
+        auto file = std::make_unique<std::ifstream>(found, std::ios::binary);
+        if (in.bad() || !*file) {
+            error(where.begin, "cannot read OBJ file \"" + found.string() + "\"");
+            return shape;
+        }
+        source = std::move(file);
+    } else {
+        if (!read_file(found.string(), where.begin, "OBJ file", text)) return shape;
+        check.feed(text.data(), text.size());
+        text_buffer = std::make_unique<TextBuffer>(text);
+        source = std::make_unique<std::istream>(text_buffer.get());
+    }
+    check.finish();
+    if (const char* problem = check.why_not_text()) {
         error(where.begin, "OBJ file \"" + name + "\" " + problem);
         return shape;
     }
-    if (const std::string face = scan_obj_faces(text); !face.empty()) {
-        error(where.begin, "OBJ \"" + name + "\", " + face);
+    if (!check.face_problem().empty()) {
+        error(where.begin, "OBJ \"" + name + "\", " + check.face_problem());
         return shape;
     }
 
     ObjMaterialReader materials(*this, found.parent_path());
     ObjFaceReader faces(*mesh);
     std::string obj_warning, obj_error;
-    // Read in place: a string stream would copy the text.
-    struct TextBuffer : std::streambuf {
-        explicit TextBuffer(std::string& text) { setg(text.data(), text.data(), text.data() + text.size()); }
-    } buffer(text);
-    std::istream stream(&buffer);
     // Streamed: each face goes into the mesh as it is read (obj_faces.h).
     // Faces as written: tinyobjloader's triangulation takes time growing
     // with the square of a face's size; lancer's takes O(n log n).
@@ -517,8 +479,9 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         ObjMaterialReader& reader;
         ObjFaceReader& faces;
     } material_files(materials, faces);
-    const bool loaded = tinyobj::LoadObjWithCallback(stream, ObjFaceReader::callbacks(), &faces, &material_files,
+    const bool loaded = tinyobj::LoadObjWithCallback(*source, ObjFaceReader::callbacks(), &faces, &material_files,
                                                      &obj_warning, &obj_error);
+    source.reset();
     std::string().swap(text);  // read
     if (materials.refused) {
         refuse_file(where.begin, "MTL file", materials.refused_name);
