@@ -65,10 +65,25 @@ TEST_F(ObjStreaming, FacesNamingLaterVerticesKeepTheirPlace) {
     EXPECT_EQ(faces[4].position[0], 2);
 }
 
+// Polygons that wait for their vertices are triangulated at the end; the
+// warning still names the first face in the file.
+TEST_F(ObjStreaming, WarningsNameTheFirstFaceInTheFileOrder) {
+    const ParseResult result = parse_obj(
+        "v 0 0 0\nv 1 0 0\nv 2 0 0\n"
+        "f 1 2 3 4\n"  // waits for vertex 4; all four on one line: no area
+        "f 1 2 3 1\n"  // no area either, all its vertices read
+        "f 1 2 5\n"
+        "v 3 0 0\nv 0 1 0\n");
+    ASSERT_TRUE(result.ok()) << all_text(result);
+    EXPECT_NE(all_text(result).find("2 faces have no area (first: face 1;"), std::string::npos) << all_text(result);
+    EXPECT_EQ(mesh(result).faces.size(), 1u);
+}
+
 TEST_F(ObjStreaming, TheFirstFaceNamingNoVertexIsTheOneReported) {
-    // Face 2 names vertex 9, which never comes; face 3 names vertex 0, which
-    // cannot exist. The first in the file is the one named, with its group.
-    const ParseResult result = parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\ng part\nf 1 2 3\nf 1 2 9\nf 0 1 2\n");
+    // Face 2 names vertex 9, which never comes; face 3 names the ninth
+    // vertex back, which cannot exist. The first in the file is the one
+    // named, with its group.
+    const ParseResult result = parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\ng part\nf 1 2 3\nf 1 2 9\nf -9 1 2\n");
     ASSERT_FALSE(result.ok());
     EXPECT_NE(all_text(result).find("face 2 of 'part' refers to a vertex that does not exist"), std::string::npos)
         << all_text(result);
@@ -102,14 +117,14 @@ TEST_F(ObjStreaming, UsemtlNamesTheMaterialOfTheFacesAfterIt) {
     temp.write("two.mtl", "newmtl red\nKd 1 0 0\nnewmtl blue\nKd 0 0 1\n");
     const ParseResult result = parse_obj(
         "mtllib two.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
-        "f 1 2 3\nusemtl blue  \nf 1 2 3\nusemtl red\nf 1 2 3\nusemtl green\nf 1 2 3\n");
+        "f 1 2 3\nusemtl blue  \nf 1 2 3\nusemtl  \t red\nf 1 2 3\nusemtl green\nf 1 2 3\n");
     ASSERT_TRUE(result.ok()) << all_text(result);
     EXPECT_NE(all_text(result).find("material [ 'green' ] not found in .mtl"), std::string::npos) << all_text(result);
     const auto& m = mesh(result);
     ASSERT_EQ(m.materials.size(), 2u);
     ASSERT_EQ(m.faces.size(), 4u);
     EXPECT_EQ(m.faces[0].material, -1);
-    EXPECT_EQ(m.faces[1].material, 1);  // trailing spaces after the name, as LoadObj reads it
+    EXPECT_EQ(m.faces[1].material, 1);  // blanks around the name, as LoadObj reads it
     EXPECT_EQ(m.faces[2].material, 0);
     EXPECT_EQ(m.faces[3].material, -1);
     EXPECT_EQ(m.materials[1]->pigment.color.rgb, sg::Vec3(0, 0, 1));

@@ -9,6 +9,7 @@
 #include <tiny_obj_loader.h>
 
 #include "evaluator.h"
+#include "file_prefix.h"
 #include "obj_faces.h"
 #include "obj_text_check.h"
 #include "polygon_triangulation.h"
@@ -424,35 +425,35 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
     mesh->source = found.string();
 
     // The text is checked first (obj_text_check.h), then read by
-    // tinyobjloader, each from the file a piece at a time: a file is read
-    // twice rather than held whole. What cannot be read twice (a pipe) is
-    // read into memory once.
+    // tinyobjloader, each from the file a piece at a time: the file (a
+    // regular one, as find_file found it) is read twice rather than held
+    // whole, the second time no further than the first, and a file that
+    // changed between the two is an error.
     ObjTextCheck check;
-    std::string text;
-    std::unique_ptr<std::istream> source;
-    struct TextBuffer : std::streambuf {
-        explicit TextBuffer(std::string& text) { setg(text.data(), text.data(), text.data() + text.size()); }
+    auto stamp = [&] {
+        std::error_code ignored;
+        return std::make_pair(fs::file_size(found, ignored), fs::last_write_time(found, ignored));
     };
-    std::unique_ptr<TextBuffer> text_buffer;
-    std::error_code ec;
-    if (fs::is_regular_file(found, ec)) {
-        if (!within_file_limit(found.string(), where.begin, "OBJ file")) return shape;
-        std::ifstream in(found, std::ios::binary);
-        std::vector<char> piece(1 << 20);
-        while (in && (in.read(piece.data(), std::streamsize(piece.size())) || in.gcount() > 0))
-            check.feed(piece.data(), std::size_t(in.gcount()));
-        auto file = std::make_unique<std::ifstream>(found, std::ios::binary);
-        if (in.bad() || !*file) {
-            error(where.begin, "cannot read OBJ file \"" + found.string() + "\"");
+    const auto stamp_before = stamp();
+    if (!within_file_limit(found.string(), where.begin, "OBJ file")) return shape;
+    std::ifstream in(found, std::ios::binary);
+    std::vector<char> piece(1 << 20);
+    std::uintmax_t checked = 0;
+    while (in && (in.read(piece.data(), std::streamsize(piece.size())) || in.gcount() > 0)) {
+        checked += std::uintmax_t(in.gcount());
+        if (checked > std::uintmax_t(m_options.max_file_bytes)) {
+            error(where.begin, "OBJ file \"" + found.string() + "\" is too large: over " +
+                                   std::to_string(m_options.max_file_bytes) + " bytes (the limit)");
             return shape;
         }
-        source = std::move(file);
-    } else {
-        if (!read_file(found.string(), where.begin, "OBJ file", text)) return shape;
-        check.feed(text.data(), text.size());
-        text_buffer = std::make_unique<TextBuffer>(text);
-        source = std::make_unique<std::istream>(text_buffer.get());
+        check.feed(piece.data(), std::size_t(in.gcount()));
     }
+    FilePrefix obj_file(found, checked);
+    if (in.bad() || !obj_file.is_open()) {
+        error(where.begin, "cannot read OBJ file \"" + found.string() + "\"");
+        return shape;
+    }
+    std::istream source(&obj_file);
     check.finish();
     if (const char* problem = check.why_not_text()) {
         error(where.begin, "OBJ file \"" + name + "\" " + problem);
@@ -479,10 +480,16 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         ObjMaterialReader& reader;
         ObjFaceReader& faces;
     } material_files(materials, faces);
-    const bool loaded = tinyobj::LoadObjWithCallback(*source, ObjFaceReader::callbacks(), &faces, &material_files,
+    const bool loaded = tinyobj::LoadObjWithCallback(source, ObjFaceReader::callbacks(), &faces, &material_files,
                                                      &obj_warning, &obj_error);
-    source.reset();
-    std::string().swap(text);  // read
+    if (obj_file.failed()) {
+        error(where.begin, "cannot read OBJ file \"" + found.string() + "\"");
+        return shape;
+    }
+    if (stamp() != stamp_before) {
+        error(where.begin, "OBJ file \"" + found.string() + "\" changed while it was read; read it again");
+        return shape;
+    }
     if (materials.refused) {
         refuse_file(where.begin, "MTL file", materials.refused_name);
         return shape;

@@ -62,9 +62,11 @@ void ObjFaceReader::add_vertex(double x, double y, double z) {
 }
 
 void ObjFaceReader::use_material(const char* line) {
-    // LoadObj takes the first word; the streaming reader passes the rest of the line.
+    // LoadObj takes the first word; the streaming reader passes the rest of
+    // the line, blanks before the name included.
     std::string name(line);
-    name = name.substr(0, name.find_first_of(" \t\r"));
+    const std::size_t start = std::min(name.size(), name.find_first_not_of(" \t"));
+    name = name.substr(start, name.find_first_of(" \t\r", start) - start);
     m_material = -1;
     if (m_material_names) {
         const auto found = m_material_names->find(name);
@@ -120,7 +122,10 @@ void ObjFaceReader::add_face(const tinyobj::index_t* indices, int count) {
         if (!all_read) m_ahead.push_back({largest, ordinal, label()});
         return;
     }
-    if (all_read) return add_polygon(m_corners, m_material, label(), m_mesh.faces.size());
+    if (all_read) {
+        add_polygon(m_corners, m_material, label(), ordinal, m_mesh.faces.size(), m_mesh.faces.size());
+        return;
+    }
     // Room for its triangles until its vertices are read.
     sg::TriangleMesh::Face empty;
     empty.material = kEmptySlot;
@@ -128,14 +133,20 @@ void ObjFaceReader::add_face(const tinyobj::index_t* indices, int count) {
     m_mesh.faces.insert(m_mesh.faces.end(), std::size_t(count - 2), empty);
 }
 
-void ObjFaceReader::add_polygon(const std::vector<Corner>& corners, int material, const std::string& label,
-                                std::size_t slot) {
+std::size_t ObjFaceReader::add_polygon(const std::vector<Corner>& corners, int material, const std::string& label,
+                                       std::size_t ordinal, std::size_t slot, std::size_t slot_end) {
     std::vector<sg::Vec3> points;
     points.reserve(corners.size());
     for (const Corner& corner : corners) points.push_back(m_mesh.positions[std::size_t(corner.position)]);
     const PolygonTriangulation triangulation = triangulate_polygon(points);
+    std::size_t inserted = 0;
+    // Waiting polygons are placed at the end: the first noted is the first in the file.
     auto note = [&](Skipped& skipped) {
-        if (skipped.count++ == 0) skipped.first = label;
+        ++skipped.count;
+        if (ordinal < skipped.first_ordinal) {
+            skipped.first_ordinal = ordinal;
+            skipped.first = label;
+        }
     };
     if (triangulation.kind == PolygonTriangulation::Kind::NotSimple) note(crossing);
     if (triangulation.kind == PolygonTriangulation::Kind::NoArea) note(flat);
@@ -148,11 +159,18 @@ void ObjFaceReader::add_polygon(const std::vector<Corner>& corners, int material
             face.uv[i] = corner.uv;
         }
         face.material = material;
-        if (slot < m_mesh.faces.size())
-            m_mesh.faces[slot++] = face;
-        else
-            m_mesh.faces.push_back(face), ++slot;
+        // A polygon of n corners has at most n - 2 triangles (the room kept
+        // for it); past that, or when appending, the face is inserted.
+        if (slot < slot_end) {
+            m_mesh.faces[slot] = face;
+        } else {
+            m_mesh.faces.insert(m_mesh.faces.begin() + std::ptrdiff_t(slot), face);
+            ++slot_end;
+            ++inserted;
+        }
+        ++slot;
     }
+    return inserted;
 }
 
 bool ObjFaceReader::finish() {
@@ -174,8 +192,12 @@ bool ObjFaceReader::finish() {
         }
     }
     if (first_bad != SIZE_MAX) return false;
-    for (const Waiting& waiting : m_waiting)
-        add_polygon(waiting.corners, waiting.material, waiting.label, waiting.slot);
+    std::size_t inserted = 0;  // faces placed past a polygon's room move the later slots
+    for (const Waiting& waiting : m_waiting) {
+        const std::size_t slot = waiting.slot + inserted;
+        inserted += add_polygon(waiting.corners, waiting.material, waiting.label, waiting.ordinal, slot,
+                                slot + waiting.corners.size() - 2);
+    }
     if (!m_waiting.empty())
         m_mesh.faces.erase(std::remove_if(m_mesh.faces.begin(), m_mesh.faces.end(),
                                           [](const sg::TriangleMesh::Face& f) { return f.material == kEmptySlot; }),

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -43,6 +44,7 @@ class ObjFaceReader {
     struct Skipped {
         std::size_t count = 0;
         std::string first;  // "face N of 'group'"
+        std::size_t first_ordinal = SIZE_MAX;
     };
     bool non_finite_vertex = false;
     std::size_t short_faces = 0;       // of fewer than three vertices, left out
@@ -78,8 +80,12 @@ class ObjFaceReader {
     void use_material(const char* name);
     void start_group(std::string name);
     std::string label() const;
-    // Appends the triangles of a polygon whose vertices all exist.
-    void add_polygon(const std::vector<Corner>& corners, int material, const std::string& label, std::size_t slot);
+    // Places the triangles of a polygon whose vertices all exist in the
+    // faces [slot, slot_end) kept for them, inserting any beyond (none when
+    // the room is n - 2); returns how many were inserted. `ordinal`: the
+    // face's place in the file, for the warnings' first face.
+    std::size_t add_polygon(const std::vector<Corner>& corners, int material, const std::string& label,
+                            std::size_t ordinal, std::size_t slot, std::size_t slot_end);
     // The face numbered `ordinal` in the file names a vertex that cannot exist.
     void fail(std::size_t ordinal);
 

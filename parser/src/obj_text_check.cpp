@@ -16,6 +16,7 @@ const char* not_text(const std::string& head, bool has_nul) {
 }
 
 void ObjTextCheck::feed(const char* data, std::size_t size) {
+    if (size == 0) return;
     if (m_head.size() < 4) m_head.append(data, std::min(4 - m_head.size(), size));
     if (!m_has_nul && std::memchr(data, '\0', size) != nullptr) m_has_nul = true;
     if (m_has_nul || !m_face_problem.empty()) return;  // the answer is known
@@ -61,32 +62,40 @@ void ObjTextCheck::scan_line(const char* begin, const char* end) {
     const char* i = begin;
     while (i < end && (*i == ' ' || *i == '\t')) ++i;
     if (!(i + 1 < end && *i == 'f' && (i[1] == ' ' || i[1] == '\t'))) return;
+    auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    auto problem = [&](const std::string& why) { m_face_problem = "line " + std::to_string(m_line) + ": " + why; };
     std::size_t vertices = 0;
     for (i += 1; i < end;) {
-        while (i < end && (*i == ' ' || *i == '\t' || *i == '\r')) ++i;
-        if (i >= end || *i == '#') break;
+        while (i < end && blank(*i)) ++i;
+        if (i >= end) break;
         ++vertices;
-        // v, v/t, v//n, v/t/n: every number must fit an int.
-        while (i < end && *i != ' ' && *i != '\t' && *i != '\r') {
-            std::size_t digits = 0;
-            double value = 0.0;
-            if (*i == '-' || *i == '+') ++i;
-            for (; i < end && *i >= '0' && *i <= '9'; ++i, ++digits) value = value * 10.0 + (*i - '0');
-            if (digits > 0 && value > 2147483647.0) {
-                m_face_problem = "line " + std::to_string(m_line) + ": face index " + std::string(i - digits, i) +
-                                 " is out of range";
-                return;
+        const char* const corner_end = std::find_if(i, end, blank);
+        // v, v/t, v//n, v/t/n, as tinyobjloader reads them (atoi): every
+        // number written must fit an int and not be 0, and what is not a
+        // number reads as 0. A texture or normal index may be left out; the
+        // vertex may not. OBJ has no comments after a face's indices.
+        const char* part = i;
+        for (int k = 0; k < 3 && part <= corner_end; ++k) {
+            const char* const part_end = std::find(part, corner_end, '/');
+            if (k == 0 || part_end > part) {
+                const char* c = part;
+                if (c < part_end && (*c == '-' || *c == '+')) ++c;
+                const char* const digits_begin = c;
+                double value = 0.0;
+                for (; c < part_end && *c >= '0' && *c <= '9'; ++c) value = value * 10.0 + (*c - '0');
+                if (c == digits_begin)
+                    return problem("face index \"" + std::string(part, part_end) + "\" is not a number");
+                if (value > 2147483647.0)
+                    return problem("face index " + std::string(digits_begin, c) + " is out of range");
+                if (value == 0.0) return problem("face index 0 (OBJ counts from 1)");
             }
-            if (i < end && *i == '/')
-                ++i;
-            else if (i < end && *i != ' ' && *i != '\t' && *i != '\r')
-                ++i;
+            part = part_end + 1;
         }
+        i = corner_end;
     }
     if (vertices > kMaxFaceVertices)
-        m_face_problem = "line " + std::to_string(m_line) + ": a face of " + std::to_string(vertices) +
-                         " vertices (lancer takes at most " + std::to_string(kMaxFaceVertices) +
-                         " per face; split it into smaller polygons)";
+        problem("a face of " + std::to_string(vertices) + " vertices (lancer takes at most " +
+                std::to_string(kMaxFaceVertices) + " per face; split it into smaller polygons)");
 }
 
 }  // namespace lancer::parse

@@ -43,8 +43,28 @@ TEST(ObjTextCheck, ALastLineWithoutItsEndIsChecked) {
 }
 
 TEST(ObjTextCheck, GoodTextHasNothingToSay) {
-    expect_same_in_every_cut("# a comment f 99999999999\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1 # 99999999999\n",
-                             {"", ""});
+    expect_same_in_every_cut(
+        "# a comment f 99999999999\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n"
+        "f -3 -2 -1\nf 1/1 2/1 3/1\nf 1//1 2//1 3//1\nf 1/1/1 2/1/1 3/1/1\nf 1 2\n",
+        {"", ""});
+}
+
+// tinyobjloader reads an index with atoi: 0, and what is not a number, read
+// as index 0, which its LoadObj rejected (with only the line number).
+TEST(ObjTextCheck, IndicesOfZeroAndWordsAreFoundWithTheirLine) {
+    const std::string head = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n";
+    expect_same_in_every_cut(head + "f 1 2 0\n", {"", "line 5: face index 0 (OBJ counts from 1)"});
+    expect_same_in_every_cut(head + "f 1/0 2/1 3/1\n", {"", "line 5: face index 0 (OBJ counts from 1)"});
+    expect_same_in_every_cut(head + "f 1 0\n", {"", "line 5: face index 0 (OBJ counts from 1)"});
+    expect_same_in_every_cut(head + "f 1 2 3 # done\n", {"", "line 5: face index \"#\" is not a number"});
+    expect_same_in_every_cut(head + "f /1 2 3\n", {"", "line 5: face index \"\" is not a number"});
+}
+
+TEST(ObjTextCheck, AnEmptyPieceChangesNothing) {
+    ObjTextCheck check;
+    for (const char* piece : {"v 0 0 0\r", "", "\nf 1 2 0\n"}) check.feed(piece, std::string(piece).size());
+    check.finish();
+    EXPECT_EQ(check.face_problem(), "line 2: face index 0 (OBJ counts from 1)");
 }
 
 TEST(ObjTextCheck, BinaryAndUtf16AreFoundAcrossPieces) {
