@@ -749,8 +749,6 @@ struct Evaluator::Control {
 struct Evaluator::Mesh2Section {
     std::shared_ptr<const TokenBuffer> buffer;
     const RawToken* raw = nullptr;  // the RawKind::Mesh2Section token, in buffer
-
-    const double* entry(std::size_t e, std::size_t size) const { return buffer->components(*raw) + e * size; }
 };
 
 struct Evaluator::Frame {

@@ -57,18 +57,17 @@ std::function<void(sg::TriangleMesh&)> Evaluator::literal_mesh2_section(const Va
         return [section, normals, count](sg::TriangleMesh& mesh) {
             auto& out = normals ? mesh.normals : mesh.positions;
             out.reserve(out.size() + count);
-            for (std::size_t e = 0; e < count; ++e) {
-                const double* c = section->entry(e, 3);
+            visit_mesh2_entries(*section->buffer, *section->raw, [&](const double* c) {
                 const sg::Vec3 v(c[0], c[1], c[2]);
                 out.push_back(normals && glm::length(v) > 0 ? glm::normalize(v) : v);
-            }
+            });
         };
     }
     if (name == "uv_vectors") {
         return [section, count](sg::TriangleMesh& mesh) {
             mesh.uvs.reserve(mesh.uvs.size() + count);
-            for (std::size_t e = 0; e < count; ++e)
-                mesh.uvs.emplace_back(section->entry(e, 2)[0], section->entry(e, 2)[1]);
+            visit_mesh2_entries(*section->buffer, *section->raw,
+                                [&](const double* c) { mesh.uvs.emplace_back(c[0], c[1]); });
         };
     }
     if (name == "face_indices") add_triangles(static_cast<long>(count), at);
@@ -83,14 +82,15 @@ std::function<void(sg::TriangleMesh&)> Evaluator::literal_mesh2_section(const Va
         };
         if (name == "face_indices") {
             mesh.faces.reserve(mesh.faces.size() + count);
-            for (std::size_t e = 0; e < count; ++e) {
+            std::size_t e = 0;
+            visit_mesh2_entries(*section->buffer, *section->raw, [&](const double* indices) {
                 sg::TriangleMesh::Face face;
-                for (int i = 0; i < 3; ++i) {
-                    const double index = section->entry(e, 3)[i];
-                    face.position[i] = in_range(index, mesh.positions.size(), "vertex_vectors", e) ? int(index) : 0;
-                }
+                for (int i = 0; i < 3; ++i)
+                    face.position[i] =
+                        in_range(indices[i], mesh.positions.size(), "vertex_vectors", e) ? int(indices[i]) : 0;
                 mesh.faces.push_back(face);
-            }
+                ++e;
+            });
             return;
         }
         const bool normals = name == "normal_indices";
@@ -99,13 +99,13 @@ std::function<void(sg::TriangleMesh&)> Evaluator::literal_mesh2_section(const Va
             return;
         }
         const std::size_t size = normals ? mesh.normals.size() : mesh.uvs.size();
-        for (std::size_t e = 0; e < count; ++e) {
-            for (int i = 0; i < 3; ++i) {
-                const double index = section->entry(e, 3)[i];
+        std::size_t e = 0;
+        visit_mesh2_entries(*section->buffer, *section->raw, [&](const double* indices) {
+            for (int i = 0; i < 3; ++i)
                 (normals ? mesh.faces[e].normal : mesh.faces[e].uv)[i] =
-                    in_range(index, size, normals ? "normal_vectors" : "uv_vectors", e) ? int(index) : -1;
-            }
-        }
+                    in_range(indices[i], size, normals ? "normal_vectors" : "uv_vectors", e) ? int(indices[i]) : -1;
+            ++e;
+        });
     };
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -18,8 +19,10 @@ enum class RawKind : std::uint8_t {
     Number,  // number holds the value
     Vector,  // a literal <a, b, …> of 2 to 5 signed numbers: see RawToken
     // A mesh2 section of literal data, keyword to '}' (`vertex_vectors { 3,
-    // <…>, <…>, <…> }`): text is the keyword; its vector_size entries (<u, v>
-    // in uv_vectors, else 3 numbers) are vector_components from `number`.
+    // <…>, <…>, <…> }`): text is the keyword; `number` is where the keyword
+    // starts in TokenBuffer::text, and its vector_size entries (<u, v> in
+    // uv_vectors, else 3 numbers) are read from there again when the mesh
+    // is made (visit_mesh2_entries), not kept as numbers beside the text.
     // Only a section the grammar would read without complaint is one token.
     Mesh2Section,
     String,      // text holds the decoded string
@@ -81,5 +84,11 @@ struct TokenBuffer {
 // strings or comments and stray characters become located errors appended
 // to `diagnostics`; returns false if any error was found.
 bool scan_text(std::string text, TokenBuffer& buffer, std::vector<Diagnostic>& diagnostics);
+
+// Calls visit(numbers) with each entry of a RawKind::Mesh2Section token of
+// `buffer`, in order: the numbers the grammar would read (2 for uv_vectors,
+// else 3).
+void visit_mesh2_entries(const TokenBuffer& buffer, const RawToken& section,
+                         const std::function<void(const double*)>& visit);
 
 }  // namespace lancer::parse
