@@ -12,6 +12,8 @@ packages=(
   # A palette PNG's indices (OpenImageIO gives only its colours).
   libpng-dev
   libtinyobjloader-dev libcli11-dev libfreetype-dev fonts-povray
+  # Number parsing in the scanner (as strtod rounds, faster).
+  libfast-float-dev
   povray-includes
   libgtest-dev libgmock-dev libbenchmark-dev
   # The live preview's HTTP server, and the headless browser its tests and
