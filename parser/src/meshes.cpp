@@ -360,11 +360,14 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_textures(
 // "../" and absolute names anywhere.
 class Evaluator::ObjMaterialReader : public tinyobj::MaterialReader {
   public:
-    ObjMaterialReader(Evaluator& evaluator, fs::path folder) : m_evaluator(evaluator), m_folder(std::move(folder)) {}
+    // `faces` looks its `usemtl` names up in the map this reader fills.
+    ObjMaterialReader(Evaluator& evaluator, fs::path folder, ObjFaceReader& faces)
+        : m_evaluator(evaluator), m_folder(std::move(folder)), m_faces(faces) {}
 
     bool operator()(const std::string& id, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* map,
                     std::string* warn, std::string* err) override {
         if (refused) return false;
+        m_faces.use_material_names(map);
         fs::path path = fs::path(id).is_absolute() ? fs::path(id) : m_folder / id;
         if (!m_evaluator.allowed_file(path.string())) {
             refused = true;
@@ -401,6 +404,7 @@ class Evaluator::ObjMaterialReader : public tinyobj::MaterialReader {
   private:
     Evaluator& m_evaluator;
     fs::path m_folder;
+    ObjFaceReader& m_faces;
 };
 
 ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, const sg::SourceLocation& at) {
@@ -464,24 +468,14 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         return shape;
     }
 
-    ObjMaterialReader materials(*this, found.parent_path());
     ObjFaceReader faces(*mesh);
+    ObjMaterialReader materials(*this, found.parent_path(), faces);
     std::string obj_warning, obj_error;
     // Streamed: each face goes into the mesh as it is read (obj_faces.h).
     // Faces as written: tinyobjloader's triangulation takes time growing
     // with the square of a face's size; lancer's takes O(n log n).
-    struct NamesFollower : tinyobj::MaterialReader {
-        NamesFollower(ObjMaterialReader& reader, ObjFaceReader& faces) : reader(reader), faces(faces) {}
-        bool operator()(const std::string& id, std::vector<tinyobj::material_t>* list, std::map<std::string, int>* map,
-                        std::string* warn, std::string* err) override {
-            faces.use_material_names(map);
-            return reader(id, list, map, warn, err);
-        }
-        ObjMaterialReader& reader;
-        ObjFaceReader& faces;
-    } material_files(materials, faces);
-    const bool loaded = tinyobj::LoadObjWithCallback(source, ObjFaceReader::callbacks(), &faces, &material_files,
-                                                     &obj_warning, &obj_error);
+    const bool loaded =
+        tinyobj::LoadObjWithCallback(source, ObjFaceReader::callbacks(), &faces, &materials, &obj_warning, &obj_error);
     if (obj_file.failed()) {
         error(where.begin, "cannot read OBJ file \"" + found.string() + "\"");
         return shape;
