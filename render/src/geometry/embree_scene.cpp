@@ -86,7 +86,7 @@ void EmbreeScene::build() {
         // BVH: it is tested on every ray, as the unbounded ones are.
         if (!instance.bounded || !within_embree_range(instance.bounds_lower) ||
             !within_embree_range(instance.bounds_upper)) {
-            m_unbounded.push_back(index);
+            m_unbounded.add(instance, index);
             continue;
         }
         AnalyticGroup*& group = groups[instance.kind];

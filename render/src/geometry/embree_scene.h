@@ -23,6 +23,7 @@
 
 #include "geometry/scene_data.h"
 #include "geometry/shape_list.h"
+#include "geometry/unbounded_shapes.h"
 #include "lancer/render_scene.h"
 
 namespace lancer::embree {
@@ -187,7 +188,7 @@ class EmbreeScene final : public RenderScene {
     std::map<const MeshData*, RTCScene> m_scene_of_mesh;
     std::vector<std::unique_ptr<AnalyticGroup>> m_groups;
     std::vector<GeometryEntry> m_geometries;  // by top-level geomID
-    std::vector<std::uint32_t> m_unbounded;   // instance indices, outside the BVH
+    UnboundedShapes m_unbounded;              // outside the BVH
     // A scene of a few analytic shapes: traced from this list, not the BVH.
     ShapeList m_few_shapes;
     bool m_traces_list = false;

@@ -81,6 +81,40 @@ TEST(EmbreeScene, PlaneHitUvIsItsWorldXyAsInPovRay) {
     EXPECT_TRUE(scene->bounds().empty());  // planes are not finite geometry
 }
 
+// Planes in world coordinates are tested from their normal and distance,
+// others through their placement (geometry/unbounded_shapes.h): both are
+// found, the nearer wins, the first listed wins a tie, and only those that
+// cast shadows occlude.
+TEST(EmbreeScene, PlanesInTheWorldOrPlacedAreFoundAlike) {
+    sg::Object floor = plane_object({0, 1, 0}, 0.0, solid_material({1, 0, 0}));
+    sg::Object placed = plane_object({0, 1, 0}, 0.0, solid_material({0, 1, 0}));
+    placed.parent_from_object = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 2, 0));
+    placed.no_shadow = true;
+    auto scene = compile_objects({floor, placed});
+    Hit hit;
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(1, 5, 1), Vec3(0, -1, 0)), hit));
+    EXPECT_NEAR(hit.t, 3.0f, 1e-5f);
+    EXPECT_EQ(hit.material->sample_surface(hit).pigment, Color(0, 1, 0));
+    ASSERT_TRUE(scene->intersect(make_ray(Vec3(1, 1, 1), Vec3(0, -1, 0)), hit));
+    EXPECT_NEAR(hit.t, 1.0f, 1e-6f);
+    EXPECT_EQ(hit.material->sample_surface(hit).pigment, Color(1, 0, 0));
+    EXPECT_FALSE(scene->intersect(make_ray(Vec3(1, 1, 1), Vec3(1, 0, 0)), hit));  // parallel to both
+
+    Ray through_placed = make_ray(Vec3(0, 3, 0), Vec3(0, -1, 0));
+    through_placed.t_max = 2.0f;
+    EXPECT_FALSE(scene->occluded(through_placed));  // the placed plane casts no shadow
+    through_placed.t_max = 4.0f;
+    EXPECT_TRUE(scene->occluded(through_placed));  // the floor does
+
+    // The same plane twice, once placed by a turn that leaves it in place.
+    sg::Object turned = plane_object({0, 1, 0}, 0.0, solid_material({0, 0, 1}));
+    turned.parent_from_object = glm::rotate(glm::dmat4(1.0), 1.0, glm::dvec3(0, 1, 0));
+    for (const bool floor_first : {true, false}) {
+        auto both = floor_first ? compile_objects({floor, turned}) : compile_objects({turned, floor});
+        ASSERT_TRUE(both->intersect(make_ray(Vec3(0.5f, 2, 0.25f), Vec3(0, -1, 0)), hit));
+        EXPECT_EQ(hit.material->sample_surface(hit).pigment, floor_first ? Color(1, 0, 0) : Color(0, 0, 1));
+    }
+}
 TEST(EmbreeScene, TriangleBarycentricUvAndMeshUv) {
     auto mesh = triangle_mesh({0, 0, 5}, {4, 0, 5}, {0, 4, 5});
     auto scene = compile_objects({mesh_object(mesh)});

@@ -312,22 +312,7 @@ bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit)
     // showed what lies below (POV-Ray shows the floor).
     double unbounded_t =
         found.geometry == kInvalidId || m_unbounded.empty() ? double(found.tfar) : double(next_float_up(found.tfar));
-    for (std::uint32_t index : m_unbounded) {
-        const Instance& instance = m_data->instances[index];
-        DVec3 o, d;
-        const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
-        const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
-        ray_to_object(instance, org, dir, o, d);
-        double t;
-        int face;
-        std::uint32_t leaf;
-        if (intersect_analytic(*m_data, index, o, d, found.tnear, unbounded_t, t, face, leaf)) {
-            unbounded_t = t;
-            unbounded_hit = index;
-            unbounded_leaf = leaf;
-            unbounded_face = face;
-        }
-    }
+    m_unbounded.nearest(*m_data, ray, found.tnear, unbounded_t, unbounded_hit, unbounded_leaf, unbounded_face);
     if (unbounded_hit != kInvalidId) {
         complete_instance_hit(unbounded_hit, unbounded_leaf, ray, float(unbounded_t), unbounded_face, hit);
         return true;

@@ -20,12 +20,7 @@ void tangent_frame(const DVec3& n, DVec3& t1, DVec3& t2) {
 }  // namespace
 
 bool intersect_plane(const AnalyticPlane& p, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t) {
-    const double denominator = glm::dot(p.normal, d);
-    if (denominator == 0.0) return false;
-    const double candidate = (p.distance - glm::dot(p.normal, o)) / denominator;
-    if (!(candidate > t_min && candidate < t_max)) return false;
-    t = candidate;
-    return true;
+    return cross_plane(p.normal, p.distance, o, d, t_min, t_max, t);
 }
 
 AnalyticPlane::AnalyticPlane(const DVec3& unit_normal, double plane_distance)

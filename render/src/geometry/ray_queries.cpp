@@ -255,19 +255,7 @@ bool EmbreeScene::occluded(const Ray& ray) const {
             if (shadow_ray.tfar == -INFINITY) return true;
         }
     }
-    for (std::uint32_t index : m_unbounded) {
-        const Instance& instance = m_data->instances[index];
-        if (!instance.casts_shadow) continue;
-        DVec3 o, d;
-        const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
-        const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
-        ray_to_object(instance, org, dir, o, d);
-        double t;
-        int face;
-        std::uint32_t leaf;
-        if (intersect_analytic(*m_data, index, o, d, glm::max(ray.t_min, 0.0f), ray.t_max, t, face, leaf)) return true;
-    }
-    return false;
+    return m_unbounded.occluded(*m_data, ray, glm::max(ray.t_min, 0.0f), ray.t_max);
 }
 
 bool EmbreeScene::may_block_towards(const Vec3& origin, const Vec3& corner, const Vec3& edge1,
@@ -284,7 +272,7 @@ bool EmbreeScene::may_block_towards(const Vec3& origin, const Vec3& corner, cons
     // The shadow rays run between floats near these points, along rounded
     // directions: a thousand times their error keeps the answer safe.
     const double margin = 1e-4 * reach + 1e-6 * largest;
-    for (std::uint32_t index : m_unbounded) {
+    for (std::uint32_t index : m_unbounded.instances()) {
         const Instance& instance = m_data->instances[index];
         if (!instance.casts_shadow) continue;
         if (instance.kind != ShapeKind::Plane) return true;

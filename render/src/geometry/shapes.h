@@ -73,6 +73,16 @@ bool intersect_sphere(const AnalyticSphere& s, const DVec3& o, const DVec3& d, d
 bool intersect_box(const AnalyticBox& b, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t,
                    int& face);
 bool intersect_plane(const AnalyticPlane& p, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t);
+// intersect_plane on the plane dot(p, normal) = distance.
+inline bool cross_plane(const DVec3& normal, double distance, const DVec3& o, const DVec3& d, double t_min,
+                        double t_max, double& t) {
+    const double denominator = glm::dot(normal, d);
+    if (denominator == 0.0) return false;
+    const double candidate = (distance - glm::dot(normal, o)) / denominator;
+    if (!(candidate > t_min && candidate < t_max)) return false;
+    t = candidate;
+    return true;
+}
 bool intersect_rectangle(const AnalyticRectangle& r, const DVec3& o, const DVec3& d, double t_min, double t_max,
                          double& t);
 

@@ -1,0 +1,49 @@
+// The shapes outside the BVH (planes, unbounded quadrics and trees, and
+// objects reaching past Embree's range), tested on every ray after it, in
+// the order the scene lists them. A plane written in world coordinates,
+// the common case (a floor, a wall, a mirror), is kept as its normal and
+// distance beside the list, so testing it costs a division rather than an
+// instance lookup, a ray mapped to object space and a dispatch on the
+// shape's kind: about a fifth of all the work on a scene of mirror planes
+// (bench/README.md). Its answers are those of intersect_plane, bit for bit
+// (internal to liblancer).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/scene_data.h"
+#include "lancer/ray.h"
+
+namespace lancer::embree {
+
+class UnboundedShapes {
+  public:
+    void add(const Instance& instance, std::uint32_t index);
+    bool empty() const { return m_shapes.empty(); }
+    // Instance indices, in the scene's order.
+    const std::vector<std::uint32_t>& instances() const { return m_instances; }
+
+    // The nearest crossing of `ray` with t in (t_min, t_max): t_max lowered
+    // to it, with the instance, its CSG leaf and face. The first listed
+    // shape wins a tie. False if none is crossed.
+    bool nearest(const SceneData& data, const Ray& ray, double t_min, double& t_max, std::uint32_t& instance,
+                 std::uint32_t& leaf, int& face) const;
+    // Whether a shape that casts shadows crosses `ray` over (t_min, t_max).
+    bool occluded(const SceneData& data, const Ray& ray, double t_min, double t_max) const;
+
+  private:
+    struct Entry {
+        DVec3 normal{0.0};  // a world plane's: dot(p, normal) = distance
+        double distance = 0.0;
+        std::uint32_t instance = 0;
+        bool world_plane = false;  // else tested through the instance
+        bool casts_shadow = true;
+    };
+    static bool crosses_instance(const SceneData& data, std::uint32_t index, const Ray& ray, double t_min, double t_max,
+                                 double& t, std::uint32_t& leaf, int& face);
+    std::vector<Entry> m_shapes;
+    std::vector<std::uint32_t> m_instances;
+};
+
+}  // namespace lancer::embree
