@@ -106,6 +106,23 @@ TEST(EmbreeScene, PlanesInTheWorldOrPlacedAreFoundAlike) {
     through_placed.t_max = 4.0f;
     EXPECT_TRUE(scene->occluded(through_placed));  // the floor does
 
+    // Turned, scaled and moved: the plane through (0, 1, 0) whose normal is
+    // y turned 30 degrees about x, hit along -y from (0, 5, 0) at
+    // t = 4 (the plane dips along z, not x, so x moves nothing).
+    sg::Object tilted = plane_object({0, 1, 0}, 0.0, solid_material({1, 1, 0}));
+    tilted.parent_from_object = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 1, 0)) *
+                                glm::rotate(glm::dmat4(1.0), glm::radians(30.0), glm::dvec3(1, 0, 0)) *
+                                glm::scale(glm::dmat4(1.0), glm::dvec3(3, 0.5, 2));
+    auto tilted_scene = compile_objects({tilted});
+    ASSERT_TRUE(tilted_scene->intersect(make_ray(Vec3(0, 5, 0), Vec3(0, -1, 0)), hit));
+    EXPECT_NEAR(hit.t, 4.0f, 1e-5f);
+    ASSERT_TRUE(tilted_scene->intersect(make_ray(Vec3(0, 5, 1), Vec3(0, -1, 0)), hit));
+    EXPECT_NEAR(hit.t, 4.0f + std::tan(glm::radians(30.0f)), 1e-5f);
+    EXPECT_NEAR(glm::dot(hit.geometric_normal, Vec3(0, std::cos(glm::radians(30.0f)), std::sin(glm::radians(30.0f)))),
+                1.0f, 1e-6f);
+    EXPECT_TRUE(tilted_scene->occluded(make_ray(Vec3(0, 5, 1), Vec3(0, -1, 0))));
+    EXPECT_FALSE(tilted_scene->intersect(make_ray(Vec3(0, 5, 1), Vec3(0, 1, 0)), hit));
+
     // The same plane twice, once placed by a turn that leaves it in place.
     sg::Object turned = plane_object({0, 1, 0}, 0.0, solid_material({0, 0, 1}));
     turned.parent_from_object = glm::rotate(glm::dmat4(1.0), 1.0, glm::dvec3(0, 1, 0));

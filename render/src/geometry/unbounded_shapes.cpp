@@ -1,21 +1,45 @@
 // Shapes outside the BVH (see unbounded_shapes.h).
 #include "geometry/unbounded_shapes.h"
 
+#include <cmath>
+
 #include "geometry/embree_scene.h"
 
 namespace lancer::embree {
+
+namespace {
+
+// The plane of a plane instance in world coordinates. Written in world
+// coordinates it is the instance's own, so the test is the same
+// arithmetic as through ray_to_object. Placed, the object's plane
+// dot(n, A p + b) = D (A, b: the placement's object_from_world) is
+// dot(A^T n, p) = D - dot(n, b) in the world: the same t up to the
+// rounding of these products, far below the float error bound that
+// offsets the rays leaving a hit. False if the placement flattens it.
+bool world_plane_of(const Instance& instance, DVec3& normal, double& distance) {
+    if (instance.placement.identity) {
+        normal = instance.plane.normal;
+        distance = instance.plane.distance;
+        return true;
+    }
+    const DMat4& to_object = instance.placement.object_from_world;
+    const DVec3 n = instance.plane.normal;
+    const DVec3 world_normal = glm::transpose(DMat3(to_object)) * n;
+    const double length = glm::length(world_normal);
+    const double world_distance = instance.plane.distance - glm::dot(n, DVec3(to_object[3]));
+    if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(world_distance)) return false;
+    normal = world_normal / length;
+    distance = world_distance / length;
+    return std::isfinite(distance);
+}
+
+}  // namespace
 
 void UnboundedShapes::add(const Instance& instance, std::uint32_t index) {
     Entry entry;
     entry.instance = index;
     entry.casts_shadow = instance.casts_shadow;
-    // In world coordinates ray_to_object maps nothing, so the plane's own
-    // test on the world ray is the same arithmetic.
-    entry.world_plane = instance.kind == ShapeKind::Plane && instance.placement.identity;
-    if (entry.world_plane) {
-        entry.normal = instance.plane.normal;
-        entry.distance = instance.plane.distance;
-    }
+    if (instance.kind == ShapeKind::Plane) entry.world_plane = world_plane_of(instance, entry.normal, entry.distance);
     m_shapes.push_back(entry);
     m_instances.push_back(index);
 }

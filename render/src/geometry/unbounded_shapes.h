@@ -1,12 +1,13 @@
 // The shapes outside the BVH (planes, unbounded quadrics and trees, and
 // objects reaching past Embree's range), tested on every ray after it, in
-// the order the scene lists them. A plane written in world coordinates,
-// the common case (a floor, a wall, a mirror), is kept as its normal and
+// the order the scene lists them. A plane is kept as its world normal and
 // distance beside the list, so testing it costs a division rather than an
 // instance lookup, a ray mapped to object space and a dispatch on the
 // shape's kind: about a fifth of all the work on a scene of mirror planes
-// (bench/README.md). Its answers are those of intersect_plane, bit for bit
-// (internal to liblancer).
+// (bench/README.md). A plane written in world coordinates (a floor, a
+// wall, a mirror) gives intersect_plane's answers bit for bit; a placed
+// one the same up to the rounding of its world plane (internal to
+// liblancer).
 #pragma once
 
 #include <cstdint>
@@ -37,7 +38,7 @@ class UnboundedShapes {
         DVec3 normal{0.0};  // a world plane's: dot(p, normal) = distance
         double distance = 0.0;
         std::uint32_t instance = 0;
-        bool world_plane = false;  // else tested through the instance
+        bool world_plane = false;  // else tested through the instance (a flattened plane, any other shape)
         bool casts_shadow = true;
     };
     static bool crosses_instance(const SceneData& data, std::uint32_t index, const Ray& ray, double t_min, double t_max,
