@@ -58,9 +58,13 @@ namespace {
 // faces across (-x, +z, +x, -z, a quarter of u each) and the bottom and
 // top below and above +z (a third of v each), none mirrored from outside.
 Vec2 box_uv(const AnalyticBox& b, int face, const DVec3& point) {
-    const DVec3 extent = b.upper - b.lower;
+    // Only the two axes across the face: the divisions are most of the cost.
+    const int across = face / 2;
     DVec3 q(0.0);
-    for (int a = 0; a < 3; ++a) q[a] = extent[a] > 0.0 ? (point[a] - b.lower[a]) / extent[a] : 0.0;
+    for (int a = 0; a < 3; ++a) {
+        const double extent = b.upper[a] - b.lower[a];
+        if (a != across && extent > 0.0) q[a] = (point[a] - b.lower[a]) / extent;
+    }
     double u = 0.0, v = 0.0;
     switch (face) {
     case 0: u = q.z / 4.0, v = (1.0 + q.y) / 3.0; break;          // -x

@@ -204,3 +204,30 @@ TEST(CameraInteriors, NoneWithoutMediaFogOrRainbow) {
 
 }  // namespace
 }  // namespace lancer
+
+namespace lancer {
+namespace {
+
+// An inverted box is traced by its surface's box, like any bounded
+// object, but its solid is all space outside it: a camera outside holds
+// it, one inside (a room) does not, and rays from inside meet its walls
+// with the normal facing the room.
+TEST(CameraInteriors, AnInvertedBoxHoldsWhatLiesOutsideIt) {
+    const auto outside = camera_among("box { <5, -1, -1>, <7, 1, 1> inverse }\n");
+    EXPECT_EQ(outside->camera_interiors().size, 1);
+    Hit hit;
+    ASSERT_TRUE(outside->intersect(make_ray({0, 0, 0}, {1, 0, 0}), hit));
+    EXPECT_NEAR(hit.t, 5.0f, 1e-5f);
+    EXPECT_EQ(hit.geometric_normal, Vec3(1, 0, 0));  // into the box: out of the inverted solid
+    EXPECT_FALSE(outside->intersect(make_ray({0, 3, 0}, {1, 0, 0}), hit));
+
+    const auto room = camera_among("box { <-4, -3, -2>, <4, 3, 6> inverse }\n");
+    EXPECT_EQ(room->camera_interiors().size, 0);
+    ASSERT_TRUE(room->intersect(make_ray({0, 0, 0}, {0, 0, 1}), hit));
+    EXPECT_NEAR(hit.t, 6.0f, 1e-5f);
+    EXPECT_EQ(hit.geometric_normal, Vec3(0, 0, -1));
+    EXPECT_TRUE(room->occluded(make_ray({0, 0, 0}, {0, -1, 0})));
+}
+
+}  // namespace
+}  // namespace lancer

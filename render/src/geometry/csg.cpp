@@ -192,8 +192,39 @@ bool CsgTree::ray_meets(const std::vector<Instance>& instances, std::uint32_t in
     return met;
 }
 
+bool CsgTree::surface_bounds(const std::vector<Instance>& instances, DVec3& lower, DVec3& upper) const {
+    bool any = false;
+    std::vector<std::uint32_t> pending{root};
+    while (!pending.empty()) {
+        const CsgNode& node = nodes[pending.back()];
+        pending.pop_back();
+        if (node.operation != CsgNode::Operation::Leaf) {
+            pending.insert(pending.end(), node.children.begin(), node.children.end());
+            continue;
+        }
+        const Instance& leaf = instances[node.instance];
+        if (!leaf.bounded) return false;
+        lower = any ? glm::min(lower, DVec3(leaf.bounds_lower)) : DVec3(leaf.bounds_lower);
+        upper = any ? glm::max(upper, DVec3(leaf.bounds_upper)) : DVec3(leaf.bounds_upper);
+        any = true;
+    }
+    return any;
+}
+
 bool CsgTree::nearest(const std::vector<Instance>& instances, const DVec3& o, const DVec3& d, double t_min,
                       double t_max, CsgCrossing& hit) const {
+    // One shape made an object by `inverse` alone (a room's walls): every
+    // crossing of its surface is kept, so the nearest is the shape's own.
+    if (const CsgNode& top = nodes[root];
+        top.operation == CsgNode::Operation::Leaf && top.clips.empty() && top.bounds.empty()) {
+        const Instance& leaf = instances[top.instance];
+        ShapeCrossing crossing;
+        if (!leaf.shape->nearest(leaf.placement.point_to_object(o), leaf.placement.vector_to_object(d), t_min, t_max,
+                                 crossing))
+            return false;
+        hit = CsgCrossing{crossing.t, top.instance, crossing.face};
+        return true;
+    }
     // One list per thread, reused: Embree calls this for every ray.
     thread_local std::vector<CsgCrossing> crossings;
     crossings.clear();

@@ -46,6 +46,12 @@ class SphereShape final : public Shape {
         out.add(t, 0);
         if (intersect_sphere(m_sphere, o, d, t, t_max, t) && t > out.items[out.count - 1].t) out.add(t, 0);
     }
+    bool nearest(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossing& hit) const override {
+        double t;
+        if (!intersect_sphere(m_sphere, o, d, t_min, t_max, t)) return false;
+        hit = ShapeCrossing{t, 0};
+        return true;
+    }
     SurfaceGeometry surface(const DVec3& p, int) const override { return sphere_surface(m_sphere, p); }
     bool inside(const DVec3& p) const override {
         const DVec3 offset = p - m_sphere.center;
@@ -70,6 +76,13 @@ class BoxShape final : public Shape {
         if (!intersect_box(m_box, o, d, t_min, t_max, t, face)) return;
         out.add(t, face);
         if (intersect_box(m_box, o, d, t, t_max, t, face)) out.add(t, face);
+    }
+    bool nearest(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossing& hit) const override {
+        double t;
+        int face;
+        if (!intersect_box(m_box, o, d, t_min, t_max, t, face)) return false;
+        hit = ShapeCrossing{t, face};
+        return true;
     }
     SurfaceGeometry surface(const DVec3& p, int face) const override { return box_surface(m_box, p, face); }
     bool inside(const DVec3& p) const override {

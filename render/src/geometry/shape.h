@@ -40,8 +40,9 @@ class Shape {
     // Every crossing of o + t d (d need not be unit) with the surface for t
     // in the open interval (t_min, t_max), in any order.
     virtual void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const = 0;
-    // The nearest crossing; false if none.
-    bool nearest(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossing& hit) const;
+    // The nearest crossing; false if none. The first of crossings() with the
+    // least t; a shape may find it without the others.
+    virtual bool nearest(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossing& hit) const;
     // Surface details at a point already on the shape, on `face`.
     virtual SurfaceGeometry surface(const DVec3& p, int face) const = 0;
     // POV-Ray's inside test (what CSG and clipped_by use): the solid the
