@@ -11,10 +11,9 @@ namespace lancer {
 namespace {
 
 bool box_holds(const Instance& instance, const DVec3& p) {
-    return !instance.bounded || !instance.bounds_hold_solid ||
-           (p.x >= double(instance.bounds_lower.x) && p.x <= double(instance.bounds_upper.x) &&
-            p.y >= double(instance.bounds_lower.y) && p.y <= double(instance.bounds_upper.y) &&
-            p.z >= double(instance.bounds_lower.z) && p.z <= double(instance.bounds_upper.z));
+    return !instance.bounded || (p.x >= double(instance.bounds_lower.x) && p.x <= double(instance.bounds_upper.x) &&
+                                 p.y >= double(instance.bounds_lower.y) && p.y <= double(instance.bounds_upper.y) &&
+                                 p.z >= double(instance.bounds_lower.z) && p.z <= double(instance.bounds_upper.z));
 }
 
 bool shape_holds(const Shape& shape, const Instance& instance, const DVec3& p) {
@@ -71,7 +70,7 @@ const Instance* container_at(const SceneData& data, const Instance& instance, co
 }
 
 double box_volume(const Instance& instance) {
-    if (!instance.bounded || !instance.bounds_hold_solid) return std::numeric_limits<double>::infinity();
+    if (!instance.bounded) return std::numeric_limits<double>::infinity();
     const glm::dvec3 size = glm::dvec3(instance.bounds_upper) - glm::dvec3(instance.bounds_lower);
     return size.x * size.y * size.z;
 }

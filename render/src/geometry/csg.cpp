@@ -192,25 +192,6 @@ bool CsgTree::ray_meets(const std::vector<Instance>& instances, std::uint32_t in
     return met;
 }
 
-bool CsgTree::surface_bounds(const std::vector<Instance>& instances, DVec3& lower, DVec3& upper) const {
-    bool any = false;
-    std::vector<std::uint32_t> pending{root};
-    while (!pending.empty()) {
-        const CsgNode& node = nodes[pending.back()];
-        pending.pop_back();
-        if (node.operation != CsgNode::Operation::Leaf) {
-            pending.insert(pending.end(), node.children.begin(), node.children.end());
-            continue;
-        }
-        const Instance& leaf = instances[node.instance];
-        if (!leaf.bounded) return false;
-        lower = any ? glm::min(lower, DVec3(leaf.bounds_lower)) : DVec3(leaf.bounds_lower);
-        upper = any ? glm::max(upper, DVec3(leaf.bounds_upper)) : DVec3(leaf.bounds_upper);
-        any = true;
-    }
-    return any;
-}
-
 bool CsgTree::nearest(const std::vector<Instance>& instances, const DVec3& o, const DVec3& d, double t_min,
                       double t_max, CsgCrossing& hit) const {
     // One shape made an object by `inverse` alone (a room's walls): every

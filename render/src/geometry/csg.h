@@ -69,12 +69,6 @@ class CsgTree {
                  CsgCrossing& hit) const;
     // POV's Inside_Object for node `node` at world point p.
     bool inside(const std::vector<Instance>& instances, std::uint32_t node, const DVec3& p) const;
-    // A world box holding every crossing nearest() can report: the union of
-    // the boxes of the tree's own leaves (clips and bounds only take
-    // crossings away), finite even where the solid is not (an inverted
-    // leaf fills all space outside its surface). False if a leaf is
-    // unbounded.
-    bool surface_bounds(const std::vector<Instance>& instances, DVec3& lower, DVec3& upper) const;
 
   private:
     void gather(const std::vector<Instance>& instances, std::uint32_t node, const DVec3& o, const DVec3& d,

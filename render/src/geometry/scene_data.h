@@ -68,11 +68,6 @@ struct Instance {
     // meshes have one): uv_mapping then reads the hit's world x and y.
     bool uv_from_world = false;
     bool bounded = true;  // false for planes and unbounded shapes and trees
-    // Whether the box holds the solid as well as the surface: not for a CSG
-    // object whose solid reaches past its surface's box (an inverted box,
-    // the room a scene is lit inside), which is traced in the BVH by that
-    // box but is inside everywhere outside it.
-    bool bounds_hold_solid = true;
     const MeshData* mesh = nullptr;
     bool mesh_in_world = false;  // world_positions used instead of instancing
     std::vector<float> world_positions;

@@ -49,7 +49,7 @@ class ParseTimeGeometry final : public sg::GeometryQueries {
     bool bounds(const std::shared_ptr<const sg::Object>& object, glm::dvec3& lower, glm::dvec3& upper) const override {
         const Built& b = built(object);
         for (const Instance& instance : b.data->instances)
-            if (!instance.csg_leaf && (!instance.bounded || !instance.bounds_hold_solid)) return false;
+            if (!instance.csg_leaf && !instance.bounded) return false;
         if (b.data->bounds.empty()) return false;
         lower = glm::dvec3(b.data->bounds.lower);
         upper = glm::dvec3(b.data->bounds.upper);

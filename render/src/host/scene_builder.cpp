@@ -990,13 +990,6 @@ class Builder {
         if (root.bounded) {
             instance.bounds_lower = Vec3(root.lower);
             instance.bounds_upper = Vec3(root.upper);
-        } else if (DVec3 lower, upper; tree->surface_bounds(m_data->instances, lower, upper)) {
-            // An unbounded solid with a bounded surface (an inverted box):
-            // in the BVH by its surface's box, not tested on every ray.
-            instance.bounded = true;
-            instance.bounds_hold_solid = false;
-            instance.bounds_lower = Vec3(lower);
-            instance.bounds_upper = Vec3(upper);
         }
         m_data->csg_trees.push_back(std::move(tree));
         push_instance(std::move(instance), DMat4(1.0));
@@ -1236,7 +1229,7 @@ class Builder {
 
     void compute_bounds() {
         for (const Instance& instance : m_data->instances)
-            if (instance.bounded && instance.bounds_hold_solid && !instance.csg_leaf)
+            if (instance.bounded && !instance.csg_leaf)
                 expand(m_data->bounds, instance.bounds_lower, instance.bounds_upper);
     }
 
