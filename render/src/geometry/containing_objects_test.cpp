@@ -208,10 +208,9 @@ TEST(CameraInteriors, NoneWithoutMediaFogOrRainbow) {
 namespace lancer {
 namespace {
 
-// An inverted box is traced by its surface's box, like any bounded
-// object, but its solid is all space outside it: a camera outside holds
-// it, one inside (a room) does not, and rays from inside meet its walls
-// with the normal facing the room.
+// An inverted box is traced as its one box (csg.cpp), but its solid is all
+// space outside it: a camera outside holds it, one inside (a room) does
+// not, and rays from inside meet its walls with the normal facing the room.
 TEST(CameraInteriors, AnInvertedBoxHoldsWhatLiesOutsideIt) {
     const auto outside = camera_among("box { <5, -1, -1>, <7, 1, 1> inverse }\n");
     EXPECT_EQ(outside->camera_interiors().size, 1);

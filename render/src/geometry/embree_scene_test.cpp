@@ -81,10 +81,11 @@ TEST(EmbreeScene, PlaneHitUvIsItsWorldXyAsInPovRay) {
     EXPECT_TRUE(scene->bounds().empty());  // planes are not finite geometry
 }
 
-// Planes in world coordinates are tested from their normal and distance,
-// others through their placement (geometry/unbounded_shapes.h): both are
-// found, the nearer wins, the first listed wins a tie, and only those that
-// cast shadows occlude.
+// Planes are tested from their world normal and distance, computed once
+// for a placed one (geometry/unbounded_shapes.h): written in the world,
+// moved, turned, scaled or mirrored they are found where they are, the
+// nearer wins, the first listed wins a tie, and only those that cast
+// shadows occlude.
 TEST(EmbreeScene, PlanesInTheWorldOrPlacedAreFoundAlike) {
     sg::Object floor = plane_object({0, 1, 0}, 0.0, solid_material({1, 0, 0}));
     sg::Object placed = plane_object({0, 1, 0}, 0.0, solid_material({0, 1, 0}));
@@ -122,6 +123,15 @@ TEST(EmbreeScene, PlanesInTheWorldOrPlacedAreFoundAlike) {
                 1.0f, 1e-6f);
     EXPECT_TRUE(tilted_scene->occluded(make_ray(Vec3(0, 5, 1), Vec3(0, -1, 0))));
     EXPECT_FALSE(tilted_scene->intersect(make_ray(Vec3(0, 5, 1), Vec3(0, 1, 0)), hit));
+
+    // Mirrored (a negative scale along its normal) and moved: the plane y = -1.
+    sg::Object mirrored = plane_object({0, 1, 0}, 0.5, solid_material({1, 0, 1}));
+    mirrored.parent_from_object =
+        glm::translate(glm::dmat4(1.0), glm::dvec3(0, 1, 0)) * glm::scale(glm::dmat4(1.0), glm::dvec3(1, -4, 1));
+    auto mirrored_scene = compile_objects({mirrored});
+    ASSERT_TRUE(mirrored_scene->intersect(make_ray(Vec3(2, 5, 3), Vec3(0, -1, 0)), hit));
+    EXPECT_NEAR(hit.t, 6.0f, 1e-5f);
+    EXPECT_TRUE(mirrored_scene->occluded(make_ray(Vec3(2, -3, 3), Vec3(0, 1, 0))));
 
     // The same plane twice, once placed by a turn that leaves it in place.
     sg::Object turned = plane_object({0, 1, 0}, 0.0, solid_material({0, 0, 1}));

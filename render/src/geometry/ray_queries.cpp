@@ -289,8 +289,8 @@ bool EmbreeScene::may_block_towards(const Vec3& origin, const Vec3& corner, cons
         const DVec3 z = instance.placement.vector_to_object(DVec3(0.0, 0.0, 1.0));
         const double corner_margin = margin * std::sqrt(glm::dot(x, x) + glm::dot(y, y) + glm::dot(z, z));
         // The apex may lie on the plane (a hit on the plane itself): its
-        // rays cross it at t = 0, which the plane's own test rejects, as
-        // it computes this same side[0].
+        // rays cross it at t = 0, which the plane's own test rejects (the
+        // apex is a ray origin, already offset off the surface).
         const double sign = side[1] > 0.0 ? 1.0 : -1.0;
         if (sign * side[0] < 0.0) return true;
         for (int i = 1; i < 5; ++i)
