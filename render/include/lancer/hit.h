@@ -16,8 +16,11 @@ struct Hit {
     Vec3 position{0.0f};          // world space
     Vec3 geometric_normal{0.0f};  // unit, the surface's own orientation (not flipped)
     Vec3 shading_normal{0.0f};    // unit, interpolated (smooth meshes), same side as geometric
-    Vec2 uv{0.0f};                // surface coordinates, see docs/scene-language.md per shape
-    Vec3 ray_direction{0.0f};     // of the ray that found it (POV's aoi pattern); 0 when unknown
+    // Surface coordinates (docs/scene-language.md per shape). A scene whose
+    // textures read none (no uv_mapping, no image mapped by (u, v)) leaves
+    // them zero on spheres and boxes: it does not pay for them.
+    Vec2 uv{0.0f};
+    Vec3 ray_direction{0.0f};  // of the ray that found it (POV's aoi pattern); 0 when unknown
     // Conservative bound on the absolute floating-point error of `position`
     // per axis; spawn_ray offsets by it so new rays never re-hit this surface.
     Vec3 position_error{0.0f};

@@ -79,7 +79,7 @@ Vec2 box_uv(const AnalyticBox& b, int face, const DVec3& point) {
 
 }  // namespace
 
-SurfaceGeometry box_surface(const AnalyticBox& b, const DVec3& p, int face) {
+SurfaceGeometry box_surface(const AnalyticBox& b, const DVec3& p, int face, bool with_uv) {
     SurfaceGeometry g;
     const int axis = face / 2;
     const bool upper = face % 2 == 1;
@@ -87,7 +87,7 @@ SurfaceGeometry box_surface(const AnalyticBox& b, const DVec3& p, int face) {
     g.point[axis] = upper ? b.upper[axis] : b.lower[axis];
     g.normal = DVec3(0.0);
     g.normal[axis] = upper ? 1.0 : -1.0;
-    g.uv = box_uv(b, face, g.point);
+    g.uv = with_uv ? box_uv(b, face, g.point) : Vec2(0.0f);
     return g;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "lancer/host/scene_compiler.h"
+#include "lancer/parser.h"
 #include "lancer/render_scene.h"
 #include "lancer/scene_error.h"
 #include "scene_test_helpers.h"
@@ -22,8 +23,16 @@ std::unique_ptr<RenderScene> compile_objects(std::vector<sg::Object> objects) {
     return compile_scene(graph);
 }
 
+// A scene read from text (a hit carries its (u, v) only when a texture
+// reads it).
+std::unique_ptr<RenderScene> compile_text(const std::string& objects) {
+    ParseResult parsed = parse_scene_string("#version 3.7;\n" + objects, "<embree>");
+    if (!parsed.ok()) throw std::runtime_error(format_diagnostic(parsed.diagnostics.front()));
+    return compile_scene(*parsed.scene);
+}
+
 TEST(EmbreeScene, SphereHitNormalAndUv) {
-    auto scene = compile_objects({sphere_object({0, 0, 5}, 1.0)});
+    auto scene = compile_text("sphere { <0, 0, 5>, 1 pigment { uv_mapping checker } }");
     Hit hit;
     ASSERT_TRUE(scene->intersect(make_ray(Vec3(0), Vec3(0, 0, 1)), hit));
     EXPECT_NEAR(hit.t, 4.0f, 1e-5f);
@@ -35,8 +44,6 @@ TEST(EmbreeScene, SphereHitNormalAndUv) {
     EXPECT_NEAR(hit.uv.x, 0.75f, 1e-6f);
     ASSERT_NE(hit.material, nullptr);
     EXPECT_EQ(hit.emitter, nullptr);
-    // Default material: black pigment.
-    EXPECT_EQ(hit.material->sample_surface(hit).pigment, Color(0.0f));
     // North pole.
     ASSERT_TRUE(scene->intersect(make_ray(Vec3(0, 5, 5), Vec3(0, -1, 0)), hit));
     EXPECT_NEAR(hit.uv.y, 1.0f, 1e-6f);
@@ -53,7 +60,7 @@ TEST(EmbreeScene, RayFromInsideSphereHitsFarSide) {
 }
 
 TEST(EmbreeScene, BoxFacesNormalsAndUv) {
-    auto scene = compile_objects({box_object({-1, -2, -3}, {1, 2, 3})});
+    auto scene = compile_text("box { <-1, -2, -3>, <1, 2, 3> normal { uv_mapping bumps } }");
     Hit hit;
     ASSERT_TRUE(scene->intersect(make_ray(Vec3(-10, 1, 1.5f), Vec3(1, 0, 0)), hit));
     EXPECT_NEAR(hit.t, 9.0f, 1e-5f);
@@ -66,6 +73,33 @@ TEST(EmbreeScene, BoxFacesNormalsAndUv) {
     EXPECT_EQ(hit.geometric_normal, Vec3(0, 1, 0));
     EXPECT_NEAR(hit.uv.x, 0.25f + 0.75f / 4.0f, 1e-6f);
     EXPECT_NEAR(hit.uv.y, 1.0f - 0.25f / 3.0f, 1e-6f);
+}
+
+// A scene pays for (u, v) only where a texture reads it: without one, a
+// sphere's and a box's hits leave it zero (no arc tangents, no divisions);
+// one reader anywhere (a pigment, a normal, a texture_map) gives every hit
+// its (u, v).
+TEST(EmbreeScene, HitsCarryUvWhereATextureReadsIt) {
+    const Ray to_sphere = make_ray(Vec3(0), Vec3(0, 0, 1));
+    const Ray to_box = make_ray(Vec3(-10, 1, 11.5f), Vec3(1, 0, 0));
+    const std::string shapes = "sphere { <0, 0, 5>, 1 }\nbox { <-1, -2, 7>, <1, 2, 13> }\n";
+    Hit hit;
+    auto plain = compile_text(shapes);
+    ASSERT_TRUE(plain->intersect(to_sphere, hit));
+    EXPECT_EQ(hit.uv, Vec2(0.0f));
+    ASSERT_TRUE(plain->intersect(to_box, hit));
+    EXPECT_EQ(hit.uv, Vec2(0.0f));
+    for (const char* reader :
+         {"plane { y, -5 pigment { uv_mapping checker } }", "plane { y, -5 normal { uv_mapping bumps } }",
+          "plane { y, -5 texture { uv_mapping checker texture { pigment { rgb 1 } } "
+          "texture { pigment { rgb 0 } } } }"}) {
+        auto reading = compile_text(shapes + reader);
+        ASSERT_TRUE(reading->intersect(to_sphere, hit)) << reader;
+        EXPECT_NEAR(hit.uv.x, 0.75f, 1e-6f) << reader;
+        EXPECT_NEAR(hit.uv.y, 0.5f, 1e-6f) << reader;
+        ASSERT_TRUE(reading->intersect(to_box, hit)) << reader;
+        EXPECT_NEAR(hit.uv.x, (1.5f + 3.0f) / 6.0f / 4.0f, 1e-6f) << reader;
+    }
 }
 
 // POV-Ray defines no (u, v) for a plane: uv_mapping reads the hit's world

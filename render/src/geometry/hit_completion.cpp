@@ -142,8 +142,8 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
     const DVec3 p = o + double(t) * d;
     SurfaceGeometry g;
     switch (instance.kind) {
-    case ShapeKind::Sphere: g = sphere_surface(instance.sphere, p); break;
-    case ShapeKind::Box: g = box_surface(instance.box, p, face); break;
+    case ShapeKind::Sphere: g = sphere_surface(instance.sphere, p, m_data->reads_surface_uv); break;
+    case ShapeKind::Box: g = box_surface(instance.box, p, face, m_data->reads_surface_uv); break;
     case ShapeKind::Plane: g = plane_surface(instance.plane, p); break;
     case ShapeKind::Analytic: g = instance.shape->surface(p, face); break;
     default: g = rectangle_surface(instance.rectangle, p); break;

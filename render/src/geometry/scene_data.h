@@ -101,6 +101,10 @@ struct SceneData {
     std::vector<std::unique_ptr<Texture>> textures;
     std::vector<std::unique_ptr<NormalPerturbation>> normals;  // a scene without normal { } pays nothing
     bool has_normal_perturbation = false;
+    // Whether a texture reads the hits' (u, v) (TextureFactory::
+    // reads_surface_uv): without, spheres and boxes leave Hit::uv zero
+    // rather than pay for it (two arc tangents a sphere hit).
+    bool reads_surface_uv = true;
     bool has_hidden_objects = false;  // some instance has no_image or no_reflection
     // texture_maps lit entry by entry (materials/material_entries.h).
     std::vector<std::unique_ptr<MaterialEntries>> material_entries;

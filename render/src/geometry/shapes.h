@@ -96,8 +96,9 @@ struct SurfaceGeometry {
     // facet's, which the hit point's error box is measured across.
     DVec3 shading_normal{0.0};
 };
-SurfaceGeometry sphere_surface(const AnalyticSphere& s, const DVec3& p);
-SurfaceGeometry box_surface(const AnalyticBox& b, const DVec3& p, int face);
+// Without `with_uv` the (u, v) is left zero (the scene reads none).
+SurfaceGeometry sphere_surface(const AnalyticSphere& s, const DVec3& p, bool with_uv = true);
+SurfaceGeometry box_surface(const AnalyticBox& b, const DVec3& p, int face, bool with_uv = true);
 SurfaceGeometry plane_surface(const AnalyticPlane& plane, const DVec3& p);
 SurfaceGeometry rectangle_surface(const AnalyticRectangle& r, const DVec3& p);
 

@@ -46,12 +46,16 @@ bool intersect_sphere(const AnalyticSphere& s, const DVec3& o, const DVec3& d, d
     return false;
 }
 
-SurfaceGeometry sphere_surface(const AnalyticSphere& s, const DVec3& p) {
+SurfaceGeometry sphere_surface(const AnalyticSphere& s, const DVec3& p, bool with_uv) {
     SurfaceGeometry g;
     DVec3 offset = p - s.center;
     const double length = glm::length(offset);
     g.normal = length > 0.0 ? offset / length : DVec3(0.0, 1.0, 0.0);
     g.point = s.center + s.radius * g.normal;
+    if (!with_uv) {
+        g.uv = Vec2(0.0f);
+        return g;
+    }
     // POV's spherical map: u from +x towards +z, v from the south pole.
     const double horizontal = std::sqrt(g.normal.x * g.normal.x + g.normal.z * g.normal.z);
     double u = horizontal > 0.0 ? std::atan2(g.normal.z, g.normal.x) / (2.0 * kPiD) : 0.0;

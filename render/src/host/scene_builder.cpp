@@ -203,6 +203,7 @@ class Builder {
         take_mesh_hit_data();
         build_atmosphere();
         if (inside_of_first && !m_graph.objects.empty()) *inside_of_first = inside_test(m_graph.objects.front());
+        m_data->reads_surface_uv = m_data->texture_factory->reads_surface_uv();
         // The maker refers to this builder, which ends here.
         m_data->texture_factory->set_inside_tests(nullptr);
         return std::move(m_data);

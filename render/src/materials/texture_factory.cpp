@@ -36,6 +36,7 @@ std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
             return make_checker_texture(to_sample(pigment.block_pigments[0]->color),
                                         to_sample(pigment.block_pigments[1]->color),
                                         pigment.pattern->pattern_from_object, m_spaces);
+        m_reads_surface_uv = m_reads_surface_uv || lancer::reads_surface_uv(pigment);
         try {
             return make_pattern_texture(pigment, m_spaces, build());
         } catch (const SceneError&) {
@@ -49,6 +50,7 @@ std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
 }
 
 std::unique_ptr<NormalPerturbation> TextureFactory::make_normal(const sg::Normal& normal) {
+    m_reads_surface_uv = m_reads_surface_uv || (normal.pattern && normal.pattern->uv_mapping);
     return make_surface_normal(normal, m_spaces, build());
 }
 
@@ -56,6 +58,7 @@ std::unique_ptr<MaterialEntries> TextureFactory::make_material_entries(const sg:
                                                                        std::vector<float> values,
                                                                        std::vector<const Material*> materials) {
     const auto how = MaterialEntries::Pick(pick);
+    m_reads_surface_uv = m_reads_surface_uv || pattern.uv_mapping;
     CompiledPattern compiled = how == MaterialEntries::Pick::Blocks ? compile_block_pattern(pattern, build())
                                                                     : compile_pattern(pattern, build());
     return std::make_unique<MaterialEntries>(std::move(compiled), how, std::move(values), std::move(materials),

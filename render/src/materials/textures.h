@@ -72,9 +72,13 @@ class TextureFactory {
     // What `function` and its callees ask of the renderer (noise, patterns,
     // pigments), for a shape that evaluates it (the isosurface).
     std::shared_ptr<const sg::FunctionNatives> function_natives(const sg::Function& function);
+    // Whether something made so far reads a hit's (u,v) (uv_mapping, an
+    // image mapped by (u,v)): without, the scene's hits need none.
+    bool reads_surface_uv() const { return m_reads_surface_uv; }
 
   private:
     const TextureSpaces& m_spaces;
+    bool m_reads_surface_uv = false;
     std::shared_ptr<ImageCache> m_images;
     NoiseGenerator m_noise_generator = NoiseGenerator::RangeCorrected;
     InsideTestMaker m_inside_tests;
@@ -83,6 +87,10 @@ class TextureFactory {
         return MaterialBuild(m_noise_generator, &m_images, m_inside_tests ? &m_inside_tests : nullptr);
     }
 };
+
+// Whether a top-level pigment is read at the hit's (u, v) (uv_mapping, or
+// an image mapped by (u, v)) rather than at its point.
+bool reads_surface_uv(const sg::Pigment& pigment);
 
 // One constructor per pattern family, each in a file of its own; the
 // factory picks one by the pigment's kind. A new pattern adds a file and a
