@@ -9,7 +9,9 @@
 #
 # FOLDER holds the three scenes (default bench/anchors; bench/anchors/variants
 # has a second set written apart from the first, with patterns, highlights,
-# two lights and deeper mirrors).
+# two lights and deeper mirrors), or names its own in a file `scenes`, one
+# scene:integrator a line (bench/anchors/probes: six scenes of other kinds,
+# written after the first two sets were measured).
 #
 # POV-Ray runs with +WT<cores> (as many threads as lancer) and -D (no
 # display). A 1x1 render of each scene with lancer gives the memory that
@@ -30,7 +32,9 @@ echo "${width}x$height, $runs runs each, medians; POV-Ray with +WT$cores"
 printf '\n| scene | integrator | lancer wall s | CPU s | peak MB | bytes/pixel above 1x1 | POV-Ray wall s | CPU s | peak MB | wall ratio | CPU ratio | memory ratio |\n'
 printf '|---|---|---|---|---|---|---|---|---|---|---|---|\n'
 cd "$work"
-for anchor in three_spheres:shadow mirrors:whitted area_lit:shadow; do
+scenes="three_spheres:shadow mirrors:whitted area_lit:shadow"
+[ -f "$anchors/scenes" ] && scenes=$(grep -v '^#' "$anchors/scenes")
+for anchor in $scenes; do
   scene=${anchor%%:*}
   integrator=${anchor#*:}
   cp "$anchors/$scene.pov" .
