@@ -17,8 +17,9 @@ struct Hit {
     Vec3 geometric_normal{0.0f};  // unit, the surface's own orientation (not flipped)
     Vec3 shading_normal{0.0f};    // unit, interpolated (smooth meshes), same side as geometric
     // Surface coordinates (docs/scene-language.md per shape). A scene whose
-    // textures read none (no uv_mapping, no image mapped by (u, v)) leaves
-    // them zero on spheres and boxes: it does not pay for them.
+    // textures read none (no uv_mapping, no image mapped by (u, v)) does not
+    // pay for them: spheres, boxes, planes and the other analytic shapes
+    // leave them zero (meshes keep theirs).
     Vec2 uv{0.0f};
     Vec3 ray_direction{0.0f};  // of the ray that found it (POV's aoi pattern); 0 when unknown
     // Conservative bound on the absolute floating-point error of `position`

@@ -80,7 +80,10 @@ class ConeShape final : public Shape {
         }
     }
 
-    SurfaceGeometry surface(const DVec3& p, int face) const override {
+    SurfaceGeometry surface(const DVec3& p, int face) const override { return surface_at(p, face, true); }
+    SurfaceGeometry surface_without_uv(const DVec3& p, int face) const override { return surface_at(p, face, false); }
+
+    SurfaceGeometry surface_at(const DVec3& p, int face, bool with_uv) const {
         SurfaceGeometry g;
         const DVec3 from_base = p - m_base;
         double h = glm::dot(from_base, m_axis);
@@ -99,6 +102,8 @@ class ConeShape final : public Shape {
             g.normal = face == kBaseDisc ? -m_axis : m_axis;
             h = target;
         }
+        g.uv = Vec2(0.0f);
+        if (!with_uv) return g;
         double u = std::atan2(glm::dot(out, m_across2), glm::dot(out, m_across1)) / (2.0 * kPiD);
         if (u < 0.0) u += 1.0;
         g.uv = Vec2(float(u), float(h / m_length));

@@ -76,19 +76,23 @@ TEST(EmbreeScene, BoxFacesNormalsAndUv) {
 }
 
 // A scene pays for (u, v) only where a texture reads it: without one, a
-// sphere's and a box's hits leave it zero (no arc tangents, no divisions);
+// sphere's, a box's and a cylinder's hits leave it zero (no arc tangents,
+// no divisions, and a cylinder's own (u, v), which POV-Ray replaces by the
+// world's x and y, is never computed);
 // one reader anywhere (a pigment, a normal, a texture_map) gives every hit
 // its (u, v).
 TEST(EmbreeScene, HitsCarryUvWhereATextureReadsIt) {
     const Ray to_sphere = make_ray(Vec3(0), Vec3(0, 0, 1));
     const Ray to_box = make_ray(Vec3(-10, 1, 11.5f), Vec3(1, 0, 0));
-    const std::string shapes = "sphere { <0, 0, 5>, 1 }\nbox { <-1, -2, 7>, <1, 2, 13> }\n";
+    const Ray to_cylinder = make_ray(Vec3(5, 0.5f, -10), Vec3(0, 0, 1));
+    const std::string shapes =
+        "sphere { <0, 0, 5>, 1 }\nbox { <-1, -2, 7>, <1, 2, 13> }\ncylinder { <5, -1, 0>, <5, 1, 0>, 1 }\n";
     Hit hit;
     auto plain = compile_text(shapes);
-    ASSERT_TRUE(plain->intersect(to_sphere, hit));
-    EXPECT_EQ(hit.uv, Vec2(0.0f));
-    ASSERT_TRUE(plain->intersect(to_box, hit));
-    EXPECT_EQ(hit.uv, Vec2(0.0f));
+    for (const Ray& ray : {to_sphere, to_box, to_cylinder}) {
+        ASSERT_TRUE(plain->intersect(ray, hit));
+        EXPECT_EQ(hit.uv, Vec2(0.0f));
+    }
     for (const char* reader :
          {"plane { y, -5 pigment { uv_mapping checker } }", "plane { y, -5 normal { uv_mapping bumps } }",
           "plane { y, -5 texture { uv_mapping checker texture { pigment { rgb 1 } } "
@@ -99,13 +103,15 @@ TEST(EmbreeScene, HitsCarryUvWhereATextureReadsIt) {
         EXPECT_NEAR(hit.uv.y, 0.5f, 1e-6f) << reader;
         ASSERT_TRUE(reading->intersect(to_box, hit)) << reader;
         EXPECT_NEAR(hit.uv.x, (1.5f + 3.0f) / 6.0f / 4.0f, 1e-6f) << reader;
+        ASSERT_TRUE(reading->intersect(to_cylinder, hit)) << reader;
+        EXPECT_EQ(hit.uv, Vec2(5.0f, 0.5f)) << reader;  // POV-Ray's: a cylinder's (u, v) is the world's x, y
     }
 }
 
 // POV-Ray defines no (u, v) for a plane: uv_mapping reads the hit's world
 // x and y (ObjectBase::UVCoord).
 TEST(EmbreeScene, PlaneHitUvIsItsWorldXyAsInPovRay) {
-    auto scene = compile_objects({plane_object({0, 2, 0}, -1.0)});  // normal normalised: y = -1
+    auto scene = compile_text("plane { y, -1 pigment { uv_mapping checker } }");
     Hit hit;
     ASSERT_TRUE(scene->intersect(make_ray(Vec3(3, 5, 7), Vec3(0, -1, 0)), hit));
     EXPECT_NEAR(hit.t, 6.0f, 1e-5f);

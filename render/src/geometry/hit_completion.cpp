@@ -141,11 +141,17 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
     ray_to_object(instance, org, dir, o, d);
     const DVec3 p = o + double(t) * d;
     SurfaceGeometry g;
+    const bool wants_uv = m_data->reads_surface_uv;
     switch (instance.kind) {
-    case ShapeKind::Sphere: g = sphere_surface(instance.sphere, p, m_data->reads_surface_uv); break;
-    case ShapeKind::Box: g = box_surface(instance.box, p, face, m_data->reads_surface_uv); break;
+    case ShapeKind::Sphere: g = sphere_surface(instance.sphere, p, wants_uv); break;
+    case ShapeKind::Box: g = box_surface(instance.box, p, face, wants_uv); break;
     case ShapeKind::Plane: g = plane_surface(instance.plane, p); break;
-    case ShapeKind::Analytic: g = instance.shape->surface(p, face); break;
+    case ShapeKind::Analytic:
+        // A shape whose (u, v) POV-Ray leaves undefined reads the world's x
+        // and y instead (below): its own would be computed for nothing.
+        g = wants_uv && !instance.uv_from_world ? instance.shape->surface(p, face)
+                                                : instance.shape->surface_without_uv(p, face);
+        break;
     default: g = rectangle_surface(instance.rectangle, p); break;
     }
     if (instance.flip_normal) {
@@ -171,7 +177,7 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
     } else {
         hit.shading_normal = hit.geometric_normal;
     }
-    hit.uv = instance.uv_from_world ? Vec2(float(world.x), float(world.y)) : g.uv;
+    hit.uv = !wants_uv ? Vec2(0.0f) : instance.uv_from_world ? Vec2(float(world.x), float(world.y)) : g.uv;
     // A mesh in CSG keeps its per-triangle textures.
     const std::size_t face_index = std::size_t(face);
     hit.material = face >= 0 && face_index < instance.face_materials.size() && instance.face_materials[face_index]

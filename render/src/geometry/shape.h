@@ -45,6 +45,14 @@ class Shape {
     virtual bool nearest(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossing& hit) const;
     // Surface details at a point already on the shape, on `face`.
     virtual SurfaceGeometry surface(const DVec3& p, int face) const = 0;
+    // surface() with the (u, v) left zero, for a scene whose textures read
+    // none (SceneData::reads_surface_uv): a shape whose (u, v) costs an arc
+    // tangent skips it.
+    virtual SurfaceGeometry surface_without_uv(const DVec3& p, int face) const {
+        SurfaceGeometry g = surface(p, face);
+        g.uv = Vec2(0.0f);
+        return g;
+    }
     // POV-Ray's inside test (what CSG and clipped_by use): the solid the
     // surface bounds; for a flat or infinite shape POV's half-space.
     virtual bool inside(const DVec3& p) const = 0;

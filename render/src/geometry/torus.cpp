@@ -80,7 +80,10 @@ class TorusShape final : public Shape {
         }
     }
 
-    SurfaceGeometry surface(const DVec3& p, int) const override {
+    SurfaceGeometry surface(const DVec3& p, int) const override { return surface_at(p, true); }
+    SurfaceGeometry surface_without_uv(const DVec3& p, int) const override { return surface_at(p, false); }
+
+    SurfaceGeometry surface_at(const DVec3& p, bool with_uv) const {
         SurfaceGeometry g;
         const double ring = std::sqrt(p.x * p.x + p.z * p.z);
         const DVec3 towards = ring > 0.0 ? DVec3(p.x / ring, 0.0, p.z / ring) : DVec3(1.0, 0.0, 0.0);
@@ -89,6 +92,8 @@ class TorusShape final : public Shape {
         const double distance = glm::length(offset);
         g.normal = distance > 0.0 ? offset / distance : DVec3(0.0, 1.0, 0.0);
         g.point = tube_centre + m_minor * g.normal;
+        g.uv = Vec2(0.0f);
+        if (!with_uv) return g;
         const double u = 1.0 - (std::atan2(g.point.z, g.point.x) + kPiD) / (2.0 * kPiD);
         const double v = (std::atan2(g.point.y, ring - m_major) + kPiD) / (2.0 * kPiD);
         g.uv = Vec2(float(u), float(v));
