@@ -19,7 +19,7 @@ struct Hit {
     // Surface coordinates (docs/scene-language.md per shape). A scene whose
     // textures read none (no uv_mapping, no image mapped by (u, v)) does not
     // pay for them: spheres, boxes, planes and the other analytic shapes
-    // leave them zero (meshes keep theirs).
+    // leave them zero (a mesh may keep its own, which costs nothing).
     Vec2 uv{0.0f};
     Vec3 ray_direction{0.0f};  // of the ray that found it (POV's aoi pattern); 0 when unknown
     // Conservative bound on the absolute floating-point error of `position`

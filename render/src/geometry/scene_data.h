@@ -102,8 +102,8 @@ struct SceneData {
     std::vector<std::unique_ptr<NormalPerturbation>> normals;  // a scene without normal { } pays nothing
     bool has_normal_perturbation = false;
     // Whether a texture reads the hits' (u, v) (TextureFactory::
-    // reads_surface_uv): without, every shape but meshes leaves Hit::uv
-    // zero rather than pay for it (two arc tangents a sphere hit).
+    // reads_surface_uv): without, analytic shapes leave Hit::uv zero
+    // rather than pay for it (two arc tangents a sphere hit).
     bool reads_surface_uv = true;
     bool has_hidden_objects = false;  // some instance has no_image or no_reflection
     // texture_maps lit entry by entry (materials/material_entries.h).
