@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "lancer/host/scene_compiler.h"
-#include "lancer/parser.h"
 #include "lancer/render_scene.h"
 #include "lancer/scene_error.h"
+#include "pov_text_scene.h"
 #include "scene_test_helpers.h"
 
 namespace lancer {
@@ -23,16 +23,8 @@ std::unique_ptr<RenderScene> compile_objects(std::vector<sg::Object> objects) {
     return compile_scene(graph);
 }
 
-// A scene read from text (a hit carries its (u, v) only when a texture
-// reads it).
-std::unique_ptr<RenderScene> compile_text(const std::string& objects) {
-    ParseResult parsed = parse_scene_string("#version 3.7;\n" + objects, "<embree>");
-    if (!parsed.ok()) throw std::runtime_error(format_diagnostic(parsed.diagnostics.front()));
-    return compile_scene(*parsed.scene);
-}
-
 TEST(EmbreeScene, SphereHitNormalAndUv) {
-    auto scene = compile_text("sphere { <0, 0, 5>, 1 pigment { uv_mapping checker } }");
+    auto scene = compile_pov_text("sphere { <0, 0, 5>, 1 pigment { uv_mapping checker } }");
     Hit hit;
     ASSERT_TRUE(scene->intersect(make_ray(Vec3(0), Vec3(0, 0, 1)), hit));
     EXPECT_NEAR(hit.t, 4.0f, 1e-5f);
@@ -60,7 +52,7 @@ TEST(EmbreeScene, RayFromInsideSphereHitsFarSide) {
 }
 
 TEST(EmbreeScene, BoxFacesNormalsAndUv) {
-    auto scene = compile_text("box { <-1, -2, -3>, <1, 2, 3> normal { uv_mapping bumps } }");
+    auto scene = compile_pov_text("box { <-1, -2, -3>, <1, 2, 3> normal { uv_mapping bumps } }");
     Hit hit;
     ASSERT_TRUE(scene->intersect(make_ray(Vec3(-10, 1, 1.5f), Vec3(1, 0, 0)), hit));
     EXPECT_NEAR(hit.t, 9.0f, 1e-5f);
@@ -88,7 +80,7 @@ TEST(EmbreeScene, HitsCarryUvWhereATextureReadsIt) {
     const std::string shapes =
         "sphere { <0, 0, 5>, 1 }\nbox { <-1, -2, 7>, <1, 2, 13> }\ncylinder { <5, -1, 0>, <5, 1, 0>, 1 }\n";
     Hit hit;
-    auto plain = compile_text(shapes);
+    auto plain = compile_pov_text(shapes);
     for (const Ray& ray : {to_sphere, to_box, to_cylinder}) {
         ASSERT_TRUE(plain->intersect(ray, hit));
         EXPECT_EQ(hit.uv, Vec2(0.0f));
@@ -97,7 +89,7 @@ TEST(EmbreeScene, HitsCarryUvWhereATextureReadsIt) {
          {"plane { y, -5 pigment { uv_mapping checker } }", "plane { y, -5 normal { uv_mapping bumps } }",
           "plane { y, -5 texture { uv_mapping checker texture { pigment { rgb 1 } } "
           "texture { pigment { rgb 0 } } } }"}) {
-        auto reading = compile_text(shapes + reader);
+        auto reading = compile_pov_text(shapes + reader);
         ASSERT_TRUE(reading->intersect(to_sphere, hit)) << reader;
         EXPECT_NEAR(hit.uv.x, 0.75f, 1e-6f) << reader;
         EXPECT_NEAR(hit.uv.y, 0.5f, 1e-6f) << reader;
@@ -111,7 +103,7 @@ TEST(EmbreeScene, HitsCarryUvWhereATextureReadsIt) {
 // POV-Ray defines no (u, v) for a plane: uv_mapping reads the hit's world
 // x and y (ObjectBase::UVCoord).
 TEST(EmbreeScene, PlaneHitUvIsItsWorldXyAsInPovRay) {
-    auto scene = compile_text("plane { y, -1 pigment { uv_mapping checker } }");
+    auto scene = compile_pov_text("plane { y, -1 pigment { uv_mapping checker } }");
     Hit hit;
     ASSERT_TRUE(scene->intersect(make_ray(Vec3(3, 5, 7), Vec3(0, -1, 0)), hit));
     EXPECT_NEAR(hit.t, 6.0f, 1e-5f);

@@ -272,8 +272,8 @@ bool EmbreeScene::may_block_towards(const Vec3& origin, const Vec3& corner, cons
     // The shadow rays run between floats near these points, along rounded
     // directions: a thousand times their error keeps the answer safe.
     const double margin = 1e-4 * reach + 1e-6 * largest;
-    for (std::uint32_t index : m_unbounded.instances()) {
-        const Instance& instance = m_data->instances[index];
+    for (std::size_t k = 0; k < m_unbounded.size(); ++k) {
+        const Instance& instance = m_data->instances[m_unbounded.instance(k)];
         if (!instance.casts_shadow) continue;
         if (instance.kind != ShapeKind::Plane) return true;
         // A plane is crossed by no such segment when the apex and the whole

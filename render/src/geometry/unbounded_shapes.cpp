@@ -41,7 +41,6 @@ void UnboundedShapes::add(const Instance& instance, std::uint32_t index) {
     entry.casts_shadow = instance.casts_shadow;
     if (instance.kind == ShapeKind::Plane) entry.world_plane = world_plane_of(instance, entry.normal, entry.distance);
     m_shapes.push_back(entry);
-    m_instances.push_back(index);
 }
 
 // Any shape other than a world plane, in its own space.
@@ -54,17 +53,25 @@ bool UnboundedShapes::crosses_instance(const SceneData& data, std::uint32_t inde
     return intersect_analytic(data, index, o, d, t_min, t_max, t, face, leaf);
 }
 
+// Inline: a world plane's test is a division, cheaper than a call.
+inline bool UnboundedShapes::crosses(const SceneData& data, const Entry& shape, const Ray& ray, const DVec3& origin,
+                                     const DVec3& direction, double t_min, double t_max, double& t, std::uint32_t& leaf,
+                                     int& face) {
+    leaf = shape.instance;
+    face = 0;
+    return shape.world_plane ? cross_plane(shape.normal, shape.distance, origin, direction, t_min, t_max, t)
+                             : crosses_instance(data, shape.instance, ray, t_min, t_max, t, leaf, face);
+}
+
 bool UnboundedShapes::nearest(const SceneData& data, const Ray& ray, double t_min, double& t_max,
                               std::uint32_t& instance, std::uint32_t& leaf, int& face) const {
     const DVec3 origin(ray.origin), direction(ray.direction);
     bool found = false;
     for (const Entry& shape : m_shapes) {
         double t;
-        std::uint32_t shape_leaf = shape.instance;
-        int shape_face = 0;
-        if (!(shape.world_plane ? cross_plane(shape.normal, shape.distance, origin, direction, t_min, t_max, t)
-                                : crosses_instance(data, shape.instance, ray, t_min, t_max, t, shape_leaf, shape_face)))
-            continue;
+        std::uint32_t shape_leaf;
+        int shape_face;
+        if (!crosses(data, shape, ray, origin, direction, t_min, t_max, t, shape_leaf, shape_face)) continue;
         t_max = t;
         instance = shape.instance;
         leaf = shape_leaf;
@@ -81,9 +88,7 @@ bool UnboundedShapes::occluded(const SceneData& data, const Ray& ray, double t_m
         double t;
         std::uint32_t leaf;
         int face;
-        if (shape.world_plane ? cross_plane(shape.normal, shape.distance, origin, direction, t_min, t_max, t)
-                              : crosses_instance(data, shape.instance, ray, t_min, t_max, t, leaf, face))
-            return true;
+        if (crosses(data, shape, ray, origin, direction, t_min, t_max, t, leaf, face)) return true;
     }
     return false;
 }

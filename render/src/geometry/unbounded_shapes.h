@@ -22,8 +22,9 @@ class UnboundedShapes {
   public:
     void add(const Instance& instance, std::uint32_t index);
     bool empty() const { return m_shapes.empty(); }
-    // Instance indices, in the scene's order.
-    const std::vector<std::uint32_t>& instances() const { return m_instances; }
+    std::size_t size() const { return m_shapes.size(); }
+    // The k-th shape's instance index, in the scene's order.
+    std::uint32_t instance(std::size_t k) const { return m_shapes[k].instance; }
 
     // The nearest crossing of `ray` with t in (t_min, t_max): t_max lowered
     // to it, with the instance, its CSG leaf and face. The first listed
@@ -41,10 +42,13 @@ class UnboundedShapes {
         bool world_plane = false;  // else tested through the instance (a flattened plane, any other shape)
         bool casts_shadow = true;
     };
+    // Whether `shape` is crossed over (t_min, t_max): a world plane on the
+    // world ray (origin, direction), any other shape in its own space.
+    static bool crosses(const SceneData& data, const Entry& shape, const Ray& ray, const DVec3& origin,
+                        const DVec3& direction, double t_min, double t_max, double& t, std::uint32_t& leaf, int& face);
     static bool crosses_instance(const SceneData& data, std::uint32_t index, const Ray& ray, double t_min, double t_max,
                                  double& t, std::uint32_t& leaf, int& face);
     std::vector<Entry> m_shapes;
-    std::vector<std::uint32_t> m_instances;
 };
 
 }  // namespace lancer::embree

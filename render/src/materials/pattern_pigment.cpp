@@ -220,7 +220,7 @@ PatternContext surface_context(const Hit& hit) {
     return context;
 }
 
-bool reads_surface_uv(const sg::Pigment& pigment) {
+bool pigment_reads_surface_uv(const sg::Pigment& pigment) {
     // An image through the surface's (u,v) is uv-mapped however it was
     // asked for (uv_mapping, or an OBJ material's texture).
     if (pigment.kind == sg::Pigment::Kind::Image && pigment.image && pigment.image->map_type == sg::MapType::UV)
@@ -237,7 +237,7 @@ class PatternTexture final : public Texture {
     PatternTexture(const sg::Pigment& pigment, const TextureSpaces& spaces, const MaterialBuild& build)
         : m_pigment(make_point_pigment(pigment, build)),
           m_spaces(spaces),
-          m_uv_mapping(reads_surface_uv(pigment)),
+          m_uv_mapping(pigment_reads_surface_uv(pigment)),
           m_average(m_pigment->average()) {}
     TextureSample evaluate(const Hit& hit) const override {
         return m_pigment->at(surface_point(hit, m_spaces, m_uv_mapping), surface_context(hit));

@@ -36,7 +36,7 @@ std::unique_ptr<Texture> TextureFactory::make(const sg::Pigment& pigment) {
             return make_checker_texture(to_sample(pigment.block_pigments[0]->color),
                                         to_sample(pigment.block_pigments[1]->color),
                                         pigment.pattern->pattern_from_object, m_spaces);
-        m_reads_surface_uv = m_reads_surface_uv || lancer::reads_surface_uv(pigment);
+        m_reads_surface_uv = m_reads_surface_uv || pigment_reads_surface_uv(pigment);
         try {
             return make_pattern_texture(pigment, m_spaces, build());
         } catch (const SceneError&) {

@@ -90,7 +90,7 @@ class TextureFactory {
 
 // Whether a top-level pigment is read at the hit's (u, v) (uv_mapping, or
 // an image mapped by (u, v)) rather than at its point.
-bool reads_surface_uv(const sg::Pigment& pigment);
+bool pigment_reads_surface_uv(const sg::Pigment& pigment);
 
 // One constructor per pattern family, each in a file of its own; the
 // factory picks one by the pigment's kind. A new pattern adds a file and a
