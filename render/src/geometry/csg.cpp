@@ -194,16 +194,13 @@ bool CsgTree::ray_meets(const std::vector<Instance>& instances, std::uint32_t in
 
 bool CsgTree::nearest(const std::vector<Instance>& instances, const DVec3& o, const DVec3& d, double t_min,
                       double t_max, CsgCrossing& hit) const {
-    // One shape made an object by `inverse` alone (a room's walls): every
-    // crossing of its surface is kept, so the nearest is the shape's own.
-    if (const CsgNode& top = nodes[root];
-        top.operation == CsgNode::Operation::Leaf && top.clips.empty() && top.bounds.empty()) {
-        const Instance& leaf = instances[top.instance];
+    if (const CsgNode* top = lone_leaf()) {
+        const Instance& leaf = instances[top->instance];
         ShapeCrossing crossing;
         if (!leaf.shape->nearest(leaf.placement.point_to_object(o), leaf.placement.vector_to_object(d), t_min, t_max,
                                  crossing))
             return false;
-        hit = CsgCrossing{crossing.t, top.instance, crossing.face};
+        hit = CsgCrossing{crossing.t, top->instance, crossing.face};
         return true;
     }
     // One list per thread, reused: Embree calls this for every ray.

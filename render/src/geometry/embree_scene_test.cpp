@@ -174,6 +174,38 @@ TEST(EmbreeScene, PlanesInTheWorldOrPlacedAreFoundAlike) {
         EXPECT_EQ(hit.material->sample_surface(hit).pigment, floor_first ? Color(1, 0, 0) : Color(0, 0, 1));
     }
 }
+// An object that is one shape made inverse (a room) is tested outside the
+// BVH on its own; the same shape clipped by a sphere holding it is a
+// bounded tree, found through the general CSG crossings: both must answer
+// alike, inside and outside, placed or not, over limited t ranges.
+TEST(EmbreeScene, AnInvertedShapeAnswersAsTheGeneralTree) {
+    const char* shapes[] = {
+        "box { <-3, 0, -4>, <3, 3, 4> inverse",
+        "box { <-1, -2, -0.5>, <2, 1, 0.5> inverse rotate <10, 35, -5> scale <1, 2, 1.5> translate <0.5, 1, 0>",
+        "sphere { <0.2, 1, 0.3>, 2.5 inverse",
+        "sphere { 0, 1 inverse scale <3, 1, 2> translate y",
+    };
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> coordinate(-6.0f, 6.0f), reach(0.1f, 12.0f);
+    for (const char* shape : shapes) {
+        auto lone = compile_pov_text(std::string(shape) + " }");
+        auto tree = compile_pov_text(std::string(shape) + " clipped_by { sphere { 0, 100 } } }");
+        for (int k = 0; k < 400; ++k) {
+            const Vec3 origin(coordinate(random), coordinate(random) * 0.5f + 1.5f, coordinate(random));
+            Ray ray = make_ray(origin, Vec3(coordinate(random), coordinate(random), coordinate(random)));
+            ray.t_max = k % 2 ? reach(random) : kInfinity;
+            Hit from_lone, from_tree;
+            const bool found = lone->intersect(ray, from_lone);
+            ASSERT_EQ(found, tree->intersect(ray, from_tree)) << shape << " ray " << k;
+            EXPECT_EQ(lone->occluded(ray), tree->occluded(ray)) << shape << " ray " << k;
+            if (!found) continue;
+            EXPECT_EQ(from_lone.t, from_tree.t) << shape << " ray " << k;
+            EXPECT_EQ(from_lone.position, from_tree.position) << shape << " ray " << k;
+            EXPECT_EQ(from_lone.geometric_normal, from_tree.geometric_normal) << shape << " ray " << k;
+        }
+    }
+}
+
 TEST(EmbreeScene, TriangleBarycentricUvAndMeshUv) {
     auto mesh = triangle_mesh({0, 0, 5}, {4, 0, 5}, {0, 4, 5});
     auto scene = compile_objects({mesh_object(mesh)});

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "geometry/csg.h"
 #include "geometry/embree_scene.h"
 
 namespace lancer::embree {
@@ -40,6 +41,13 @@ void UnboundedShapes::add(const Instance& instance, std::uint32_t index) {
     entry.instance = index;
     entry.casts_shadow = instance.casts_shadow;
     if (instance.kind == ShapeKind::Plane) entry.world_plane = world_plane_of(instance, entry.normal, entry.distance);
+    // A tree's root is placed at the identity (its leaves carry the world
+    // placements), so the world ray is the tree's.
+    if (instance.kind == ShapeKind::Csg && instance.placement.identity)
+        if (const CsgNode* leaf = instance.csg->lone_leaf()) {
+            entry.lone_leaf = true;
+            entry.leaf = leaf->instance;
+        }
     m_shapes.push_back(entry);
 }
 
@@ -53,14 +61,31 @@ bool UnboundedShapes::crosses_instance(const SceneData& data, std::uint32_t inde
     return intersect_analytic(data, index, o, d, t_min, t_max, t, face, leaf);
 }
 
+// CsgTree::nearest of a lone leaf, on the world ray.
+bool UnboundedShapes::crosses_lone_leaf(const SceneData& data, std::uint32_t leaf, const DVec3& origin,
+                                        const DVec3& direction, double t_min, double t_max, double& t, int& face) {
+    const Instance& shape = data.instances[leaf];
+    ShapeCrossing crossing;
+    if (!shape.shape->nearest(shape.placement.point_to_object(origin), shape.placement.vector_to_object(direction),
+                              t_min, t_max, crossing))
+        return false;
+    t = crossing.t;
+    face = crossing.face;
+    return true;
+}
+
 // Inline: a world plane's test is a division, cheaper than a call.
 inline bool UnboundedShapes::crosses(const SceneData& data, const Entry& shape, const Ray& ray, const DVec3& origin,
                                      const DVec3& direction, double t_min, double t_max, double& t, std::uint32_t& leaf,
                                      int& face) {
     leaf = shape.instance;
     face = 0;
-    return shape.world_plane ? cross_plane(shape.normal, shape.distance, origin, direction, t_min, t_max, t)
-                             : crosses_instance(data, shape.instance, ray, t_min, t_max, t, leaf, face);
+    if (shape.world_plane) return cross_plane(shape.normal, shape.distance, origin, direction, t_min, t_max, t);
+    if (shape.lone_leaf) {
+        leaf = shape.leaf;
+        return crosses_lone_leaf(data, shape.leaf, origin, direction, t_min, t_max, t, face);
+    }
+    return crosses_instance(data, shape.instance, ray, t_min, t_max, t, leaf, face);
 }
 
 bool UnboundedShapes::nearest(const SceneData& data, const Ray& ray, double t_min, double& t_max,

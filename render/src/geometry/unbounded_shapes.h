@@ -4,7 +4,8 @@
 // distance beside the list, so testing it costs a division rather than an
 // instance lookup, a ray mapped to object space and a dispatch on the
 // shape's kind: about a fifth of all the work on a scene of mirror planes
-// (bench/README.md). A plane written in world coordinates (a floor, a
+// (bench/README.md). A room's walls (`box { ... inverse }`) skip the
+// tree's dispatch the same way. A plane written in world coordinates (a floor, a
 // wall, a mirror) gives intersect_plane's answers bit for bit; a placed
 // one the same up to the rounding of its world plane (internal to
 // liblancer).
@@ -40,12 +41,18 @@ class UnboundedShapes {
         double distance = 0.0;
         std::uint32_t instance = 0;
         bool world_plane = false;  // else tested through the instance (a flattened plane, any other shape)
+        // An object that is one shape made inverse (CsgTree::lone_leaf): its
+        // leaf is tested directly, without the tree's dispatch.
+        bool lone_leaf = false;
+        std::uint32_t leaf = 0;
         bool casts_shadow = true;
     };
     // Whether `shape` is crossed over (t_min, t_max): a world plane on the
     // world ray (origin, direction), any other shape in its own space.
     static bool crosses(const SceneData& data, const Entry& shape, const Ray& ray, const DVec3& origin,
                         const DVec3& direction, double t_min, double t_max, double& t, std::uint32_t& leaf, int& face);
+    static bool crosses_lone_leaf(const SceneData& data, std::uint32_t leaf, const DVec3& origin,
+                                  const DVec3& direction, double t_min, double t_max, double& t, int& face);
     static bool crosses_instance(const SceneData& data, std::uint32_t index, const Ray& ray, double t_min, double t_max,
                                  double& t, std::uint32_t& leaf, int& face);
     std::vector<Entry> m_shapes;
