@@ -10,7 +10,7 @@
 # FOLDER holds the three scenes (default bench/anchors; bench/anchors/variants
 # has a second set written apart from the first, with patterns, highlights,
 # two lights and deeper mirrors), or names its own in a file `scenes`, one
-# scene:integrator a line (bench/anchors/probes: six scenes of other kinds,
+# scene:integrator a line (bench/anchors/probes: seven scenes of other kinds,
 # written after the first two sets were measured).
 #
 # POV-Ray runs with +WT<cores> (as many threads as lancer) and -D (no
