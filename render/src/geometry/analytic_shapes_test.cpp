@@ -210,6 +210,72 @@ TEST(Quadric, InfiniteCylinderAndMixedTerms) {
     EXPECT_NEAR(t[0], 1e8 - 1.0, 1e-7);
 }
 
+// Shape::narrow_box must keep every point of the solid that lies in the
+// box it is given: sampled over quadrics with and without linear terms, and
+// planes across an axis, upright and inverted, in boxes with infinite sides.
+TEST(Quadric, NarrowedBoxesKeepTheSolidTheyHold) {
+    struct Case {
+        std::shared_ptr<const Shape> shape;
+        bool inverted;
+        DVec3 lower, upper;         // the box given
+        bool narrows_x, narrows_y;  // whether those axes come out finite
+    };
+    const double inf = INFINITY;
+    const std::vector<Case> cases = {
+        // Cylinder_Y across its axis, however long.
+        {make_quadric_shape({{1, 0, 1}, {0, 0, 0}, {0, 0, 0}, -1}), false, DVec3(-inf), DVec3(inf), true, false},
+        // Hyperboloid_Y between y = -2 and y = 3: its waist widens to sqrt(10).
+        {make_quadric_shape({{1, -1, 1}, {0, 0, 0}, {0, 0, 0}, -1}),
+         false,
+         {-inf, -2, -inf},
+         {inf, 3, inf},
+         true,
+         true},
+        // The same without the planes: nothing to narrow.
+        {make_quadric_shape({{1, -1, 1}, {0, 0, 0}, {0, 0, 0}, -1}), false, DVec3(-inf), DVec3(inf), false, false},
+        // A moved paraboloid y >= (x - 1)^2 + z^2 (linear terms), cut at y = 4.
+        {make_quadric_shape({{1, 0, 1}, {0, 0, 0}, {-2, -1, 0}, 1}),
+         false,
+         {-inf, -inf, -inf},
+         {inf, 4, inf},
+         true,
+         true},
+        // An ellipsoid, upright: its own box.
+        {make_quadric_shape({{0.25, 1, 1}, {0, 0, 0}, {0, 0, 0}, -1}), false, DVec3(-inf), DVec3(inf), true, true},
+        // Inverted, a quadric's solid is all space around it.
+        {make_quadric_shape({{1, 0, 1}, {0, 0, 0}, {0, 0, 0}, -1}), true, DVec3(-inf), DVec3(inf), false, false},
+        // Planes across an axis, either way round; a slanted one narrows nothing.
+        {make_plane_shape(AnalyticPlane(DVec3(-1, 0, 0), 2.0)), false, {-inf, -1, -inf}, {inf, 1, inf}, false, true},
+        {make_plane_shape(AnalyticPlane(DVec3(0, 1, 0), 0.5)), true, {-3, -inf, -inf}, {3, inf, inf}, true, false},
+        {make_plane_shape(AnalyticPlane(glm::normalize(DVec3(1, 1, 0)), 0.0)), false, DVec3(-inf), DVec3(inf), false,
+         false},
+    };
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> coordinate(-5.0, 5.0);
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const Case& c = cases[k];
+        DVec3 lower = c.lower, upper = c.upper;
+        c.shape->narrow_box(lower, upper, c.inverted);
+        EXPECT_EQ(std::isfinite(lower.x) && std::isfinite(upper.x), c.narrows_x) << "case " << k;
+        EXPECT_EQ(std::isfinite(lower.y) && std::isfinite(upper.y), c.narrows_y) << "case " << k;
+        int kept = 0;
+        for (int i = 0; i < 40000; ++i) {
+            const DVec3 p(coordinate(random), coordinate(random), coordinate(random));
+            const bool in_given = glm::all(glm::lessThanEqual(c.lower, p)) && glm::all(glm::lessThanEqual(p, c.upper));
+            if (!in_given || c.shape->inside(p) == c.inverted) continue;
+            ++kept;
+            ASSERT_TRUE(glm::all(glm::lessThanEqual(lower, p)) && glm::all(glm::lessThanEqual(p, upper)))
+                << "case " << k << " point " << p.x << ", " << p.y << ", " << p.z;
+        }
+        EXPECT_GT(kept, 100) << "case " << k;
+    }
+    // The hyperboloid's box between its planes is as tight as its widest ring.
+    DVec3 lower(-inf, -2, -inf), upper(inf, 3, inf);
+    cases[1].shape->narrow_box(lower, upper, false);
+    EXPECT_NEAR(upper.x, std::sqrt(10.0), 1e-12);
+    EXPECT_NEAR(lower.z, -std::sqrt(10.0), 1e-12);
+}
+
 TEST(Polygon, EvenOddAcrossLoops) {
     // A 2 x 2 square with a 1 x 1 hole, in the plane z = 1, loops closed by
     // repeating their first point (POV's form).

@@ -15,6 +15,28 @@ bool box_contains(const CsgNode& node, const DVec3& p) {
            p.z >= node.lower.z && p.z <= node.upper.z;
 }
 
+// The box holding the image of [lower, upper] (sides may be infinite)
+// under the affine map `to`: interval arithmetic, a zero entry of the map
+// taking nothing from an infinite side.
+void map_box(const DMat4& to, DVec3& lower, DVec3& upper) {
+    DVec3 mapped_lower(to[3]), mapped_upper(to[3]);
+    for (int row = 0; row < 3; ++row)
+        for (int column = 0; column < 3; ++column) {
+            const double m = to[column][row];
+            if (m == 0.0) continue;
+            const double a = m * lower[column], b = m * upper[column];
+            mapped_lower[row] += std::min(a, b);
+            mapped_upper[row] += std::max(a, b);
+        }
+    lower = mapped_lower;
+    upper = mapped_upper;
+}
+
+bool finite_box(const DVec3& lower, const DVec3& upper) {
+    return std::isfinite(lower.x) && std::isfinite(lower.y) && std::isfinite(lower.z) && std::isfinite(upper.x) &&
+           std::isfinite(upper.y) && std::isfinite(upper.z);
+}
+
 }  // namespace
 
 void CsgTree::compute_bounds(const std::vector<Instance>& instances) {
@@ -66,6 +88,7 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
     }
     case CsgNode::Operation::Intersection:
         for (std::uint32_t child : node.children) take(nodes[child], true);
+        if (!node.bounded) narrow_intersection(instances, node);
         break;
     }
     for (std::uint32_t clip : node.clips) take(nodes[clip], true);
@@ -92,6 +115,34 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
         // Children that share no space: an empty solid, kept as a point box.
         node.upper = node.lower;
     }
+}
+
+void CsgTree::narrow_intersection(const std::vector<Instance>& instances, CsgNode& node) const {
+    // Each leaf narrows the box the others left (planes across the axes,
+    // quadrics between them), in world space through its placement; a
+    // second round lets what the first found narrow the rest. Another
+    // child only holds the solid tighter, so leaving it out is safe.
+    DVec3 lower(-INFINITY), upper(INFINITY);
+    for (int round = 0; round < 2; ++round)
+        for (std::uint32_t child : node.children) {
+            const CsgNode& leaf_node = nodes[child];
+            if (leaf_node.operation != CsgNode::Operation::Leaf) continue;
+            const Instance& leaf = instances[leaf_node.instance];
+            DVec3 object_lower = lower, object_upper = upper;
+            if (!leaf.placement.identity) map_box(leaf.placement.object_from_world, object_lower, object_upper);
+            leaf.shape->narrow_box(object_lower, object_upper, leaf_node.inverted);
+            if (!leaf.placement.identity) map_box(leaf.placement.world_from_object, object_lower, object_upper);
+            lower = glm::max(lower, object_lower);
+            upper = glm::min(upper, object_upper);
+        }
+    if (!finite_box(lower, upper)) return;
+    // The square roots and placements round, and the BVH keeps the box in
+    // float: a margin of some float steps keeps every surface point inside.
+    const DVec3 margin = 1e-6 * (glm::abs(lower) + glm::abs(upper)) + 1e-9;
+    node.bounded = true;
+    node.lower = lower - margin;
+    node.upper = upper + margin;
+    node.box_holds_solid = true;
 }
 
 bool CsgTree::inside(const std::vector<Instance>& instances, std::uint32_t index, const DVec3& p) const {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "lancer/host/scene_compiler.h"
 #include "lancer/parser.h"
@@ -39,6 +40,49 @@ TEST(Csg, DifferenceShowsTheCutWithItsNormalOutOfTheSolid) {
     EXPECT_LT(first_hit(*scene, {5, 1.5f, 0}, {-1, 0, 0}).t, 0.0f);
     // From -x the sphere itself.
     EXPECT_NEAR(first_hit(*scene, {-5, 0, 0}, {1, 0, 0}).t, 4.0f, 1e-5f);
+}
+
+// POV-Ray bounds a quadric between planes (a chess piece's waist): here
+// Shape::narrow_box does. The same solid with the quadric wrapped in an
+// intersection of its own stays unbounded (tested on every ray): both must
+// give the same hits (up to the float the BVH keeps t in), and the bounded
+// one must count in the scene's bounds.
+TEST(Csg, AQuadricBetweenPlanesIsBoundedAndFoundAlike) {
+    const std::string waist = "quadric { <1, -1, 1>, 0, 0, -1 translate 5*y scale <0.5, 1, 0.5> rotate 20*y }";
+    const std::string tower = "quadric { <1, 0, 1>, 0, 0, -1 scale <2, 1, 2> }";
+    const std::string hollow = "quadric { <1, 0, 1>, 0, 0, -1 scale <1.2, 1, 1.2> inverse }";
+    const struct {
+        std::string bounded, unbounded;
+    } pieces[] = {
+        {"intersection { plane { y, 5.5 } " + waist + " plane { -y, -2.5 } }",
+         "intersection { plane { y, 5.5 } intersection { " + waist + " } plane { -y, -2.5 } }"},
+        // A rook's top: a tube between two planes, moved.
+        {"intersection { plane { y, 10 } " + tower + " " + hollow + " plane { -y, -8 } translate <1, 0, -2> }",
+         "intersection { plane { y, 10 } intersection { " + tower + " } " + hollow +
+             " plane { -y, -8 } translate <1, 0, -2> }"},
+    };
+    std::mt19937 random(3);
+    std::uniform_real_distribution<float> coordinate(-6.0f, 6.0f);
+    for (const auto& piece : pieces) {
+        const auto bounded = compile("#version 3.7;\n" + piece.bounded);
+        const auto unbounded = compile("#version 3.7;\n" + piece.unbounded);
+        const Bounds box = bounded->bounds();
+        ASSERT_FALSE(box.empty()) << piece.bounded;
+        EXPECT_LT(box.upper.y, 10.1f) << piece.bounded;
+        EXPECT_TRUE(unbounded->bounds().empty()) << piece.unbounded;
+        int hits = 0;
+        for (int k = 0; k < 3000; ++k) {
+            const Vec3 from(coordinate(random), coordinate(random) + 6.0f, coordinate(random));
+            const Vec3 to(coordinate(random) * 0.4f, coordinate(random) * 0.5f + 6.0f, coordinate(random) * 0.4f);
+            const Hit a = first_hit(*bounded, from, to - from), b = first_hit(*unbounded, from, to - from);
+            ASSERT_EQ(a.t < 0.0f, b.t < 0.0f) << piece.bounded << " ray " << k;
+            if (a.t < 0.0f) continue;
+            ++hits;
+            EXPECT_NEAR(a.t, b.t, 1e-5f * b.t) << piece.bounded << " ray " << k;
+            EXPECT_NEAR(glm::dot(a.geometric_normal, b.geometric_normal), 1.0f, 1e-4f) << piece.bounded;
+        }
+        EXPECT_GT(hits, 300) << piece.bounded;
+    }
 }
 
 TEST(Csg, IntersectionKeepsOnlyTheCommonPart) {

@@ -3,6 +3,7 @@
 // where the value is not positive (POV's Inside_Quadric). Unbounded unless M
 // is positive definite (an ellipsoid), whose box is exact. POV-Ray 3.7
 // defines no (u, v) for it: lancer gives (0, 0).
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/polynomial_roots.h"
@@ -70,6 +71,57 @@ class QuadricShape final : public Shape {
         lower = centre - half;
         upper = centre + half;
         return true;
+    }
+
+    // Without mixed terms the quadric is a sum over the axes,
+    //     sum_i a_i (p_i + h_i)^2 + sum_{a_i = 0} 2 n_i p_i + c' <= 0,
+    // so each axis with a_i > 0 is held within what the others' least
+    // values over the box leave it (a cylinder's across its axis, a
+    // hyperboloid's between two planes), and each linear one on one side.
+    void narrow_box(DVec3& lower, DVec3& upper, bool inverted) const override {
+        const DMat3& m = m_matrix;
+        if (inverted || m[0][1] != 0.0 || m[0][2] != 0.0 || m[1][2] != 0.0) return;
+        if (lower.x > upper.x || lower.y > upper.y || lower.z > upper.z) return;  // empty already
+        double shift[3] = {0.0, 0.0, 0.0};
+        double constant = m_constant;
+        for (int i = 0; i < 3; ++i)
+            if (m[i][i] != 0.0) {
+                shift[i] = m_linear[i] / m[i][i];
+                constant -= m_linear[i] * shift[i];
+            }
+        // The least value of axis i's term over [lower_i, upper_i]
+        // (-infinity where it has none).
+        const auto least_term = [&](int i) {
+            const double a = m[i][i];
+            if (a > 0.0) {
+                const double nearest = std::clamp(-shift[i], lower[i], upper[i]) + shift[i];
+                return a * nearest * nearest;
+            }
+            if (a < 0.0) {
+                const double farthest = std::max(std::fabs(lower[i] + shift[i]), std::fabs(upper[i] + shift[i]));
+                return a * farthest * farthest;
+            }
+            const double n = 2.0 * m_linear[i];
+            return n > 0.0 ? n * lower[i] : n < 0.0 ? n * upper[i] : 0.0;
+        };
+        for (int i = 0; i < 3; ++i) {
+            double room = -constant;  // what axis i's term may reach
+            for (int j = 0; j < 3; ++j)
+                if (j != i) room -= least_term(j);
+            if (std::isnan(room) || room == INFINITY) continue;
+            const double a = m[i][i];
+            if (a > 0.0) {
+                const double half = std::sqrt(std::max(room, 0.0) / a);
+                lower[i] = std::max(lower[i], -shift[i] - half);
+                upper[i] = std::min(upper[i], -shift[i] + half);
+            } else if (a == 0.0 && m_linear[i] != 0.0) {
+                const double edge = room / (2.0 * m_linear[i]);
+                if (m_linear[i] > 0.0)
+                    upper[i] = std::min(upper[i], edge);
+                else
+                    lower[i] = std::max(lower[i], edge);
+            }
+        }
     }
 
   private:

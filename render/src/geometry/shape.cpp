@@ -17,6 +17,13 @@ bool Shape::nearest(const DVec3& o, const DVec3& d, double t_min, double t_max, 
     return true;
 }
 
+void Shape::narrow_box(DVec3& lower, DVec3& upper, bool inverted) const {
+    DVec3 own_lower, own_upper;
+    if (inverted || !solid() || !inside_within_bounds() || !bounds(own_lower, own_upper)) return;
+    lower = glm::max(lower, own_lower);
+    upper = glm::min(upper, own_upper);
+}
+
 bool ray_box_interval(const DVec3& lower, const DVec3& upper, const DVec3& o, const DVec3& d, double& t_min,
                       double& t_max) {
     for (int axis = 0; axis < 3; ++axis) {
@@ -110,6 +117,20 @@ class PlaneShape final : public Shape {
     // POV: the half-space the normal points away from.
     bool inside(const DVec3& p) const override { return glm::dot(p, m_plane.normal) <= m_plane.distance; }
     bool bounds(DVec3&, DVec3&) const override { return false; }
+    // A plane across an axis bounds that axis on one side.
+    void narrow_box(DVec3& lower, DVec3& upper, bool inverted) const override {
+        const DVec3& n = m_plane.normal;
+        const int zeros = (n.x == 0.0) + (n.y == 0.0) + (n.z == 0.0);
+        if (zeros != 2) return;
+        const int axis = n.x != 0.0 ? 0 : n.y != 0.0 ? 1 : 2;
+        // Inside: n_axis * p_axis <= distance; inverted, >= (the surface
+        // itself belongs to both).
+        const double edge = m_plane.distance / n[axis];
+        if ((n[axis] > 0.0) != inverted)
+            upper[axis] = std::min(upper[axis], edge);
+        else
+            lower[axis] = std::max(lower[axis], edge);
+    }
 
   private:
     AnalyticPlane m_plane;

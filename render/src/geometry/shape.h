@@ -58,6 +58,12 @@ class Shape {
     virtual bool inside(const DVec3& p) const = 0;
     // Object-space bounds; false for an unbounded shape.
     virtual bool bounds(DVec3& lower, DVec3& upper) const = 0;
+    // Narrows the object-space box [lower, upper] (sides may be infinite)
+    // to one that still holds all of the solid inside it (its complement
+    // when `inverted`): how CSG bounds an intersection of unbounded shapes,
+    // such as a quadric between two planes. The default keeps what bounds()
+    // holds of an upright solid and leaves the box alone otherwise.
+    virtual void narrow_box(DVec3& lower, DVec3& upper, bool inverted) const;
     // False for what POV-Ray calls a patch object (a triangle, a mesh
     // without inside_vector, a polygon, a bicubic patch): it has no inside,
     // inverted or not, and CSG only keeps or drops pieces of its surface.
