@@ -8,6 +8,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "film/libpng_errors.h"
+
 namespace lancer {
 namespace {
 
@@ -16,19 +18,6 @@ unsigned quantise(float value, unsigned top) {
     if (value >= 1.0f) return top;
     return unsigned(value * float(top) + 0.5f);
 }
-
-// libpng reports errors through a longjmp; this turns them into exceptions
-// at the one place that can take them (encode's setjmp).
-struct ErrorText {
-    std::string message;
-};
-
-[[noreturn]] void on_error(png_structp png, png_const_charp message) {
-    static_cast<ErrorText*>(png_get_error_ptr(png))->message = message ? message : "libpng error";
-    png_longjmp(png, 1);
-}
-
-void on_warning(png_structp, png_const_charp) {}
 
 void append_bytes(png_structp png, png_bytep data, png_size_t length) {
     auto* bytes = static_cast<std::vector<unsigned char>*>(png_get_io_ptr(png));
@@ -110,8 +99,8 @@ void encode(const PngPixels& pixels, std::FILE* file, std::vector<unsigned char>
         text[i].text = const_cast<char*>(pixels.text[i].second.c_str());
         text[i].text_length = pixels.text[i].second.size();
     }
-    ErrorText error;
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_error, on_warning);
+    LibpngError error;
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_libpng_error, on_libpng_warning);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     const EncodeJob job{&pixels, text.data(), int(text.size()), row.data(), samples_row.data(), file, memory};
     const bool written = info != nullptr && run_libpng(png, info, job);

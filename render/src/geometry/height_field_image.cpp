@@ -19,12 +19,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include "film/image_codecs.h"
+#include "film/png_reader.h"
 #include "geometry/height_field.h"
 #include "materials/palette_image.h"
 
@@ -69,6 +71,13 @@ std::uint16_t to_height_value(double value) {
 }  // namespace
 
 // Grid row r is image row height - 1 - r: POV puts the image's top at z = 1.
+bool file_starts_with_gif_signature(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    char signature[6] = {};
+    if (!file.read(signature, 6)) return false;
+    return std::string_view(signature, 6) == "GIF87a" || std::string_view(signature, 6) == "GIF89a";
+}
+
 HeightFieldGrid grid_from_values(int width, int height, const std::vector<std::uint16_t>& values) {
     HeightFieldGrid grid;
     grid.columns = width;
@@ -136,11 +145,14 @@ HeightFieldGrid read_height_field_image(const std::string& path, double gamma) {
         extension = path.substr(dot + 1);
         for (char& c : extension) c = char(std::tolower((unsigned char)c));
     }
+    // A GIF (and POV's POT, a GIF of twice the width) is decoded here, so
+    // its signature spares loading the image module to name it.
+    if (file_starts_with_gif_signature(path)) return read_gif(path, extension == "pot");
     // Open with the image module first: it names what the file is.
     // POV-Ray keeps a file's colours as stored, not multiplied by alpha.
     std::unique_ptr<ImageFileReader> input;
     try {
-        input = image_codecs().open(path, true);
+        input = open_image_file(path, true);
     } catch (const std::runtime_error& error) {
         if (extension == "pot") return read_gif(path, true);
         fail(path, error.what());

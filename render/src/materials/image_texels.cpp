@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "film/png_reader.h"
+
 namespace lancer {
 namespace {
 
@@ -14,7 +16,7 @@ ImageTexels::ImageTexels(const std::string& path) {
     if (path.empty()) throw std::runtime_error("no file name");
     // Colours as OpenImageIO gives them by default: what image maps have
     // always read (multiplied by alpha where the format's reader does so).
-    const std::unique_ptr<ImageFileReader> input = image_codecs().open(path, false);
+    const std::unique_ptr<ImageFileReader> input = open_image_file(path, false);
     const ImageFileInfo& info = input->info();
     if (double(info.width) * double(info.height) > kMaxTexturePixels)
         throw std::length_error("it claims " + std::to_string(info.width) + " x " + std::to_string(info.height) +

@@ -11,7 +11,7 @@
 
 #include <png.h>
 
-#include "film/image_codecs.h"
+#include "film/png_reader.h"
 
 namespace lancer {
 namespace {
@@ -263,7 +263,7 @@ int palette_index(const std::vector<PaletteEntry>& palette, int red, int green, 
 
 std::optional<PaletteImage> read_palette_image(const std::string& path) {
     // POV-Ray keeps a file's colours as stored, not multiplied by alpha.
-    const std::unique_ptr<ImageFileReader> input = image_codecs().open(path, true);
+    const std::unique_ptr<ImageFileReader> input = open_image_file(path, true);
     const ImageFileInfo& spec = input->info();
     const std::string& format = spec.format;
     check_size(spec.width, spec.height);
