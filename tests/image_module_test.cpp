@@ -61,11 +61,11 @@ TEST_F(ImageModule, APngImageMapDoesNotLoadItAnExrOneDoes) {
     ASSERT_EQ(run_lancer("render " + m_scene + " --width 4 --height 4 -q -o " + out("map.png")).exit_code, 0);
     ASSERT_EQ(run_lancer("render " + m_scene + " --width 4 --height 4 -q -o " + out("map.exr")).exit_code, 0);
     for (const std::string format : {"png", "exr"}) {
-        const std::string mapped = m_folder.write("mapped_" + format + ".pov",
-                                                  "camera { location <0, 0, -4> look_at 0 }\n"
-                                                  "plane { -z, 0 pigment { image_map { " +
-                                                      format + " \"" + out("map." + format) +
-                                                      "\" } } finish { ambient 1 } }\n");
+        const std::string mapped =
+            m_folder.write("mapped_" + format + ".pov",
+                           "camera { location <0, 0, -4> look_at 0 }\n"
+                           "plane { -z, 0 pigment { image_map { " +
+                               format + " \"" + out("map." + format) + "\" } } finish { ambient 1 } }\n");
         const CommandResult render =
             run_traced("render " + mapped + " --width 16 --height 12 -q -o " + out("m_" + format + ".png"));
         ASSERT_EQ(render.exit_code, 0) << render.output;

@@ -7,7 +7,9 @@
 #include <cmath>
 #include <random>
 
+#include "geometry/planar_spline.h"
 #include "geometry/polynomial_roots.h"
+#include "geometry/revolution_bands.h"
 #include "geometry/shape.h"
 #include "geometry/shape_test_support.h"
 
@@ -276,6 +278,56 @@ TEST(Quadric, NarrowedBoxesKeepTheSolidTheyHold) {
     EXPECT_NEAR(lower.z, -std::sqrt(10.0), 1e-12);
 }
 
+// A sor's or lathe's segment is skipped when the ray never comes within
+// its band (revolution_bands.h): the band must hold every point the ray
+// has at its heights within its radius, and the cubic's range every value.
+TEST(RevolutionBand, NeverSkipsARayThatComesWithinIt) {
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int k = 0; k < 2000; ++k) {
+        const double c[4] = {unit(random), unit(random) * 3.0, unit(random) * 3.0, unit(random) * 3.0};
+        const double s0 = unit(random), s1 = s0 + 0.1 + std::fabs(unit(random));
+        double lowest, highest;
+        cubic_range(c, s0, s1, lowest, highest);
+        for (int i = 0; i <= 200; ++i) {
+            const double s = s0 + (s1 - s0) * i / 200.0;
+            const double value = ((c[3] * s + c[2]) * s + c[1]) * s + c[0];
+            ASSERT_GE(value, lowest - 1e-12) << k;
+            ASSERT_LE(value, highest + 1e-12) << k;
+        }
+    }
+    // A cubic whose leading coefficient is a rounding error (as a curve
+    // segment's often is): its turning point must not be lost.
+    {
+        const double c[4] = {0.228311, 0.228311, -0.228311, -2.77555756e-17};
+        double lowest, highest;
+        cubic_range(c, 0.0, 1.0, lowest, highest);
+        EXPECT_NEAR(highest, 0.228311 + 0.228311 / 4.0, 1e-12);
+    }
+    int met = 0, missed = 0;
+    for (int k = 0; k < 4000; ++k) {
+        const double y = unit(random);
+        const RevolutionBand band{y, y + 0.2 + 0.5 * std::fabs(unit(random)), 0.1 + std::fabs(unit(random))};
+        const DVec3 o(3.0 * unit(random), 3.0 * unit(random), 3.0 * unit(random));
+        DVec3 d(unit(random), k % 7 == 0 ? 0.0 : unit(random), unit(random));
+        if (k % 11 == 0) d = DVec3(0.0, 1.0, 0.0);  // along the axis
+        const double t_low = -2.0 * std::fabs(unit(random)), t_high = 6.0 * std::fabs(unit(random));
+        bool comes_within = false;
+        for (int i = 0; i <= 4000 && !comes_within; ++i) {
+            const DVec3 p = o + (t_low + (t_high - t_low) * i / 4000.0) * d;
+            comes_within =
+                p.y >= band.y_low && p.y <= band.y_high && p.x * p.x + p.z * p.z <= band.radius * band.radius;
+        }
+        const bool may = band.may_meet(o, d, t_low, t_high);
+        if (comes_within) {
+            ASSERT_TRUE(may) << "ray " << k;
+        }
+        (may ? met : missed) += 1;
+    }
+    EXPECT_GT(missed, 1000);  // and it does skip
+    EXPECT_GT(met, 50);
+}
+
 TEST(Polygon, EvenOddAcrossLoops) {
     // A 2 x 2 square with a 1 x 1 hole, in the plane z = 1, loops closed by
     // repeating their first point (POV's form).
@@ -430,6 +482,50 @@ TEST(Blob, EveryComponentOfAManyComponentBlobIsFound) {
         EXPECT_TRUE(blob->inside(c)) << n;
         EXPECT_FALSE(blob->inside(c + DVec3(1.5, 0.0, 0.0))) << n;
         EXPECT_NEAR(blob->surface(c + DVec3(0.0, r, 0.0), 0).normal.y, 1.0, 1e-9) << n;
+    }
+}
+
+// Prisms and text skip the curve segments whose boxes a ray or the even-
+// odd test's ray cannot meet (planar_spline.h): every point of a segment
+// lies in its box, and the even-odd answer is the one without boxes.
+TEST(Prism, SegmentBoxesHoldTheCurveAndChangeNoInsideAnswer) {
+    std::mt19937 random(9);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (const SplineKind kind : {SplineKind::Bezier, SplineKind::Cubic, SplineKind::Quadratic, SplineKind::Linear}) {
+        // A star-like loop of random radii about the origin.
+        std::vector<glm::dvec2> points;
+        const int count = kind == SplineKind::Bezier ? 4 * 9 : 14;
+        for (int i = 0; i < count; ++i) {
+            const double angle = 2.0 * kPiD * i / count, radius = 0.4 + unit(random);
+            points.push_back(radius * glm::dvec2(std::cos(angle), std::sin(angle)));
+        }
+        if (kind == SplineKind::Bezier) {
+            for (int i = 3; i < count; i += 4) points[std::size_t(i)] = points[std::size_t((i + 1) % count)];
+        } else {
+            // Closed: the first point again (and the spline's control points around it).
+            const std::size_t extra = kind == SplineKind::Linear ? 1 : kind == SplineKind::Quadratic ? 2 : 3;
+            for (std::size_t i = 0; i < extra; ++i) points.push_back(points[i]);
+        }
+        const std::vector<SplineSegment> segments = spline_segments(kind, points);
+        ASSERT_FALSE(segments.empty());
+        const std::vector<SegmentBox> boxes = segment_boxes(segments);
+        ASSERT_EQ(boxes.size(), segments.size());
+        for (std::size_t k = 0; k < segments.size(); ++k)
+            for (int i = 0; i <= 200; ++i) {
+                const glm::dvec2 p = segments[k].at(i / 200.0);
+                ASSERT_TRUE(p.x >= boxes[k].lower.x && p.x <= boxes[k].upper.x && p.y >= boxes[k].lower.y &&
+                            p.y <= boxes[k].upper.y);
+            }
+        const std::vector<SegmentBox> everywhere(segments.size(),
+                                                 SegmentBox{glm::dvec2(-INFINITY), glm::dvec2(INFINITY)});
+        int inside = 0;
+        for (int i = 0; i < 5000; ++i) {
+            const glm::dvec2 q(3.0 * unit(random) - 1.5, 3.0 * unit(random) - 1.5);
+            const bool answer = inside_curves(segments, everywhere, q);
+            ASSERT_EQ(inside_curves(segments, boxes, q), answer) << q.x << ", " << q.y;
+            inside += answer;
+        }
+        EXPECT_GT(inside, 500);
     }
 }
 

@@ -11,6 +11,7 @@
 
 #include "geometry/planar_spline.h"
 #include "geometry/polynomial_roots.h"
+#include "geometry/revolution_bands.h"
 #include "geometry/shape.h"
 
 namespace lancer {
@@ -44,6 +45,18 @@ class LatheShape final : public Shape {
         m_radius += margin;
         m_y_low -= margin;
         m_y_high += margin;
+        // Each segment's band, widened past the tolerance crossings() allows
+        // a point off the surface.
+        const double band_margin = 2e-6 * (m_radius + (m_y_high - m_y_low)) + 1e-9;
+        for (const SplineSegment& segment : m_segments) {
+            double r[4], y[4], r_low, r_high, y_low, y_high;
+            coordinate(segment, 0, r);
+            coordinate(segment, 1, y);
+            cubic_range(r, 0.0, 1.0, r_low, r_high);
+            cubic_range(y, 0.0, 1.0, y_low, y_high);
+            m_bands.push_back(RevolutionBand{y_low - band_margin, y_high + band_margin,
+                                             std::max(std::fabs(r_low), std::fabs(r_high)) + band_margin});
+        }
     }
 
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
@@ -58,7 +71,12 @@ class LatheShape final : public Shape {
             return;
         const double tolerance = 1e-6 * (m_radius + (m_y_high - m_y_low));
         const bool horizontal = std::fabs(d.y) <= 1e-9 * scale;
+        // A horizontal ray is met at its origin's height, over its whole
+        // range (below).
+        const DVec3 banded_direction = horizontal ? DVec3(d.x, 0.0, d.z) : d;
+        const double band_near = horizontal ? t_min : near, band_far = horizontal ? t_max : far;
         for (std::size_t index = 0; index < m_segments.size(); ++index) {
+            if (!m_bands[index].may_meet(o, banded_direction, band_near, band_far)) continue;
             const SplineSegment& segment = m_segments[index];
             double r[4], y[4];
             coordinate(segment, 0, r);
@@ -169,6 +187,7 @@ class LatheShape final : public Shape {
 
   private:
     std::vector<SplineSegment> m_segments;
+    std::vector<RevolutionBand> m_bands;  // by segment
     double m_radius = 0.0, m_y_low = INFINITY, m_y_high = -INFINITY;
 };
 

@@ -109,9 +109,33 @@ int segment_roots(const SplineSegment& segment, int axis, double value, double r
     return count;
 }
 
-bool inside_curves(const std::vector<SplineSegment>& segments, const glm::dvec2& q) {
-    bool inside = false;
+std::vector<SegmentBox> segment_boxes(const std::vector<SplineSegment>& segments) {
+    std::vector<SegmentBox> boxes;
+    boxes.reserve(segments.size());
     for (const SplineSegment& segment : segments) {
+        SegmentBox box;
+        for (int axis = 0; axis < 2; ++axis) {
+            const double c[4] = {segment.d[axis], segment.c[axis], segment.b[axis], segment.a[axis]};
+            cubic_range(c, 0.0, 1.0, box.lower[axis], box.upper[axis]);
+        }
+        // Roots are sought a little past each end (segment_roots), and the
+        // range rounds.
+        const glm::dvec2 margin = 1e-9 * (glm::abs(box.lower) + glm::abs(box.upper)) + 1e-12;
+        box.lower -= margin;
+        box.upper += margin;
+        boxes.push_back(box);
+    }
+    return boxes;
+}
+
+bool inside_curves(const std::vector<SplineSegment>& segments, const std::vector<SegmentBox>& boxes,
+                   const glm::dvec2& q) {
+    bool inside = false;
+    for (std::size_t index = 0; index < segments.size(); ++index) {
+        const SplineSegment& segment = segments[index];
+        const SegmentBox& box = boxes[index];
+        // Not at q's height, or wholly behind q: no crossing counts.
+        if (q.y < box.lower.y || q.y > box.upper.y || box.upper.x <= q.x) continue;
         // Linear segments by the half-open rule, exact at vertices.
         if (segment.a == glm::dvec2(0.0) && segment.b == glm::dvec2(0.0)) {
             const glm::dvec2 p0 = segment.d, p1 = segment.d + segment.c;

@@ -31,8 +31,18 @@ std::vector<SplineSegment> open_spline_segments(SplineKind kind, const std::vect
 // equals `value`; returns how many (at most 3).
 int segment_roots(const SplineSegment& segment, int axis, double value, double roots[3]);
 
+// The box holding each segment's points for s in [0, 1], widened past the
+// slack its roots are sought with: a line that misses it cannot meet the
+// segment (what lets a text's many glyph curves be skipped).
+struct SegmentBox {
+    glm::dvec2 lower{0.0}, upper{0.0};
+};
+std::vector<SegmentBox> segment_boxes(const std::vector<SplineSegment>& segments);
+
 // Even-odd: whether q is inside the closed curves (a ray from q along +x
-// crosses them an odd number of times).
-bool inside_curves(const std::vector<SplineSegment>& segments, const glm::dvec2& q);
+// crosses them an odd number of times). `boxes` (segment_boxes) skip the
+// segments that ray cannot cross.
+bool inside_curves(const std::vector<SplineSegment>& segments, const std::vector<SegmentBox>& boxes,
+                   const glm::dvec2& q);
 
 }  // namespace lancer

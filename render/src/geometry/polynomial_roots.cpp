@@ -136,4 +136,19 @@ int polynomial_roots_in(const double* coefficients, int degree, double t_lo, dou
     return roots_of(c, degree, t_lo, t_hi, roots);
 }
 
+void cubic_range(const double c[4], double s0, double s1, double& lowest, double& highest) {
+    const auto value = [c](double s) { return ((c[3] * s + c[2]) * s + c[1]) * s + c[0]; };
+    lowest = std::min(value(s0), value(s1));
+    highest = std::max(value(s0), value(s1));
+    // 3 c3 s^2 + 2 c2 s + c1 = 0, without cancellation: a curve's c3 is
+    // often a rounding error away from 0.
+    double turning[2];
+    const int count = solve_quadratic(3.0 * c[3], c[2], c[1], turning);
+    for (int i = 0; i < count; ++i)
+        if (turning[i] > s0 && turning[i] < s1) {
+            lowest = std::min(lowest, value(turning[i]));
+            highest = std::max(highest, value(turning[i]));
+        }
+}
+
 }  // namespace lancer

@@ -24,4 +24,9 @@ int solve_quadratic(double a, double b_half, double c, double roots[2]);
 constexpr int kMaxPolynomialDegree = 16;
 int polynomial_roots_in(const double* coefficients, int degree, double t_lo, double t_hi, double* roots);
 
+// The least and greatest values of c[0] + c[1] s + c[2] s^2 + c[3] s^3
+// over [s0, s1]: at the ends or where the derivative vanishes (the bounds
+// of a curve segment's coordinates, which let a shape skip segments).
+void cubic_range(const double c[4], double s0, double s1, double& lowest, double& highest);
+
 }  // namespace lancer

@@ -37,6 +37,7 @@ class PrismShape final : public Shape {
         const glm::dvec2 margin = 0.05 * (m_upper2 - m_lower2) + glm::dvec2(1e-9);
         m_lower2 -= margin;
         m_upper2 += margin;
+        m_boxes = segment_boxes(m_segments);
     }
 
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
@@ -51,7 +52,7 @@ class PrismShape final : public Shape {
                     if (h == 0.0) continue;
                     q /= h;
                 }
-                if (inside_curves(m_segments, q)) out.add(t, face);
+                if (inside_curves(m_segments, m_boxes, q)) out.add(t, face);
             }
         }
         // Sides: alpha x(s) + beta z(s) + gamma = 0.
@@ -66,7 +67,13 @@ class PrismShape final : public Shape {
             gamma = d.x * o.z - d.z * o.x;
         }
         if (alpha == 0.0 && beta == 0.0) return;
+        // A linear sweep's side is met where the ray's shadow on the x-z
+        // plane, over the stretch of it between the two heights, meets the
+        // curve: a segment whose box that stretch misses has no crossing.
+        double near = t_min, far = t_max;
+        if (!m_conic && !side_stretch(o, d, near, far)) return;
         for (std::size_t index = 0; index < m_segments.size(); ++index) {
+            if (!m_conic && !shadow_meets_box(o, d, near, far, m_boxes[index])) continue;
             const SplineSegment& s = m_segments[index];
             const double c[4] = {alpha * s.d.x + beta * s.d.y + gamma, alpha * s.c.x + beta * s.c.y,
                                  alpha * s.b.x + beta * s.b.y, alpha * s.a.x + beta * s.a.y};
@@ -130,7 +137,7 @@ class PrismShape final : public Shape {
             if (std::fabs(p.y) <= 1e-10) return false;
             q /= p.y;
         }
-        return inside_curves(m_segments, q);
+        return inside_curves(m_segments, m_boxes, q);
     }
 
     bool bounds(DVec3& lower, DVec3& upper) const override {
@@ -152,6 +159,37 @@ class PrismShape final : public Shape {
     }
 
   private:
+    // The t over which o + t d lies between the heights, widened as the
+    // side test's height check rounds; false when it never does.
+    bool side_stretch(const DVec3& o, const DVec3& d, double& near, double& far) const {
+        const double slack = 1e-9 * (std::fabs(m_h1) + std::fabs(m_h2)) + 1e-12;
+        const double low = m_h1 - slack, high = m_h2 + slack;
+        if (d.y == 0.0) return o.y >= low && o.y <= high;
+        double t1 = (low - o.y) / d.y, t2 = (high - o.y) / d.y;
+        if (t1 > t2) std::swap(t1, t2);
+        near = std::max(near, t1);
+        far = std::min(far, t2);
+        return near <= far;
+    }
+
+    // Whether (o.x, o.z) + t (d.x, d.z), t in [near, far], meets the box.
+    static bool shadow_meets_box(const DVec3& o, const DVec3& d, double near, double far, const SegmentBox& box) {
+        const double origin[2] = {o.x, o.z}, direction[2] = {d.x, d.z};
+        for (int axis = 0; axis < 2; ++axis) {
+            if (direction[axis] == 0.0) {
+                if (origin[axis] < box.lower[axis] || origin[axis] > box.upper[axis]) return false;
+                continue;
+            }
+            double t1 = (box.lower[axis] - origin[axis]) / direction[axis];
+            double t2 = (box.upper[axis] - origin[axis]) / direction[axis];
+            if (t1 > t2) std::swap(t1, t2);
+            near = std::max(near, t1);
+            far = std::min(far, t2);
+            if (!(near <= far)) return false;
+        }
+        return true;
+    }
+
     // The parameter of the segment's point nearest `target` (samples, then Newton).
     static double nearest_parameter(const SplineSegment& segment, const glm::dvec2& target) {
         double best = 0.0, best_distance = INFINITY;
@@ -176,6 +214,7 @@ class PrismShape final : public Shape {
     }
 
     std::vector<SplineSegment> m_segments;
+    std::vector<SegmentBox> m_boxes;  // by segment (segment_boxes)
     double m_h1, m_h2;
     bool m_conic, m_open;
     glm::dvec2 m_lower2, m_upper2;

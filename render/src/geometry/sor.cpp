@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "geometry/polynomial_roots.h"
+#include "geometry/revolution_bands.h"
 #include "geometry/shape.h"
 
 namespace lancer {
@@ -38,6 +39,16 @@ class SorShape final : public Shape {
                 m_radius = std::max(m_radius, std::sqrt(std::max(0.0, s.r2(y))));
             }
         m_radius = 1.05 * m_radius + 1e-9;
+        // Each segment's band, widened past the tolerance crossings() allows
+        // a point off the surface.
+        const double margin = 2e-6 * (m_radius + (m_top - m_bottom)) + 1e-9;
+        for (const SorSegment& s : m_segments) {
+            const double r2[4] = {s.d, s.c, s.b, s.a};
+            double lowest, highest;
+            cubic_range(r2, s.y_low, s.y_high, lowest, highest);
+            m_bands.push_back(
+                RevolutionBand{s.y_low - margin, s.y_high + margin, std::sqrt(std::max(highest, 0.0)) + margin});
+        }
     }
 
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
@@ -50,6 +61,7 @@ class SorShape final : public Shape {
             return;
         const double tolerance = 1e-6 * (m_radius + (m_top - m_bottom));
         for (std::size_t index = 0; index < m_segments.size(); ++index) {
+            if (!m_bands[index].may_meet(o, d, near, far)) continue;
             const SorSegment& s = m_segments[index];
             // x(t)^2 + z(t)^2 - r^2(o.y + t d.y) = 0.
             const double y0 = o.y, dy = d.y;
@@ -119,6 +131,7 @@ class SorShape final : public Shape {
 
   private:
     std::vector<SorSegment> m_segments;
+    std::vector<RevolutionBand> m_bands;  // by segment
     double m_bottom, m_bottom_r, m_top, m_top_r;
     bool m_open;
     double m_radius = 0.0;
