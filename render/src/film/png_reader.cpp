@@ -142,12 +142,16 @@ class PngFileReader final : public ImageFileReader {
     // The whole image, at the first read: by then the caller has checked
     // the size the header claims.
     void decode() {
+        if (m_failed) fail();  // libpng may not go on after an error
         if (m_decoded) return;
         const std::size_t height = std::size_t(m_info_out.height);
         m_pixels.resize(m_row_bytes * height);
         std::vector<png_bytep> rows(height);
         for (std::size_t y = 0; y < height; ++y) rows[y] = m_pixels.data() + y * m_row_bytes;
-        if (!read_pixels(m_png, rows.data())) fail();
+        if (!read_pixels(m_png, rows.data())) {
+            m_failed = true;
+            fail();
+        }
         m_decoded = true;
         if (!m_alpha || m_stored) return;
         if (m_sample_bytes == 2)
@@ -184,6 +188,7 @@ class PngFileReader final : public ImageFileReader {
     std::size_t m_row_bytes = 0;
     int m_sample_bytes = 1;
     bool m_decoded = false;
+    bool m_failed = false;
     bool m_alpha = false;  // an alpha channel, or one from tRNS
     float m_gamma = 1.0f;  // OpenImageIO's oiio:Gamma for the file
     std::vector<unsigned char> m_pixels;

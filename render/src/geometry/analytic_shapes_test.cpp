@@ -529,6 +529,30 @@ TEST(Prism, SegmentBoxesHoldTheCurveAndChangeNoInsideAnswer) {
     }
 }
 
+// A prism's side whose segment lies on an axis (a glyph's baseline at
+// z = 0) is still met by rays from far away, whose shadow on the x-z
+// plane rounds by more than that segment's own size would allow.
+TEST(Prism, FarRaysStillMeetASideLyingOnAnAxis) {
+    PrismParameters glyph;
+    glyph.points = {{-1, 0}, {1, 0}, {1, 1}, {-1, 1}, {-1, 0}};
+    glyph.height1 = 0.0;
+    glyph.height2 = 0.2;
+    const auto prism = make_prism_shape(glyph);
+    ASSERT_TRUE(prism);
+    std::mt19937 random(13);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int k = 0; k < 4000; ++k) {
+        const DVec3 target(
+            k % 3 ? unit(random) : (k % 2 ? 1.0 : -1.0) * (1.0 - 1e-6 * (0.01 + std::fabs(unit(random)))),
+            0.1 + 0.09 * unit(random), 0.0);
+        const double distance = k % 4 < 2 ? 1e5 : 1e6;
+        const DVec3 from = target + distance * glm::normalize(DVec3(unit(random), 0.3 * unit(random), -1.0));
+        const std::vector<double> t = sorted_crossings(*prism, from, target - from);
+        ASSERT_EQ(t.size(), 2u) << "ray " << k;
+        EXPECT_NEAR(t[0], 1.0, 1e-6) << "ray " << k;  // the baseline's face first
+    }
+}
+
 TEST(Prism, LinearAndConicSweeps) {
     PrismParameters square;
     square.points = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}};

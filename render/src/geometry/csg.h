@@ -67,9 +67,10 @@ class CsgTree {
     // in (t_min, t_max).
     bool nearest(const std::vector<Instance>& instances, const DVec3& o, const DVec3& d, double t_min, double t_max,
                  CsgCrossing& hit) const;
-    // The leaf of a tree that is one shape made an object by `inverse`
-    // alone (a room's walls: no clips, no bounds), whose every crossing is
-    // kept: the tree's nearest crossing is the shape's own. Null otherwise.
+    // The leaf of a tree that is one shape and nothing else (no clips, no
+    // bounds): the object a shape made CSG by `inverse` alone is, a room's
+    // walls. Its every crossing is kept, so the tree's nearest crossing is
+    // the shape's own. Null otherwise.
     const CsgNode* lone_leaf() const {
         const CsgNode& top = nodes[root];
         return top.operation == CsgNode::Operation::Leaf && top.clips.empty() && top.bounds.empty() ? &top : nullptr;

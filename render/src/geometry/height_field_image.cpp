@@ -68,9 +68,6 @@ std::uint16_t to_height_value(double value) {
     return std::uint16_t(value);
 }
 
-}  // namespace
-
-// Grid row r is image row height - 1 - r: POV puts the image's top at z = 1.
 bool file_starts_with_gif_signature(const std::string& path) {
     std::ifstream file(path, std::ios::binary);
     char signature[6] = {};
@@ -78,6 +75,9 @@ bool file_starts_with_gif_signature(const std::string& path) {
     return std::string_view(signature, 6) == "GIF87a" || std::string_view(signature, 6) == "GIF89a";
 }
 
+}  // namespace
+
+// Grid row r is image row height - 1 - r: POV puts the image's top at z = 1.
 HeightFieldGrid grid_from_values(int width, int height, const std::vector<std::uint16_t>& values) {
     HeightFieldGrid grid;
     grid.columns = width;
@@ -148,7 +148,7 @@ HeightFieldGrid read_height_field_image(const std::string& path, double gamma) {
     // A GIF (and POV's POT, a GIF of twice the width) is decoded here, so
     // its signature spares loading the image module to name it.
     if (file_starts_with_gif_signature(path)) return read_gif(path, extension == "pot");
-    // Open with the image module first: it names what the file is.
+    // Open with libpng or the image module: it names what the file is.
     // POV-Ray keeps a file's colours as stored, not multiplied by alpha.
     std::unique_ptr<ImageFileReader> input;
     try {

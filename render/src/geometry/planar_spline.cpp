@@ -1,6 +1,7 @@
 // POV-Ray's spline segments in the plane (planar_spline.h).
 #include "geometry/planar_spline.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/polynomial_roots.h"
@@ -112,18 +113,23 @@ int segment_roots(const SplineSegment& segment, int axis, double value, double r
 std::vector<SegmentBox> segment_boxes(const std::vector<SplineSegment>& segments) {
     std::vector<SegmentBox> boxes;
     boxes.reserve(segments.size());
+    double reach = 0.0;  // the largest coordinate of the whole curve
     for (const SplineSegment& segment : segments) {
         SegmentBox box;
         for (int axis = 0; axis < 2; ++axis) {
             const double c[4] = {segment.d[axis], segment.c[axis], segment.b[axis], segment.a[axis]};
             cubic_range(c, 0.0, 1.0, box.lower[axis], box.upper[axis]);
+            reach = std::max({reach, std::fabs(box.lower[axis]), std::fabs(box.upper[axis])});
         }
-        // Roots are sought a little past each end (segment_roots), and the
-        // range rounds.
-        const glm::dvec2 margin = 1e-9 * (glm::abs(box.lower) + glm::abs(box.upper)) + 1e-12;
+        boxes.push_back(box);
+    }
+    // Roots are sought a little past each end (segment_roots), and the
+    // ranges and the points rays are tested at round: a margin of the
+    // curve's size, not the segment's (a glyph's baseline lies at 0).
+    const double margin = 1e-9 * reach + 1e-12;
+    for (SegmentBox& box : boxes) {
         box.lower -= margin;
         box.upper += margin;
-        boxes.push_back(box);
     }
     return boxes;
 }

@@ -172,16 +172,19 @@ class PrismShape final : public Shape {
         return near <= far;
     }
 
-    // Whether (o.x, o.z) + t (d.x, d.z), t in [near, far], meets the box.
+    // Whether (o.x, o.z) + t (d.x, d.z), t in [near, far], meets the box,
+    // widened by the rounding of a ray from far away.
     static bool shadow_meets_box(const DVec3& o, const DVec3& d, double near, double far, const SegmentBox& box) {
         const double origin[2] = {o.x, o.z}, direction[2] = {d.x, d.z};
+        const double slack = 1e-13 * (std::fabs(o.x) + std::fabs(o.z));
         for (int axis = 0; axis < 2; ++axis) {
+            const double lower = box.lower[axis] - slack, upper = box.upper[axis] + slack;
             if (direction[axis] == 0.0) {
-                if (origin[axis] < box.lower[axis] || origin[axis] > box.upper[axis]) return false;
+                if (origin[axis] < lower || origin[axis] > upper) return false;
                 continue;
             }
-            double t1 = (box.lower[axis] - origin[axis]) / direction[axis];
-            double t2 = (box.upper[axis] - origin[axis]) / direction[axis];
+            double t1 = (lower - origin[axis]) / direction[axis];
+            double t2 = (upper - origin[axis]) / direction[axis];
             if (t1 > t2) std::swap(t1, t2);
             near = std::max(near, t1);
             far = std::min(far, t2);

@@ -36,8 +36,10 @@ struct RevolutionBand {
         const double across = d.x * d.x + d.z * d.z;
         double t = t_low;
         if (across > 0.0) t = std::clamp(-(o.x * d.x + o.z * d.z) / across, t_low, t_high);
+        // Widened by the rounding of a ray from far away.
         const double x = o.x + t * d.x, z = o.z + t * d.z;
-        return !(x * x + z * z > radius * radius);
+        const double reach = radius + 1e-13 * (std::fabs(o.x) + std::fabs(o.z));
+        return !(x * x + z * z > reach * reach);
     }
 };
 
