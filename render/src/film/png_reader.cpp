@@ -24,8 +24,9 @@ struct Header {
     int bit_depth = 0;
     int color_type = 0;
     bool transparency = false;  // a tRNS chunk
-    bool srgb = false;          // an sRGB chunk
-    double gamma = 0.0;         // a gAMA chunk's value (0: none)
+    bool interlaced = false;
+    bool srgb = false;   // an sRGB chunk
+    double gamma = 0.0;  // a gAMA chunk's value (0: none)
 };
 
 bool read_header(png_structp png, png_infop info, std::FILE* file, Header* header) {
@@ -38,6 +39,7 @@ bool read_header(png_structp png, png_infop info, std::FILE* file, Header* heade
     header->bit_depth = png_get_bit_depth(png, info);
     header->color_type = png_get_color_type(png, info);
     header->transparency = png_get_valid(png, info, PNG_INFO_tRNS) != 0;
+    header->interlaced = png_get_interlace_type(png, info) != PNG_INTERLACE_NONE;
     int intent = 0;
     header->srgb = png_get_sRGB(png, info, &intent) != 0;
     if (!png_get_gAMA(png, info, &header->gamma)) header->gamma = 0.0;
@@ -75,6 +77,12 @@ bool read_pixels(png_structp png, png_bytepp rows) {
     return true;
 }
 
+bool read_next_row(png_structp png, png_bytep row) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_read_row(png, row, nullptr);
+    return true;
+}
+
 class PngFileReader final : public ImageFileReader {
   public:
     PngFileReader(std::string path, bool stored_colours) : m_path(std::move(path)), m_stored(stored_colours) {}
@@ -96,6 +104,7 @@ class PngFileReader final : public ImageFileReader {
         Header header;
         if (!read_header(m_png, m_info, m_file, &header)) fail();
         m_alpha = (header.color_type & PNG_COLOR_MASK_ALPHA) != 0 || header.transparency;
+        m_interlaced = header.interlaced;
         // OpenImageIO's gamma: the gAMA chunk's inverse to the hundredth,
         // unless an sRGB chunk says sRGB.
         if (!header.srgb && header.gamma > 0.0) m_gamma = std::round(100.0f * float(1.0 / header.gamma)) / 100.0f;
@@ -125,49 +134,72 @@ class PngFileReader final : public ImageFileReader {
             image_codecs().open(m_path, m_stored)->read_rows(first, end, type, out);
             return;
         }
-        decode();
-        const std::size_t samples = std::size_t(end - first) * m_row_bytes / std::size_t(m_sample_bytes);
-        const unsigned char* source = m_pixels.data() + std::size_t(first) * m_row_bytes;
-        if (!widened) {
-            std::memcpy(out, source, samples * std::size_t(m_sample_bytes));
-            return;
+        const std::size_t row_samples = m_row_bytes / std::size_t(m_sample_bytes);
+        for (int y = first; y < end; ++y) {
+            const unsigned char* source = row(y);
+            const std::size_t at = std::size_t(y - first) * row_samples;
+            if (!widened) {
+                std::memcpy(static_cast<unsigned char*>(out) + at * std::size_t(m_sample_bytes), source, m_row_bytes);
+                continue;
+            }
+            auto* words = static_cast<std::uint16_t*>(out) + at;
+            for (std::size_t i = 0; i < row_samples; ++i) words[i] = std::uint16_t(source[i] * 257u);
         }
-        auto* words = static_cast<std::uint16_t*>(out);
-        for (std::size_t i = 0; i < samples; ++i) words[i] = std::uint16_t(source[i] * 257u);
     }
 
   private:
     [[noreturn]] void fail() const { throw std::runtime_error(m_error.message); }
 
-    // The whole image, at the first read: by then the caller has checked
-    // the size the header claims.
-    void decode() {
+    // Row y, decoded. Rows come one at a time as the callers read them
+    // (bands from the top), so a big height field is never whole in
+    // memory; an interlaced file, or a row read again, needs the whole
+    // image, decoded at once.
+    const unsigned char* row(int y) {
         if (m_failed) fail();  // libpng may not go on after an error
-        if (m_decoded) return;
-        const std::size_t height = std::size_t(m_info_out.height);
-        m_pixels.resize(m_row_bytes * height);
-        std::vector<png_bytep> rows(height);
-        for (std::size_t y = 0; y < height; ++y) rows[y] = m_pixels.data() + y * m_row_bytes;
-        if (!read_pixels(m_png, rows.data())) {
-            m_failed = true;
-            fail();
+        if (!m_interlaced && !m_whole && y >= m_next_row) {
+            m_pixels.resize(m_row_bytes);
+            while (m_next_row <= y) {  // rows skipped are read and dropped
+                if (!read_next_row(m_png, m_pixels.data())) {
+                    m_failed = true;
+                    fail();
+                }
+                ++m_next_row;
+            }
+            multiply_rows_by_alpha(m_pixels.data(), 1);
+            return m_pixels.data();
         }
-        m_decoded = true;
+        if (!m_whole) {
+            if (m_next_row != 0) throw std::runtime_error("PNG rows read out of order");
+            const std::size_t height = std::size_t(m_info_out.height);
+            m_pixels.resize(m_row_bytes * height);
+            std::vector<png_bytep> rows(height);
+            for (std::size_t r = 0; r < height; ++r) rows[r] = m_pixels.data() + r * m_row_bytes;
+            if (!read_pixels(m_png, rows.data())) {
+                m_failed = true;
+                fail();
+            }
+            m_whole = true;
+            multiply_rows_by_alpha(m_pixels.data(), m_info_out.height);
+        }
+        return m_pixels.data() + std::size_t(y) * m_row_bytes;
+    }
+
+    void multiply_rows_by_alpha(unsigned char* bytes, int rows) const {
         if (!m_alpha || m_stored) return;
+        const std::size_t pixels = std::size_t(m_info_out.width) * std::size_t(rows);
         if (m_sample_bytes == 2)
-            multiply_by_alpha(reinterpret_cast<std::uint16_t*>(m_pixels.data()));
+            multiply_by_alpha(reinterpret_cast<std::uint16_t*>(bytes), pixels);
         else
-            multiply_by_alpha(m_pixels.data());
+            multiply_by_alpha(bytes, pixels);
     }
 
     // Colours multiplied by alpha as the image module has OpenImageIO 2.4
     // do it: in integers where the file declares no gamma, else by alpha
     // raised to the file's gamma, truncated.
     template <class Sample>
-    void multiply_by_alpha(Sample* samples) const {
+    void multiply_by_alpha(Sample* samples, std::size_t pixels) const {
         constexpr unsigned top = std::numeric_limits<Sample>::max();
         const int channels = m_info_out.channels, alpha = channels - 1;
-        const std::size_t pixels = std::size_t(m_info_out.width) * std::size_t(m_info_out.height);
         for (std::size_t i = 0; i < pixels; ++i, samples += channels) {
             if (m_gamma == 1.0f) {
                 for (int c = 0; c < alpha; ++c) samples[c] = Sample(unsigned(samples[c]) * samples[alpha] / top);
@@ -187,7 +219,9 @@ class PngFileReader final : public ImageFileReader {
     ImageFileInfo m_info_out;
     std::size_t m_row_bytes = 0;
     int m_sample_bytes = 1;
-    bool m_decoded = false;
+    bool m_interlaced = false;
+    bool m_whole = false;  // every row decoded into m_pixels
+    int m_next_row = 0;    // the next row libpng gives, read row by row
     bool m_failed = false;
     bool m_alpha = false;  // an alpha channel, or one from tRNS
     float m_gamma = 1.0f;  // OpenImageIO's oiio:Gamma for the file

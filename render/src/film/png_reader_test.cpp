@@ -6,6 +6,7 @@
 
 #include <png.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -196,6 +197,19 @@ TEST(PngReader, LeavesOtherFilesToTheModuleAndNamesDamage) {
     ASSERT_NE(reader, nullptr);
     std::vector<unsigned char> pixels(std::size_t(reader->info().width) * reader->info().height * 3);
     EXPECT_THROW(reader->read_rows(0, reader->info().height, SampleType::UInt8, pixels.data()), std::runtime_error);
+    // Rows are decoded as they are read: a later band first skips the rows
+    // before it; an earlier one after that is refused, not misread.
+    {
+        std::unique_ptr<ImageFileReader> ours = open_png_file(whole, true);
+        std::unique_ptr<ImageFileReader> module = image_codecs().open(whole, true);
+        const int width = ours->info().width, height = ours->info().height;
+        std::vector<unsigned char> from_ours(std::size_t(width) * 3 * std::size_t(height - 2));
+        std::vector<unsigned char> all(std::size_t(width) * 3 * std::size_t(height));
+        ours->read_rows(2, height, SampleType::UInt8, from_ours.data());
+        module->read_rows(0, height, SampleType::UInt8, all.data());
+        EXPECT_TRUE(std::equal(from_ours.begin(), from_ours.end(), all.begin() + std::ptrdiff_t(width) * 3 * 2));
+        EXPECT_THROW(ours->read_rows(0, 1, SampleType::UInt8, from_ours.data()), std::runtime_error);
+    }
     // Its header alone cut: named at open.
     std::ofstream(cut, std::ios::binary).write(bytes.data(), 20);
     EXPECT_THROW(open_png_file(cut, true), std::runtime_error);
