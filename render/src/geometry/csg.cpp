@@ -243,17 +243,20 @@ bool CsgTree::ray_meets(const std::vector<Instance>& instances, std::uint32_t in
     return met;
 }
 
+bool CsgTree::leaf_nearest(const Instance& leaf, std::uint32_t index, const DVec3& o, const DVec3& d, double t_min,
+                           double t_max, CsgCrossing& hit) {
+    ShapeCrossing crossing;
+    if (!leaf.shape->nearest(leaf.placement.point_to_object(o), leaf.placement.vector_to_object(d), t_min, t_max,
+                             crossing))
+        return false;
+    hit = CsgCrossing{crossing.t, index, crossing.face};
+    return true;
+}
+
 bool CsgTree::nearest(const std::vector<Instance>& instances, const DVec3& o, const DVec3& d, double t_min,
                       double t_max, CsgCrossing& hit) const {
-    if (const CsgNode* top = lone_leaf()) {
-        const Instance& leaf = instances[top->instance];
-        ShapeCrossing crossing;
-        if (!leaf.shape->nearest(leaf.placement.point_to_object(o), leaf.placement.vector_to_object(d), t_min, t_max,
-                                 crossing))
-            return false;
-        hit = CsgCrossing{crossing.t, top->instance, crossing.face};
-        return true;
-    }
+    if (const CsgNode* top = lone_leaf())
+        return leaf_nearest(instances[top->instance], top->instance, o, d, t_min, t_max, hit);
     // One list per thread, reused: Embree calls this for every ray.
     thread_local std::vector<CsgCrossing> crossings;
     crossings.clear();

@@ -75,6 +75,10 @@ class CsgTree {
         const CsgNode& top = nodes[root];
         return top.operation == CsgNode::Operation::Leaf && top.clips.empty() && top.bounds.empty() ? &top : nullptr;
     }
+    // The nearest crossing of the world ray o + t d with the shape of
+    // `leaf` (instance `index`), every crossing kept: a lone leaf's answer.
+    static bool leaf_nearest(const Instance& leaf, std::uint32_t index, const DVec3& o, const DVec3& d, double t_min,
+                             double t_max, CsgCrossing& hit);
     // POV's Inside_Object for node `node` at world point p.
     bool inside(const std::vector<Instance>& instances, std::uint32_t node, const DVec3& p) const;
 

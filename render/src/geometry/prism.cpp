@@ -70,10 +70,21 @@ class PrismShape final : public Shape {
         // A linear sweep's side is met where the ray's shadow on the x-z
         // plane, over the stretch of it between the two heights, meets the
         // curve: a segment whose box that stretch misses has no crossing.
+        // The heights are widened as the side test's height check rounds,
+        // the boxes by the rounding of a ray from far away.
         double near = t_min, far = t_max;
-        if (!m_conic && !side_stretch(o, d, near, far)) return;
+        const double height_slack = 1e-9 * (std::fabs(m_h1) + std::fabs(m_h2)) + 1e-12;
+        const double shadow_slack = 1e-13 * (std::fabs(o.x) + std::fabs(o.z));
+        if (!m_conic && !ray_box_interval(DVec3(-INFINITY, m_h1 - height_slack, -INFINITY),
+                                          DVec3(INFINITY, m_h2 + height_slack, INFINITY), o, d, near, far))
+            return;
         for (std::size_t index = 0; index < m_segments.size(); ++index) {
-            if (!m_conic && !shadow_meets_box(o, d, near, far, m_boxes[index])) continue;
+            const SegmentBox& box = m_boxes[index];
+            double segment_near = near, segment_far = far;
+            if (!m_conic && !ray_box_interval(DVec3(box.lower.x - shadow_slack, -INFINITY, box.lower.y - shadow_slack),
+                                              DVec3(box.upper.x + shadow_slack, INFINITY, box.upper.y + shadow_slack),
+                                              o, d, segment_near, segment_far))
+                continue;
             const SplineSegment& s = m_segments[index];
             const double c[4] = {alpha * s.d.x + beta * s.d.y + gamma, alpha * s.c.x + beta * s.c.y,
                                  alpha * s.b.x + beta * s.b.y, alpha * s.a.x + beta * s.a.y};
@@ -159,40 +170,6 @@ class PrismShape final : public Shape {
     }
 
   private:
-    // The t over which o + t d lies between the heights, widened as the
-    // side test's height check rounds; false when it never does.
-    bool side_stretch(const DVec3& o, const DVec3& d, double& near, double& far) const {
-        const double slack = 1e-9 * (std::fabs(m_h1) + std::fabs(m_h2)) + 1e-12;
-        const double low = m_h1 - slack, high = m_h2 + slack;
-        if (d.y == 0.0) return o.y >= low && o.y <= high;
-        double t1 = (low - o.y) / d.y, t2 = (high - o.y) / d.y;
-        if (t1 > t2) std::swap(t1, t2);
-        near = std::max(near, t1);
-        far = std::min(far, t2);
-        return near <= far;
-    }
-
-    // Whether (o.x, o.z) + t (d.x, d.z), t in [near, far], meets the box,
-    // widened by the rounding of a ray from far away.
-    static bool shadow_meets_box(const DVec3& o, const DVec3& d, double near, double far, const SegmentBox& box) {
-        const double origin[2] = {o.x, o.z}, direction[2] = {d.x, d.z};
-        const double slack = 1e-13 * (std::fabs(o.x) + std::fabs(o.z));
-        for (int axis = 0; axis < 2; ++axis) {
-            const double lower = box.lower[axis] - slack, upper = box.upper[axis] + slack;
-            if (direction[axis] == 0.0) {
-                if (origin[axis] < lower || origin[axis] > upper) return false;
-                continue;
-            }
-            double t1 = (lower - origin[axis]) / direction[axis];
-            double t2 = (upper - origin[axis]) / direction[axis];
-            if (t1 > t2) std::swap(t1, t2);
-            near = std::max(near, t1);
-            far = std::min(far, t2);
-            if (!(near <= far)) return false;
-        }
-        return true;
-    }
-
     // The parameter of the segment's point nearest `target` (samples, then Newton).
     static double nearest_parameter(const SplineSegment& segment, const glm::dvec2& target) {
         double best = 0.0, best_distance = INFINITY;

@@ -61,19 +61,6 @@ bool UnboundedShapes::crosses_instance(const SceneData& data, std::uint32_t inde
     return intersect_analytic(data, index, o, d, t_min, t_max, t, face, leaf);
 }
 
-// CsgTree::nearest of a lone leaf, on the world ray.
-bool UnboundedShapes::crosses_lone_leaf(const SceneData& data, std::uint32_t leaf, const DVec3& origin,
-                                        const DVec3& direction, double t_min, double t_max, double& t, int& face) {
-    const Instance& shape = data.instances[leaf];
-    ShapeCrossing crossing;
-    if (!shape.shape->nearest(shape.placement.point_to_object(origin), shape.placement.vector_to_object(direction),
-                              t_min, t_max, crossing))
-        return false;
-    t = crossing.t;
-    face = crossing.face;
-    return true;
-}
-
 // Inline: a world plane's test is a division, cheaper than a call.
 inline bool UnboundedShapes::crosses(const SceneData& data, const Entry& shape, const Ray& ray, const DVec3& origin,
                                      const DVec3& direction, double t_min, double t_max, double& t, std::uint32_t& leaf,
@@ -82,8 +69,13 @@ inline bool UnboundedShapes::crosses(const SceneData& data, const Entry& shape, 
     face = 0;
     if (shape.world_plane) return cross_plane(shape.normal, shape.distance, origin, direction, t_min, t_max, t);
     if (shape.lone_leaf) {
-        leaf = shape.leaf;
-        return crosses_lone_leaf(data, shape.leaf, origin, direction, t_min, t_max, t, face);
+        CsgCrossing crossing;
+        if (!CsgTree::leaf_nearest(data.instances[shape.leaf], shape.leaf, origin, direction, t_min, t_max, crossing))
+            return false;
+        t = crossing.t;
+        leaf = crossing.instance;
+        face = crossing.face;
+        return true;
     }
     return crosses_instance(data, shape.instance, ray, t_min, t_max, t, leaf, face);
 }

@@ -51,8 +51,6 @@ class UnboundedShapes {
     // world ray (origin, direction), any other shape in its own space.
     static bool crosses(const SceneData& data, const Entry& shape, const Ray& ray, const DVec3& origin,
                         const DVec3& direction, double t_min, double t_max, double& t, std::uint32_t& leaf, int& face);
-    static bool crosses_lone_leaf(const SceneData& data, std::uint32_t leaf, const DVec3& origin,
-                                  const DVec3& direction, double t_min, double t_max, double& t, int& face);
     static bool crosses_instance(const SceneData& data, std::uint32_t index, const Ray& ray, double t_min, double t_max,
                                  double& t, std::uint32_t& leaf, int& face);
     std::vector<Entry> m_shapes;
