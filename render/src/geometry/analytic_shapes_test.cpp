@@ -412,6 +412,88 @@ TEST(Superellipsoid, SphereBoxAndGrazingRays) {
     EXPECT_FALSE(round->inside({0.9, 0.9, 0.0}));
 }
 
+// A line just inside a convex superellipsoid's surface, along the surface,
+// crosses it twice however shallow; a line just outside does not. The
+// search for the minimum of N along the line must tell them apart.
+TEST(Superellipsoid, GrazingLinesAreToldApartAtAnyDepth) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const double exponents[][2] = {{1, 1}, {0.3, 0.3}, {0.5, 1.0}, {2, 2}, {1.5, 0.4}, {0.2, 2}};
+    for (const auto& e : exponents) {
+        const auto shape = make_superellipsoid_shape(e[0], e[1]);
+        int checked = 0;
+        for (int i = 0; i < 400; ++i) {
+            const DVec3 on = shape->surface(DVec3(u(rng), u(rng), u(rng)), 0).point;
+            const DVec3 normal = shape->surface(on, 0).normal;
+            DVec3 along = glm::cross(normal, DVec3(u(rng), u(rng), u(rng)));
+            if (glm::length(along) < 0.1) continue;
+            along = glm::normalize(along);
+            for (const double depth : {1e-2, 1e-4, 1e-6}) {
+                const DVec3 in = on - depth * normal, out = on + depth * normal;
+                // Where the surface bends too sharply (near an edge) the inner
+                // point may not be inside: check only lines that pass inside.
+                if (!shape->inside(in) || shape->inside(out)) continue;
+                ++checked;
+                const auto through = sorted_crossings(*shape, in - 3.0 * along, along, 0.0, 1e9);
+                ASSERT_EQ(through.size(), 2u) << e[0] << " " << e[1] << " ray " << i << " depth " << depth;
+                EXPECT_LT(through[0], 3.0);
+                EXPECT_GT(through[1], 3.0);
+                ShapeCrossing first;
+                ASSERT_TRUE(shape->nearest(in - 3.0 * along, along, 0.0, 1e9, first));
+                EXPECT_EQ(first.t, through[0]);
+                // Outside, a tangent plane stays outside a convex solid.
+                EXPECT_TRUE(sorted_crossings(*shape, out - 3.0 * along, along, 0.0, 1e9).empty());
+            }
+        }
+        EXPECT_GT(checked, 600) << e[0] << " " << e[1];
+    }
+}
+
+// Every crossing reported is a change of inside(); the nearest is the
+// least crossing; the normal is N's gradient (by differences here).
+TEST(Superellipsoid, CrossingsNearestAndNormalsAgree) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const double exponents[][2] = {{1, 1}, {0.3, 0.5}, {2, 1}, {3, 3}, {0.5, 2.5}, {2.5, 0.3}};
+    for (const auto& e : exponents) {
+        const auto shape = make_superellipsoid_shape(e[0], e[1]);
+        int hits = 0;
+        for (int i = 0; i < 2000; ++i) {
+            // Half the rays start inside the unit box, half far outside it.
+            const DVec3 o =
+                i % 2 ? DVec3(1.2 * u(rng), 1.2 * u(rng), 1.2 * u(rng)) : DVec3(4 * u(rng), 4 * u(rng), -4.0);
+            const DVec3 d = glm::normalize(DVec3(u(rng), u(rng), u(rng)) - o);
+            const auto found = sorted_crossings(*shape, o, d, 1e-9, 1e9);
+            ShapeCrossing first;
+            ASSERT_EQ(shape->nearest(o, d, 1e-9, 1e9, first), !found.empty()) << i;
+            if (found.empty()) continue;
+            ++hits;
+            EXPECT_EQ(first.t, found[0]) << i;
+            for (const double t : found)
+                EXPECT_NE(shape->inside(o + (t - 1e-7) * d), shape->inside(o + (t + 1e-7) * d)) << i << " " << t;
+            const SurfaceGeometry g = shape->surface(o + found[0] * d, 0);
+            const auto n_at = [&](const DVec3& p) {
+                const double p_ = 2.0 / e[0], q = 2.0 / e[1];
+                const double a = std::pow(std::pow(std::fabs(p.x), p_) + std::pow(std::fabs(p.y), p_), 1.0 / p_);
+                return std::pow(std::pow(a, q) + std::pow(std::fabs(p.z), q), 1.0 / q);
+            };
+            DVec3 gradient;
+            for (int axis = 0; axis < 3; ++axis) {
+                DVec3 plus = g.point, minus = g.point;
+                plus[axis] += 1e-7;
+                minus[axis] -= 1e-7;
+                gradient[axis] = n_at(plus) - n_at(minus);
+            }
+            // Away from creases (where a coordinate is near 0 and the
+            // gradient jumps) the two agree.
+            if (glm::min(glm::abs(g.point.x), glm::min(glm::abs(g.point.y), glm::abs(g.point.z))) > 1e-3) {
+                EXPECT_LT(glm::length(glm::normalize(gradient) - g.normal), 1e-5) << i;
+            }
+        }
+        EXPECT_GT(hits, 300) << e[0] << " " << e[1];
+    }
+}
+
 // One component: s (1 - r^2/R^2)^2 = T at r = R sqrt(1 - sqrt(T/s)).
 TEST(Blob, SingleComponentsHaveClosedFormRadii) {
     const double R = 2.0, s = 1.5, T = 0.5;
