@@ -32,6 +32,20 @@ void map_box(const DMat4& to, DVec3& lower, DVec3& upper) {
     upper = mapped_upper;
 }
 
+// A map between two leaves' spaces with the rounding of the matrix products
+// that made it cleared: where one placement is the other's rotation with a
+// scale or shift, a term of 1e-17 would turn an unbounded side into
+// unbounded everything. The error left is far inside the box's margin.
+DMat4 square_up(DMat4 m) {
+    for (int row = 0; row < 3; ++row) {
+        double largest = 0.0;
+        for (int column = 0; column < 3; ++column) largest = std::max(largest, std::fabs(m[column][row]));
+        for (int column = 0; column < 3; ++column)
+            if (std::fabs(m[column][row]) <= 1e-12 * largest) m[column][row] = 0.0;
+    }
+    return m;
+}
+
 bool finite_box(const DVec3& lower, const DVec3& upper) {
     return std::isfinite(lower.x) && std::isfinite(lower.y) && std::isfinite(lower.z) && std::isfinite(upper.x) &&
            std::isfinite(upper.y) && std::isfinite(upper.z);
@@ -88,10 +102,10 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
     }
     case CsgNode::Operation::Intersection:
         for (std::uint32_t child : node.children) take(nodes[child], true);
-        if (!node.bounded) narrow_intersection(instances, node);
         break;
     }
     for (std::uint32_t clip : node.clips) take(nodes[clip], true);
+    if (!node.bounded) narrow_intersection(instances, index);
     // POV's box of a bounded object is its bounds' (the uninverted ones')
     // where that is smaller; its inside test ignores the bounds.
     if (!node.bounds.empty()) {
@@ -117,25 +131,46 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
     }
 }
 
-void CsgTree::narrow_intersection(const std::vector<Instance>& instances, CsgNode& node) const {
+void CsgTree::narrow_intersection(const std::vector<Instance>& instances, std::uint32_t index) {
+    // The leaves whose solids all hold the node's: an intersection's
+    // children, a leaf itself, and its clips.
+    CsgNode& node = nodes[index];
+    std::vector<const CsgNode*> leaves;
+    if (node.operation == CsgNode::Operation::Leaf) leaves.push_back(&node);
+    if (node.operation == CsgNode::Operation::Intersection)
+        for (std::uint32_t child : node.children)
+            if (nodes[child].operation == CsgNode::Operation::Leaf) leaves.push_back(&nodes[child]);
+    for (std::uint32_t clip : node.clips)
+        if (nodes[clip].operation == CsgNode::Operation::Leaf) leaves.push_back(&nodes[clip]);
+    if (leaves.empty()) return;
     // Each leaf narrows the box the others left (planes across the axes,
-    // quadrics between them), in world space through its placement; a
-    // second round lets what the first found narrow the rest. Another
-    // child only holds the solid tighter, so leaving it out is safe.
+    // quadrics between them) in its own space; a second round lets what the
+    // first found narrow the rest. Another child only holds the solid
+    // tighter, so leaving it out is safe. The box is kept in the first
+    // leaf's space, not the world's: the pieces of one object share its
+    // rotation, so there their slabs stay square to the axes and meet in a
+    // finite box, where turned into the world they would not.
+    const CsgNode* first = leaves.front();
+    const Placement& frame = instances[first->instance].placement;
     DVec3 lower(-INFINITY), upper(INFINITY);
     for (int round = 0; round < 2; ++round)
-        for (std::uint32_t child : node.children) {
-            const CsgNode& leaf_node = nodes[child];
-            if (leaf_node.operation != CsgNode::Operation::Leaf) continue;
+        for (const CsgNode* leaf_node_pointer : leaves) {
+            const CsgNode& leaf_node = *leaf_node_pointer;
             const Instance& leaf = instances[leaf_node.instance];
             DVec3 object_lower = lower, object_upper = upper;
-            if (!leaf.placement.identity) map_box(leaf.placement.object_from_world, object_lower, object_upper);
+            const bool same_space = &leaf == &instances[first->instance] || (leaf.placement.identity && frame.identity);
+            if (!same_space)
+                map_box(square_up(leaf.placement.object_from_world * frame.world_from_object), object_lower,
+                        object_upper);
             leaf.shape->narrow_box(object_lower, object_upper, leaf_node.inverted);
-            if (!leaf.placement.identity) map_box(leaf.placement.world_from_object, object_lower, object_upper);
+            if (!same_space)
+                map_box(square_up(frame.object_from_world * leaf.placement.world_from_object), object_lower,
+                        object_upper);
             lower = glm::max(lower, object_lower);
             upper = glm::min(upper, object_upper);
         }
     if (!finite_box(lower, upper)) return;
+    if (!frame.identity) map_box(frame.world_from_object, lower, upper);
     // The square roots and placements round, and the BVH keeps the box in
     // float: a margin of some float steps keeps every surface point inside.
     const DVec3 margin = 1e-6 * (glm::abs(lower) + glm::abs(upper)) + 1e-9;
@@ -184,6 +219,15 @@ void CsgTree::gather(const std::vector<Instance>& instances, std::uint32_t index
     if (node.bounded) {
         double lo = t_min, hi = t_max;
         if (!ray_box_interval(node.lower, node.upper, o, d, lo, hi)) return;
+        // A box that holds the node's solid (not a disc's flat one, nor one
+        // bounded_by set) holds every crossing the node keeps: a shape
+        // searched along the line, such as a polynomial for its roots, is
+        // asked for that stretch alone, widened by more than its rounding.
+        if (node.box_holds_solid && node.bounds.empty()) {
+            const double widening = 1e-6 * (hi - lo) + 1e-9 * (std::fabs(lo) + std::fabs(hi));
+            t_min = std::max(t_min, lo - widening);
+            t_max = std::min(t_max, hi + widening);
+        }
     }
     if (node.rays_must_meet_bounds)
         for (std::uint32_t bounding : node.bounds)

@@ -90,9 +90,10 @@ class CsgTree {
     bool ray_meets(const std::vector<Instance>& instances, std::uint32_t node, const DVec3& o, const DVec3& d,
                    double t_min, std::vector<CsgCrossing>& scratch) const;
     void bound(const std::vector<Instance>& instances, std::uint32_t node);
-    // The box of an intersection none of whose children is bounded, from
-    // what its leaves leave of each other (Shape::narrow_box).
-    void narrow_intersection(const std::vector<Instance>& instances, CsgNode& node) const;
+    // The box of a node left unbounded by its children and clips, from what
+    // the leaves among them (and the node, a leaf) leave of each other
+    // (Shape::narrow_box).
+    void narrow_intersection(const std::vector<Instance>& instances, std::uint32_t node);
 };
 
 }  // namespace lancer

@@ -60,6 +60,18 @@ TEST(Csg, AQuadricBetweenPlanesIsBoundedAndFoundAlike) {
         {"intersection { plane { y, 10 } " + tower + " " + hollow + " plane { -y, -8 } translate <1, 0, -2> }",
          "intersection { plane { y, 10 } intersection { " + tower + " } " + hollow +
              " plane { -y, -8 } translate <1, 0, -2> }"},
+        // Turned off the axes, whole: bounded in the pieces' common space.
+        {"intersection { plane { y, 5.5 } " + waist + " plane { -y, -2.5 } rotate <-30, 0, 25> translate 2*y }",
+         "intersection { plane { y, 5.5 } intersection { " + waist + " } plane { -y, -2.5 } rotate <-30, 0, 25> " +
+             "translate 2*y }"},
+        // POV's helix: a quartic clipped by a cylinder and two planes, then
+        // turned; the clips bound it, and its roots are sought in their box.
+        {"quartic { <0,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,0,-0.1666,0,1,0, 0,0,0,0,0,0,0,0.5,0,-1, 0,0,0,0,0> "
+         "clipped_by { quadric { <1, 1, 0>, 0, 0, -1 scale 2 } plane { z, 1.4142 } plane { -z, 0 } } "
+         "translate -1.4*z rotate 160*z rotate -90*x scale 2 translate 6*y }",
+         "quartic { <0,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,0,-0.1666,0,1,0, 0,0,0,0,0,0,0,0.5,0,-1, 0,0,0,0,0> "
+         "clipped_by { intersection { intersection { quadric { <1, 1, 0>, 0, 0, -1 scale 2 } } plane { z, 1.4142 } "
+         "plane { -z, 0 } } } translate -1.4*z rotate 160*z rotate -90*x scale 2 translate 6*y }"},
     };
     std::mt19937 random(3);
     std::uniform_real_distribution<float> coordinate(-6.0f, 6.0f);
@@ -68,7 +80,8 @@ TEST(Csg, AQuadricBetweenPlanesIsBoundedAndFoundAlike) {
         const auto unbounded = compile("#version 3.7;\n" + piece.unbounded);
         const Bounds box = bounded->bounds();
         ASSERT_FALSE(box.empty()) << piece.bounded;
-        EXPECT_LT(box.upper.y, 10.1f) << piece.bounded;
+        EXPECT_LT(box.upper.y, 12.0f) << piece.bounded;
+        EXPECT_GT(box.lower.y, -2.0f) << piece.bounded;
         EXPECT_TRUE(unbounded->bounds().empty()) << piece.unbounded;
         int hits = 0;
         for (int k = 0; k < 3000; ++k) {
