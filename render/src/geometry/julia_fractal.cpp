@@ -266,51 +266,17 @@ class JuliaFractalShape final : public Shape {
     }
 
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
-        const double length = glm::length(d);
-        if (!(length > 0.0) || !std::isfinite(length)) return;
-        const DVec3 direction = d / length;
-        // The chord of the bounding sphere, in unit-direction distance s;
-        // samples are taken from its entry point, so far origins lose no digits.
-        const double along = -glm::dot(o, direction);
-        const DVec3 closest = o + along * direction;
-        const double half_chord2 = m_radius * m_radius - glm::dot(closest, closest);
-        if (!(half_chord2 > kChordEpsilon)) return;
-        const double half_chord = std::sqrt(half_chord2);
-        const double entry = along - half_chord;
-        const DVec3 base = o + entry * direction;
-        const double u_end = 2.0 * half_chord;  // the sphere's exit, from base
-        const double u_first = std::max(0.0, t_min * length - entry);
-        const double u_last = std::min(u_end, t_max * length - entry);
-        if (!(u_first < u_last)) return;
-        const auto point_at = [&](double u) { return base + u * direction; };
-        const auto add = [&](const Bracketed& crossing) {
-            const double t = (entry + crossing.u) / length;
-            if (t > t_min && t < t_max) out.add(t, crossing.escape);
-        };
+        march(o, d, t_min, t_max, false, out);
+    }
 
-        // March with POV's steps; a sample past t_max (within the sphere)
-        // still closes the bracket that holds t_max. Beyond the sphere is
-        // outside: a set that fills it (reciprocal, small c) is met at the
-        // sphere, where POV-Ray, starting or ending "inside" by rounding on
-        // |z_0|^2 = 16, shows a random dust of hits or loses the far side.
-        double u = u_first;
-        Sample current = sample(point_at(u), direction, true);
-        if (u_first == 0.0 && current.inside) add(Bracketed{0.0, 0});
-        const double most_samples = std::ceil((u_end - u_first) / m_least_step) + 2.0;
-        for (double count = 0.0; count < most_samples && out.count < ShapeCrossings::kCapacity; ++count) {
-            const double u_next = u + current.step;
-            if (!(u_next <= u_end)) {
-                const Sample exit_sample = sample(point_at(u_end), direction, false);
-                if (exit_sample.inside != current.inside) add(refine(point_at, u, current, u_end, exit_sample));
-                if (exit_sample.inside) add(Bracketed{u_end, 0});
-                break;
-            }
-            const Sample next = sample(point_at(u_next), direction, true);
-            if (next.inside != current.inside) add(refine(point_at, u, current, u_next, next));
-            if (u_next >= u_last) break;
-            u = u_next;
-            current = next;
-        }
+    // The march stops at the first crossing: a ray that enters the set
+    // would otherwise cross its inside at the least step.
+    bool nearest(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossing& hit) const override {
+        ShapeCrossings found;
+        march(o, d, t_min, t_max, true, found);
+        if (found.count == 0) return false;
+        hit = found.items[0];
+        return true;
     }
 
     SurfaceGeometry surface(const DVec3& p, int face) const override {
@@ -356,6 +322,57 @@ class JuliaFractalShape final : public Shape {
     }
 
   private:
+    // Every crossing in (t_min, t_max), in order along the ray; with
+    // first_only, the first alone.
+    void march(const DVec3& o, const DVec3& d, double t_min, double t_max, bool first_only, ShapeCrossings& out) const {
+        const double length = glm::length(d);
+        if (!(length > 0.0) || !std::isfinite(length)) return;
+        const DVec3 direction = d / length;
+        // The chord of the bounding sphere, in unit-direction distance s;
+        // samples are taken from its entry point, so far origins lose no digits.
+        const double along = -glm::dot(o, direction);
+        const DVec3 closest = o + along * direction;
+        const double half_chord2 = m_radius * m_radius - glm::dot(closest, closest);
+        if (!(half_chord2 > kChordEpsilon)) return;
+        const double half_chord = std::sqrt(half_chord2);
+        const double entry = along - half_chord;
+        const DVec3 base = o + entry * direction;
+        const double u_end = 2.0 * half_chord;  // the sphere's exit, from base
+        const double u_first = std::max(0.0, t_min * length - entry);
+        const double u_last = std::min(u_end, t_max * length - entry);
+        if (!(u_first < u_last)) return;
+        const auto point_at = [&](double u) { return base + u * direction; };
+        const auto add = [&](const Bracketed& crossing) {
+            const double t = (entry + crossing.u) / length;
+            if (t > t_min && t < t_max) out.add(t, crossing.escape);
+        };
+
+        // March with POV's steps; a sample past t_max (within the sphere)
+        // still closes the bracket that holds t_max. Beyond the sphere is
+        // outside: a set that fills it (reciprocal, small c) is met at the
+        // sphere, where POV-Ray, starting or ending "inside" by rounding on
+        // |z_0|^2 = 16, shows a random dust of hits or loses the far side.
+        double u = u_first;
+        Sample current = sample(point_at(u), direction, true);
+        if (u_first == 0.0 && current.inside) add(Bracketed{0.0, 0});
+        const double most_samples = std::ceil((u_end - u_first) / m_least_step) + 2.0;
+        const int enough = first_only ? 1 : ShapeCrossings::kCapacity;
+        for (double count = 0.0; count < most_samples && out.count < enough; ++count) {
+            const double u_next = u + current.step;
+            if (!(u_next <= u_end)) {
+                const Sample exit_sample = sample(point_at(u_end), direction, false);
+                if (exit_sample.inside != current.inside) add(refine(point_at, u, current, u_end, exit_sample));
+                if (exit_sample.inside) add(Bracketed{u_end, 0});
+                break;
+            }
+            const Sample next = sample(point_at(u_next), direction, true);
+            if (next.inside != current.inside) add(refine(point_at, u, current, u_next, next));
+            if (u_next >= u_last) break;
+            u = u_next;
+            current = next;
+        }
+    }
+
     DVec4 start(const DVec3& p) const {
         const double w = (m_slice_distance - m_slice.x * p.x - m_slice.y * p.y - m_slice.z * p.z) / m_slice.w;
         return DVec4(p, w);

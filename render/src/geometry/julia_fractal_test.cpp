@@ -152,6 +152,36 @@ TEST(JuliaFractal, HypercomplexReciprocalCrossesFourTimes) {
     EXPECT_FALSE(set->inside({0.2, 0, 0}));
 }
 
+// nearest() stops the march at the first crossing: the same crossing, face
+// included, as the least of all of them, from outside the set and from
+// inside it, with t_min and t_max cutting the ray.
+TEST(JuliaFractal, TheNearestCrossingIsTheFirstOfAll) {
+    std::mt19937 random(9);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const std::shared_ptr<const Shape> sets[] = {
+        make(Algebra::Quaternion, Function::Sqr, glm::dvec4(0.49, 0.5, -0.34, 0.1), 7),
+        make(Algebra::Hypercomplex, Function::Reciprocal, glm::dvec4(0.0)),
+        make(Algebra::Hypercomplex, Function::Sqr, glm::dvec4(-0.2, 0.6, 0.2, 0.0), 8),
+    };
+    for (const auto& set : sets) {
+        int hits = 0;
+        for (int i = 0; i < 300; ++i) {
+            const DVec3 o = i % 3 == 0 ? DVec3(0.3 * u(random), 0.3 * u(random), 0.3 * u(random))
+                                       : DVec3(5.0 * u(random), 5.0 * u(random), -6.0);
+            const DVec3 d = DVec3(0.5 * u(random), 0.5 * u(random), 0.5 * u(random)) - o;
+            const double t_min = i % 2 ? 0.0 : 0.3, t_max = i % 5 ? INFINITY : 0.9;
+            const auto all = sorted_crossings(*set, o, d, t_min, t_max);
+            ShapeCrossing first;
+            ASSERT_EQ(set->nearest(o, d, t_min, t_max, first), !all.empty()) << i;
+            if (all.empty()) continue;
+            ++hits;
+            EXPECT_EQ(first.t, all[0].t) << i;
+            EXPECT_EQ(first.face, all[0].face) << i;
+        }
+        EXPECT_GT(hits, 60);
+    }
+}
+
 TEST(JuliaFractal, SliceDistanceAndTiltedSlice) {
     Parameters p;
     p.julia_parameter = glm::dvec4(0.0);
