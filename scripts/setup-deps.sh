@@ -11,6 +11,8 @@ packages=(
   libopenimageio-dev openimageio-tools
   # A palette PNG's indices (OpenImageIO gives only its colours).
   libpng-dev
+  # JPEG images read without loading OpenImageIO (render/src/film/jpeg_reader.h).
+  libjpeg-dev
   libtinyobjloader-dev libcli11-dev libfreetype-dev fonts-povray
   # Number parsing in the scanner (as strtod rounds, faster).
   libfast-float-dev

@@ -1,5 +1,5 @@
 // Whether `lancer` loads OpenImageIO (through liblancer_images.so) only when
-// a command reads or writes an image that is not a PNG. The dynamic
+// a command reads or writes an image that is not a PNG or a JPEG it reads. The dynamic
 // loader lists what it maps when LD_DEBUG=libs is set (glibc).
 #include <cstdlib>
 #include <string>
@@ -57,15 +57,15 @@ TEST_F(ImageModule, ExrOutputLoadsIt) {
 
 // A PNG map is read with libpng (film/png_reader.h); another format
 // through the module.
-TEST_F(ImageModule, APngImageMapDoesNotLoadItAnExrOneDoes) {
-    ASSERT_EQ(run_lancer("render " + m_scene + " --width 4 --height 4 -q -o " + out("map.png")).exit_code, 0);
-    ASSERT_EQ(run_lancer("render " + m_scene + " --width 4 --height 4 -q -o " + out("map.exr")).exit_code, 0);
-    for (const std::string format : {"png", "exr"}) {
-        const std::string mapped =
-            m_folder.write("mapped_" + format + ".pov",
-                           "camera { location <0, 0, -4> look_at 0 }\n"
-                           "plane { -z, 0 pigment { image_map { " +
-                               format + " \"" + out("map." + format) + "\" } } finish { ambient 1 } }\n");
+TEST_F(ImageModule, PngAndJpegImageMapsDoNotLoadItAnExrOneDoes) {
+    for (const std::string format : {"png", "jpg", "exr"})
+        ASSERT_EQ(run_lancer("render " + m_scene + " --width 4 --height 4 -q -o " + out("map." + format)).exit_code, 0);
+    for (const std::string format : {"png", "jpg", "exr"}) {
+        const std::string mapped = m_folder.write("mapped_" + format + ".pov",
+                                                  "camera { location <0, 0, -4> look_at 0 }\n"
+                                                  "plane { -z, 0 pigment { image_map { " +
+                                                      (format == "jpg" ? std::string("jpeg") : format) + " \"" +
+                                                      out("map." + format) + "\" } } finish { ambient 1 } }\n");
         const CommandResult render =
             run_traced("render " + mapped + " --width 16 --height 12 -q -o " + out("m_" + format + ".png"));
         ASSERT_EQ(render.exit_code, 0) << render.output;

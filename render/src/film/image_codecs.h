@@ -7,6 +7,8 @@
 // sees the other's headers (internal to liblancer).
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -65,6 +67,12 @@ class ImageCodecs {
     // write a temporary file and rename it.
     virtual void write(const std::string& path, const ImageFileWrite& image) = 0;
 };
+
+// 8-bit samples as 16-bit ones, as the module widens them (v * 257), for
+// lancer's own readers (png_reader.h, jpeg_reader.h).
+inline void widen_samples(const unsigned char* samples, std::size_t count, std::uint16_t* out) {
+    for (std::size_t i = 0; i < count; ++i) out[i] = std::uint16_t(samples[i] * 257u);
+}
 
 // The module's codecs, loaded at the first call. Throws std::runtime_error
 // naming the module when it cannot be loaded.

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "film/jpeg_reader.h"
 #include "film/libpng_errors.h"
 
 namespace lancer {
@@ -142,8 +143,7 @@ class PngFileReader final : public ImageFileReader {
                 std::memcpy(static_cast<unsigned char*>(out) + at * std::size_t(m_sample_bytes), source, m_row_bytes);
                 continue;
             }
-            auto* words = static_cast<std::uint16_t*>(out) + at;
-            for (std::size_t i = 0; i < row_samples; ++i) words[i] = std::uint16_t(source[i] * 257u);
+            widen_samples(source, row_samples, static_cast<std::uint16_t*>(out) + at);
         }
     }
 
@@ -238,6 +238,8 @@ std::unique_ptr<ImageFileReader> open_png_file(const std::string& path, bool sto
 
 std::unique_ptr<ImageFileReader> open_image_file(const std::string& path, bool stored_colours) {
     if (std::unique_ptr<ImageFileReader> png = open_png_file(path, stored_colours)) return png;
+    // A JPEG has no alpha: its colours are the same stored or multiplied.
+    if (std::unique_ptr<ImageFileReader> jpeg = open_jpeg_file(path)) return jpeg;
     return image_codecs().open(path, stored_colours);
 }
 

@@ -22,7 +22,8 @@ namespace lancer {
 // type (and 16 bits from an 8-bit file); other types go through the module.
 std::unique_ptr<ImageFileReader> open_png_file(const std::string& path, bool stored_colours);
 
-// An image file through the PNG reader where it serves, else the module.
+// An image file through the PNG or JPEG reader (jpeg_reader.h) where one
+// serves, else the module.
 std::unique_ptr<ImageFileReader> open_image_file(const std::string& path, bool stored_colours);
 
 }  // namespace lancer

@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include "film/same_reading_test_support.h"
 #include "temp_folder.h"
 
 namespace lancer {
@@ -105,28 +106,8 @@ void write_png(const std::string& path, const PngShape& shape, std::uint32_t see
 
 // Both readers' header and samples, as `type`, must agree.
 void expect_same_reading(const std::string& path, bool stored_colours, SampleType type, const std::string& what) {
-    std::unique_ptr<ImageFileReader> ours = open_png_file(path, stored_colours);
-    std::unique_ptr<ImageFileReader> module = image_codecs().open(path, stored_colours);
-    ASSERT_TRUE(module) << what;
-    ASSERT_TRUE(ours) << what;
-    const ImageFileInfo& a = ours->info();
-    const ImageFileInfo& b = module->info();
-    ASSERT_EQ(a.format, b.format) << what;
-    ASSERT_EQ(a.width, b.width) << what;
-    ASSERT_EQ(a.height, b.height) << what;
-    ASSERT_EQ(a.channels, b.channels) << what;
-    EXPECT_EQ(a.bits_per_sample, b.bits_per_sample) << what;
-    EXPECT_EQ(a.floating, b.floating) << what;
-    const std::size_t count = std::size_t(a.width) * std::size_t(a.height) * std::size_t(a.channels);
-    const std::size_t bytes = count * (type == SampleType::UInt8 ? 1 : type == SampleType::UInt16 ? 2 : 4);
-    std::vector<unsigned char> from_ours(bytes), from_module(bytes);
-    // In two bands, as the height field and palette readers ask.
-    const int middle = a.height / 2;
-    const std::size_t split = bytes / std::size_t(a.height) * std::size_t(middle);
-    ours->read_rows(0, middle, type, from_ours.data());
-    ours->read_rows(middle, a.height, type, from_ours.data() + split);
-    module->read_rows(0, a.height, type, from_module.data());
-    EXPECT_EQ(from_ours, from_module) << what;
+    test::expect_same_reading(open_png_file(path, stored_colours), image_codecs().open(path, stored_colours), type,
+                              what);
 }
 
 TEST(PngReader, ReadsEveryKindOfPngAsTheImageModuleDoes) {

@@ -1,0 +1,40 @@
+// Whether one of lancer's own image readers reads a file as the image
+// module (OpenImageIO) does: the png_reader and jpeg_reader tests' yardstick.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "film/image_codecs.h"
+
+namespace lancer::test {
+
+// Both readers' header and samples, as `type`, must agree; ours is read in
+// two bands, as the height field and palette readers ask.
+inline void expect_same_reading(std::unique_ptr<ImageFileReader> ours, std::unique_ptr<ImageFileReader> module,
+                                SampleType type, const std::string& what) {
+    ASSERT_TRUE(module) << what;
+    ASSERT_TRUE(ours) << what;
+    const ImageFileInfo& a = ours->info();
+    const ImageFileInfo& b = module->info();
+    ASSERT_EQ(a.format, b.format) << what;
+    ASSERT_EQ(a.width, b.width) << what;
+    ASSERT_EQ(a.height, b.height) << what;
+    ASSERT_EQ(a.channels, b.channels) << what;
+    EXPECT_EQ(a.bits_per_sample, b.bits_per_sample) << what;
+    EXPECT_EQ(a.floating, b.floating) << what;
+    const std::size_t count = std::size_t(a.width) * std::size_t(a.height) * std::size_t(a.channels);
+    const std::size_t bytes = count * (type == SampleType::UInt8 ? 1 : type == SampleType::UInt16 ? 2 : 4);
+    std::vector<unsigned char> from_ours(bytes), from_module(bytes);
+    const int middle = a.height / 2;
+    const std::size_t split = bytes / std::size_t(a.height) * std::size_t(middle);
+    ours->read_rows(0, middle, type, from_ours.data());
+    ours->read_rows(middle, a.height, type, from_ours.data() + split);
+    module->read_rows(0, a.height, type, from_module.data());
+    EXPECT_EQ(from_ours, from_module) << what;
+}
+
+}  // namespace lancer::test
