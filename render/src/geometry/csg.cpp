@@ -63,6 +63,7 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
     for (std::uint32_t clip : node.clips) bound(instances, clip);
     for (std::uint32_t bounding : node.bounds) bound(instances, bounding);
     node.bounded = false;
+    node.pov_bounded = false;
     node.box_holds_solid = true;
     auto take = [&](const CsgNode& other, bool intersect) {
         if (!other.bounded) return;
@@ -90,22 +91,39 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
             node.upper = DVec3(leaf.bounds_upper);
             node.box_holds_solid = leaf.shape->inside_within_bounds();
         }
+        node.pov_bounded = node.bounded;
         break;
     }
     case CsgNode::Operation::Union:
     case CsgNode::Operation::Merge: {
         bool all_bounded = true;
         for (std::uint32_t child : node.children) all_bounded = all_bounded && nodes[child].bounded;
-        if (all_bounded)
-            for (std::uint32_t child : node.children) take(nodes[child], false);
+        if (all_bounded) {
+            node.pov_bounded = true;
+            for (std::uint32_t child : node.children) {
+                take(nodes[child], false);
+                node.pov_bounded = node.pov_bounded && nodes[child].pov_bounded;
+            }
+        }
         break;
     }
     case CsgNode::Operation::Intersection:
-        for (std::uint32_t child : node.children) take(nodes[child], true);
+        for (std::uint32_t child : node.children) {
+            take(nodes[child], true);
+            node.pov_bounded = node.pov_bounded || nodes[child].pov_bounded;
+        }
+        if (!node.bounded) {
+            narrow_intersection(instances, index, false);
+            node.pov_bounded = node.bounded;
+        }
         break;
     }
-    for (std::uint32_t clip : node.clips) take(nodes[clip], true);
-    if (!node.bounded) narrow_intersection(instances, index);
+    for (std::uint32_t clip : node.clips) {
+        take(nodes[clip], true);
+        node.pov_bounded = node.pov_bounded || nodes[clip].pov_bounded;
+    }
+    // POV-Ray stops there; lancer also lets a leaf's clips narrow it.
+    if (!node.bounded) narrow_intersection(instances, index, true);
     // POV's box of a bounded object is its bounds' (the uninverted ones')
     // where that is smaller; its inside test ignores the bounds.
     if (!node.bounds.empty()) {
@@ -113,7 +131,10 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
         const DVec3 own_lower = node.lower, own_upper = node.upper;
         node.bounded = false;
         for (std::uint32_t bounding : node.bounds)
-            if (!nodes[bounding].inverted) take(nodes[bounding], true);
+            if (!nodes[bounding].inverted) {
+                take(nodes[bounding], true);
+                node.pov_bounded = node.pov_bounded || nodes[bounding].pov_bounded;
+            }
         const auto volume = [](const DVec3& lower, const DVec3& upper) {
             const DVec3 size = glm::max(upper - lower, DVec3(0.0));
             return size.x * size.y * size.z;
@@ -131,17 +152,19 @@ void CsgTree::bound(const std::vector<Instance>& instances, std::uint32_t index)
     }
 }
 
-void CsgTree::narrow_intersection(const std::vector<Instance>& instances, std::uint32_t index) {
+void CsgTree::narrow_intersection(const std::vector<Instance>& instances, std::uint32_t index, bool with_clips) {
     // The leaves whose solids all hold the node's: an intersection's
-    // children, a leaf itself, and its clips.
+    // children, and with_clips a leaf itself and its clips.
     CsgNode& node = nodes[index];
     std::vector<const CsgNode*> leaves;
-    if (node.operation == CsgNode::Operation::Leaf) leaves.push_back(&node);
     if (node.operation == CsgNode::Operation::Intersection)
         for (std::uint32_t child : node.children)
             if (nodes[child].operation == CsgNode::Operation::Leaf) leaves.push_back(&nodes[child]);
-    for (std::uint32_t clip : node.clips)
-        if (nodes[clip].operation == CsgNode::Operation::Leaf) leaves.push_back(&nodes[clip]);
+    if (with_clips) {
+        if (node.operation == CsgNode::Operation::Leaf) leaves.push_back(&node);
+        for (std::uint32_t clip : node.clips)
+            if (nodes[clip].operation == CsgNode::Operation::Leaf) leaves.push_back(&nodes[clip]);
+    }
     if (leaves.empty()) return;
     // Each leaf narrows the box the others left (planes across the axes,
     // quadrics between them) in its own space; a second round lets what the

@@ -47,6 +47,10 @@ struct CsgNode {
     // Whether that box holds the solid too, for the inside test: a disc's
     // inside is POV's half-space behind it.
     bool box_holds_solid = true;
+    // Whether POV-Ray bounds the node too (min_extent and max_extent report
+    // its box): not where only a leaf's clips narrow it, which POV-Ray
+    // does not do (POV's Helix: a quartic clipped by a cylinder and planes).
+    bool pov_bounded = false;
 };
 
 struct CsgCrossing {
@@ -91,9 +95,9 @@ class CsgTree {
                    double t_min, std::vector<CsgCrossing>& scratch) const;
     void bound(const std::vector<Instance>& instances, std::uint32_t node);
     // The box of a node left unbounded by its children and clips, from what
-    // the leaves among them (and the node, a leaf) leave of each other
-    // (Shape::narrow_box).
-    void narrow_intersection(const std::vector<Instance>& instances, std::uint32_t node);
+    // the leaves among its children (and with_clips, among its clips and
+    // the node itself, a leaf) leave of each other (Shape::narrow_box).
+    void narrow_intersection(const std::vector<Instance>& instances, std::uint32_t node, bool with_clips);
 };
 
 }  // namespace lancer

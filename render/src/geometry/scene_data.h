@@ -68,6 +68,9 @@ struct Instance {
     // meshes have one): uv_mapping then reads the hit's world x and y.
     bool uv_from_world = false;
     bool bounded = true;  // false for planes and unbounded shapes and trees
+    // Bounded by lancer alone (csg.h: CsgNode::pov_bounded): its box culls
+    // rays but is left out of the scene's bounds, which min_extent reports.
+    bool pov_unbounded = false;
     const MeshData* mesh = nullptr;
     bool mesh_in_world = false;  // world_positions used instead of instancing
     std::vector<float> world_positions;

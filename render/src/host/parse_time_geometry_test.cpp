@@ -117,6 +117,26 @@ TEST(ParseTimeGeometry, ExtentsAsPovRay) {
     EXPECT_DOUBLE_EQ(answer(parsed, 7).x, 1e10);
 }
 
+// Boxes POV-Ray finds for unbounded shapes in CSG, as POV-Ray 3.7 printed
+// them (#debug of vstr(min_extent(...)), this file's objects): a quadric
+// between two planes turned off the axes has one; a quartic clipped by a
+// cylinder and two planes (POV's Helix) has none, though lancer culls its
+// rays by one.
+TEST(ParseTimeGeometry, ExtentsOfUnboundedShapesInCsgAsPovRay) {
+    const Parsed parsed = parse_with_queries(R"(
+        #declare B = intersection { plane { y, 5.5 } quadric { <1, -1, 1>, 0, 0, -1 translate 5*y scale <0.5, 1, 0.5> }
+                                    plane { -y, -2.5 } rotate <-30, 0, 25> }
+        #declare H = quartic { <0,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,0,-0.1666,0,1,0, 0,0,0,0,0,0,0,0.5,0,-1, 0,0,0,0,0>
+                               clipped_by { quadric { <1, 1, 0>, 0, 0, -1 scale 2 } plane { z, 1.4142 } plane { -z, 0 } }
+                               rotate 160*z rotate -90*x translate <0, -2, 5> }
+        sphere { min_extent(B), 1 } sphere { max_extent(B), 1 }
+        sphere { min_extent(H), 1 } sphere { max_extent(H), 1 })");
+    expect_near(answer(parsed, 0), sg::Vec3(-3.5176, 0.7832, -3.9159), 1e-4);
+    expect_near(answer(parsed, 1), sg::Vec3(0.5896, 5.4959, -0.0841), 1e-4);
+    EXPECT_DOUBLE_EQ(answer(parsed, 2).y, -1e10);
+    EXPECT_DOUBLE_EQ(answer(parsed, 3).x, 1e10);
+}
+
 TEST(ParseTimeGeometry, InsideTestsTheSolid) {
     const Parsed parsed = parse_with_queries(R"(
         #declare Ball = sphere { <0, 1, 0>, 1 scale <2, 1, 1> }

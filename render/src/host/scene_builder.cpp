@@ -988,6 +988,7 @@ class Builder {
         instance.casts_shadow = !(no_shadow || object.no_shadow);
         instance.location = object.location;
         instance.bounded = root.bounded;
+        instance.pov_unbounded = root.bounded && !root.pov_bounded;
         if (root.bounded) {
             instance.bounds_lower = Vec3(root.lower);
             instance.bounds_upper = Vec3(root.upper);
@@ -1230,7 +1231,7 @@ class Builder {
 
     void compute_bounds() {
         for (const Instance& instance : m_data->instances)
-            if (instance.bounded && !instance.csg_leaf)
+            if (instance.bounded && !instance.csg_leaf && !instance.pov_unbounded)
                 expand(m_data->bounds, instance.bounds_lower, instance.bounds_upper);
     }
 
