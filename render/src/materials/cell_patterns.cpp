@@ -37,12 +37,20 @@ const KnightOffsets& knight_offsets() {
     return instance;
 }
 
-// The random points around one cube; each thread keeps the last cube's,
-// since neighbouring samples mostly fall in the same cube.
+// The random points around one cube (81 hashes and 243 table reads to
+// make). Each thread keeps the last few cubes': neighbouring samples mostly
+// fall in the same cube, and a layered texture (POV's stones) asks several
+// crackle patterns, each in a cube of its own, for every sample.
 struct CrackleNeighbourhood {
     glm::ivec3 cube{0};
     bool valid = false;
     std::array<glm::dvec3, 81> points{};
+};
+
+struct CrackleCache {
+    static constexpr std::size_t kEntries = 8;
+    std::array<CrackleNeighbourhood, kEntries> entries{};
+    std::size_t next = 0;  // the entry replaced next (oldest first)
 };
 
 // a + b with int's wrap-around (a cube number from floor_to_int may lie at
@@ -52,18 +60,19 @@ int wrapping_add(int a, int b) {
 }
 
 const CrackleNeighbourhood& neighbourhood(const glm::ivec3& cube) {
-    thread_local CrackleNeighbourhood cache;
-    if (!cache.valid || cache.cube != cube) {
-        const auto& offsets = knight_offsets().offsets;
-        for (std::size_t i = 0; i < offsets.size(); ++i) {
-            const glm::ivec3& o = offsets[i];
-            cache.points[i] =
-                cube_point(wrapping_add(cube.x, o.x), wrapping_add(cube.y, o.y), wrapping_add(cube.z, o.z));
-        }
-        cache.cube = cube;
-        cache.valid = true;
+    thread_local CrackleCache cache;
+    for (const CrackleNeighbourhood& entry : cache.entries)
+        if (entry.valid && entry.cube == cube) return entry;
+    CrackleNeighbourhood& entry = cache.entries[cache.next];
+    cache.next = (cache.next + 1) % CrackleCache::kEntries;
+    const auto& offsets = knight_offsets().offsets;
+    for (std::size_t i = 0; i < offsets.size(); ++i) {
+        const glm::ivec3& o = offsets[i];
+        entry.points[i] = cube_point(wrapping_add(cube.x, o.x), wrapping_add(cube.y, o.y), wrapping_add(cube.z, o.z));
     }
-    return cache;
+    entry.cube = cube;
+    entry.valid = true;
+    return entry;
 }
 
 // Crackle's distance measure, before the root: squared distance for
