@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <iterator>
 #include <map>
 #include <memory>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -898,6 +900,31 @@ TEST_P(PovPatternValues, MatchPovRay) {
 
 INSTANTIATE_TEST_SUITE_P(Pov, PovPatternValues, ::testing::ValuesIn(reference_cases()),
                          [](const ::testing::TestParamInfo<ReferenceCase>& info) { return info.param.name; });
+
+// crackle keeps the random points around a thread's last few cubes: the
+// values must not depend on the order the points are asked in, however
+// many cubes the asking moves between (POV's layered stones ask several
+// crackle patterns at once).
+TEST(Pattern, CrackleValuesDoNotDependOnTheOrderAsked) {
+    const CompiledPattern crackle(with(Kind::Crackle,
+                                       [](sg::Pattern& p) {
+                                           p.crackle_form = {-1, 1, 0};
+                                       }),
+                                  NoiseGenerator::RangeCorrected);
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> coordinate(-6.0, 6.0);
+    std::vector<glm::dvec3> points(400);
+    for (glm::dvec3& point : points) point = {coordinate(random), coordinate(random), coordinate(random)};
+    std::vector<double> in_order;
+    for (const glm::dvec3& point : points) in_order.push_back(crackle.value(point));
+    std::vector<std::size_t> order(points.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::shuffle(order.begin(), order.end(), random);
+    for (const std::size_t i : order) {
+        crackle.value(points[i] + glm::dvec3(40.0 * double(i % 13), 0.0, 0.0));  // another cube between
+        EXPECT_EQ(crackle.value(points[i]), in_order[i]) << i;
+    }
+}
 
 }  // namespace
 }  // namespace lancer
