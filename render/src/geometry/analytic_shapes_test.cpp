@@ -449,6 +449,36 @@ TEST(Superellipsoid, GrazingLinesAreToldApartAtAnyDepth) {
     }
 }
 
+// Rays that start or stop exactly on the surface (N = 1 to the last bit):
+// no crossing where they start, the way out for one heading in, and none
+// short of where it stops.
+TEST(Superellipsoid, RaysEndingOnTheSurface) {
+    const auto round = make_superellipsoid_shape(1.0, 1.0);
+    // From (1.8, 2.4, 0) towards the centre, stopping at (0.6, 0.8, 0).
+    EXPECT_TRUE(sorted_crossings(*round, {1.8, 2.4, 0}, {-0.6, -0.8, 0}, 0.0, 2.0).empty());
+    const auto through = sorted_crossings(*round, {1.8, 2.4, 0}, {-0.6, -0.8, 0}, 0.0, 10.0);
+    ASSERT_EQ(through.size(), 2u);
+    EXPECT_NEAR(through[0], 2.0, 1e-12);
+    EXPECT_NEAR(through[1], 4.0, 1e-12);
+    for (const double e : {1.0, 0.1, 0.5}) {
+        const auto shape = make_superellipsoid_shape(e, e);
+        // Leaving the surface outwards: nothing; inwards: the far side.
+        EXPECT_TRUE(sorted_crossings(*shape, {1, 0, 0}, {1, 0, 0}, 0.0, 10.0).empty()) << e;
+        const auto back = sorted_crossings(*shape, {1, 0, 0}, {-1, 0, 0}, 0.0, 10.0);
+        ASSERT_EQ(back.size(), 1u) << e;
+        EXPECT_NEAR(back[0], 2.0, 1e-12) << e;
+        ShapeCrossing first;
+        ASSERT_TRUE(shape->nearest({1, 0, 0}, {-1, 0, 0}, 0.0, 10.0, first)) << e;
+        EXPECT_NEAR(first.t, 2.0, 1e-12) << e;
+    }
+    // A flat face of a boxy one met head on, then left through the far face.
+    const auto boxy = make_superellipsoid_shape(0.1, 0.1);
+    const auto across = sorted_crossings(*boxy, {0.3, -3, 0.2}, {0, 1, 0}, 0.0, 10.0);
+    ASSERT_EQ(across.size(), 2u);
+    EXPECT_NEAR(across[0], 2.0, 1e-9);
+    EXPECT_NEAR(across[1], 4.0, 1e-9);
+}
+
 // Every crossing reported is a change of inside(); the nearest is the
 // least crossing; the normal is N's gradient (by differences here).
 TEST(Superellipsoid, CrossingsNearestAndNormalsAgree) {

@@ -32,17 +32,20 @@ void map_box(const DMat4& to, DVec3& lower, DVec3& upper) {
     upper = mapped_upper;
 }
 
-// A map between two leaves' spaces with the rounding of the matrix products
-// that made it cleared: where one placement is the other's rotation with a
-// scale or shift, a term of 1e-17 would turn an unbounded side into
-// unbounded everything. The error left is far inside the box's margin.
-DMat4 square_up(DMat4 m) {
-    for (int row = 0; row < 3; ++row) {
-        double largest = 0.0;
-        for (int column = 0; column < 3; ++column) largest = std::max(largest, std::fabs(m[column][row]));
-        for (int column = 0; column < 3; ++column)
-            if (std::fabs(m[column][row]) <= 1e-12 * largest) m[column][row] = 0.0;
-    }
+// The map a * b between two leaves' spaces, with the terms that are only
+// the product's rounding cleared: where one placement is the other's
+// rotation with a scale or shift, a term of 1e-17 would turn an unbounded
+// side into unbounded everything. A term is cleared only below a few
+// rounding errors of its own sum (a real one that small is lost to
+// rounding anyway); what that leaves out is far inside the box's margin.
+DMat4 relative_map(const DMat4& a, const DMat4& b) {
+    DMat4 m = a * b;
+    for (int row = 0; row < 3; ++row)
+        for (int column = 0; column < 3; ++column) {
+            double magnitude = 0.0;
+            for (int k = 0; k < 4; ++k) magnitude += std::fabs(a[k][row] * b[column][k]);
+            if (std::fabs(m[column][row]) <= 8.0 * 2.2e-16 * magnitude) m[column][row] = 0.0;
+        }
     return m;
 }
 
@@ -183,11 +186,11 @@ void CsgTree::narrow_intersection(const std::vector<Instance>& instances, std::u
             DVec3 object_lower = lower, object_upper = upper;
             const bool same_space = &leaf == &instances[first->instance] || (leaf.placement.identity && frame.identity);
             if (!same_space)
-                map_box(square_up(leaf.placement.object_from_world * frame.world_from_object), object_lower,
+                map_box(relative_map(leaf.placement.object_from_world, frame.world_from_object), object_lower,
                         object_upper);
             leaf.shape->narrow_box(object_lower, object_upper, leaf_node.inverted);
             if (!same_space)
-                map_box(square_up(frame.object_from_world * leaf.placement.world_from_object), object_lower,
+                map_box(relative_map(frame.object_from_world, leaf.placement.world_from_object), object_lower,
                         object_upper);
             lower = glm::max(lower, object_lower);
             upper = glm::min(upper, object_upper);
@@ -237,7 +240,8 @@ bool CsgTree::inside(const std::vector<Instance>& instances, std::uint32_t index
 }
 
 void CsgTree::gather(const std::vector<Instance>& instances, std::uint32_t index, const DVec3& o, const DVec3& d,
-                     double t_min, double t_max, std::vector<CsgCrossing>& out) const {
+                     double t_min, double t_max, double search_min, double search_max,
+                     std::vector<CsgCrossing>& out) const {
     const CsgNode& node = nodes[index];
     if (node.bounded) {
         double lo = t_min, hi = t_max;
@@ -246,10 +250,11 @@ void CsgTree::gather(const std::vector<Instance>& instances, std::uint32_t index
         // bounded_by set) holds every crossing the node keeps: a shape
         // searched along the line, such as a polynomial for its roots, is
         // asked for that stretch alone, widened by more than its rounding.
+        // The boxes and bounds below still cull by the whole ray, as POV's.
         if (node.box_holds_solid && node.bounds.empty()) {
             const double widening = 1e-6 * (hi - lo) + 1e-9 * (std::fabs(lo) + std::fabs(hi));
-            t_min = std::max(t_min, lo - widening);
-            t_max = std::min(t_max, hi + widening);
+            search_min = std::max(search_min, lo - widening);
+            search_max = std::min(search_max, hi + widening);
         }
     }
     if (node.rays_must_meet_bounds)
@@ -262,20 +267,21 @@ void CsgTree::gather(const std::vector<Instance>& instances, std::uint32_t index
         const DVec3 o_object = leaf.placement.point_to_object(o);
         const DVec3 d_object = leaf.placement.vector_to_object(d);
         ShapeCrossings crossings;
-        leaf.shape->crossings(o_object, d_object, t_min, t_max, crossings);
+        leaf.shape->crossings(o_object, d_object, search_min, search_max, crossings);
         for (int i = 0; i < crossings.count; ++i)
             out.push_back(CsgCrossing{crossings.items[i].t, node.instance, crossings.items[i].face});
         break;
     }
     case CsgNode::Operation::Union:
-        for (std::uint32_t child : node.children) gather(instances, child, o, d, t_min, t_max, out);
+        for (std::uint32_t child : node.children)
+            gather(instances, child, o, d, t_min, t_max, search_min, search_max, out);
         break;
     case CsgNode::Operation::Merge:
     case CsgNode::Operation::Intersection: {
         const bool merge = node.operation == CsgNode::Operation::Merge;
         for (std::uint32_t child : node.children) {
             const std::size_t child_start = out.size();
-            gather(instances, child, o, d, t_min, t_max, out);
+            gather(instances, child, o, d, t_min, t_max, search_min, search_max, out);
             auto rejected = [&](const CsgCrossing& crossing) {
                 const DVec3 p = o + crossing.t * d;
                 for (std::uint32_t sibling : node.children) {
@@ -304,7 +310,8 @@ bool CsgTree::ray_meets(const std::vector<Instance>& instances, std::uint32_t in
                         double t_min, std::vector<CsgCrossing>& scratch) const {
     if (inside(instances, index, o + t_min * d)) return true;
     const std::size_t start = scratch.size();
-    gather(instances, index, o, d, t_min, std::numeric_limits<double>::infinity(), scratch);
+    const double t_max = std::numeric_limits<double>::infinity();
+    gather(instances, index, o, d, t_min, t_max, t_min, t_max, scratch);
     const bool met = scratch.size() > start;
     scratch.resize(start);
     return met;
@@ -327,7 +334,7 @@ bool CsgTree::nearest(const std::vector<Instance>& instances, const DVec3& o, co
     // One list per thread, reused: Embree calls this for every ray.
     thread_local std::vector<CsgCrossing> crossings;
     crossings.clear();
-    gather(instances, root, o, d, t_min, t_max, crossings);
+    gather(instances, root, o, d, t_min, t_max, t_min, t_max, crossings);
     if (crossings.empty()) return false;
     hit = *std::min_element(crossings.begin(), crossings.end(),
                             [](const CsgCrossing& a, const CsgCrossing& b) { return a.t < b.t; });

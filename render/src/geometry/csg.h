@@ -87,8 +87,12 @@ class CsgTree {
     bool inside(const std::vector<Instance>& instances, std::uint32_t node, const DVec3& p) const;
 
   private:
+    // The crossings the tree under `node` keeps of the ray o + t d, t in
+    // (t_min, t_max), which boxes and bounds cull by; shapes are searched
+    // only in (search_min, search_max), what the boxes above that hold
+    // their solids leave of it.
     void gather(const std::vector<Instance>& instances, std::uint32_t node, const DVec3& o, const DVec3& d,
-                double t_min, double t_max, std::vector<CsgCrossing>& out) const;
+                double t_min, double t_max, double search_min, double search_max, std::vector<CsgCrossing>& out) const;
     // POV's Ray_In_Bound for one bound: the ray from o + t_min d on meets
     // the tree under `node` or starts inside it (`scratch` is left as it was).
     bool ray_meets(const std::vector<Instance>& instances, std::uint32_t node, const DVec3& o, const DVec3& d,

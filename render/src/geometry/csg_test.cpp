@@ -115,6 +115,19 @@ TEST(Csg, AQuadricBetweenPlanesIsBoundedAndFoundAlike) {
     }
 }
 
+// A node whose box holds its solid has its shapes searched only within
+// that box, but a part whose box does not (a disc's flat one) still culls
+// by the whole ray, as POV-Ray's: here the ray crosses the disc's slab only
+// outside the clipping sphere's box, and still meets the tube under it.
+TEST(Csg, APartWithAFlatBoxIsCulledByTheWholeRay) {
+    const auto scene = compile(
+        "union { quadric { <1, 0, 1>, 0, 0, -0.25 clipped_by { disc { 0, y, 3 } } } plane { -y, -10 }\n"
+        "  clipped_by { sphere { 0, 1 } } }");
+    const Hit hit = first_hit(*scene, {2.5f, 0.0f, 0.2f}, {-1.0f, -0.25f, 0.0f});
+    const float x = std::sqrt(0.25f - 0.04f);                    // the tube's side at z = 0.2
+    EXPECT_NEAR(hit.t, (2.5f - x) * std::sqrt(1.0625f), 1e-4f);  // t along the unit direction
+}
+
 TEST(Csg, IntersectionKeepsOnlyTheCommonPart) {
     const auto scene = compile("intersection { sphere { 0, 1 } box { -0.8, 0.8 } }");
     // Through a face centre: the box face (inside the sphere).

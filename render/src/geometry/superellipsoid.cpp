@@ -112,10 +112,12 @@ class SuperellipsoidShape final : public Shape {
     static void convex_crossings(const F& f, double lo, double hi, double lipschitz, bool first_only,
                                  const ShapeCrossings& out, const Add& add) {
         const double f_lo = f(lo), f_hi = f(hi);
-        if (f_lo <= 0.0 || f_hi <= 0.0) {
-            // An end inside (the ray starts in the solid or t_max stops it there):
-            // one crossing at most, where the sign changes.
-            if ((f_lo <= 0.0) != (f_hi <= 0.0)) add(refine_crossing(f, lo, hi, f_lo, f_hi));
+        if (f_lo < 0.0 || f_hi < 0.0) {
+            // An end inside (the ray starts in the solid or t_max stops it
+            // there): one crossing at most, where the sign changes. An end on
+            // the surface (f = 0) is searched from as from outside: a ray
+            // leaving the surface inwards still finds its way out.
+            if ((f_lo < 0.0) != (f_hi < 0.0)) add(refine_crossing(f, lo, hi, f_lo, f_hi));
             return;
         }
         constexpr int kMaxSamples = 72;
@@ -158,8 +160,10 @@ class SuperellipsoidShape final : public Shape {
             const int j = best_stretch;
             const double t = best_t;
             if (!(t > ts[j] && t < ts[j + 1])) return;  // a stretch of one ulp: tangent
+            // Below 0 strictly: a sample on the surface (a ray leaving it,
+            // whose start rounds to it) is no way in.
             const double value = f(t);
-            if (value <= 0.0) {
+            if (value < 0.0) {
                 const int before = out.count;
                 add(refine_crossing(f, ts[j], t, fs[j], value));
                 if (!first_only || out.count == before) add(refine_crossing(f, t, ts[j + 1], value, fs[j + 1]));
@@ -257,6 +261,9 @@ class SuperellipsoidShape final : public Shape {
     // shrinks slowly, to the last bits of t.
     template <class F>
     static double refine_crossing(const F& f, double a, double b, double f_a, double f_b) {
+        // An end on the surface is the crossing (add() drops it at t_min).
+        if (f_a == 0.0) return a;
+        if (f_b == 0.0) return b;
         if (b < a) {
             std::swap(a, b);
             std::swap(f_a, f_b);
