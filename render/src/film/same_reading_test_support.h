@@ -2,6 +2,8 @@
 // module (OpenImageIO) does: the png_reader and jpeg_reader tests' yardstick.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,6 +37,17 @@ inline void expect_same_reading(std::unique_ptr<ImageFileReader> ours, std::uniq
     ours->read_rows(middle, a.height, type, from_ours.data() + split);
     module->read_rows(0, a.height, type, from_module.data());
     EXPECT_EQ(from_ours, from_module) << what;
+}
+
+// Rows are decoded as they are read: a later band read first skips the
+// rows before it and gives the module's samples (8-bit RGB files).
+inline void expect_later_band_read_first(ImageFileReader& ours, ImageFileReader& module) {
+    const int width = ours.info().width, height = ours.info().height;
+    std::vector<unsigned char> from_ours(std::size_t(width) * 3 * std::size_t(height - 2));
+    std::vector<unsigned char> all(std::size_t(width) * 3 * std::size_t(height));
+    ours.read_rows(2, height, SampleType::UInt8, from_ours.data());
+    module.read_rows(0, height, SampleType::UInt8, all.data());
+    EXPECT_TRUE(std::equal(from_ours.begin(), from_ours.end(), all.begin() + std::ptrdiff_t(width) * 3 * 2));
 }
 
 }  // namespace lancer::test

@@ -179,7 +179,10 @@ class SuperellipsoidShape final : public Shape {
     template <class F, class Add>
     void pinched_crossings(const F& f, const DVec3& o, const DVec3& d, double lo, double hi, bool first_only,
                            const ShapeCrossings& out, const Add& add) const {
-        const double reach = power(norm(d));
+        // The Hölder bound is too weak to prove anything for e or n above 8:
+        // not tried there.
+        const bool provable = m_exponent >= 0.25;
+        const double reach = provable ? power(norm(d)) : 0.0;
         // Pieces between the ray's crossings of the coordinate planes.
         double cuts[5] = {lo, hi, hi, hi, hi};
         int count = 1;
@@ -200,7 +203,7 @@ class SuperellipsoidShape final : public Shape {
             double samples[kSamples + 1];
             samples[0] = f_cut;
             samples[kSamples] = f_cut = f(b);
-            if (m_exponent >= 0.25 && samples[0] > 0.0 && samples[kSamples] > 0.0 &&
+            if (provable && samples[0] > 0.0 && samples[kSamples] > 0.0 &&
                 dip_excluded(samples[0], samples[kSamples], b - a, reach))
                 continue;
             int lowest = 0;
@@ -224,7 +227,7 @@ class SuperellipsoidShape final : public Shape {
             double x1 = right - ratio * (right - left), x2 = left + ratio * (right - left);
             double f1 = f(x1), f2 = f(x2);
             for (int i = 0; i < 60 && f1 > 0.0 && f2 > 0.0; ++i) {
-                if (i % 4 == 0 && m_exponent >= 0.25 && dip_excluded(f_left, f1, x1 - left, reach) &&
+                if (i % 4 == 0 && provable && dip_excluded(f_left, f1, x1 - left, reach) &&
                     dip_excluded(f1, f2, x2 - x1, reach) && dip_excluded(f2, f_right, right - x2, reach))
                     break;
                 if (f1 < f2) {
@@ -250,8 +253,7 @@ class SuperellipsoidShape final : public Shape {
 
     // Whether N stays above 1 on a stretch of the given width between two
     // samples of f = N - 1 (the Hölder bound above, each end covering the
-    // nearer half). Not tried for e or n above 8, where the bound is too
-    // weak to prove anything.
+    // nearer half).
     bool dip_excluded(double f_a, double f_b, double width, double reach) const {
         return power(1.0 + std::min(f_a, f_b)) - power(0.5 * width) * reach > 1.0 + kMargin;
     }
