@@ -23,7 +23,7 @@ examples=/usr/share/doc/povray/examples
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-find "$examples" -name '*.pov' | grep -v -E 'animations|/include/|incdemo' | sort | awk -v s="$step" 'NR % s == 1' \
+find "$examples" -name '*.pov' | grep -v -E 'animations|/include/|incdemo' | sort | awk -v s="$step" '(NR - 1) % s == 0' \
   > "$work/list"
 
 one_scene() {
