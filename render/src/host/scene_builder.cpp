@@ -16,6 +16,7 @@
 #include "geometry/ovus.h"
 #include "geometry/parametric.h"
 #include "geometry/sphere_sweep.h"
+#include "host/shared_function_fields.h"
 #include "lancer/host/scene_compiler.h"
 #include "lancer/scene_error.h"
 #include "materials/average_weights.h"
@@ -681,7 +682,8 @@ class Builder {
             else if (parametric)
                 instance.shape = parametric_shape(*parametric, object.location);
             else if (field && field->function)
-                instance.shape = function_height_field(*field);
+                instance.shape = shared_function_height_field(*field, m_graph.global.noise_generator,
+                                                              [&] { return function_height_field(*field); });
             else
                 instance.shape = analytic_shape(object, world_from_object);
             DVec3 lower, upper;
@@ -796,11 +798,15 @@ class Builder {
                     value = encode(sg::evaluate_function(*field.function, at, 3, natives.get()));
                     continue;
                 }
+                // One look-up gives the three channels a call per channel
+                // would (the pigment is its whole cost: agate's turbulence in
+                // POV's advanced/landscape.pov).
+                const std::array<double, 5> colour =
+                    natives->pigment(*field.function->pigment, glm::dvec3(at[0], at[1], at[2]));
                 double grey = 0.0;
                 const double weights[3] = {0.297, 0.589, 0.114};
                 for (int channel = 0; channel < 3; ++channel)
-                    grey += weights[channel] *
-                            (encode(sg::evaluate_function(*field.function, at, 3, natives.get(), channel)) / 65535.0);
+                    grey += weights[channel] * (encode(colour[std::size_t(channel)]) / 65535.0);
                 const double scaled = grey * 65535.0;
                 value = scaled >= 65535.0 ? 65535 : scaled > 0.0 ? std::uint16_t(scaled) : 0;
             }
