@@ -13,6 +13,12 @@
 #include "geometry/polynomial_roots.h"
 #include "geometry/shape.h"
 
+#if defined(__GNUC__) && !defined(__clang__)
+#define LANCER_NO_VECTORIZE __attribute__((optimize("no-tree-vectorize")))
+#else
+#define LANCER_NO_VECTORIZE
+#endif
+
 namespace lancer {
 namespace {
 
@@ -46,19 +52,31 @@ class PolynomialShape final : public Shape {
         return g;
     }
 
-    void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
+    // Not vectorised: the terms' sums overlap in c one place apart, and the
+    // two-lane loads of what the last two-lane store half wrote stall at
+    // every step (GCC; a third of POV's advanced/pawns.pov).
+    LANCER_NO_VECTORIZE void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max,
+                                       ShapeCrossings& out) const override {
         const double dd = glm::dot(d, d);
         if (!(dd > 0.0)) return;
         const double shift = -glm::dot(o, d) / dd;
         const DVec3 p = o + shift * d;
-        // (p_a + t d_a)^m for every axis a and power m, as coefficients in t.
-        double expansion[3][kMaxPolynomialDegree + 1][kMaxPolynomialDegree + 1] = {};
+        // (p_a + t d_a)^m for every axis a and power m, as coefficients in t
+        // (entries l <= m <= order only: zeroing the whole table, 7 KB, cost
+        // more than a quartic's roots).
+        // The axes' numbers in arrays: glm's operator[] is a switch.
+        double expansion[3][kMaxPolynomialDegree + 1][kMaxPolynomialDegree + 1];
+        const double start[3] = {p.x, p.y, p.z}, step[3] = {d.x, d.y, d.z};
         for (int axis = 0; axis < 3; ++axis) {
+            const double pa = start[axis], da = step[axis];
             expansion[axis][0][0] = 1.0;
-            for (int m = 1; m <= m_order; ++m)
-                for (int l = 0; l <= m; ++l)
-                    expansion[axis][m][l] = p[axis] * (l < m ? expansion[axis][m - 1][l] : 0.0) +
-                                            d[axis] * (l > 0 ? expansion[axis][m - 1][l - 1] : 0.0);
+            for (int m = 1; m <= m_order; ++m) {
+                const double* below = expansion[axis][m - 1];
+                double* row = expansion[axis][m];
+                row[0] = pa * below[0];
+                for (int l = 1; l < m; ++l) row[l] = pa * below[l] + da * below[l - 1];
+                row[m] = da * below[m - 1];
+            }
         }
         double c[kMaxPolynomialDegree + 1] = {};
         for (const Term& term : m_terms) {
