@@ -8,7 +8,9 @@
 // the results agree with POV's to the last bit or two, not just to 1e-6.
 #include "materials/noise.h"
 
+#if defined(__SSE2__)
 #include <emmintrin.h>
+#endif
 
 #include <cmath>
 #include <cstdint>
@@ -204,6 +206,7 @@ double pov_noise(const glm::dvec3& p, NoiseGenerator generator) {
 glm::dvec3 pov_dnoise(const glm::dvec3& p, NoiseGenerator /*generator: POV's DNoise has none*/) {
     const LatticeCell c = lattice_cell(p);
     const double gx = c.fx - 1.0, gy = c.fy - 1.0, gz = c.fz - 1.0;
+#if defined(__SSE2__)
     // The x and y components share two-lane arithmetic (SSE2: each lane
     // rounds as the scalar code would, multiply and add apart), z is
     // scalar; the sums are POV's, term by term, in POV's order.
@@ -221,6 +224,14 @@ glm::dvec3 pov_dnoise(const glm::dvec3& p, NoiseGenerator /*generator: POV's DNo
         xy = _mm_add_pd(xy, _mm_mul_pd(_mm_set1_pd(weight), sum));
         z += corner_term(start + 8, weight, dx, dy, dz);
     };
+#else
+    glm::dvec3 result(0.0);
+    const auto add_corner = [&](int start, double weight, double dx, double dy, double dz) {
+        result.x += corner_term(start, weight, dx, dy, dz);
+        result.y += corner_term(start + 4, weight, dx, dy, dz);
+        result.z += corner_term(start + 8, weight, dx, dy, dz);
+    };
+#endif
     // The corners' hash indices, each lookup once.
     const int x0 = kLatticeHashX[c.x & 0xFFF], x1 = kLatticeHashX[(c.x + 1) & 0xFFF];
     const int y00 = kLatticeHashY[(x0 ^ c.y) & 0xFFF], y10 = kLatticeHashY[(x1 ^ c.y) & 0xFFF];
@@ -236,9 +247,13 @@ glm::dvec3 pov_dnoise(const glm::dvec3& p, NoiseGenerator /*generator: POV's DNo
     add_corner(corner(y11, c.z + 1), c.w_x1y1 * c.w_z1, gx, gy, gz);
     add_corner(corner(y10, c.z + 1), c.w_x1y0 * c.w_z1, gx, c.fy, gz);
     add_corner(corner(y00, c.z + 1), c.w_x0y0 * c.w_z1, c.fx, c.fy, gz);
+#if defined(__SSE2__)
     alignas(16) double lanes[2];
     _mm_store_pd(lanes, xy);
     return glm::dvec3(lanes[0], lanes[1], z);
+#else
+    return result;
+#endif
 }
 
 double pov_turbulence(const glm::dvec3& p, double omega, double lambda, int octaves, NoiseGenerator generator) {
