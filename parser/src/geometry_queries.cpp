@@ -41,7 +41,7 @@ Value Evaluator::trace(const Value& object, const SourceRange& wo, const Value& 
     if (!queries || !object.shape()) return Value::vec3(sg::Vec3(0.0));
     sg::GeometryQueries::Crossing crossing;
     try {
-        crossing = queries->trace(shared_object(object), from, along);
+        crossing = queries->trace(shared_object(object), m_scene.global, from, along);
     } catch (const std::exception& e) {
         error(wo.begin, std::string("trace(): ") + e.what());
         return Value::vec3(sg::Vec3(0.0));
@@ -59,7 +59,7 @@ Value Evaluator::inside(const Value& object, const SourceRange& wo, const Value&
     const sg::GeometryQueries* queries = geometry_queries("inside", wo.begin);
     if (!queries || !object.shape()) return Value::number(0.0);
     try {
-        return Value::number(queries->inside(shared_object(object), p) ? 1.0 : 0.0);
+        return Value::number(queries->inside(shared_object(object), m_scene.global, p) ? 1.0 : 0.0);
     } catch (const std::exception& e) {
         error(wo.begin, std::string("inside(): ") + e.what());
         return Value::number(0.0);
@@ -72,7 +72,7 @@ Value Evaluator::extent(const Value& object, const SourceRange& wo, bool upper_c
     if (!queries || !object.shape()) return Value::vec3(sg::Vec3(0.0));
     sg::Vec3 lower(-kUnboundedExtent), upper(kUnboundedExtent);
     try {
-        if (!queries->bounds(shared_object(object), lower, upper)) {
+        if (!queries->bounds(shared_object(object), m_scene.global, lower, upper)) {
             lower = sg::Vec3(-kUnboundedExtent);
             upper = sg::Vec3(kUnboundedExtent);
         }

@@ -12,6 +12,7 @@
 namespace lancer::sg {
 
 struct Object;
+struct GlobalSettings;
 
 class GeometryQueries {
   public:
@@ -22,16 +23,22 @@ class GeometryQueries {
         glm::dvec3 point{0.0};
         glm::dvec3 normal{0.0};  // the surface's own (outward) unit normal there
     };
+    // Each question comes with the global_settings read so far, as POV-Ray
+    // asks it: what the object's patterns and functions default to (a
+    // noise_generator shapes a terrain made from a function).
+    //
     // The nearest crossing of the ray from `origin` along `direction` (not
     // necessarily unit) with the object. The object is shared so an
     // answerer may keep what it built for it while the object lives.
     // Throws std::runtime_error for an object that cannot be built.
-    virtual Crossing trace(const std::shared_ptr<const Object>& object, const glm::dvec3& origin,
-                           const glm::dvec3& direction) const = 0;
+    virtual Crossing trace(const std::shared_ptr<const Object>& object, const GlobalSettings& settings,
+                           const glm::dvec3& origin, const glm::dvec3& direction) const = 0;
     // POV-Ray's inside test of the object's solid.
-    virtual bool inside(const std::shared_ptr<const Object>& object, const glm::dvec3& point) const = 0;
+    virtual bool inside(const std::shared_ptr<const Object>& object, const GlobalSettings& settings,
+                        const glm::dvec3& point) const = 0;
     // The object's world bounding box; false for an unbounded object.
-    virtual bool bounds(const std::shared_ptr<const Object>& object, glm::dvec3& lower, glm::dvec3& upper) const = 0;
+    virtual bool bounds(const std::shared_ptr<const Object>& object, const GlobalSettings& settings, glm::dvec3& lower,
+                        glm::dvec3& upper) const = 0;
 };
 
 }  // namespace lancer::sg

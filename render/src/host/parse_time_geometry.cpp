@@ -27,9 +27,9 @@ sg::Object shape_only(const sg::Object& object) {
 
 class ParseTimeGeometry final : public sg::GeometryQueries {
   public:
-    Crossing trace(const std::shared_ptr<const sg::Object>& object, const glm::dvec3& origin,
-                   const glm::dvec3& direction) const override {
-        const Built& b = built(object);
+    Crossing trace(const std::shared_ptr<const sg::Object>& object, const sg::GlobalSettings& settings,
+                   const glm::dvec3& origin, const glm::dvec3& direction) const override {
+        const Built& b = built(object, settings);
         Ray ray;
         ray.origin = Vec3(origin);
         ray.direction = Vec3(glm::normalize(direction));
@@ -42,12 +42,14 @@ class ParseTimeGeometry final : public sg::GeometryQueries {
         return crossing;
     }
 
-    bool inside(const std::shared_ptr<const sg::Object>& object, const glm::dvec3& point) const override {
-        return built(object).inside(point);
+    bool inside(const std::shared_ptr<const sg::Object>& object, const sg::GlobalSettings& settings,
+                const glm::dvec3& point) const override {
+        return built(object, settings).inside(point);
     }
 
-    bool bounds(const std::shared_ptr<const sg::Object>& object, glm::dvec3& lower, glm::dvec3& upper) const override {
-        const Built& b = built(object);
+    bool bounds(const std::shared_ptr<const sg::Object>& object, const sg::GlobalSettings& settings, glm::dvec3& lower,
+                glm::dvec3& upper) const override {
+        const Built& b = built(object, settings);
         for (const Instance& instance : b.data->instances)
             if (!instance.csg_leaf && !instance.bounded) return false;
         if (b.data->bounds.empty()) return false;
@@ -59,18 +61,23 @@ class ParseTimeGeometry final : public sg::GeometryQueries {
   private:
     struct Built {
         std::weak_ptr<const sg::Object> object;  // expired: the address may be another object's
+        int noise_generator = 0;                 // the one global setting a shape can depend on
         const SceneData* data = nullptr;
         std::unique_ptr<RenderScene> scene;
         InsideTest inside;
     };
 
-    const Built& built(const std::shared_ptr<const sg::Object>& object) const {
+    const Built& built(const std::shared_ptr<const sg::Object>& object, const sg::GlobalSettings& settings) const {
         for (auto i = m_built.begin(); i != m_built.end();) i = i->second.object.expired() ? m_built.erase(i) : ++i;
         auto found = m_built.find(object.get());
-        if (found != m_built.end()) return found->second;
+        // A noise_generator set between two questions: built again, as
+        // POV-Ray would answer the second with the new one.
+        if (found != m_built.end() && found->second.noise_generator == settings.noise_generator) return found->second;
+        if (found != m_built.end()) m_built.erase(found);
         Built b;
         b.object = object;
-        auto data = build_object_scene_data(shape_only(*object), b.inside);
+        b.noise_generator = settings.noise_generator;
+        auto data = build_object_scene_data(shape_only(*object), settings, b.inside);
         b.data = data.get();
         b.scene = make_embree_scene(std::move(data));
         return m_built.emplace(object.get(), std::move(b)).first->second;

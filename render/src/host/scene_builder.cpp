@@ -1355,8 +1355,10 @@ std::unique_ptr<SceneData> build_scene_data(sg::SceneGraph& graph) {
     return Builder(graph).run();
 }
 
-std::unique_ptr<SceneData> build_object_scene_data(const sg::Object& object, InsideTest& inside) {
+std::unique_ptr<SceneData> build_object_scene_data(const sg::Object& object, const sg::GlobalSettings& settings,
+                                                   InsideTest& inside) {
     sg::SceneGraph graph;
+    graph.global = settings;
     graph.objects.push_back(object);
     Builder builder(graph);
     return builder.run(&inside);

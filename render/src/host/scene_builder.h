@@ -17,6 +17,7 @@ std::unique_ptr<SceneData> build_scene_data(sg::SceneGraph& graph);
 // One object alone, for the parser's geometry queries (trace, inside,
 // min_extent, max_extent): its scene data, and in `inside` POV's inside
 // test of its solid (valid while the scene data lives).
-std::unique_ptr<SceneData> build_object_scene_data(const sg::Object& object, InsideTest& inside);
+std::unique_ptr<SceneData> build_object_scene_data(const sg::Object& object, const sg::GlobalSettings& settings,
+                                                   InsideTest& inside);
 
 }  // namespace lancer
