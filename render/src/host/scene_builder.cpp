@@ -16,7 +16,7 @@
 #include "geometry/ovus.h"
 #include "geometry/parametric.h"
 #include "geometry/sphere_sweep.h"
-#include "host/shared_function_fields.h"
+#include "host/shared_height_fields.h"
 #include "lancer/host/scene_compiler.h"
 #include "lancer/scene_error.h"
 #include "materials/average_weights.h"
@@ -857,15 +857,18 @@ class Builder {
             throw SceneError(object.location, "julia_fractal: its slice or function is not one POV-Ray accepts");
         }
         if (const auto* field = std::get_if<sg::HeightField>(&object.shape)) {
-            HeightFieldGrid grid;
-            try {
-                grid = read_height_field_image(field->path, field->gamma > 0.0 ? field->gamma : std::nan(""));
-            } catch (const std::exception& e) {
-                throw SceneError(field->location, std::string("height_field: ") + e.what());
-            }
-            if (auto shape = make_height_field_shape(std::move(grid), field->smooth, field->water_level)) return shape;
-            throw SceneError(field->location, "height_field: the image '" + field->written +
-                                                  "' gives no height field (it needs at least 2 x 2 pixels)");
+            return shared_image_height_field(*field, [field] {
+                HeightFieldGrid grid;
+                try {
+                    grid = read_height_field_image(field->path, field->gamma > 0.0 ? field->gamma : std::nan(""));
+                } catch (const std::exception& e) {
+                    throw SceneError(field->location, std::string("height_field: ") + e.what());
+                }
+                if (auto shape = make_height_field_shape(std::move(grid), field->smooth, field->water_level))
+                    return shape;
+                throw SceneError(field->location, "height_field: the image '" + field->written +
+                                                      "' gives no height field (it needs at least 2 x 2 pixels)");
+            });
         }
         if (const auto* patch = std::get_if<sg::BicubicPatch>(&object.shape)) {
             BicubicPatchParameters parameters;
