@@ -334,10 +334,11 @@ std::function<void(sg::HeightField&)> Evaluator::height_field_function(const Val
     if (const int missing = sg::first_unsupported_internal(*function.function()); missing >= 0)
         error(at, "POV-Ray 3.7 has no internal function " + std::to_string(missing));
     const auto size = *function.image_size;
-    return [f = function.function(), size, at](sg::HeightField& h) {
+    return [f = function.function(), size, at, generator = m_scene.global.noise_generator](sg::HeightField& h) {
         h.function = f;
         h.function_width = size.first;
         h.function_height = size.second;
+        h.function_noise_generator = generator;
         h.location = at;
     };
 }

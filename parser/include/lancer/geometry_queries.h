@@ -24,8 +24,9 @@ class GeometryQueries {
         glm::dvec3 normal{0.0};  // the surface's own (outward) unit normal there
     };
     // Each question comes with the global_settings read so far, as POV-Ray
-    // asks it: what the object's patterns and functions default to (a
-    // noise_generator shapes a terrain made from a function).
+    // asks it: what the object's patterns and functions default to (the
+    // noise_generator of an isosurface's noise; a function height field
+    // keeps its own, sg::HeightField::function_noise_generator).
     //
     // The nearest crossing of the ray from `origin` along `direction` (not
     // necessarily unit) with the object. The object is shared so an

@@ -693,6 +693,10 @@ struct HeightField {
     // at x = column / (W - 1), y = row / (H - 1), z = 0 as a 16-bit image.
     FunctionRef function;
     int function_width = 0, function_height = 0;
+    // global_settings' noise_generator where the height field was written:
+    // POV-Ray makes the function's image there, so a noise_generator set
+    // later changes neither trace() nor the render.
+    int function_noise_generator = 2;
 };
 
 // POV's disc { center, normal, radius [, hole_radius] }.

@@ -65,6 +65,42 @@ TEST(ParseTimeGeometry, AFunctionTerrainIsTracedWithTheNoiseGeneratorSetSoFar) {
     }
 }
 
+// POV-Ray makes a function height field's image where the height field is
+// written, with the noise_generator set by then: one set later changes
+// neither trace() nor the render. POV-Ray's heights for the field written
+// before and after `noise_generator 1`; the render's from a ray of the
+// compiled scene.
+TEST(ParseTimeGeometry, AFunctionTerrainKeepsTheNoiseGeneratorWhereItIsWritten) {
+    const std::string field = R"(
+        #declare Field = height_field {
+          function 64, 64 { pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } scale 0.3 } }
+        })";
+    const std::string use = R"(
+        sphere { trace(Field, <0.37, 5, 0.61>, -y), 0.001 }
+        object { Field })";
+    const std::string later = "global_settings { noise_generator 1 }";
+    const struct {
+        std::string text;
+        double pov_height;
+    } cases[] = {{later + field + use, 0.134311523437},
+                 {field + later + use, 0.336383514404},
+                 {field + use + later, 0.336383514404}};
+    for (const auto& c : cases) {
+        Parsed parsed = parse_with_queries(c.text);
+        EXPECT_NEAR(answer(parsed, 0).y, c.pov_height, 1e-4) << c.text;
+        ASSERT_TRUE(parsed.result.ok());
+        // The render's field: the same ray meets the small sphere just above
+        // it (the generators' heights differ by 0.2).
+        const std::unique_ptr<RenderScene> scene = compile_scene(std::move(*parsed.result.scene));
+        Ray ray;
+        ray.origin = Vec3(0.37f, 5.0f, 0.61f);
+        ray.direction = Vec3(0.0f, -1.0f, 0.0f);
+        Hit hit;
+        ASSERT_TRUE(scene->intersect(ray, hit));
+        EXPECT_NEAR(hit.position.y, c.pov_height, 3e-3) << c.text;
+    }
+}
+
 // A #declare'd trace() is read without the grammar when its value is a
 // plain expression (parser/src/plain_values.cpp): the same values, normals
 // stored at the same moment, the same messages.

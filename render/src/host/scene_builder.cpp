@@ -682,8 +682,7 @@ class Builder {
             else if (parametric)
                 instance.shape = parametric_shape(*parametric, object.location);
             else if (field && field->function)
-                instance.shape = shared_function_height_field(*field, m_graph.global.noise_generator,
-                                                              [&] { return function_height_field(*field); });
+                instance.shape = shared_function_height_field(*field, [&] { return function_height_field(*field); });
             else
                 instance.shape = analytic_shape(object, world_from_object);
             DVec3 lower, upper;
@@ -784,7 +783,7 @@ class Builder {
     // grey), then read as an image file would be.
     std::shared_ptr<const Shape> function_height_field(const sg::HeightField& field) {
         const int width = field.function_width, height = field.function_height;
-        const auto natives = m_data->texture_factory->function_natives(*field.function);
+        const auto natives = m_data->texture_factory->function_natives(*field.function, field.function_noise_generator);
         const auto encode = [](double v) {
             const float clipped = v == v ? std::clamp(float(v), 0.0f, 1.0f) : 0.0f;  // NaN: 0
             return std::uint16_t(std::floor(clipped * 65535.0f + 0.5f));

@@ -60,14 +60,13 @@ std::shared_ptr<const Shape> shared(const Source& source, const sg::HeightField&
 
 }  // namespace
 
-std::shared_ptr<const Shape> shared_function_height_field(const sg::HeightField& field, int noise_generator,
-                                                          const MakeShape& make) {
+std::shared_ptr<const Shape> shared_function_height_field(const sg::HeightField& field, const MakeShape& make) {
     Source source;
     source.function = field.function;
     source.address = field.function.get();
     source.width = field.function_width;
     source.height = field.function_height;
-    source.noise_generator = noise_generator;
+    source.noise_generator = field.function_noise_generator;
     return shared(source, field, make);
 }
 

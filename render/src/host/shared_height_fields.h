@@ -17,13 +17,11 @@ namespace lancer {
 
 using MakeShape = std::function<std::shared_ptr<const Shape>()>;
 
-// The shape `make` gives for `field`, a `height_field { function W, H {…} }`
-// whose patterns default to `noise_generator`: one made earlier for the
-// same function, size, smoothing and water level while it is still in use,
-// else `make()`'s, kept for the next caller only as long as someone holds
-// it. Thread-safe.
-std::shared_ptr<const Shape> shared_function_height_field(const sg::HeightField& field, int noise_generator,
-                                                          const MakeShape& make);
+// The shape `make` gives for `field`, a `height_field { function W, H {…} }`:
+// one made earlier for the same function, size, noise generator, smoothing
+// and water level while it is still in use, else `make()`'s, kept for the
+// next caller only as long as someone holds it. Thread-safe.
+std::shared_ptr<const Shape> shared_function_height_field(const sg::HeightField& field, const MakeShape& make);
 
 // The same for a height field read from an image file: shared by the
 // file's path, size and modification time, the gamma, smoothing and water

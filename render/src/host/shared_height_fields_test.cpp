@@ -34,8 +34,8 @@ TEST(SharedHeightFields, AFieldInUseIsMadeOnce) {
     Counted counted;
     const auto make = [&] { return counted(); };
     const sg::HeightField field = field_of(function);
-    const auto first = shared_function_height_field(field, 2, make);
-    const auto second = shared_function_height_field(field, 2, make);
+    const auto first = shared_function_height_field(field, make);
+    const auto second = shared_function_height_field(field, make);
     EXPECT_EQ(counted.made, 1);
     EXPECT_EQ(first.get(), second.get());
 }
@@ -45,20 +45,22 @@ TEST(SharedHeightFields, WhatCouldChangeItMakesItAgain) {
     Counted counted;
     const auto make = [&] { return counted(); };
     const sg::HeightField field = field_of(function);
-    const auto kept = shared_function_height_field(field, 2, make);
+    const auto kept = shared_function_height_field(field, make);
     std::vector<std::shared_ptr<const Shape>> others;
-    others.push_back(shared_function_height_field(field, 1, make));  // another noise generator
+    sg::HeightField other_generator = field;
+    other_generator.function_noise_generator = 1;
+    others.push_back(shared_function_height_field(other_generator, make));
     sg::HeightField changed = field;
     changed.function_width = 3;
-    others.push_back(shared_function_height_field(changed, 2, make));
+    others.push_back(shared_function_height_field(changed, make));
     changed = field;
     changed.smooth = true;
-    others.push_back(shared_function_height_field(changed, 2, make));
+    others.push_back(shared_function_height_field(changed, make));
     changed = field;
     changed.water_level = 0.25;
-    others.push_back(shared_function_height_field(changed, 2, make));
+    others.push_back(shared_function_height_field(changed, make));
     // The same text in another function: nothing says it gives the same values.
-    others.push_back(shared_function_height_field(field_of(std::make_shared<const sg::Function>()), 2, make));
+    others.push_back(shared_function_height_field(field_of(std::make_shared<const sg::Function>()), make));
     EXPECT_EQ(counted.made, 6);
     for (const auto& other : others) EXPECT_NE(other.get(), kept.get());
 }
@@ -68,9 +70,9 @@ TEST(SharedHeightFields, NothingIsKeptOnceReleased) {
     Counted counted;
     const auto make = [&] { return counted(); };
     const sg::HeightField field = field_of(function);
-    std::weak_ptr<const Shape> first = shared_function_height_field(field, 2, make);
+    std::weak_ptr<const Shape> first = shared_function_height_field(field, make);
     EXPECT_TRUE(first.expired());
-    const auto second = shared_function_height_field(field, 2, make);
+    const auto second = shared_function_height_field(field, make);
     EXPECT_EQ(counted.made, 2);
 }
 

@@ -77,4 +77,11 @@ std::shared_ptr<const sg::FunctionNatives> TextureFactory::function_natives(cons
     return std::make_shared<const RenderFunctionNatives>(function, build());
 }
 
+std::shared_ptr<const sg::FunctionNatives> TextureFactory::function_natives(const sg::Function& function,
+                                                                            int noise_generator) {
+    MaterialBuild how = build();
+    how.generator = NoiseGenerator(noise_generator);
+    return std::make_shared<const RenderFunctionNatives>(function, how);
+}
+
 }  // namespace lancer

@@ -72,6 +72,10 @@ class TextureFactory {
     // What `function` and its callees ask of the renderer (noise, patterns,
     // pigments), for a shape that evaluates it (the isosurface).
     std::shared_ptr<const sg::FunctionNatives> function_natives(const sg::Function& function);
+    // The same with patterns that do not choose taking `noise_generator`
+    // (1-3) instead of global_settings' final one (a function height field
+    // is made where it is written).
+    std::shared_ptr<const sg::FunctionNatives> function_natives(const sg::Function& function, int noise_generator);
     // Whether something made so far reads a hit's (u,v) (uv_mapping, an
     // image mapped by (u,v)): without, the scene's hits need none.
     bool reads_surface_uv() const { return m_reads_surface_uv; }
