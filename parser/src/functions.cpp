@@ -530,13 +530,18 @@ Value Evaluator::call_function(const Value& function, const std::vector<Value>& 
     for (std::size_t i = 0; i < arguments.size(); ++i) numbers.push_back(to_float(arguments[i], where, "an argument"));
     try {
         const sg::Function& f = *function.function();
+        // The renderer's answers under the noise_generator set so far, as
+        // POV-Ray evaluates a function called while parsing.
+        const sg::FunctionNatives* natives =
+            m_options.function_natives
+                ? &m_options.function_natives->with_noise_generator(m_scene.global.noise_generator)
+                : nullptr;
         if (f.pigment) {
-            if (!m_options.function_natives)
-                throw sg::FunctionError("a pigment function is evaluated only while rendering");
+            if (!natives) throw sg::FunctionError("a pigment function is evaluated only while rendering");
             sg::Color colour;
             double c[5];
             for (int k = 0; k < 5; ++k)
-                c[k] = sg::evaluate_function(f, numbers.data(), int(numbers.size()), m_options.function_natives, k);
+                c[k] = sg::evaluate_function(f, numbers.data(), int(numbers.size()), natives, k);
             colour.rgb = sg::Vec3(c[0], c[1], c[2]);
             colour.filter = c[3];
             colour.transmit = c[4];
@@ -555,7 +560,7 @@ Value Evaluator::call_function(const Value& function, const std::vector<Value>& 
             result.v = f.spline(numbers.empty() ? 0.0 : numbers[0]);
             return result;
         }
-        return Value::number(sg::evaluate_function(f, numbers.data(), int(numbers.size()), m_options.function_natives));
+        return Value::number(sg::evaluate_function(f, numbers.data(), int(numbers.size()), natives));
     } catch (const sg::FunctionError& e) {
         error(where.begin, e.what());
         return Value::number(0.0);

@@ -36,6 +36,11 @@ class FunctionNatives {
     virtual std::array<double, 5> pigment(const Pigment& pigment, const glm::dvec3& p) const = 0;
     // POV's DTurbulence(), the SDL's vturbulence(lambda, omega, octaves, p).
     virtual glm::dvec3 turbulence_vector(const glm::dvec3& p, double omega, double lambda, int octaves) const;
+    // The answers under global_settings' `noise_generator` (1-3: what
+    // patterns and f_noise3d that choose none take). The render's natives
+    // are made for one scene and answer as they are; those that answer while
+    // a scene is parsed follow the setting as the text changes it.
+    virtual const FunctionNatives& with_noise_generator(int /*noise_generator*/) const { return *this; }
 };
 
 struct Function {

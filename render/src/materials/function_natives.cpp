@@ -46,23 +46,24 @@ namespace {
 
 // For functions called while parsing (single-threaded): each pattern and
 // pigment is compiled when asked for, as the scene graph may free and reuse
-// them between calls.
+// them between calls, with the noise generator the scene has set so far.
 class ParseTimeNatives final : public sg::FunctionNatives {
   public:
+    explicit ParseTimeNatives(NoiseGenerator generator = NoiseGenerator::RangeCorrected) : m_generator(generator) {}
+
     double noise(const glm::dvec3& p, int generator) const override {
-        return pov_noise(p,
-                         generator >= 1 && generator <= 3 ? NoiseGenerator(generator) : NoiseGenerator::RangeCorrected);
+        return pov_noise(p, generator >= 1 && generator <= 3 ? NoiseGenerator(generator) : m_generator);
     }
     double pattern(const sg::Pattern& pattern, const glm::dvec3& p) const override {
         try {
-            return compile_pattern(pattern, MaterialBuild()).value(p);
+            return compile_pattern(pattern, MaterialBuild(m_generator)).value(p);
         } catch (const std::exception& e) {
             throw sg::FunctionError(e.what());
         }
     }
     std::array<double, 5> pigment(const sg::Pigment& pigment, const glm::dvec3& p) const override {
         try {
-            const TextureSample c = make_point_pigment(pigment, MaterialBuild())->at(p, PatternContext{});
+            const TextureSample c = make_point_pigment(pigment, MaterialBuild(m_generator))->at(p, PatternContext{});
             return {c.rgb.r, c.rgb.g, c.rgb.b, c.filter, c.transmit};
         } catch (const std::exception& e) {
             throw sg::FunctionError(e.what());
@@ -71,6 +72,16 @@ class ParseTimeNatives final : public sg::FunctionNatives {
     glm::dvec3 turbulence_vector(const glm::dvec3& p, double omega, double lambda, int octaves) const override {
         return pov_dturbulence(p, omega, lambda, octaves, NoiseGenerator::RangeCorrected);
     }
+    const sg::FunctionNatives& with_noise_generator(int generator) const override {
+        if (!(generator >= 1 && generator <= 3) || NoiseGenerator(generator) == m_generator) return *this;
+        auto& other = m_others[std::size_t(generator - 1)];
+        if (!other) other = std::make_unique<ParseTimeNatives>(NoiseGenerator(generator));
+        return *other;
+    }
+
+  private:
+    NoiseGenerator m_generator;
+    mutable std::array<std::unique_ptr<ParseTimeNatives>, 3> m_others;
 };
 
 }  // namespace
