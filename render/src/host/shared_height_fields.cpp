@@ -1,6 +1,8 @@
 #include "host/shared_height_fields.h"
 
-#include <filesystem>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
 #include <mutex>
 #include <string>
 #include <system_error>
@@ -11,14 +13,14 @@ namespace {
 
 // What a height field's shape is made from, besides its smoothing and
 // water level: a function (its identity and size, the noise generator) or
-// a file (its path, size and time).
+// a file (its path and its bytes' length and hash: a scene may #write an
+// image again under the same name, size and, on a coarse clock, time).
 struct Source {
     std::weak_ptr<const sg::Function> function;  // expired: its address may be another function's
     const sg::Function* address = nullptr;
     int width = 0, height = 0, noise_generator = 0;
     std::string path;
-    std::uintmax_t file_size = 0;
-    std::filesystem::file_time_type file_time{};
+    std::uint64_t file_size = 0, file_hash = 0;
     double gamma = 0.0;
 
     bool same(const Source& other) const {
@@ -26,7 +28,7 @@ struct Source {
         if (address != nullptr)
             return !function.expired() && width == other.width && height == other.height &&
                    noise_generator == other.noise_generator;
-        return path == other.path && file_size == other.file_size && file_time == other.file_time &&
+        return path == other.path && file_size == other.file_size && file_hash == other.file_hash &&
                gamma == other.gamma;
     }
 };
@@ -58,6 +60,30 @@ std::shared_ptr<const Shape> shared(const Source& source, const sg::HeightField&
     return shape;
 }
 
+// The file's length and a 64-bit hash of its bytes (FNV-1a over 8-byte
+// words), read in blocks; false if it cannot be read. Much cheaper than
+// decoding the image.
+bool file_fingerprint(const std::string& path, std::uint64_t& size, std::uint64_t& hash) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return false;
+    std::vector<char> block(1 << 20);
+    size = 0;
+    hash = 0xcbf29ce484222325ull;
+    while (in) {
+        in.read(block.data(), std::streamsize(block.size()));
+        const std::size_t got = std::size_t(in.gcount());
+        std::size_t i = 0;
+        for (; i + 8 <= got; i += 8) {
+            std::uint64_t word;
+            std::memcpy(&word, block.data() + i, 8);
+            hash = (hash ^ word) * 0x100000001b3ull;
+        }
+        for (; i < got; ++i) hash = (hash ^ std::uint8_t(block[i])) * 0x100000001b3ull;
+        size += got;
+    }
+    return in.eof();
+}
+
 }  // namespace
 
 std::shared_ptr<const Shape> shared_function_height_field(const sg::HeightField& field, const MakeShape& make) {
@@ -74,11 +100,8 @@ std::shared_ptr<const Shape> shared_image_height_field(const sg::HeightField& fi
     Source source;
     source.path = field.path;
     source.gamma = field.gamma;
-    std::error_code error;
-    source.file_size = std::filesystem::file_size(field.path, error);
-    if (!error) source.file_time = std::filesystem::last_write_time(field.path, error);
-    // A file whose size or time cannot be read is read afresh each time.
-    if (error) return make();
+    // A file that cannot be read is left to make(), which says why.
+    if (!file_fingerprint(field.path, source.file_size, source.file_hash)) return make();
     return shared(source, field, make);
 }
 

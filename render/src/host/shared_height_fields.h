@@ -1,10 +1,8 @@
 // Height fields shared while one is alive. A height field made from a
 // function evaluates it width x height times, one from an image decodes the
-// file; a scene that trace()s its terrain while it is parsed (POV-Ray's
-// advanced/landscape.pov places its 256 trees so) has that object built
-// alone for the question (parse_time_geometry.cpp) and again for the
-// render, and a declared height field placed several times was made once
-// per placement.
+// file: a height field declared once and placed several times was made once
+// per placement. (trace() while parsing builds its object alone and frees
+// it before the render is built, so the render makes its own.)
 #pragma once
 
 #include <functional>
@@ -24,8 +22,8 @@ using MakeShape = std::function<std::shared_ptr<const Shape>()>;
 std::shared_ptr<const Shape> shared_function_height_field(const sg::HeightField& field, const MakeShape& make);
 
 // The same for a height field read from an image file: shared by the
-// file's path, size and modification time, the gamma, smoothing and water
-// level. `make` throws as it would alone (nothing is kept then).
+// file's path, the length and hash of its bytes, the gamma, smoothing and
+// water level. `make` throws as it would alone (nothing is kept then).
 std::shared_ptr<const Shape> shared_image_height_field(const sg::HeightField& field, const MakeShape& make);
 
 }  // namespace lancer

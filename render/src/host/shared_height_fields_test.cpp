@@ -76,8 +76,8 @@ TEST(SharedHeightFields, NothingIsKeptOnceReleased) {
     EXPECT_EQ(counted.made, 2);
 }
 
-// The file's bytes are not read here (make() stands in for the reader):
-// only its path, size and time count.
+// make() stands in for the image reader: the files here are not images,
+// only their path and bytes count.
 void write_file(const std::string& path, const std::string& bytes) {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out << bytes;
@@ -118,12 +118,16 @@ TEST(SharedHeightFields, AnotherFileGammaOrContentIsReadAgain) {
     changed = image_field(path);
     changed.smooth = true;
     others.push_back(shared_image_height_field(changed, make));
-    // Rewritten with other bytes (another size) while the first is in use.
+    // Rewritten while the first is in use: other bytes of the same length
+    // (a scene that #writes its image again, on a clock too coarse to tell),
+    // then a longer file.
+    write_file(path, "fir5t");
+    others.push_back(shared_image_height_field(image_field(path), make));
     write_file(path, "second, longer");
     others.push_back(shared_image_height_field(image_field(path), make));
     // A file that is not there: read afresh (the reader reports it).
     others.push_back(shared_image_height_field(image_field((dir / "lancer_shared_field_none.png").string()), make));
-    EXPECT_EQ(counted.made, 6);
+    EXPECT_EQ(counted.made, 7);
     for (const auto& shape : others) EXPECT_NE(shape.get(), kept.get());
     std::filesystem::remove(path);
     std::filesystem::remove(other);

@@ -44,12 +44,16 @@ std::array<double, 5> RenderFunctionNatives::pigment(const sg::Pigment& pigment,
 
 namespace {
 
-// For functions called while parsing (single-threaded): each pattern and
-// pigment is compiled when asked for, as the scene graph may free and reuse
-// them between calls, with the noise generator the scene has set so far.
+// For functions called while parsing: each pattern and pigment is compiled
+// when asked for, as the scene graph may free and reuse them between calls,
+// with the noise generator the scene has set so far. The natives for each
+// generator are made at once, so one object may answer several threads.
 class ParseTimeNatives final : public sg::FunctionNatives {
   public:
-    explicit ParseTimeNatives(NoiseGenerator generator = NoiseGenerator::RangeCorrected) : m_generator(generator) {}
+    ParseTimeNatives() : m_generator(NoiseGenerator::RangeCorrected) {
+        m_original = std::unique_ptr<ParseTimeNatives>(new ParseTimeNatives(NoiseGenerator::Original, this));
+        m_perlin = std::unique_ptr<ParseTimeNatives>(new ParseTimeNatives(NoiseGenerator::Perlin, this));
+    }
 
     double noise(const glm::dvec3& p, int generator) const override {
         return pov_noise(p, generator >= 1 && generator <= 3 ? NoiseGenerator(generator) : m_generator);
@@ -73,15 +77,18 @@ class ParseTimeNatives final : public sg::FunctionNatives {
         return pov_dturbulence(p, omega, lambda, octaves, NoiseGenerator::RangeCorrected);
     }
     const sg::FunctionNatives& with_noise_generator(int generator) const override {
-        if (!(generator >= 1 && generator <= 3) || NoiseGenerator(generator) == m_generator) return *this;
-        auto& other = m_others[std::size_t(generator - 1)];
-        if (!other) other = std::make_unique<ParseTimeNatives>(NoiseGenerator(generator));
-        return *other;
+        const ParseTimeNatives& root = m_root ? *m_root : *this;
+        if (generator == int(NoiseGenerator::Original)) return *root.m_original;
+        if (generator == int(NoiseGenerator::Perlin)) return *root.m_perlin;
+        return root;
     }
 
   private:
+    ParseTimeNatives(NoiseGenerator generator, const ParseTimeNatives* root) : m_generator(generator), m_root(root) {}
+
     NoiseGenerator m_generator;
-    mutable std::array<std::unique_ptr<ParseTimeNatives>, 3> m_others;
+    const ParseTimeNatives* m_root = nullptr;  // null: this is the root, generator 2
+    std::unique_ptr<ParseTimeNatives> m_original, m_perlin;
 };
 
 }  // namespace
