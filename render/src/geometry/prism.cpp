@@ -30,17 +30,9 @@ struct RayShadow {
     RayShadow(const DVec3& o, const DVec3& d)
         : ox(o.x), oz(o.z), dx(d.x), dz(d.z), inverse_x(1.0 / d.x), inverse_z(1.0 / d.z) {}
 
-    static bool slab(double o, double d, double inverse, double lower, double upper, double& near, double& far) {
-        if (d == 0.0) return !(o < lower || o > upper);
-        double t0 = (lower - o) * inverse, t1 = (upper - o) * inverse;
-        if (t0 > t1) std::swap(t0, t1);
-        near = std::max(near, t0);
-        far = std::min(far, t1);
-        return !(near > far);
-    }
     bool crosses(const glm::dvec2& lower, const glm::dvec2& upper, double& near, double& far) const {
-        return slab(ox, dx, inverse_x, lower.x, upper.x, near, far) &&
-               slab(oz, dz, inverse_z, lower.y, upper.y, near, far);
+        return ray_slab_interval(ox, dx, inverse_x, lower.x, upper.x, near, far) &&
+               ray_slab_interval(oz, dz, inverse_z, lower.y, upper.y, near, far);
     }
 };
 

@@ -26,18 +26,8 @@ void Shape::narrow_box(DVec3& lower, DVec3& upper, bool inverted) const {
 
 bool ray_box_interval(const DVec3& lower, const DVec3& upper, const DVec3& o, const DVec3& d, double& t_min,
                       double& t_max) {
-    for (int axis = 0; axis < 3; ++axis) {
-        if (d[axis] == 0.0) {
-            if (o[axis] < lower[axis] || o[axis] > upper[axis]) return false;
-            continue;
-        }
-        const double inverse = 1.0 / d[axis];
-        double t0 = (lower[axis] - o[axis]) * inverse, t1 = (upper[axis] - o[axis]) * inverse;
-        if (t0 > t1) std::swap(t0, t1);
-        t_min = std::max(t_min, t0);
-        t_max = std::min(t_max, t1);
-        if (t_min > t_max) return false;
-    }
+    for (int axis = 0; axis < 3; ++axis)
+        if (!ray_slab_interval(o[axis], d[axis], 1.0 / d[axis], lower[axis], upper[axis], t_min, t_max)) return false;
     return true;
 }
 

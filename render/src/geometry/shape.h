@@ -7,8 +7,10 @@
 // functions of shapes.h, which the fast paths for them call.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "geometry/planar_spline.h"
@@ -200,6 +202,19 @@ std::shared_ptr<const Shape> make_sor_shape(const std::vector<glm::dvec2>& point
 // POV's polygon: its points as written (a loop closes where a point repeats
 // the loop's first). Null when no loop of three points spans a plane.
 std::shared_ptr<const Shape> make_polygon_shape(const std::vector<DVec3>& points);
+
+// Narrows (t_min, t_max) to the stretch of o + t d (one axis's o and d,
+// `inverse` = 1 / d) between the planes at lower and upper; false when
+// none of it is.
+inline bool ray_slab_interval(double o, double d, double inverse, double lower, double upper, double& t_min,
+                              double& t_max) {
+    if (d == 0.0) return !(o < lower || o > upper);
+    double t0 = (lower - o) * inverse, t1 = (upper - o) * inverse;
+    if (t0 > t1) std::swap(t0, t1);
+    t_min = std::max(t_min, t0);
+    t_max = std::min(t_max, t1);
+    return !(t_min > t_max);
+}
 
 // Narrows (t_min, t_max) to the stretch of o + t d inside the box
 // [lower, upper]; false when none of it is.

@@ -25,9 +25,9 @@ struct Source {
 
     bool same(const Source& other) const {
         if (address != other.address) return false;
+        // (Entries whose function has expired are dropped before matching.)
         if (address != nullptr)
-            return !function.expired() && width == other.width && height == other.height &&
-                   noise_generator == other.noise_generator;
+            return width == other.width && height == other.height && noise_generator == other.noise_generator;
         return path == other.path && file_size == other.file_size && file_hash == other.file_hash &&
                gamma == other.gamma;
     }

@@ -69,13 +69,6 @@ inline LatticeAxis lattice_axis(double coordinate) {
     return {cell, coordinate - static_cast<double>(floor_value)};
 }
 
-// The start (in kLatticeValues) of the coefficients of the lattice corner
-// whose hash indices are x, y, z (each may be 4096, which wraps to 0).
-inline int lattice_corner(int x, int y, int z) {
-    const int xy = kLatticeHashY[(kLatticeHashX[x & 0xFFF] ^ y) & 0xFFF];
-    return kLatticeHashZ[(xy ^ z) & 0xFFF];
-}
-
 // The contribution of one corner to one component: its weight times its value
 // plus the dot product of its gradient with the offset from the corner. A
 // corner's value is half its table entry (measured; halving is exact, so the
@@ -100,19 +93,40 @@ inline LatticeCell lattice_cell(const glm::dvec3& p) {
     return {ax.cell, ay.cell, az.cell, ax.offset, ay.offset, az.offset, tx * ty, sx * ty, tx * sy, sx * sy, tz, sz};
 }
 
+// The start (in kLatticeValues) of the coefficients of each of the cell's
+// eight corners, [x][y][z] for the lower (0) or upper (1) corner on each
+// axis: POV's hash of the corner's indices (the upper may be 4096, which
+// wraps to 0), each table read once.
+struct CornerStarts {
+    int at[2][2][2];
+};
+
+inline CornerStarts corner_starts(const LatticeCell& c) {
+    CornerStarts s;
+    for (int i = 0; i < 2; ++i) {
+        const int x = kLatticeHashX[(c.x + i) & 0xFFF];
+        for (int j = 0; j < 2; ++j) {
+            const int xy = kLatticeHashY[(x ^ (c.y + j)) & 0xFFF];
+            for (int k = 0; k < 2; ++k) s.at[i][j][k] = kLatticeHashZ[(xy ^ (c.z + k)) & 0xFFF];
+        }
+    }
+    return s;
+}
+
 // The lattice sum of generators 1 and 2 before POV shifts and clamps it, in
 // POV's order of the eight corners.
 double lattice_sum(const glm::dvec3& p) {
     const LatticeCell c = lattice_cell(p);
+    const CornerStarts s = corner_starts(c);
     const double gx = c.fx - 1.0, gy = c.fy - 1.0, gz = c.fz - 1.0;
-    double sum = corner_term(lattice_corner(c.x, c.y, c.z), c.w_x0y0 * c.w_z0, c.fx, c.fy, c.fz);
-    sum += corner_term(lattice_corner(c.x + 1, c.y, c.z), c.w_x1y0 * c.w_z0, gx, c.fy, c.fz);
-    sum += corner_term(lattice_corner(c.x, c.y + 1, c.z), c.w_x0y1 * c.w_z0, c.fx, gy, c.fz);
-    sum += corner_term(lattice_corner(c.x + 1, c.y + 1, c.z), c.w_x1y1 * c.w_z0, gx, gy, c.fz);
-    sum += corner_term(lattice_corner(c.x, c.y, c.z + 1), c.w_x0y0 * c.w_z1, c.fx, c.fy, gz);
-    sum += corner_term(lattice_corner(c.x + 1, c.y, c.z + 1), c.w_x1y0 * c.w_z1, gx, c.fy, gz);
-    sum += corner_term(lattice_corner(c.x, c.y + 1, c.z + 1), c.w_x0y1 * c.w_z1, c.fx, gy, gz);
-    sum += corner_term(lattice_corner(c.x + 1, c.y + 1, c.z + 1), c.w_x1y1 * c.w_z1, gx, gy, gz);
+    double sum = corner_term(s.at[0][0][0], c.w_x0y0 * c.w_z0, c.fx, c.fy, c.fz);
+    sum += corner_term(s.at[1][0][0], c.w_x1y0 * c.w_z0, gx, c.fy, c.fz);
+    sum += corner_term(s.at[0][1][0], c.w_x0y1 * c.w_z0, c.fx, gy, c.fz);
+    sum += corner_term(s.at[1][1][0], c.w_x1y1 * c.w_z0, gx, gy, c.fz);
+    sum += corner_term(s.at[0][0][1], c.w_x0y0 * c.w_z1, c.fx, c.fy, gz);
+    sum += corner_term(s.at[1][0][1], c.w_x1y0 * c.w_z1, gx, c.fy, gz);
+    sum += corner_term(s.at[0][1][1], c.w_x0y1 * c.w_z1, c.fx, gy, gz);
+    sum += corner_term(s.at[1][1][1], c.w_x1y1 * c.w_z1, gx, gy, gz);
     return sum;
 }
 
@@ -232,21 +246,17 @@ glm::dvec3 pov_dnoise(const glm::dvec3& p, NoiseGenerator /*generator: POV's DNo
         result.z += corner_term(start + 8, weight, dx, dy, dz);
     };
 #endif
-    // The corners' hash indices, each lookup once.
-    const int x0 = kLatticeHashX[c.x & 0xFFF], x1 = kLatticeHashX[(c.x + 1) & 0xFFF];
-    const int y00 = kLatticeHashY[(x0 ^ c.y) & 0xFFF], y10 = kLatticeHashY[(x1 ^ c.y) & 0xFFF];
-    const int y01 = kLatticeHashY[(x0 ^ (c.y + 1)) & 0xFFF], y11 = kLatticeHashY[(x1 ^ (c.y + 1)) & 0xFFF];
-    const auto corner = [&](int xy_hash, int z_index) { return int(kLatticeHashZ[(xy_hash ^ z_index) & 0xFFF]); };
+    const CornerStarts s = corner_starts(c);
     // POV's DNoise visits the corners in this order (round the bottom face,
     // then back round the top one); kept for bit-exact sums.
-    add_corner(corner(y00, c.z), c.w_x0y0 * c.w_z0, c.fx, c.fy, c.fz);
-    add_corner(corner(y10, c.z), c.w_x1y0 * c.w_z0, gx, c.fy, c.fz);
-    add_corner(corner(y11, c.z), c.w_x1y1 * c.w_z0, gx, gy, c.fz);
-    add_corner(corner(y01, c.z), c.w_x0y1 * c.w_z0, c.fx, gy, c.fz);
-    add_corner(corner(y01, c.z + 1), c.w_x0y1 * c.w_z1, c.fx, gy, gz);
-    add_corner(corner(y11, c.z + 1), c.w_x1y1 * c.w_z1, gx, gy, gz);
-    add_corner(corner(y10, c.z + 1), c.w_x1y0 * c.w_z1, gx, c.fy, gz);
-    add_corner(corner(y00, c.z + 1), c.w_x0y0 * c.w_z1, c.fx, c.fy, gz);
+    add_corner(s.at[0][0][0], c.w_x0y0 * c.w_z0, c.fx, c.fy, c.fz);
+    add_corner(s.at[1][0][0], c.w_x1y0 * c.w_z0, gx, c.fy, c.fz);
+    add_corner(s.at[1][1][0], c.w_x1y1 * c.w_z0, gx, gy, c.fz);
+    add_corner(s.at[0][1][0], c.w_x0y1 * c.w_z0, c.fx, gy, c.fz);
+    add_corner(s.at[0][1][1], c.w_x0y1 * c.w_z1, c.fx, gy, gz);
+    add_corner(s.at[1][1][1], c.w_x1y1 * c.w_z1, gx, gy, gz);
+    add_corner(s.at[1][0][1], c.w_x1y0 * c.w_z1, gx, c.fy, gz);
+    add_corner(s.at[0][0][1], c.w_x0y0 * c.w_z1, c.fx, c.fy, gz);
 #if defined(__SSE2__)
     alignas(16) double lanes[2];
     _mm_store_pd(lanes, xy);
