@@ -134,6 +134,14 @@ struct MaterialParameters {
     // (lancer/medium.h); null: none.
     bool hollow = false;
     const Medium* medium = nullptr;
+    // The pigment neither filters nor transmits at any hit (POV's opaque
+    // texture, known before the render): a shadow ray it meets is blocked
+    // without a lookup.
+    bool pigment_opaque = false;
+    // No light passes any hit on this material: its pigment is opaque, or
+    // one of its layers' is (the light through the layers is their
+    // product), or every entry of its texture_map blocks light.
+    bool blocks_light = false;
     // A patterned texture: the scene picks the entries that hold at each
     // hit (a hit an integrator sees never has a material with entries,
     // except on a light's surface, which keeps the one material its light

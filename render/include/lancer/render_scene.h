@@ -33,6 +33,9 @@ struct SceneOptions {
 
 enum class RayCoherence { Incoherent, Coherent };
 
+// What lies on a shadow ray (RenderScene::shadow_blockers).
+enum class ShadowBlockers { None, SeeThrough, Opaque };
+
 class RenderScene {
   public:
     virtual ~RenderScene() = default;
@@ -50,6 +53,17 @@ class RenderScene {
     // lights are not occluders of themselves: a shadow ray aimed at a point
     // on a light stops short of it (Hit::spawn_ray_to).
     virtual bool occluded(const Ray& ray) const = 0;
+    // What occluded() found, told apart: nothing; only surfaces that may
+    // let light through somewhere; or a shadow-casting surface that lets
+    // none through anywhere (every pigment it may show, or a layer of each,
+    // has no filter or transmit: POV-Ray's opaque objects). An Opaque
+    // answer needs no walk through the surfaces to know the shadow is
+    // black, unless the blocker is the light's own surface. The default
+    // tells them apart only in a scene of opaque surfaces.
+    virtual ShadowBlockers shadow_blockers(const Ray& ray) const {
+        if (!occluded(ray)) return ShadowBlockers::None;
+        return opaque_surfaces() ? ShadowBlockers::Opaque : ShadowBlockers::SeeThrough;
+    }
     // Conservative: false only when no shadow-casting surface can cross a
     // segment from `origin` to any point corner + s * edge1 + t * edge2 of
     // a parallelogram (s, t in [0, 1]), so that shadow rays from `origin`

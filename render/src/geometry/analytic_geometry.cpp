@@ -96,6 +96,10 @@ void analytic_occluded(const RTCOccludedFunctionNArguments* args) {
     const std::uint32_t index = group->instances[args->primID];
     const Instance& instance = group->data->instances[index];
     if (!instance.casts_shadow) return;
+    // Occlusion queries come only with a ShadowContext (ray_queries.cpp).
+    auto* context = reinterpret_cast<ShadowContext*>(args->context);
+    const bool passes_through = context->classify && !instance.blocks_all_light;
+    if (passes_through && context->see_through_met) return;  // nothing more to learn here
     const unsigned n = args->N;
     RTCRayN* rays = args->ray;
     for (unsigned i = 0; i < n; ++i) {
@@ -105,15 +109,21 @@ void analytic_occluded(const RTCOccludedFunctionNArguments* args) {
         double t;
         int face;
         std::uint32_t leaf;
-        if (intersect_analytic(*group->data, index, o, d, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t, face,
-                               leaf))
+        if (!intersect_analytic(*group->data, index, o, d, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t, face,
+                                leaf))
+            continue;
+        if (passes_through)
+            context->see_through_met = true;
+        else
             RTCRayN_tfar(rays, n, i) = -INFINITY;
     }
 }
 
-// Rejects hits on meshes of no_shadow objects during occluded().
-void skip_no_shadow(const RTCFilterFunctionNArguments* args) {
-    const auto* context = reinterpret_cast<const ShadowContext*>(args->context);
+// During occluded(): rejects hits on meshes of no_shadow objects, and for
+// shadow_blockers() those on meshes that may let light through (noting
+// them), so that only an opaque one ends the query.
+void shadow_filter(const RTCFilterFunctionNArguments* args) {
+    auto* context = reinterpret_cast<ShadowContext*>(args->context);
     for (unsigned i = 0; i < args->N; ++i) {
         if (!args->valid[i]) continue;
         unsigned top = RTCHitN_instID(args->hit, args->N, i, 0);
@@ -121,7 +131,13 @@ void skip_no_shadow(const RTCFilterFunctionNArguments* args) {
         if (top >= context->geometries->size()) continue;
         const GeometryEntry& entry = (*context->geometries)[top];
         if (entry.group) continue;
-        if (!context->data->instances[entry.instance].casts_shadow) args->valid[i] = 0;
+        const Instance& instance = context->data->instances[entry.instance];
+        if (!instance.casts_shadow) {
+            args->valid[i] = 0;
+        } else if (context->classify && !instance.blocks_all_light) {
+            context->see_through_met = true;
+            args->valid[i] = 0;
+        }
     }
 }
 

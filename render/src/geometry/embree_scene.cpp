@@ -9,6 +9,7 @@
 #include "geometry/embree_scene.h"
 
 #include "geometry/containing_objects.h"
+#include "geometry/light_blockers.h"
 
 namespace lancer {
 namespace embree {
@@ -66,15 +67,21 @@ RTCGeometry EmbreeScene::make_triangles(const MeshData& mesh, const std::vector<
 
 void EmbreeScene::build() {
     SceneData& data = *m_data;
-    const bool any_no_shadow_mesh = [&] {
-        for (const Instance& i : data.instances)
-            if (i.kind == ShapeKind::Mesh && !i.casts_shadow) return true;
-        return false;
-    }();
-    m_has_no_shadow_mesh = any_no_shadow_mesh;
+    for (Instance& instance : data.instances) {
+        if (instance.csg_leaf) continue;  // traced through its tree's root
+        instance.blocks_all_light = blocks_all_light(data, instance);
+        if (!instance.casts_shadow || instance.blocks_all_light) continue;
+        m_has_see_through_caster = true;
+        if (instance.kind == ShapeKind::Mesh) m_has_see_through_mesh = true;
+    }
+    m_has_no_shadow_mesh = std::any_of(data.instances.begin(), data.instances.end(),
+                                       [](const Instance& i) { return i.kind == ShapeKind::Mesh && !i.casts_shadow; });
+    // The filter of shadow queries (shadow_filter), in every scene a mesh
+    // may be traced in: an instanced mesh's own scene needs the flag too.
+    const RTCSceneFlags scene_flags = RTCSceneFlags(
+        kSceneFlags | (m_has_no_shadow_mesh || m_has_see_through_mesh ? RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION : 0));
     m_scene = rtcNewScene(m_device);
-    rtcSetSceneFlags(m_scene,
-                     RTCSceneFlags(kSceneFlags | (any_no_shadow_mesh ? RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION : 0)));
+    rtcSetSceneFlags(m_scene, scene_flags);
     rtcSetSceneBuildQuality(m_scene, kBuildQuality);
 
     // Analytic kinds present in the scene, one user geometry each.
@@ -172,7 +179,7 @@ void EmbreeScene::build() {
         RTCScene& shared = m_scene_of_mesh[&mesh];
         if (!shared) {
             shared = rtcNewScene(m_device);
-            rtcSetSceneFlags(shared, kSceneFlags);
+            rtcSetSceneFlags(shared, scene_flags);
             rtcSetSceneBuildQuality(shared, kBuildQuality);
             RTCGeometry triangles = make_triangles(mesh, mesh.object_positions);
             rtcAttachGeometry(shared, triangles);

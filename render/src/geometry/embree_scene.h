@@ -55,11 +55,15 @@ struct GeometryEntry {
     std::uint32_t instance = 0;            // mesh or mesh instance
 };
 
-// occluded()'s context: lets the filter skip no_shadow meshes.
+// occluded()'s context: lets the filter skip no_shadow meshes, and
+// shadow_blockers() pass the surfaces that may let light through, noting
+// that it met one, so that only an opaque one ends the query.
 struct ShadowContext {
     RTCIntersectContext base;
     const std::vector<GeometryEntry>* geometries;
     const SceneData* data;
+    bool classify = false;
+    bool see_through_met = false;
 };
 
 // Everything a hit on a mesh placed in world space needs, when its
@@ -114,7 +118,7 @@ bool intersect_analytic(const SceneData& data, std::uint32_t self, const DVec3& 
 void analytic_bounds(const RTCBoundsFunctionArguments* args);
 void analytic_intersect(const RTCIntersectFunctionNArguments* args);
 void analytic_occluded(const RTCOccludedFunctionNArguments* args);
-void skip_no_shadow(const RTCFilterFunctionNArguments* args);
+void shadow_filter(const RTCFilterFunctionNArguments* args);
 
 // Hit completion on plain world meshes, lane by lane (hit_completion.cpp).
 void complete_plain_triangle_hits(const PlainTriangles* const* meshes, const float* t, const unsigned* primitive,
@@ -129,6 +133,7 @@ class EmbreeScene final : public RenderScene {
     bool intersect(const Ray& ray, Hit& hit) const override;
     void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found, RayCoherence coherence) const override;
     bool occluded(const Ray& ray) const override;
+    ShadowBlockers shadow_blockers(const Ray& ray) const override;
     // Answered for a scene traced from its shape list, whose unbounded
     // shapes are planes; true (unknown) otherwise.
     bool may_block_towards(const Vec3& origin, const Vec3& corner, const Vec3& edge1, const Vec3& edge2) const override;
@@ -196,6 +201,10 @@ class EmbreeScene final : public RenderScene {
     std::string m_device_error;
     InteriorStack m_camera_interiors;
     bool m_has_no_shadow_mesh = false;
+    // Shadow casters that may let light through somewhere (not
+    // Instance::blocks_all_light): any, and any mesh.
+    bool m_has_see_through_caster = false;
+    bool m_has_see_through_mesh = false;
     // By instance: a mesh whose triangle i is its face i (no polygons split).
     std::vector<std::uint8_t> m_faces_are_triangles;
     // By top-level geometry id: plain world meshes (see PlainTriangles).

@@ -244,7 +244,7 @@ bool EmbreeScene::occluded(const Ray& ray) const {
     rtcInitIntersectContext(&context.base);
     context.geometries = &m_geometries;
     context.data = m_data.get();
-    if (m_has_no_shadow_mesh) context.base.filter = skip_no_shadow;
+    if (m_has_no_shadow_mesh) context.base.filter = shadow_filter;
     RTCRay shadow_ray;
     fill_embree_ray(ray, shadow_ray);
     if (embree_can_trace(ray)) {
@@ -256,6 +256,33 @@ bool EmbreeScene::occluded(const Ray& ray) const {
         }
     }
     return m_unbounded.occluded(*m_data, ray, glm::max(ray.t_min, 0.0f), ray.t_max);
+}
+
+ShadowBlockers EmbreeScene::shadow_blockers(const Ray& ray) const {
+    if (!m_has_see_through_caster) return occluded(ray) ? ShadowBlockers::Opaque : ShadowBlockers::None;
+    bool see_through = false;
+    RTCRay shadow_ray;
+    fill_embree_ray(ray, shadow_ray);
+    if (embree_can_trace(ray)) {
+        if (m_traces_list) {
+            const ShadowBlockers listed = m_few_shapes.shadow_blockers(*m_data, ray, shadow_ray.tnear, shadow_ray.tfar);
+            if (listed == ShadowBlockers::Opaque) return listed;
+            see_through = listed == ShadowBlockers::SeeThrough;
+        } else {
+            ShadowContext context;
+            rtcInitIntersectContext(&context.base);
+            context.geometries = &m_geometries;
+            context.data = m_data.get();
+            context.classify = true;
+            if (m_has_no_shadow_mesh || m_has_see_through_mesh) context.base.filter = shadow_filter;
+            rtcOccluded1(m_scene, &context.base, &shadow_ray);
+            if (shadow_ray.tfar == -INFINITY) return ShadowBlockers::Opaque;
+            see_through = context.see_through_met;
+        }
+    }
+    const ShadowBlockers unbounded = m_unbounded.shadow_blockers(*m_data, ray, glm::max(ray.t_min, 0.0f), ray.t_max);
+    if (unbounded != ShadowBlockers::None) return unbounded;
+    return see_through ? ShadowBlockers::SeeThrough : ShadowBlockers::None;
 }
 
 bool EmbreeScene::may_block_towards(const Vec3& origin, const Vec3& corner, const Vec3& edge1,

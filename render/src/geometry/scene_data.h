@@ -86,6 +86,9 @@ struct Instance {
     const Light* emitter = nullptr;               // for emissive materials
     const Light* light = nullptr;                 // the area light this surface is
     bool casts_shadow = true;
+    // No shadow ray passes it (light_blockers.h); set when the render
+    // scene is built, on every instance but CSG leaves.
+    bool blocks_all_light = false;
     std::int16_t light_group = -1;                // POV's light_group (Hit::light_group)
     bool lit_by_global_lights = true;             // false in a light_group without global_lights
     bool double_illuminate = false;               // POV's (Hit::double_illuminate)

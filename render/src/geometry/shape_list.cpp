@@ -35,7 +35,7 @@ ShapeList::Boxes ShapeList::empty_boxes() {
 void ShapeList::add(const Instance& instance, std::uint32_t index, unsigned geometry, unsigned primitive) {
     if (m_shapes.size() >= std::size_t(kLanes)) throw std::logic_error("ShapeList: more shapes than it traces");
     const std::size_t lane = m_shapes.size();
-    m_shapes.push_back(Entry{index, geometry, primitive, instance.casts_shadow});
+    m_shapes.push_back(Entry{index, geometry, primitive, instance.casts_shadow, instance.blocks_all_light});
     for (int axis = 0; axis < 3; ++axis) {
         m_boxes.lower[axis][lane] = instance.bounds_lower[axis];
         m_boxes.upper[axis][lane] = instance.bounds_upper[axis];
@@ -129,6 +129,25 @@ bool ShapeList::occluded(const SceneData& data, const Ray& ray, float t_near, fl
         if (crosses(data, shape, ray, t_near, t_far, t, face, leaf)) return true;
     }
     return false;
+}
+
+ShadowBlockers ShapeList::shadow_blockers(const SceneData& data, const Ray& ray, float t_near, float t_far) const {
+    float entry[kLanes];
+    const unsigned met = boxes_met(ray, t_near, t_far, entry);
+    bool see_through = false;
+    for (std::size_t lane = 0; lane < m_shapes.size(); ++lane) {
+        const Entry& shape = m_shapes[lane];
+        // Once one surface that may let light through is found, only an
+        // opaque one changes the answer.
+        if (!shape.casts_shadow || !(met & (1u << lane)) || (see_through && !shape.blocks_all_light)) continue;
+        double t;
+        int face;
+        std::uint32_t leaf;
+        if (!crosses(data, shape, ray, t_near, t_far, t, face, leaf)) continue;
+        if (shape.blocks_all_light) return ShadowBlockers::Opaque;
+        see_through = true;
+    }
+    return see_through ? ShadowBlockers::SeeThrough : ShadowBlockers::None;
 }
 
 bool ShapeList::may_meet_hull(const DVec3* points, int point_count, const DVec3* axes, int axis_count,

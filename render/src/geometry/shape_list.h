@@ -37,6 +37,8 @@ class ShapeList {
     void nearest(const SceneData& data, const Ray& ray, EmbreeHit& found) const;
     // Whether a shape that casts shadows crosses the ray over [t_near, t_far].
     bool occluded(const SceneData& data, const Ray& ray, float t_near, float t_far) const;
+    // What occluded() finds, told apart (RenderScene::shadow_blockers).
+    ShadowBlockers shadow_blockers(const SceneData& data, const Ray& ray, float t_near, float t_far) const;
 
     // Whether the box of a shape that casts shadows may come within
     // `margin` of the convex hull of `points`. Conservative: a separating
@@ -49,6 +51,7 @@ class ShapeList {
         std::uint32_t instance;
         unsigned geometry, primitive;
         bool casts_shadow;
+        bool blocks_all_light;  // Instance::blocks_all_light
     };
     // The shapes' boxes by axis, one lane a shape, so one ray is tested
     // against all at once. The lanes past the shapes hold inverted boxes

@@ -40,6 +40,7 @@ void UnboundedShapes::add(const Instance& instance, std::uint32_t index) {
     Entry entry;
     entry.instance = index;
     entry.casts_shadow = instance.casts_shadow;
+    entry.blocks_all_light = instance.blocks_all_light;
     if (instance.kind == ShapeKind::Plane) entry.world_plane = world_plane_of(instance, entry.normal, entry.distance);
     // A tree's root is placed at the identity (its leaves carry the world
     // placements), so the world ray is the tree's.
@@ -108,6 +109,24 @@ bool UnboundedShapes::occluded(const SceneData& data, const Ray& ray, double t_m
         if (crosses(data, shape, ray, origin, direction, t_min, t_max, t, leaf, face)) return true;
     }
     return false;
+}
+
+ShadowBlockers UnboundedShapes::shadow_blockers(const SceneData& data, const Ray& ray, double t_min,
+                                                double t_max) const {
+    const DVec3 origin(ray.origin), direction(ray.direction);
+    bool see_through = false;
+    for (const Entry& shape : m_shapes) {
+        // Once one surface that may let light through is found, only an
+        // opaque one changes the answer.
+        if (!shape.casts_shadow || (see_through && !shape.blocks_all_light)) continue;
+        double t;
+        std::uint32_t leaf;
+        int face;
+        if (!crosses(data, shape, ray, origin, direction, t_min, t_max, t, leaf, face)) continue;
+        if (shape.blocks_all_light) return ShadowBlockers::Opaque;
+        see_through = true;
+    }
+    return see_through ? ShadowBlockers::SeeThrough : ShadowBlockers::None;
 }
 
 }  // namespace lancer::embree

@@ -34,6 +34,8 @@ class UnboundedShapes {
                  std::uint32_t& leaf, int& face) const;
     // Whether a shape that casts shadows crosses `ray` over (t_min, t_max).
     bool occluded(const SceneData& data, const Ray& ray, double t_min, double t_max) const;
+    // What occluded() finds, told apart (RenderScene::shadow_blockers).
+    ShadowBlockers shadow_blockers(const SceneData& data, const Ray& ray, double t_min, double t_max) const;
 
   private:
     struct Entry {
@@ -46,6 +48,7 @@ class UnboundedShapes {
         bool lone_leaf = false;
         std::uint32_t leaf = 0;
         bool casts_shadow = true;
+        bool blocks_all_light = false;  // Instance::blocks_all_light
     };
     // Whether `shape` is crossed over (t_min, t_max): a world plane on the
     // world ray (origin, direction), any other shape in its own space.

@@ -290,7 +290,8 @@ class Builder {
     const Material* build_material(const sg::Material& written, bool hollow, const MaterialEntries* entries) {
         sg::Material source = flatten_patterned_texture(written);
         sg::NormalRef surface_normal = source.normal;
-        if (!pigment_is_opaque(source.pigment)) m_data->opaque_surfaces = false;
+        const bool pigment_opaque = pigment_is_opaque(source.pigment);
+        if (!pigment_opaque) m_data->opaque_surfaces = false;
         if (written.layers_above.empty()) {
             m_data->textures.push_back(m_data->texture_factory->make(source.pigment));
         } else {
@@ -322,13 +323,27 @@ class Builder {
         // POV compares whole hundredths: 3.7 is 370.
         parameters.legacy_opacity = int(m_graph.global.language_version * 100.0 + 0.5) < 370;
         parameters.hollow = hollow;
+        parameters.pigment_opaque = pigment_opaque && written.layers_above.empty();
         // POV shows an interior's media only inside a hollow object.
         if (hollow && !source.interior->media.empty()) parameters.medium = make_medium(source.interior->media);
         parameters.entries = entries;
         if (!written.layers_above.empty()) parameters.layers = material_layers(written, hollow);
+        parameters.blocks_light = blocks_light(parameters, entries);
         if (parameters.ior != 1.0f) m_data->has_refraction = true;
         m_data->materials.push_back(std::make_unique<Material>(parameters));
         return m_data->materials.back().get();
+    }
+
+    // MaterialParameters::blocks_light, from what is known of the material
+    // so far (its layers and entries are built before it).
+    static bool blocks_light(const MaterialParameters& parameters, const MaterialEntries* entries) {
+        if (parameters.layers) {
+            const std::vector<const Material*>& layers = parameters.layers->top_first;
+            return std::any_of(layers.begin(), layers.end(),
+                               [](const Material* layer) { return layer->parameters().blocks_light; });
+        }
+        if (entries) return entries->every_entry_blocks_light();
+        return parameters.pigment_opaque;
     }
 
     // A layered texture's layers, top first, each a material of its own with

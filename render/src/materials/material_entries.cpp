@@ -32,6 +32,15 @@ int MaterialEntries::parts(const Hit& hit, Part* out) const {
     return parts.count;
 }
 
+bool MaterialEntries::every_entry_blocks_light() const {
+    for (std::size_t i = 0; i < m_materials.size(); ++i) {
+        const bool blocks =
+            m_nested[i] ? m_nested[i]->every_entry_blocks_light() : m_materials[i]->parameters().blocks_light;
+        if (!blocks) return false;
+    }
+    return true;
+}
+
 void MaterialEntries::gather(const glm::dvec3& point, const PatternContext& context, float weight, Parts& parts) const {
     const glm::dvec3 inner = m_pattern.pattern_point(point);
     switch (m_pick) {

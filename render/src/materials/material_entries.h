@@ -35,6 +35,9 @@ class MaterialEntries final : public MaterialMix {
                     std::vector<const Material*> materials, const TextureSpaces& spaces, bool uv_mapping);
 
     int parts(const Hit& hit, Part* out) const override;
+    // Whether every entry blocks light (MaterialParameters::blocks_light),
+    // whichever the pattern picks.
+    bool every_entry_blocks_light() const;
 
   private:
     struct Parts {

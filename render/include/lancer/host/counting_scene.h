@@ -33,6 +33,10 @@ class CountingScene final : public RenderScene {
         count();
         return m_inner.occluded(ray);
     }
+    ShadowBlockers shadow_blockers(const Ray& ray) const override {
+        count();
+        return m_inner.shadow_blockers(ray);
+    }
     // Not a ray: not counted.
     bool may_block_towards(const Vec3& origin, const Vec3& corner, const Vec3& edge1,
                            const Vec3& edge2) const override {

@@ -73,10 +73,11 @@ inline Color dimming_on_the_way(const RenderScene& scene, const Ray& ray, const 
 // transmittance_to), without the atmosphere's and fog's dimming.
 inline Color surfaces_transmittance(const RenderScene& scene, Ray ray, const Vec3& target, const Light* own_light,
                                     const InteriorStack* inside = nullptr) {
-    if (!scene.occluded(ray)) return Color(1.0f);  // the common case: one cheap query
-    // Whatever blocked it lets nothing through, unless it is this light's
-    // own surface (which never blocks it): a delta light has none.
-    if (scene.opaque_surfaces() && (own_light == nullptr || own_light->is_delta())) return Color(0.0f);
+    const ShadowBlockers blockers = scene.shadow_blockers(ray);
+    if (blockers == ShadowBlockers::None) return Color(1.0f);  // the common case: one cheap query
+    // An opaque blocker lets nothing through, unless it is this light's own
+    // surface (which never blocks it): a delta light has none.
+    if (blockers == ShadowBlockers::Opaque && (own_light == nullptr || own_light->is_delta())) return Color(0.0f);
     InteriorStack listed = inside ? *inside : InteriorStack{};
 
     // Walk the surfaces in between, nearest first. The bound only guards
@@ -91,6 +92,7 @@ inline Color surfaces_transmittance(const RenderScene& scene, Ray ray, const Vec
             // Between two texture_map entries, what each lets through, blended.
             const auto passes = [&ray](const Hit& surface_hit) {
                 const Material& material = *surface_hit.material;
+                if (material.parameters().pigment_opaque) return Color(0.0f);
                 const SurfaceSample surface = material.sample_surface(surface_hit);
                 // POV's opaque test: neither filter nor transmit (a negative
                 // transmit lets through negative light).

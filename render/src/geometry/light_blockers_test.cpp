@@ -1,0 +1,142 @@
+// RenderScene::shadow_blockers: what lies on a shadow ray, told apart into
+// nothing, surfaces that may let light through, and an opaque caster (which
+// makes the shadow black without a walk through the surfaces). An Opaque
+// answer must be safe: the walk would find no light either.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "pov_text_scene.h"
+
+namespace lancer {
+namespace {
+
+// Far opaque spheres that put a scene past the shape list, into the BVH.
+std::string far_spheres() {
+    std::string spheres;
+    for (int i = 0; i < 10; ++i) spheres += "sphere { <" + std::to_string(100 + 3 * i) + ", 0, 0>, 1 }\n";
+    return spheres;
+}
+
+// The shadow ray from the origin straight up to y = 10, on `objects` alone
+// and among far spheres (traced through the BVH); both must agree, and
+// agree with occluded().
+ShadowBlockers blockers_on_the_way(const std::string& objects) {
+    Ray ray;
+    ray.origin = Vec3(0.0f);
+    ray.direction = Vec3(0.0f, 1.0f, 0.0f);
+    ray.t_max = 10.0f;
+    const std::string camera = "camera { location -5*z look_at 0 }\n";
+    const auto few = testing::compile_pov_text(camera + objects, "<few>");
+    const auto many = testing::compile_pov_text(camera + objects + far_spheres(), "<many>");
+    const ShadowBlockers answer = few->shadow_blockers(ray);
+    EXPECT_EQ(many->shadow_blockers(ray), answer) << objects;
+    EXPECT_EQ(few->occluded(ray), answer != ShadowBlockers::None) << objects;
+    EXPECT_EQ(many->occluded(ray), answer != ShadowBlockers::None) << objects;
+    return answer;
+}
+
+constexpr ShadowBlockers kNone = ShadowBlockers::None;
+constexpr ShadowBlockers kSeeThrough = ShadowBlockers::SeeThrough;
+constexpr ShadowBlockers kOpaque = ShadowBlockers::Opaque;
+
+TEST(ShadowBlockers, AnOpaqueObjectBlocksAndAGlassOneLetsThrough) {
+    EXPECT_EQ(blockers_on_the_way(""), kNone);
+    EXPECT_EQ(blockers_on_the_way("sphere { <3, 5, 0>, 1 pigment { rgb 1 } }\n"), kNone);  // aside
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 pigment { rgb 1 } }\n"), kOpaque);
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 pigment { rgbf <1, 1, 1, 0.5> } }\n"), kSeeThrough);
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 pigment { rgbt <1, 1, 1, 0.5> } }\n"), kSeeThrough);
+    // A plane outside the BVH, either way.
+    EXPECT_EQ(blockers_on_the_way("plane { y, 5 pigment { rgb 1 } }\n"), kOpaque);
+    EXPECT_EQ(blockers_on_the_way("plane { y, 5 pigment { rgbt <1, 1, 1, 0.2> } }\n"), kSeeThrough);
+}
+
+TEST(ShadowBlockers, AnOpaqueObjectBehindGlassStillBlocks) {
+    const std::string glass = "sphere { <0, 3, 0>, 1 pigment { rgbf <1, 1, 1, 0.9> } }\n";
+    const std::string opaque = "box { <-1, 6, -1>, <1, 7, 1> pigment { rgb 1 } }\n";
+    EXPECT_EQ(blockers_on_the_way(glass + opaque), kOpaque);
+    EXPECT_EQ(blockers_on_the_way(opaque + glass), kOpaque);
+    EXPECT_EQ(blockers_on_the_way(glass + "plane { y, 8 pigment { rgb 1 } }\n"), kOpaque);
+    // Past the end of the ray it does not count.
+    EXPECT_EQ(blockers_on_the_way(glass + "plane { y, 12 pigment { rgb 1 } }\n"), kSeeThrough);
+}
+
+TEST(ShadowBlockers, WhatCastsNoShadowIsNotOnTheWay) {
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 pigment { rgb 1 } no_shadow }\n"), kNone);
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 pigment { rgb 1 } no_shadow }\n"
+                                  "sphere { <0, 8, 0>, 1 pigment { rgbt 0.5 } }\n"),
+              kSeeThrough);
+}
+
+// The light through layers is their product: one opaque layer stops it.
+TEST(ShadowBlockers, ALayeredTextureBlocksWhenAnyLayerIsOpaque) {
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 texture { pigment { rgb 1 } }"
+                                  " texture { pigment { rgbt <1, 0, 0, 0.5> } } }\n"),
+              kOpaque);
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 texture { pigment { rgbf <1, 1, 1, 0.5> } }"
+                                  " texture { pigment { rgbt <1, 0, 0, 0.5> } } }\n"),
+              kSeeThrough);
+}
+
+TEST(ShadowBlockers, PatternsBlockOnlyWhenEveryEntryDoes) {
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 pigment { checker rgb 1, rgb 0 } }\n"), kOpaque);
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 pigment { checker rgb 1, rgbt 1 } }\n"), kSeeThrough);
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 pigment { gradient y color_map {"
+                                  " [0 rgb 1] [1 rgbf <1, 1, 1, 0.3>] } } }\n"),
+              kSeeThrough);
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 texture { checker"
+                                  " texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } } }\n"),
+              kOpaque);
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 texture { gradient y texture_map {"
+                                  " [0 pigment { rgb 1 }] [1 pigment { rgbt 0.5 }] } } }\n"),
+              kSeeThrough);
+    // An entry that is itself a map.
+    EXPECT_EQ(blockers_on_the_way("sphere { <0, 5, 0>, 1 texture { gradient y texture_map {"
+                                  " [0 pigment { rgb 1 }] [1 checker texture { pigment { rgb 0 } }"
+                                  " texture { pigment { rgbt 0.5 } }] } } }\n"),
+              kSeeThrough);
+}
+
+// A CSG tree is one object to the BVH: it blocks all light only when every
+// part does, whichever part the ray meets (a plain union's parts are
+// objects of their own).
+TEST(ShadowBlockers, ACsgTreeBlocksOnlyWhenEveryPartDoes) {
+    EXPECT_EQ(blockers_on_the_way("merge { sphere { <0, 5, 0>, 1 pigment { rgb 1 } }"
+                                  " box { <-1, 7, -1>, <1, 8, 1> pigment { rgb 0 } } }\n"),
+              kOpaque);
+    EXPECT_EQ(blockers_on_the_way("merge { sphere { <0, 5, 0>, 1 pigment { rgb 1 } }"
+                                  " box { <4, 7, -1>, <5, 8, 1> pigment { rgbt 0.5 } } }\n"),
+              kSeeThrough);
+    EXPECT_EQ(blockers_on_the_way("union { sphere { <0, 5, 0>, 1 pigment { rgb 1 } }"
+                                  " box { <4, 7, -1>, <5, 8, 1> pigment { rgbt 0.5 } } }\n"),
+              kOpaque);
+    EXPECT_EQ(blockers_on_the_way("difference { sphere { <0, 5, 0>, 1 pigment { rgbf 0.5 } }"
+                                  " sphere { <0, 5, 0>, 0.5 pigment { rgb 1 } } }\n"),
+              kSeeThrough);
+}
+
+TEST(ShadowBlockers, AnInteriorTextureThatLetsLightThroughIsSeeThrough) {
+    EXPECT_EQ(
+        blockers_on_the_way("sphere { <0, 5, 0>, 1 pigment { rgb 1 } interior_texture { pigment { rgbt 0.5 } } }\n"),
+        kSeeThrough);
+}
+
+// Meshes are filtered in Embree, placed in the world or instanced (a mesh
+// used twice is traced in a scene of its own).
+TEST(ShadowBlockers, MeshesPlacedOnceOrInstanced) {
+    const std::string triangle = "triangle { <-1, 5, -1>, <1, 5, -1>, <0, 5, 1> }";
+    EXPECT_EQ(blockers_on_the_way("mesh { " + triangle + " pigment { rgb 1 } }\n"), kOpaque);
+    EXPECT_EQ(blockers_on_the_way("mesh { " + triangle + " pigment { rgbt 0.5 } }\n"), kSeeThrough);
+    for (const char* texture : {"pigment { rgbt 0.5 }", "pigment { rgb 1 }", "pigment { rgb 1 } no_shadow"}) {
+        const std::string twice = "#declare M = mesh { " + triangle + " " + texture +
+                                  " }\n"
+                                  "object { M } object { M translate x * 50 }\n";
+        const ShadowBlockers expected = std::string(texture).find("no_shadow") != std::string::npos ? kNone
+                                        : std::string(texture).find("rgbt") != std::string::npos    ? kSeeThrough
+                                                                                                    : kOpaque;
+        EXPECT_EQ(blockers_on_the_way(twice), expected) << texture;
+    }
+}
+
+}  // namespace
+}  // namespace lancer
