@@ -129,8 +129,7 @@ class GatherIntegrator final : public Integrator {
     static Color seen_by_simple_model(const RenderScene& scene, const Ray& ray) {
         Hit hit;
         if (!scene.intersect(ray, hit)) return scene.background(ray);
-        const auto own_light = [&](const Hit& seen) {
-            const ShadingContext at = make_shading_context(seen, ray);
+        const auto own_light = [&](const ShadingContext& at) {
             return surface_emission(at) + simple_direct_light(scene, at, Shadows::None).total();
         };
         return shade_own_light(hit, ray, scene, own_light);

@@ -103,8 +103,7 @@ class RaycastIntegrator final : public Integrator {
         if (!found) return scene.background(ray);
         // The same local model as shadow/whitted/gather (local_shading.h),
         // without shadow rays, so the integrators agree where nothing occludes.
-        const auto own_light = [&](const Hit& hit) {
-            const ShadingContext at = make_shading_context(hit, ray);
+        const auto own_light = [&](const ShadingContext& at) {
             Color radiance = surface_emission(at);
             if (m_with_ambient) radiance += opaque_ambient(lighting.ambient_light, at);
             const LobeRadiance reflected = simple_direct_light(scene, lighting.lights, at, Shadows::None);

@@ -59,8 +59,9 @@ class ShadowIntegrator final : public Integrator {
   private:
     Color surface_radiance(const Ray& ray, const Hit* found, const RenderScene& scene, Sampler& sampler) const {
         if (!found) return scene.background(ray);
-        const auto own_light = [&](const Hit& hit) {
-            ShadingContext at = make_shading_context(hit, ray);
+        const auto own_light = [&](const ShadingContext& seen) {
+            ShadingContext at = seen;
+            const Hit& hit = at.hit;
             // Its shadow rays start in the objects the camera is in.
             in_interiors(at, scene.camera_interiors());
             Color radiance = surface_emission(at);

@@ -27,24 +27,26 @@ inline Color layer_passes(const ShadingContext& at) {
 }
 
 // The light of a hit whose own light (no mirror, no refraction) is
-// own_light(hit): summed over a layered texture's layers, each dimmed by
-// the layers above it.
+// own_light(at), `at` its shading context along the ray: summed over a
+// layered texture's layers, each dimmed by the layers above it. Each
+// layer's context (a pigment lookup) is made once.
 template <class OwnLight>
 Color shade_layers(const Hit& hit, const Ray& ray, float bailout, const OwnLight& own_light) {
     const MaterialLayers* layers = layers_to_light(hit);
-    if (layers == nullptr) return own_light(hit);
+    if (layers == nullptr) return own_light(make_shading_context(hit, ray));
     Color radiance(0.0f), passed(1.0f);
     for (const Material* layer : layers->top_first) {
         if (!layers_pass_enough(passed, bailout)) break;
         const Hit seen = entry_hit(hit, layer);
-        radiance += passed * own_light(seen);
-        passed *= layer_passes(make_shading_context(seen, ray));
+        const ShadingContext at = make_shading_context(seen, ray);
+        radiance += passed * own_light(at);
+        passed *= layer_passes(at);
     }
     return radiance;
 }
 
 // A hit's own light (no mirror, no refraction) as POV-Ray shows it, for
-// integrators that light a hit by own_light(hit) alone: blended between
+// integrators that light a hit by own_light(at) alone: blended between
 // two texture_map entries, summed over a layered texture's layers.
 template <class OwnLight>
 Color shade_own_light(const Hit& hit, const Ray& ray, const RenderScene& scene, const OwnLight& own_light) {

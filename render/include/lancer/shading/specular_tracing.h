@@ -26,6 +26,9 @@
 //   reflection exponent raises the reflected radiance to that power.
 #pragma once
 
+#include <algorithm>
+#include <optional>
+
 #include "lancer/sampler.h"
 #include "lancer/shading/local_shading.h"
 #include "lancer/shading/material_blend.h"
@@ -180,6 +183,41 @@ Color follow_specular(const Ray& from, const Hit& hit, const Color& path_weight,
     return path_weight * seen;
 }
 
+// A layered texture's layers as one ray sees them, top first: each layer's
+// hit and shading context made once, though the layers are visited twice
+// (what passes them all, then each one's light), since each is a pigment
+// lookup (often noise with turbulence) and a normal's bend. Layers past
+// the first kKept are made again each time they are asked for.
+class LayerViews {
+  public:
+    static constexpr std::size_t kKept = 4;
+
+    LayerViews(const Hit& hit, const MaterialLayers& layers, const Ray& ray, const InteriorStack& inside)
+        : m_hit(hit), m_layers(layers), m_ray(ray), m_inside(inside) {}
+    LayerViews(const LayerViews&) = delete;
+    LayerViews& operator=(const LayerViews&) = delete;
+
+    // Layer k's context (its hit: at(k).hit), valid until the next call
+    // for a layer past kKept.
+    const ShadingContext& at(std::size_t k) {
+        const std::size_t slot = std::min(k, kKept);
+        if (slot == kKept || !m_at[slot]) {
+            m_hits[slot] = entry_hit(m_hit, m_layers.top_first[k]);
+            m_at[slot].emplace(make_shading_context(m_hits[slot], m_ray));
+            in_interiors(*m_at[slot], m_inside);
+        }
+        return *m_at[slot];
+    }
+
+  private:
+    const Hit& m_hit;
+    const MaterialLayers& m_layers;
+    const Ray& m_ray;
+    const InteriorStack& m_inside;
+    Hit m_hits[kKept + 1];
+    std::optional<ShadingContext> m_at[kKept + 1];
+};
+
 // A layered texture's hit (lancer/shading/material_layers.h): each layer's
 // own light dimmed by the layers above, each layer's mirror undimmed, and
 // what passes every layer refracted through the top layer. On total
@@ -189,40 +227,35 @@ template <class LocalTerm>
 Color layered_surface_radiance(const Ray& ray, const Hit& hit, const MaterialLayers& layers, const RenderScene& scene,
                                Sampler& sampler, const SpecularOptions& options, const LocalTerm& local_term, int level,
                                float weight, const InteriorStack& inside) {
+    LayerViews views(hit, layers, ray, inside);
     // What passes every layer the light reaches.
     Color passed(1.0f);
     std::size_t reached = 0;
-    for (const Material* layer : layers.top_first) {
+    for (; reached < layers.top_first.size(); ++reached) {
         if (!layers_pass_enough(passed, options.min_weight)) break;
-        ShadingContext layer_at = make_shading_context(entry_hit(hit, layer), ray);
-        passed *= layer_passes(in_interiors(layer_at, inside));
-        ++reached;
+        passed *= layer_passes(views.at(reached));
     }
-    const Hit top = entry_hit(hit, layers.top_first.front());
-    ShadingContext top_at = make_shading_context(top, ray);
-    in_interiors(top_at, inside);
+    const ShadingContext& top_at = views.at(0);
     const SpecularSplit top_split = split_specular(top_at, options, hit.t * glm::length(ray.direction), &passed);
+    const Vec3 top_normal = top_at.hit.shading_normal;
 
     Color radiance(0.0f), above(1.0f);
     for (std::size_t k = 0; k < reached; ++k) {
-        const Hit seen = k == 0 ? top : entry_hit(hit, layers.top_first[k]);
-        ShadingContext at = make_shading_context(seen, ray);
-        in_interiors(at, inside);
+        const ShadingContext& at = views.at(k);
         const SpecularSplit split = k == 0 ? top_split : split_mirror(at, options);
         const LobeRadiance local = local_term(at, split.diffuse_scale, sampler);
         radiance += above * (surface_emission(at) + split.diffuse_scale * local.diffuse + local.glossy);
-        const bool reflects =
-            k == 0 || !top_split.total_internal_reflection || seen.shading_normal != top.shading_normal;
+        const bool reflects = k == 0 || !top_split.total_internal_reflection || at.hit.shading_normal != top_normal;
         // POV weighs a layer's reflected ray by the light reaching the layer.
         const float reaching = std::min(1.0f, std::fabs(pov_grey(above)));
         if (reflects)
-            radiance += follow_specular(ray, seen, split.reflection, split.reflected,
+            radiance += follow_specular(ray, at.hit, split.reflection, split.reflected,
                                         at.material.parameters().reflection_exponent, false, scene, sampler, options,
                                         local_term, level, weight * reaching, inside, split.reflected_tint);
         above *= layer_passes(at);
     }
-    radiance += follow_specular(ray, top, top_split.transmission, top_split.refracted, 1.0f, true, scene, sampler,
-                                options, local_term, level, weight, inside);
+    radiance += follow_specular(ray, views.at(0).hit, top_split.transmission, top_split.refracted, 1.0f, true, scene,
+                                sampler, options, local_term, level, weight, inside);
     return radiance;
 }
 
