@@ -171,6 +171,26 @@ TEST(Csg, BoundedByCutsAsPovRayDoes) {
     EXPECT_NEAR(first_hit(*cheap, {0.9f, 0.9f, -10}, {0, 0, 1}).t, 10.0f - std::sqrt(4.0f - 1.62f), 1e-4f);
 }
 
+// A union's bounded_by: POV-Ray tests it before any part, so it cuts a part
+// that has no bounds of its own (a quadric here, written in the union's
+// space while the part is moved) where the rays miss the bound, and so
+// does lancer; nested in another union the same.
+TEST(Csg, AUnionsBoundedByCutsItsUnboundedParts) {
+    const std::string quadric = "quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -4 translate x }";
+    const std::string bound = "bounded_by { sphere { <1, 0, -3>, 1 } }";
+    for (const std::string& text : {"union { " + quadric + " box { <5, -1, -1>, <6, 1, 1> } " + bound + " }",
+                                    "union { union { " + quadric + " } sphere { <5, 0, 0>, 1 } " + bound + " }"}) {
+        const auto scene = compile(text);
+        // Through the bound: the quadric's near side, at z = -sqrt(3.75).
+        EXPECT_NEAR(first_hit(*scene, {1.5f, 0, -10}, {0, 0, 1}).t, 10.0f - std::sqrt(3.75f), 1e-4f) << text;
+        // Beside the bound, though through the quadric: nothing.
+        EXPECT_LT(first_hit(*scene, {1.9f, 0.9f, -10}, {0, 0, 1}).t, 0.0f) << text;
+        // Without the bound the same ray meets it.
+        const auto unbounded = compile("union { " + quadric + " }");
+        EXPECT_NEAR(first_hit(*unbounded, {1.9f, 0.9f, -10}, {0, 0, 1}).t, 10.0f - std::sqrt(4.0f - 1.62f), 1e-4f);
+    }
+}
+
 // A smooth triangle whose written normals disagree with its winding, as
 // a CSG leaf: the facet's normal is turned to the side of the normal that
 // shades, as for a mesh out of CSG, so the two never face apart.

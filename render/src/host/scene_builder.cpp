@@ -591,35 +591,83 @@ class Builder {
 
     void add_objects(const std::vector<sg::Object>& objects, const DMat4& world_from_parent,
                      const sg::MaterialRef& inherited, const DMat4& inherited_owner, bool no_shadow) {
-        for (const sg::Object& object : objects) {
-            const LightGroupScope group(m_light_group, object.light_group);
-            const DoubleIlluminateScope illuminated(m_double_illuminate, object.double_illuminate);
-            const HiddenFromScope hidden(m_hidden_from, object);
-            const InteriorOwnerScope interior(m_interior_owner, object);
-            const DMat4 world_from_object = world_from_parent * object.parent_from_object;
-            const sg::MaterialRef& material = object.material ? object.material : inherited;
-            // POV: a texture follows the transforms applied after it, i.e. it
-            // lives in the space of the object it was attached to.
-            const DMat4 owner = object.material ? world_from_object : inherited_owner;
-            const bool object_no_shadow = no_shadow || object.no_shadow;
-            const bool plain_union =
-                object.kind == sg::Object::Kind::Union && !object.inverse && object.clipped_by.empty();
-            if (const auto* group = std::get_if<sg::Group>(&object.shape); group && plain_union) {
+        for (const sg::Object& object : objects)
+            add_object(object, world_from_parent, inherited, inherited_owner, no_shadow);
+    }
+
+    // `union_bound`: the object's bounded_by holds a union's bound (see
+    // add_bounded_union_parts).
+    void add_object(const sg::Object& object, const DMat4& world_from_parent, const sg::MaterialRef& inherited,
+                    const DMat4& inherited_owner, bool no_shadow, bool union_bound = false) {
+        const LightGroupScope group(m_light_group, object.light_group);
+        const DoubleIlluminateScope illuminated(m_double_illuminate, object.double_illuminate);
+        const HiddenFromScope hidden(m_hidden_from, object);
+        const InteriorOwnerScope interior(m_interior_owner, object);
+        const DMat4 world_from_object = world_from_parent * object.parent_from_object;
+        const sg::MaterialRef& material = object.material ? object.material : inherited;
+        // POV: a texture follows the transforms applied after it, i.e. it
+        // lives in the space of the object it was attached to.
+        const DMat4 owner = object.material ? world_from_object : inherited_owner;
+        const bool object_no_shadow = no_shadow || object.no_shadow;
+        const bool plain_union = object.kind == sg::Object::Kind::Union && !object.inverse && object.clipped_by.empty();
+        if (const auto* group = std::get_if<sg::Group>(&object.shape); group && plain_union) {
+            if (object.bounded_by.empty())
                 add_objects(group->children, world_from_object, material, owner, object_no_shadow);
+            else
+                add_bounded_union_parts(object, group->children, world_from_object, material, owner, object_no_shadow);
+            return;
+        }
+        // CSG, or an object that an inversion or clip makes one.
+        if (std::holds_alternative<sg::Group>(object.shape) || object.inverse || !object.clipped_by.empty() ||
+            bound_may_cut(object, material)) {
+            add_csg(object, world_from_parent, inherited, inherited_owner, no_shadow, union_bound);
+            return;
+        }
+        Instance instance;
+        if (!make_leaf(object, world_from_object, material_for(material, object.hollow), object_no_shadow, instance))
+            return;
+        instance.interior_material = interior_material_for(material, object.hollow);
+        push_instance(std::move(instance), glm::inverse(owner));
+    }
+
+    // A union's parts under its bounded_by. POV-Ray tests a union's bound
+    // before any of its parts, so it cuts them where rays miss it: a part
+    // lancer cannot bound by itself (a plane, a quadric, a polynomial) or
+    // one that is CSG already takes the bound as its own, which both culls
+    // the rays that miss it (the sample pawns' unbounded quartics) and cuts
+    // it as POV-Ray does. The other parts keep their own boxes and the BVH:
+    // there the bound serves speed and rarely cuts.
+    void add_bounded_union_parts(const sg::Object& group, const std::vector<sg::Object>& parts,
+                                 const DMat4& world_from_group, const sg::MaterialRef& material, const DMat4& owner,
+                                 bool no_shadow) {
+        for (const sg::Object& part : parts) {
+            const double determinant = glm::determinant(part.parent_from_object);
+            if (!takes_union_bound(part) || !(determinant != 0.0) || !std::isfinite(determinant)) {
+                add_object(part, world_from_group, material, owner, no_shadow);
                 continue;
             }
-            // CSG, or an object that an inversion or clip makes one.
-            if (std::holds_alternative<sg::Group>(object.shape) || object.inverse || !object.clipped_by.empty() ||
-                bound_may_cut(object, material)) {
-                add_csg(object, world_from_parent, inherited, inherited_owner, no_shadow);
-                continue;
+            // The bound is written in the union's space; the part's own
+            // bounded_by is in the part's.
+            sg::Object own = part;
+            const DMat4 part_from_group = glm::inverse(part.parent_from_object);
+            for (sg::Object bound : group.bounded_by) {
+                bound.parent_from_object = part_from_group * bound.parent_from_object;
+                own.bounded_by.push_back(std::move(bound));
             }
-            Instance instance;
-            if (!make_leaf(object, world_from_object, material_for(material, object.hollow), object_no_shadow,
-                           instance))
-                continue;
-            instance.interior_material = interior_material_for(material, object.hollow);
-            push_instance(std::move(instance), glm::inverse(owner));
+            add_object(own, world_from_group, material, owner, no_shadow, /*union_bound=*/true);
+        }
+    }
+
+    static bool takes_union_bound(const sg::Object& part) {
+        using Kind = sg::Object::Kind;
+        if (std::holds_alternative<sg::Group>(part.shape)) return true;
+        switch (part.kind) {
+        case Kind::Plane:
+        case Kind::Quadric:
+        case Kind::Poly:
+        case Kind::Cubic:
+        case Kind::Quartic: return true;
+        default: return false;
         }
     }
 
@@ -995,13 +1043,15 @@ class Builder {
 
     // A CSG object (or one an inversion or clip makes one): its leaves,
     // then the root Embree sees (csg.h).
+    // `union_bound`: the object's bounded_by holds a union's bound
+    // (add_bounded_union_parts), which POV keeps whatever the part's kind.
     void add_csg(const sg::Object& object, const DMat4& world_from_parent, const sg::MaterialRef& inherited,
-                 const DMat4& inherited_owner, bool no_shadow) {
+                 const DMat4& inherited_owner, bool no_shadow, bool union_bound = false) {
         auto tree = std::make_unique<CsgTree>();
         tree->root = add_csg_node(*tree, object, world_from_parent, inherited, inherited_owner, no_shadow, false);
         // POV keeps testing rays against a part's bounds, but drops an
         // object's own for the cheap kinds (Link_To_Frame).
-        tree->nodes[tree->root].rays_must_meet_bounds = keeps_ray_bounds(object);
+        tree->nodes[tree->root].rays_must_meet_bounds = union_bound || keeps_ray_bounds(object);
         tree->compute_bounds(m_data->instances);
         const CsgNode& root = tree->nodes[tree->root];
         Instance instance;
