@@ -4,8 +4,10 @@
 // answer must be safe: the walk would find no light either.
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
 
+#include "lancer/shading/shadow_rays.h"
 #include "pov_text_scene.h"
 
 namespace lancer {
@@ -135,6 +137,56 @@ TEST(ShadowBlockers, MeshesPlacedOnceOrInstanced) {
                                         : std::string(texture).find("rgbt") != std::string::npos    ? kSeeThrough
                                                                                                     : kOpaque;
         EXPECT_EQ(blockers_on_the_way(twice), expected) << texture;
+    }
+}
+
+// The claim itself, on random segments through a scene of every kind of
+// blocker: where the scene answers Opaque the walk through the surfaces
+// finds no light either, and where it answers None the walk finds all of
+// it (surfaces_transmittance skips the walk on both answers).
+TEST(ShadowBlockers, TheAnswersAgreeWithTheWalk) {
+    const std::string objects =
+        "sphere { <-2, 1, 0>, 0.8 pigment { rgb 1 } }\n"
+        "sphere { <0, 1, 0>, 0.8 pigment { rgbf <1, 0.8, 0.8, 0.9> } interior { ior 1.5 } }\n"
+        "box { <1.2, 0.2, -0.6>, <2.4, 1.6, 0.6> texture { pigment { rgbf 0.5 } }"
+        " texture { pigment { checker rgb 1, rgbt 1 scale 0.3 } } }\n"
+        "difference { box { <-2.6, 2, -0.6>, <-1.4, 3, 0.6> } sphere { <-2, 2.5, -0.6>, 0.4 }"
+        " pigment { rgbt <1, 1, 1, 0.6> } }\n"
+        "merge { sphere { <0, 2.6, 0>, 0.5 pigment { rgb 1 } } sphere { <0.5, 2.6, 0>, 0.5 pigment { rgb 0.5 } } }\n"
+        "mesh { triangle { <1, 2, -1>, <3, 2, -1>, <2, 3, 1> } pigment { rgbt 0.7 } }\n"
+        "mesh { triangle { <1, 2.2, 1>, <3, 2.2, 1>, <2, 3.2, -1> } pigment { rgb <0.2, 0.5, 0.9> } }\n"
+        "cylinder { <-3, 0, 2>, <3, 0, 2>, 0.3 texture { gradient x texture_map { [0 pigment { rgb 1 }]"
+        " [1 pigment { rgbt 0.5 }] } } }\n"
+        "torus { 0.6, 0.2 rotate x * 90 translate <-1, 3.5, 0> pigment { granite color_map { [0 rgb 1] [1 rgb 0] } } "
+        "}\n"
+        "plane { y, -0.5 pigment { checker rgb 1, rgb 0.5 } }\n";
+    const std::string camera = "camera { location -5*z look_at 0 }\n";
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> x(-3.5f, 3.5f), y(-1.0f, 4.0f), z(-2.5f, 2.5f);
+    for (const std::string& text : {objects, objects + far_spheres()}) {
+        const auto scene = testing::compile_pov_text(camera + text, "<mixed>");
+        int opaque = 0, none = 0;
+        for (int i = 0; i < 4000; ++i) {
+            const Vec3 from(x(random), y(random), z(random)), to(x(random), y(random), z(random));
+            Ray ray;
+            ray.origin = from;
+            ray.direction = to - from;
+            ray.t_max = 1.0f;
+            const ShadowBlockers answer = scene->shadow_blockers(ray);
+            if (answer == ShadowBlockers::SeeThrough) continue;
+            const Color walked = walked_transmittance(*scene, ray, to, nullptr);
+            if (answer == ShadowBlockers::Opaque) {
+                ++opaque;
+                EXPECT_EQ(max_component(glm::abs(walked)), 0.0f) << "from " << from.x << " " << from.y << " " << from.z
+                                                                 << " to " << to.x << " " << to.y << " " << to.z;
+            } else {
+                ++none;
+                EXPECT_EQ(walked, Color(1.0f));
+            }
+        }
+        // Both answers were put to the test.
+        EXPECT_GT(opaque, 500);
+        EXPECT_GT(none, 500);
     }
 }
 

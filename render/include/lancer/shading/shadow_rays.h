@@ -69,15 +69,11 @@ inline Color dimming_on_the_way(const RenderScene& scene, const Ray& ray, const 
     return dimmed;
 }
 
-// What the surfaces between the hit and `target` let through (see
-// transmittance_to), without the atmosphere's and fog's dimming.
-inline Color surfaces_transmittance(const RenderScene& scene, Ray ray, const Vec3& target, const Light* own_light,
-                                    const InteriorStack* inside = nullptr) {
-    const ShadowBlockers blockers = scene.shadow_blockers(ray);
-    if (blockers == ShadowBlockers::None) return Color(1.0f);  // the common case: one cheap query
-    // An opaque blocker lets nothing through, unless it is this light's own
-    // surface (which never blocks it): a delta light has none.
-    if (blockers == ShadowBlockers::Opaque && (own_light == nullptr || own_light->is_delta())) return Color(0.0f);
+// What the surfaces on `ray` up to `target` let through, found by walking
+// them nearest first (surfaces_transmittance asks the scene first whether
+// it needs to).
+inline Color walked_transmittance(const RenderScene& scene, Ray ray, const Vec3& target, const Light* own_light,
+                                  const InteriorStack* inside = nullptr) {
     InteriorStack listed = inside ? *inside : InteriorStack{};
 
     // Walk the surfaces in between, nearest first. The bound only guards
@@ -140,6 +136,18 @@ inline Color surfaces_transmittance(const RenderScene& scene, Ray ray, const Vec
         ray = blocker.spawn_ray_to(target);
     }
     return Color(0.0f);
+}
+
+// What the surfaces between the hit and `target` let through (see
+// transmittance_to), without the atmosphere's and fog's dimming.
+inline Color surfaces_transmittance(const RenderScene& scene, const Ray& ray, const Vec3& target,
+                                    const Light* own_light, const InteriorStack* inside = nullptr) {
+    const ShadowBlockers blockers = scene.shadow_blockers(ray);
+    if (blockers == ShadowBlockers::None) return Color(1.0f);  // the common case: one cheap query
+    // An opaque blocker lets nothing through, unless it is this light's own
+    // surface (which never blocks it): a delta light has none.
+    if (blockers == ShadowBlockers::Opaque && (own_light == nullptr || own_light->is_delta())) return Color(0.0f);
+    return walked_transmittance(scene, ray, target, own_light, inside);
 }
 
 // How much light leaving `target` reaches the hit: 1 when nothing lies
