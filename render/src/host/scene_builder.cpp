@@ -196,6 +196,12 @@ class Builder {
         m_data->options.adc_bailout = float(m_graph.global.adc_bailout);
         m_data->options.ambient_light = Color(m_graph.global.ambient_light);
         count_mesh_uses(m_graph.objects);
+        // Room for the instances at once: a large scene's tens of thousands
+        // of 768-byte entries were moved whole at every growth (abyss, 48,000
+        // objects: a tenth of its build).
+        const std::size_t expected_instances = object_nodes(m_graph.objects) + m_graph.lights.size();
+        m_data->instances.reserve(expected_instances);
+        m_data->texture_spaces.reserve(expected_instances);
         add_objects(m_graph.objects, DMat4(1.0), nullptr, DMat4(1.0), false);
         build_emitters();
         add_area_light_surfaces();
@@ -239,6 +245,18 @@ class Builder {
         m_data->mesh_camera = make_mesh_camera_rays(camera);
         if (m_data->mesh_camera)
             m_data->camera.set_mesh(m_data->mesh_camera.get(), mesh_camera_rays_per_pixel(*camera.mesh));
+    }
+
+    // The objects in `objects`, with those inside groups, clips and bounds:
+    // about the instances they make (one a leaf; CSG adds a root, and its
+    // inner nodes make none).
+    static std::size_t object_nodes(const std::vector<sg::Object>& objects) {
+        std::size_t count = 0;
+        for (const sg::Object& object : objects) {
+            count += 1 + object_nodes(object.clipped_by) + object_nodes(object.bounded_by);
+            if (const auto* group = std::get_if<sg::Group>(&object.shape)) count += object_nodes(group->children);
+        }
+        return count;
     }
 
     void count_mesh_uses(const std::vector<sg::Object>& objects) {
