@@ -191,6 +191,16 @@ TEST(Csg, AUnionsBoundedByCutsItsUnboundedParts) {
     }
 }
 
+// The same for a glowing plane, which outside a union's bound lancer
+// leaves whole (it is no light `path` could sample): in one, it is a disc.
+TEST(Csg, AUnionsBoundedByCutsAGlowingPlane) {
+    const auto scene = compile(
+        "union { plane { y, 0 finish { emission 1 } } sphere { <0, 0.5, 0>, 0.5 }"
+        " bounded_by { sphere { <0, 0.5, 0>, 2 } } }");
+    EXPECT_NEAR(first_hit(*scene, {1, 5, 0}, {0, -1, 0}).t, 5.0f, 1e-5f);
+    EXPECT_LT(first_hit(*scene, {3, 5, 0}, {0, -1, 0}).t, 0.0f);
+}
+
 // A smooth triangle whose written normals disagree with its winding, as
 // a CSG leaf: the facet's normal is turned to the side of the normal that
 // shades, as for a mesh out of CSG, so the two never face apart.

@@ -167,7 +167,14 @@ TEST(ShadowBlockers, TheAnswersAgreeWithTheWalk) {
         const auto scene = testing::compile_pov_text(camera + text, "<mixed>");
         int opaque = 0, none = 0;
         for (int i = 0; i < 4000; ++i) {
-            const Vec3 from(x(random), y(random), z(random)), to(x(random), y(random), z(random));
+            // One draw a statement: the order of a constructor's arguments is the compiler's.
+            Vec3 from, to;
+            from.x = x(random);
+            from.y = y(random);
+            from.z = z(random);
+            to.x = x(random);
+            to.y = y(random);
+            to.z = z(random);
             Ray ray;
             ray.origin = from;
             ray.direction = to - from;

@@ -635,9 +635,10 @@ class Builder {
                 add_bounded_union_parts(object, group->children, world_from_object, material, owner, object_no_shadow);
             return;
         }
-        // CSG, or an object that an inversion or clip makes one.
+        // CSG, or an object that an inversion, a clip or a bound makes one
+        // (a union's bound always: see add_bounded_union_parts).
         if (std::holds_alternative<sg::Group>(object.shape) || object.inverse || !object.clipped_by.empty() ||
-            bound_may_cut(object, material)) {
+            bound_may_cut(object, material) || (union_bound && !object.bounded_by.empty())) {
             add_csg(object, world_from_parent, inherited, inherited_owner, no_shadow, union_bound);
             return;
         }
