@@ -159,6 +159,7 @@ class EmbreeScene final : public RenderScene {
     const SceneData& data() const { return *m_data; }
 
   private:
+    bool bvh_occluded(RTCRay& shadow_ray, bool classify, bool* see_through) const;
     // The nearest hit whatever POV's no_image and no_reflection say.
     bool nearest_hit(const Ray& ray, Hit& hit) const;
     // Whether `ray` passes through the object `hit` is on (POV's no_image,

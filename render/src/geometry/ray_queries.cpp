@@ -239,21 +239,28 @@ void EmbreeScene::intersect_batch(const Ray* rays, int count, Hit* hits, bool* f
             if (found[i] && hidden_from(rays[i], hits[i])) found[i] = nearest_visible_hit(rays[i], hits[i]);
 }
 
-bool EmbreeScene::occluded(const Ray& ray) const {
+// rtcOccluded1 on the BVH: whether a shadow caster ends the query. With
+// `classify`, the casters that may let light through do not end it; they
+// set *see_through instead.
+bool EmbreeScene::bvh_occluded(RTCRay& shadow_ray, bool classify, bool* see_through) const {
     ShadowContext context;
     rtcInitIntersectContext(&context.base);
     context.geometries = &m_geometries;
     context.data = m_data.get();
-    if (m_has_no_shadow_mesh) context.base.filter = shadow_filter;
+    context.classify = classify;
+    if (m_has_no_shadow_mesh || (classify && m_has_see_through_mesh)) context.base.filter = shadow_filter;
+    rtcOccluded1(m_scene, &context.base, &shadow_ray);
+    if (see_through) *see_through = context.see_through_met;
+    return shadow_ray.tfar == -INFINITY;
+}
+
+bool EmbreeScene::occluded(const Ray& ray) const {
     RTCRay shadow_ray;
     fill_embree_ray(ray, shadow_ray);
     if (embree_can_trace(ray)) {
-        if (m_traces_list) {
-            if (m_few_shapes.occluded(*m_data, ray, shadow_ray.tnear, shadow_ray.tfar)) return true;
-        } else {
-            rtcOccluded1(m_scene, &context.base, &shadow_ray);
-            if (shadow_ray.tfar == -INFINITY) return true;
-        }
+        if (m_traces_list ? m_few_shapes.occluded(*m_data, ray, shadow_ray.tnear, shadow_ray.tfar)
+                          : bvh_occluded(shadow_ray, false, nullptr))
+            return true;
     }
     return m_unbounded.occluded(*m_data, ray, glm::max(ray.t_min, 0.0f), ray.t_max);
 }
@@ -268,16 +275,8 @@ ShadowBlockers EmbreeScene::shadow_blockers(const Ray& ray) const {
             const ShadowBlockers listed = m_few_shapes.shadow_blockers(*m_data, ray, shadow_ray.tnear, shadow_ray.tfar);
             if (listed == ShadowBlockers::Opaque) return listed;
             see_through = listed == ShadowBlockers::SeeThrough;
-        } else {
-            ShadowContext context;
-            rtcInitIntersectContext(&context.base);
-            context.geometries = &m_geometries;
-            context.data = m_data.get();
-            context.classify = true;
-            if (m_has_no_shadow_mesh || m_has_see_through_mesh) context.base.filter = shadow_filter;
-            rtcOccluded1(m_scene, &context.base, &shadow_ray);
-            if (shadow_ray.tfar == -INFINITY) return ShadowBlockers::Opaque;
-            see_through = context.see_through_met;
+        } else if (bvh_occluded(shadow_ray, true, &see_through)) {
+            return ShadowBlockers::Opaque;
         }
     }
     const ShadowBlockers unbounded = m_unbounded.shadow_blockers(*m_data, ray, glm::max(ray.t_min, 0.0f), ray.t_max);
