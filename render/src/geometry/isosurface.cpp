@@ -220,14 +220,18 @@ class IsosurfaceShape final : public Shape {
             if (slope > steepest && std::isfinite(slope)) steepest = slope;
             if (p.evaluate && max_gradient < slope * p.evaluate_parameters.y)
                 max_gradient = slope * p.evaluate_parameters.y * p.evaluate_parameters.y;
-            if (span < p.accuracy) {
+            const double middle = a + 0.5 * span;
+            // An interval that doubles cannot split any more (a ray's
+            // parameter near 1e30, from an isosurface scaled that much,
+            // has steps far above any accuracy) counts as short enough:
+            // halving it again would recurse without end.
+            if (span < p.accuracy || !(middle > a && middle < b)) {
                 if (!(fb < 0.0)) return false;
                 root = b;
                 return true;
             }
             if (!(fa + fb - max_gradient * length * span < 0.0)) return false;
             if (evaluations >= kMostEvaluationsPerSearch) return false;
-            const double middle = a + 0.5 * span;
             const double fm = signed_value(middle);
             return halve(a, fa, middle, fm, root) || halve(middle, fm, b, fb, root);
         }

@@ -229,6 +229,23 @@ TEST(Isosurface, NotANumberOrNoCrossingEndsTheSearch) {
     EXPECT_TRUE(crossings_of(*shape, DVec3(0.5, 0.5, -2e4), DVec3(0.0, 0.0, 1.0)).empty());
 }
 
+TEST(Isosurface, AHugeScaleEndsTheSearchWithinTheStack) {
+    // An isosurface scaled by 1e30 hands the shape a direction of length
+    // 1e-30: the chord is 4e30 long in the ray's parameter, where doubles
+    // are 1e14 apart, so no interval is ever shorter than `accuracy`. The
+    // search halved such an interval into itself until the stack overflowed.
+    auto p = in_box(sphere_function(1.0));
+    const auto shape = make_isosurface_shape(p);
+    for (double scale : {1e20, 1e30}) {
+        const auto hits = crossings_of(*shape, DVec3(0.1, 0.2, -5.0), DVec3(0.0, 0.0, 1.0 / scale), 0.0, HUGE_VAL);
+        ASSERT_EQ(hits.size(), 1u) << scale;
+        EXPECT_NEAR(hits[0].t / scale, 5.0 - std::sqrt(1.0 - 0.05), 1e-3) << scale;
+    }
+    // Past what a direction's squared length can hold, the search only
+    // has to end.
+    crossings_of(*shape, DVec3(0.1, 0.2, -5.0), DVec3(0.0, 0.0, 1e-300), 0.0, HUGE_VAL);
+}
+
 TEST(Isosurface, RefusesWhatCannotBeSearched) {
     IsosurfaceParameters p;
     EXPECT_FALSE(make_isosurface_shape(p));  // no function
