@@ -34,29 +34,31 @@ void multiply(const double* a, int na, const double* b, int nb, double* out) {
 class LatheShape final : public Shape {
   public:
     explicit LatheShape(std::vector<SplineSegment> segments) : m_segments(std::move(segments)) {
-        for (const SplineSegment& segment : m_segments)
-            for (int i = 0; i <= 32; ++i) {
-                const glm::dvec2 p = segment.at(i / 32.0);
-                m_radius = std::max(m_radius, std::fabs(p.x));
-                m_y_low = std::min(m_y_low, p.y);
-                m_y_high = std::max(m_y_high, p.y);
-            }
-        const double margin = 0.05 * std::max(m_radius, m_y_high - m_y_low) + 1e-9;
-        m_radius += margin;
-        m_y_low -= margin;
-        m_y_high += margin;
-        // Each segment's band, widened past the tolerance crossings() allows
-        // a point off the surface.
-        const double band_margin = 2e-6 * (m_radius + (m_y_high - m_y_low)) + 1e-9;
+        // Each segment's exact extremes; the whole curve's make the bounds,
+        // as POV-Ray's (min_extent and max_extent are the curve's).
+        struct Range {
+            double r, y_low, y_high;
+        };
+        std::vector<Range> ranges;
         for (const SplineSegment& segment : m_segments) {
             double r[4], y[4], r_low, r_high, y_low, y_high;
             coordinate(segment, 0, r);
             coordinate(segment, 1, y);
             cubic_range(r, 0.0, 1.0, r_low, r_high);
             cubic_range(y, 0.0, 1.0, y_low, y_high);
-            m_bands.push_back(RevolutionBand{y_low - band_margin, y_high + band_margin,
-                                             std::max(std::fabs(r_low), std::fabs(r_high)) + band_margin});
+            ranges.push_back({std::max(std::fabs(r_low), std::fabs(r_high)), y_low, y_high});
+            m_radius = std::max(m_radius, ranges.back().r);
+            m_y_low = std::min(m_y_low, y_low);
+            m_y_high = std::max(m_y_high, y_high);
         }
+        // Each segment's band, and the bounds, widened past the tolerance
+        // crossings() allows a point off the surface.
+        const double margin = 2e-6 * (m_radius + (m_y_high - m_y_low)) + 1e-9;
+        for (const Range& range : ranges)
+            m_bands.push_back(RevolutionBand{range.y_low - margin, range.y_high + margin, range.r + margin});
+        m_radius += margin;
+        m_y_low -= margin;
+        m_y_high += margin;
     }
 
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {

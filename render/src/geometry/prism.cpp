@@ -40,19 +40,16 @@ class PrismShape final : public Shape {
   public:
     PrismShape(std::vector<SplineSegment> segments, double height1, double height2, bool conic, bool open)
         : m_segments(std::move(segments)), m_h1(height1), m_h2(height2), m_conic(conic), m_open(open) {
+        // The curves' exact box (each segment's extremes), as POV-Ray's:
+        // min_extent and max_extent of a prism or a text (centring text
+        // with them is common) are the outline's, not a padded box.
+        m_boxes = segment_boxes(m_segments);
         m_lower2 = glm::dvec2(INFINITY);
         m_upper2 = glm::dvec2(-INFINITY);
-        for (const SplineSegment& segment : m_segments)
-            for (int i = 0; i <= 16; ++i) {
-                const glm::dvec2 p = segment.at(i / 16.0);
-                m_lower2 = glm::min(m_lower2, p);
-                m_upper2 = glm::max(m_upper2, p);
-            }
-        // Curves bulge past their samples by less than this.
-        const glm::dvec2 margin = 0.05 * (m_upper2 - m_lower2) + glm::dvec2(1e-9);
-        m_lower2 -= margin;
-        m_upper2 += margin;
-        m_boxes = segment_boxes(m_segments);
+        for (const SegmentBox& box : m_boxes) {
+            m_lower2 = glm::min(m_lower2, box.lower);
+            m_upper2 = glm::max(m_upper2, box.upper);
+        }
     }
 
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {

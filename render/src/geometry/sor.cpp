@@ -33,22 +33,23 @@ class SorShape final : public Shape {
           m_top(top),
           m_top_r(top_r),
           m_open(open) {
-        for (const SorSegment& s : m_segments)
-            for (int i = 0; i <= 32; ++i) {
-                const double y = s.y_low + (s.y_high - s.y_low) * i / 32.0;
-                m_radius = std::max(m_radius, std::sqrt(std::max(0.0, s.r2(y))));
-            }
-        m_radius = 1.05 * m_radius + 1e-9;
-        // Each segment's band, widened past the tolerance crossings() allows
-        // a point off the surface.
-        const double margin = 2e-6 * (m_radius + (m_top - m_bottom)) + 1e-9;
+        // Each segment's exact widest radius; the widest makes the bounds,
+        // as POV-Ray's (min_extent and max_extent are the curve's).
+        std::vector<double> radii;
         for (const SorSegment& s : m_segments) {
             const double r2[4] = {s.d, s.c, s.b, s.a};
             double lowest, highest;
             cubic_range(r2, s.y_low, s.y_high, lowest, highest);
-            m_bands.push_back(
-                RevolutionBand{s.y_low - margin, s.y_high + margin, std::sqrt(std::max(highest, 0.0)) + margin});
+            radii.push_back(std::sqrt(std::max(highest, 0.0)));
+            m_radius = std::max(m_radius, radii.back());
         }
+        // Each segment's band, and the bounds, widened past the tolerance
+        // crossings() allows a point off the surface.
+        const double margin = 2e-6 * (m_radius + (m_top - m_bottom)) + 1e-9;
+        for (std::size_t i = 0; i < m_segments.size(); ++i)
+            m_bands.push_back(
+                RevolutionBand{m_segments[i].y_low - margin, m_segments[i].y_high + margin, radii[i] + margin});
+        m_radius += margin;
     }
 
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {

@@ -171,6 +171,44 @@ TEST(ParseTimeGeometry, ExtentsAsPovRay) {
     EXPECT_DOUBLE_EQ(answer(parsed, 7).x, 1e10);
 }
 
+// The boxes POV-Ray 3.7 prints (#debug of vstr(min_extent(...), 5
+// digits)) for curves, text and turned spheres: a prism's, a lathe's and
+// a surface of revolution's are their curves' extremes (lancer's were
+// padded by 5%, which put Circle_Text's letters off by a letter's width),
+// a text's its outlines', and a sphere moved and turned stays a sphere.
+TEST(ParseTimeGeometry, ExtentsOfCurvesTextAndTurnedSpheresAsPovRay) {
+    const Parsed parsed = parse_with_queries(R"(
+        #declare Q = prism { quadratic_spline 0, 1, 5, <0,0>, <1,0>, <1,1>, <0,1>, <1,0> }
+        #declare C = prism { cubic_spline 0, 1, 8, <0,0>, <2,0>, <3,3>, <0,4>, <-2, 2>, <2,0>, <3,3>, <0,4> }
+        #declare L = lathe { cubic_spline 6, <0,-1>, <1,0>, <3,1>, <0.5,1.5>, <0.8,2>, <0,2.5> }
+        #declare S = sor { 5, <0,0>, <1,0>, <0.5,1>, <0.8,2>, <0,3> }
+        #declare T = text { ttf "timrom.ttf" "Jy" 0.5, 0 }
+        #declare Turned = sphere { 0, 1 rotate 45*y translate x }
+        #declare Stretched = sphere { 0, 1 scale <1,2,1> rotate 45*x }
+        sphere { min_extent(Q), 1 } sphere { max_extent(Q), 1 }
+        sphere { min_extent(C), 1 } sphere { max_extent(C), 1 }
+        sphere { min_extent(L), 1 } sphere { max_extent(L), 1 }
+        sphere { min_extent(S), 1 } sphere { max_extent(S), 1 }
+        sphere { min_extent(T), 1 } sphere { max_extent(T), 1 }
+        sphere { min_extent(Turned), 1 } sphere { max_extent(Turned), 1 }
+        sphere { min_extent(Stretched), 1 } sphere { max_extent(Stretched), 1 })");
+    constexpr double kPrinted = 3e-5;  // POV's 5 digits, its boxes' and lancer's margins
+    expect_near(answer(parsed, 0), sg::Vec3(0, 0, 0), kPrinted);
+    expect_near(answer(parsed, 1), sg::Vec3(1.125, 1, 1.125), kPrinted);
+    expect_near(answer(parsed, 2), sg::Vec3(-2.04753, 0, -0.01283), kPrinted);
+    expect_near(answer(parsed, 3), sg::Vec3(3.07655, 1, 4.03230), kPrinted);
+    expect_near(answer(parsed, 4), sg::Vec3(-3.00317, 0, -3.00317), kPrinted);
+    expect_near(answer(parsed, 5), sg::Vec3(3.00317, 2, 3.00317), kPrinted);
+    expect_near(answer(parsed, 6), sg::Vec3(-1.03212, 0, -1.03212), kPrinted);
+    expect_near(answer(parsed, 7), sg::Vec3(1.03212, 2, 1.03212), kPrinted);
+    expect_near(answer(parsed, 8), sg::Vec3(-0.00001, -0.21201, -0.00002), kPrinted);
+    expect_near(answer(parsed, 9), sg::Vec3(0.89001, 0.68002, 0.50001), kPrinted);
+    expect_near(answer(parsed, 10), sg::Vec3(0, -1, -1), kPrinted);
+    expect_near(answer(parsed, 11), sg::Vec3(2, 1, 1), kPrinted);
+    expect_near(answer(parsed, 12), sg::Vec3(-1, -2.12132, -2.12132), kPrinted);
+    expect_near(answer(parsed, 13), sg::Vec3(1, 2.12132, 2.12132), kPrinted);
+}
+
 // Boxes POV-Ray finds for unbounded shapes in CSG, as POV-Ray 3.7 printed
 // them (#debug of vstr(min_extent(...)), this file's objects): a quadric
 // between two planes turned off the axes has one; a quartic clipped by a

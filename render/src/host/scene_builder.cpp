@@ -113,6 +113,25 @@ void world_bounds(const Placement& placement, const DVec3& lower, const DVec3& u
     out_upper = Vec3(hi + slack);
 }
 
+// The box of a sphere placed in the world. Moved, turned or scaled alike
+// it stays a sphere, whose box is exact, as in POV-Ray (a rotated sphere's
+// box is not its own box's rotated corners). Stretched, POV-Ray keeps
+// the transform and turns the sphere's box's corners (min_extent shows
+// it), as lancer does then.
+void sphere_world_bounds(const Placement& placement, const AnalyticSphere& sphere, Vec3& out_lower, Vec3& out_upper) {
+    const DVec3 r(sphere.radius);
+    if (!placement.identity && !placement.is_similarity()) {
+        world_bounds(placement, sphere.center - r, sphere.center + r, out_lower, out_upper);
+        return;
+    }
+    const DVec3 center = placement.point_to_world(sphere.center);
+    const DVec3 half = placement.identity ? r : r * placement.uniform_scale();
+    const DVec3 lo = center - half, hi = center + half;
+    const DVec3 slack = 8.0 * double(FLT_EPSILON) * glm::max(glm::abs(lo), glm::abs(hi));
+    out_lower = Vec3(lo - slack);
+    out_upper = Vec3(hi + slack);
+}
+
 // A setting of the objects being added, changed while one object and its
 // children are added and restored after them.
 template <class Setting>
@@ -733,9 +752,7 @@ class Builder {
         if (const auto* sphere = std::get_if<sg::Sphere>(&object.shape)) {
             instance.kind = ShapeKind::Sphere;
             instance.sphere = {sphere->center, std::fabs(sphere->radius)};
-            const DVec3 r(instance.sphere.radius);
-            world_bounds(instance.placement, sphere->center - r, sphere->center + r, instance.bounds_lower,
-                         instance.bounds_upper);
+            sphere_world_bounds(instance.placement, instance.sphere, instance.bounds_lower, instance.bounds_upper);
         } else if (const auto* box = std::get_if<sg::Box>(&object.shape)) {
             instance.kind = ShapeKind::Box;
             instance.box = {glm::min(box->corner1, box->corner2), glm::max(box->corner1, box->corner2)};
