@@ -19,7 +19,7 @@ namespace lancer {
 
 // Bump whenever a header a plugin compiles against changes layout or
 // virtual tables; the host refuses any other version.
-inline constexpr std::uint32_t kPluginAbiVersion = 20;
+inline constexpr std::uint32_t kPluginAbiVersion = 21;
 
 // The random numbers of one camera sample, which the host positions: each
 // sample has a stream of its own (a function of seed, pixel and sample

@@ -4,8 +4,11 @@
 // integrators only query it. Immutable and thread-safe.
 #pragma once
 
+#include <cstddef>
 #include <memory>
+#include <new>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "lancer/camera.h"
@@ -36,6 +39,25 @@ enum class RayCoherence { Incoherent, Coherent };
 // What lies on a shadow ray (RenderScene::shadow_blockers).
 enum class ShadowBlockers { None, SeeThrough, Opaque };
 
+// The surfaces on a shadow ray that may let light through, nearest first,
+// each the hit intersect() gives there (RenderScene::shadow_crossings).
+class SeeThroughHits {
+  public:
+    static constexpr int kMost = 16;
+    int count = -1;  // -1: not gathered; walk them with intersect()
+
+    // Surface k, for k < count.
+    const Hit& operator[](int k) const { return *std::launder(reinterpret_cast<const Hit*>(m_storage) + k); }
+    // Surface k made anew, for the scene to fill.
+    Hit& make(int k) { return *::new (static_cast<void*>(m_storage + std::size_t(k) * sizeof(Hit))) Hit(); }
+
+  private:
+    static_assert(std::is_trivially_destructible_v<Hit>);
+    // Left unset until made: every shadow ray of a scene without media
+    // carries one, and most gather nothing.
+    alignas(Hit) unsigned char m_storage[kMost * sizeof(Hit)];
+};
+
 class RenderScene {
   public:
     virtual ~RenderScene() = default;
@@ -63,6 +85,16 @@ class RenderScene {
     virtual ShadowBlockers shadow_blockers(const Ray& ray) const {
         if (!occluded(ray)) return ShadowBlockers::None;
         return opaque_surfaces() ? ShadowBlockers::Opaque : ShadowBlockers::SeeThrough;
+    }
+    // shadow_blockers(), and for a SeeThrough answer the surfaces on the
+    // way, gathered by the same query when the scene can (crossed.count >=
+    // 0): a shadow ray through glass then costs one traversal, not one per
+    // surface and one more. Not gathered (count -1) where the scene cannot,
+    // where two of them nearly coincide, or past kMost of them. The default
+    // gathers none.
+    virtual ShadowBlockers shadow_crossings(const Ray& ray, SeeThroughHits& crossed) const {
+        crossed.count = -1;
+        return shadow_blockers(ray);
     }
     // Conservative: false only when no shadow-casting surface can cross a
     // segment from `origin` to any point corner + s * edge1 + t * edge2 of

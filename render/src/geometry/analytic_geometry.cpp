@@ -99,7 +99,10 @@ void analytic_occluded(const RTCOccludedFunctionNArguments* args) {
     // Occlusion queries come only with a ShadowContext (ray_queries.cpp).
     auto* context = reinterpret_cast<ShadowContext*>(args->context);
     const bool passes_through = context->classify && !instance.blocks_all_light;
-    if (passes_through && context->see_through_met) return;  // nothing more to learn here
+    // Nothing more to learn here, unless each crossing is being recorded
+    // (and there is still room: past it the walk does the counting).
+    const bool recording = context->records && !context->records->overflowed;
+    if (passes_through && context->see_through_met && !recording) return;
     const unsigned n = args->N;
     RTCRayN* rays = args->ray;
     for (unsigned i = 0; i < n; ++i) {
@@ -109,13 +112,23 @@ void analytic_occluded(const RTCOccludedFunctionNArguments* args) {
         double t;
         int face;
         std::uint32_t leaf;
-        if (!intersect_analytic(*group->data, index, o, d, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t, face,
-                                leaf))
-            continue;
-        if (passes_through)
-            context->see_through_met = true;
-        else
+        const float t_near = RTCRayN_tnear(rays, n, i), t_far = RTCRayN_tfar(rays, n, i);
+        if (!intersect_analytic(*group->data, index, o, d, t_near, t_far, t, face, leaf)) continue;
+        if (!passes_through) {
             RTCRayN_tfar(rays, n, i) = -INFINITY;
+            continue;
+        }
+        context->see_through_met = true;
+        if (!recording) continue;
+        // Every crossing on the way, each recorded as analytic_intersect
+        // reports it (u: the face; v: the CSG leaf's distance from its root).
+        for (int more = 0; more < SeeThroughRecords::kMost; ++more) {
+            context->records->add(EmbreeHit{t_near, float(t), args->geomID, args->primID, args->context->instID[0],
+                                            float(face), float(index - leaf)});
+            if (context->records->overflowed) break;
+            const float past = std::nextafter(float(t), INFINITY);
+            if (!(past < t_far) || !intersect_analytic(*group->data, index, o, d, past, t_far, t, face, leaf)) break;
+        }
     }
 }
 
@@ -137,6 +150,12 @@ void shadow_filter(const RTCFilterFunctionNArguments* args) {
         } else if (context->classify && !instance.blocks_all_light) {
             context->see_through_met = true;
             args->valid[i] = 0;
+            if (context->records)
+                context->records->add(
+                    EmbreeHit{RTCRayN_tnear(args->ray, args->N, i), RTCRayN_tfar(args->ray, args->N, i),
+                              RTCHitN_geomID(args->hit, args->N, i), RTCHitN_primID(args->hit, args->N, i),
+                              RTCHitN_instID(args->hit, args->N, i, 0), RTCHitN_u(args->hit, args->N, i),
+                              RTCHitN_v(args->hit, args->N, i)});
         }
     }
 }

@@ -55,15 +55,39 @@ struct GeometryEntry {
     std::uint32_t instance = 0;            // mesh or mesh instance
 };
 
+// One ray's answer from Embree.
+struct EmbreeHit {
+    float tnear, tfar;
+    unsigned geometry, primitive, instance;
+    float u, v;
+};
+
+// The surfaces shadow_crossings() meets that may let light through, as
+// Embree reports them (unsorted; a triangle may come twice).
+struct SeeThroughRecords {
+    static constexpr int kMost = 32;
+    EmbreeHit found[kMost];
+    int count = 0;
+    bool overflowed = false;
+    void add(const EmbreeHit& hit) {
+        if (count < kMost)
+            found[count++] = hit;
+        else
+            overflowed = true;
+    }
+};
+
 // occluded()'s context: lets the filter skip no_shadow meshes, and
 // shadow_blockers() pass the surfaces that may let light through, noting
-// that it met one, so that only an opaque one ends the query.
+// that it met one (and for shadow_crossings() recording each), so that
+// only an opaque one ends the query.
 struct ShadowContext {
     RTCIntersectContext base;
     const std::vector<GeometryEntry>* geometries;
     const SceneData* data;
     bool classify = false;
     bool see_through_met = false;
+    SeeThroughRecords* records = nullptr;
 };
 
 // Everything a hit on a mesh placed in world space needs, when its
@@ -82,13 +106,6 @@ struct PlainTriangles {
     bool lit_by_global_lights = true;
     std::int16_t light_group = -1;
     bool double_illuminate = false;
-};
-
-// One ray's answer from Embree.
-struct EmbreeHit {
-    float tnear, tfar;
-    unsigned geometry, primitive, instance;
-    float u, v;
 };
 
 // A packet's answers, lane by lane, as Embree gives them.
@@ -134,6 +151,9 @@ class EmbreeScene final : public RenderScene {
     void intersect_batch(const Ray* rays, int count, Hit* hits, bool* found, RayCoherence coherence) const override;
     bool occluded(const Ray& ray) const override;
     ShadowBlockers shadow_blockers(const Ray& ray) const override;
+    // Gathered from the BVH or the shape list when the planes and other
+    // unbounded shapes let the ray through untouched.
+    ShadowBlockers shadow_crossings(const Ray& ray, SeeThroughHits& crossed) const override;
     // Answered for a scene traced from its shape list, whose unbounded
     // shapes are planes; true (unknown) otherwise.
     bool may_block_towards(const Vec3& origin, const Vec3& corner, const Vec3& edge1, const Vec3& edge2) const override;
@@ -159,7 +179,7 @@ class EmbreeScene final : public RenderScene {
     const SceneData& data() const { return *m_data; }
 
   private:
-    bool bvh_occluded(RTCRay& shadow_ray, bool classify, bool* see_through) const;
+    bool bvh_occluded(RTCRay& shadow_ray, bool classify, bool* see_through, SeeThroughRecords* records = nullptr) const;
     // The nearest hit whatever POV's no_image and no_reflection say.
     bool nearest_hit(const Ray& ray, Hit& hit) const;
     // Whether `ray` passes through the object `hit` is on (POV's no_image,

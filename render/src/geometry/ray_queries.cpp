@@ -242,12 +242,13 @@ void EmbreeScene::intersect_batch(const Ray* rays, int count, Hit* hits, bool* f
 // rtcOccluded1 on the BVH: whether a shadow caster ends the query. With
 // `classify`, the casters that may let light through do not end it; they
 // set *see_through instead.
-bool EmbreeScene::bvh_occluded(RTCRay& shadow_ray, bool classify, bool* see_through) const {
+bool EmbreeScene::bvh_occluded(RTCRay& shadow_ray, bool classify, bool* see_through, SeeThroughRecords* records) const {
     ShadowContext context;
     rtcInitIntersectContext(&context.base);
     context.geometries = &m_geometries;
     context.data = m_data.get();
     context.classify = classify;
+    context.records = records;
     if (m_has_no_shadow_mesh || (classify && m_has_see_through_mesh)) context.base.filter = shadow_filter;
     rtcOccluded1(m_scene, &context.base, &shadow_ray);
     if (see_through) *see_through = context.see_through_met;
@@ -282,6 +283,55 @@ ShadowBlockers EmbreeScene::shadow_blockers(const Ray& ray) const {
     const ShadowBlockers unbounded = m_unbounded.shadow_blockers(*m_data, ray, glm::max(ray.t_min, 0.0f), ray.t_max);
     if (unbounded != ShadowBlockers::None) return unbounded;
     return see_through ? ShadowBlockers::SeeThrough : ShadowBlockers::None;
+}
+
+ShadowBlockers EmbreeScene::shadow_crossings(const Ray& ray, SeeThroughHits& crossed) const {
+    crossed.count = -1;
+    if (!m_has_see_through_caster || !embree_can_trace(ray)) return shadow_blockers(ray);
+    // The shapes outside the BVH first: the gathered surfaces must be all
+    // there are. One that may let light through leaves the walk to do.
+    const ShadowBlockers unbounded = m_unbounded.shadow_blockers(*m_data, ray, glm::max(ray.t_min, 0.0f), ray.t_max);
+    if (unbounded == ShadowBlockers::Opaque) return unbounded;
+    if (unbounded == ShadowBlockers::SeeThrough) return shadow_blockers(ray);
+    RTCRay shadow_ray;
+    fill_embree_ray(ray, shadow_ray);
+    SeeThroughRecords records;
+    bool see_through = false;
+    if (m_traces_list) {
+        const ShadowBlockers listed =
+            m_few_shapes.shadow_blockers(*m_data, ray, shadow_ray.tnear, shadow_ray.tfar, &records);
+        if (listed == ShadowBlockers::Opaque) return listed;
+        see_through = listed == ShadowBlockers::SeeThrough;
+    } else if (bvh_occluded(shadow_ray, true, &see_through, &records)) {
+        return ShadowBlockers::Opaque;
+    }
+    if (!see_through) return ShadowBlockers::None;
+    if (records.overflowed) return ShadowBlockers::SeeThrough;
+    EmbreeHit* begin = records.found;
+    EmbreeHit* end = begin + records.count;
+    std::sort(begin, end, [](const EmbreeHit& a, const EmbreeHit& b) { return a.tfar < b.tfar; });
+    // A triangle Embree reported twice (split between two BVH leaves).
+    end = std::unique(begin, end, [](const EmbreeHit& a, const EmbreeHit& b) {
+        return a.tfar == b.tfar && a.geometry == b.geometry && a.primitive == b.primitive && a.instance == b.instance;
+    });
+    const int count = int(end - begin);
+    if (count > SeeThroughHits::kMost) return ShadowBlockers::SeeThrough;
+    // Surfaces nearly at one place are left to the walk, which steps past
+    // each hit by its rounding error, so that both give the same answer.
+    const float length = glm::length(ray.direction);
+    for (int k = 1; k < count; ++k) {
+        const float gap = (begin[k].tfar - begin[k - 1].tfar) * length;
+        const float reach = glm::length(ray.origin + begin[k].tfar * ray.direction);
+        if (!(gap > 1e-4f * (1.0f + reach))) return ShadowBlockers::SeeThrough;
+    }
+    for (int k = 0; k < count; ++k) {
+        Hit& hit = crossed.make(k);
+        if (!complete_hit(ray, begin[k], hit)) return ShadowBlockers::SeeThrough;
+        hit.ray_direction = ray.direction;
+        finish_surface(hit, ray.direction, *m_data);
+    }
+    crossed.count = count;
+    return ShadowBlockers::SeeThrough;
 }
 
 bool EmbreeScene::may_block_towards(const Vec3& origin, const Vec3& corner, const Vec3& edge1,

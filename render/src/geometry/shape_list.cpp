@@ -131,21 +131,31 @@ bool ShapeList::occluded(const SceneData& data, const Ray& ray, float t_near, fl
     return false;
 }
 
-ShadowBlockers ShapeList::shadow_blockers(const SceneData& data, const Ray& ray, float t_near, float t_far) const {
+ShadowBlockers ShapeList::shadow_blockers(const SceneData& data, const Ray& ray, float t_near, float t_far,
+                                          SeeThroughRecords* records) const {
     float entry[kLanes];
     const unsigned met = boxes_met(ray, t_near, t_far, entry);
     bool see_through = false;
     for (std::size_t lane = 0; lane < m_shapes.size(); ++lane) {
         const Entry& shape = m_shapes[lane];
         // Once one surface that may let light through is found, only an
-        // opaque one changes the answer.
-        if (!shape.casts_shadow || !(met & (1u << lane)) || (see_through && !shape.blocks_all_light)) continue;
+        // opaque one changes the answer, unless each is being recorded.
+        const bool recording = records && !records->overflowed;
+        if (!shape.casts_shadow || !(met & (1u << lane)) || (see_through && !shape.blocks_all_light && !recording))
+            continue;
         double t;
         int face;
         std::uint32_t leaf;
         if (!crosses(data, shape, ray, t_near, t_far, t, face, leaf)) continue;
         if (shape.blocks_all_light) return ShadowBlockers::Opaque;
         see_through = true;
+        // Every crossing on the way, each as nearest() reports it.
+        for (int more = 0; recording && more < SeeThroughRecords::kMost; ++more) {
+            records->add(EmbreeHit{t_near, float(t), shape.geometry, shape.primitive, kInvalidId, float(face),
+                                   float(shape.instance - leaf)});
+            const float past = std::nextafter(float(t), INFINITY);
+            if (records->overflowed || !(past < t_far) || !crosses(data, shape, ray, past, t_far, t, face, leaf)) break;
+        }
     }
     return see_through ? ShadowBlockers::SeeThrough : ShadowBlockers::None;
 }

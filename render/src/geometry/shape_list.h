@@ -17,6 +17,7 @@
 namespace lancer::embree {
 
 struct EmbreeHit;
+struct SeeThroughRecords;
 
 class ShapeList {
   public:
@@ -37,8 +38,11 @@ class ShapeList {
     void nearest(const SceneData& data, const Ray& ray, EmbreeHit& found) const;
     // Whether a shape that casts shadows crosses the ray over [t_near, t_far].
     bool occluded(const SceneData& data, const Ray& ray, float t_near, float t_far) const;
-    // What occluded() finds, told apart (RenderScene::shadow_blockers).
-    ShadowBlockers shadow_blockers(const SceneData& data, const Ray& ray, float t_near, float t_far) const;
+    // What occluded() finds, told apart (RenderScene::shadow_blockers);
+    // with `records`, every crossing of a shape that may let light through
+    // is recorded as nearest() would report it (shadow_crossings).
+    ShadowBlockers shadow_blockers(const SceneData& data, const Ray& ray, float t_near, float t_far,
+                                   SeeThroughRecords* records = nullptr) const;
 
     // Whether the box of a shape that casts shadows may come within
     // `margin` of the convex hull of `points`. Conservative: a separating

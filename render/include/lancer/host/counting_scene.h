@@ -37,6 +37,10 @@ class CountingScene final : public RenderScene {
         count();
         return m_inner.shadow_blockers(ray);
     }
+    ShadowBlockers shadow_crossings(const Ray& ray, SeeThroughHits& crossed) const override {
+        count();
+        return m_inner.shadow_crossings(ray, crossed);
+    }
     // Not a ray: not counted.
     bool may_block_towards(const Vec3& origin, const Vec3& corner, const Vec3& edge1,
                            const Vec3& edge2) const override {

@@ -69,6 +69,49 @@ inline Color dimming_on_the_way(const RenderScene& scene, const Ray& ray, const 
     return dimmed;
 }
 
+// What one surface on a shadow ray travelling along `direction` lets
+// through: its filter and transmit (each layer's, each texture_map
+// entry's blended), as POV-Ray's ComputeShadowTexture. A surface that casts
+// no shadow, or is `own_light`'s, lets everything through.
+inline Color surface_passes(const Hit& blocker, const Vec3& direction, const Light* own_light) {
+    if (!blocker.casts_shadow || (own_light != nullptr && blocker.emitter == own_light)) return Color(1.0f);
+    // Between two texture_map entries, what each lets through, blended.
+    const auto passes = [&direction](const Hit& surface_hit) {
+        const Material& material = *surface_hit.material;
+        if (material.parameters().pigment_opaque) return Color(0.0f);
+        const SurfaceSample surface = material.sample_surface(surface_hit);
+        // POV's opaque test: neither filter nor transmit (a negative
+        // transmit lets through negative light).
+        if (surface.filter == 0.0f && surface.transmit == 0.0f) return Color(0.0f);
+        Color passed = material.pov_transmitted(surface);
+        if (const float caustics = material.parameters().caustics; caustics != 0.0f) {
+            const float cosine = glm::dot(surface_hit.shading_normal, direction) / glm::length(direction);
+            passed *= 1.0f + std::pow(std::fabs(cosine), caustics);
+        }
+        return passed;
+    };
+    // A layered texture: every layer dims it (POV's ComputeShadowTexture).
+    const auto layers_pass = [&](const Hit& surface_hit) {
+        const MaterialLayers* layers = layers_to_light(surface_hit);
+        if (layers == nullptr) return passes(surface_hit);
+        Color passed(1.0f);
+        for (const Material* layer : layers->top_first) {
+            passed *= passes(entry_hit(surface_hit, layer));
+            if (lancer::is_black(passed)) break;
+        }
+        return passed;
+    };
+    return shade_blended(blocker, layers_pass);
+}
+
+// The interior fade over a stretch of `length` that ended leaving an
+// object at `blocker` (POV's ComputeShadowTexture, which fades only with a
+// fade_power); 1 elsewhere.
+inline Color fade_before(const Hit& blocker, const Vec3& direction, float length) {
+    if (blocker.is_front_face(-direction) || !(blocker.material->parameters().fade_power > 0.0f)) return Color(1.0f);
+    return blocker.material->interior_attenuation(length);
+}
+
 // What the surfaces on `ray` up to `target` let through, found by walking
 // them nearest first (surfaces_transmittance asks the scene first whether
 // it needs to).
@@ -83,38 +126,8 @@ inline Color walked_transmittance(const RenderScene& scene, Ray ray, const Vec3&
     for (int crossed = 0; crossed < kMaxSurfacesCrossed; ++crossed) {
         Hit blocker;
         if (!scene.intersect(ray, blocker)) return throughput;
-        const bool filters = blocker.casts_shadow && (own_light == nullptr || blocker.emitter != own_light);
-        if (filters) {
-            // Between two texture_map entries, what each lets through, blended.
-            const auto passes = [&ray](const Hit& surface_hit) {
-                const Material& material = *surface_hit.material;
-                if (material.parameters().pigment_opaque) return Color(0.0f);
-                const SurfaceSample surface = material.sample_surface(surface_hit);
-                // POV's opaque test: neither filter nor transmit (a negative
-                // transmit lets through negative light).
-                if (surface.filter == 0.0f && surface.transmit == 0.0f) return Color(0.0f);
-                Color passed = material.pov_transmitted(surface);
-                if (const float caustics = material.parameters().caustics; caustics != 0.0f) {
-                    const float cosine =
-                        glm::dot(surface_hit.shading_normal, ray.direction) / glm::length(ray.direction);
-                    passed *= 1.0f + std::pow(std::fabs(cosine), caustics);
-                }
-                return passed;
-            };
-            // A layered texture: every layer dims it (POV's ComputeShadowTexture).
-            const auto layers_pass = [&](const Hit& surface_hit) {
-                const MaterialLayers* layers = layers_to_light(surface_hit);
-                if (layers == nullptr) return passes(surface_hit);
-                Color passed(1.0f);
-                for (const Material* layer : layers->top_first) {
-                    passed *= passes(entry_hit(surface_hit, layer));
-                    if (lancer::is_black(passed)) break;
-                }
-                return passed;
-            };
-            throughput *= shade_blended(blocker, layers_pass);
-            if (lancer::is_black(throughput)) return throughput;
-        }
+        throughput *= surface_passes(blocker, ray.direction, own_light);
+        if (lancer::is_black(throughput)) return throughput;
         // The stretch just crossed ran inside the objects on the ray's list
         // (without one, inside this object if the ray leaves it here): their
         // media dim the light, as POV's shadow rays see interior media (not
@@ -128,25 +141,43 @@ inline Color walked_transmittance(const RenderScene& scene, Ray ray, const Vec3&
                 throughput *= interior_media_transmittance(ray, blocker);
             }
         }
-        // And its interior fade, by the length of that stretch (POV's
-        // ComputeShadowTexture, which fades only with a fade_power).
-        if (!blocker.is_front_face(-ray.direction) && blocker.material->parameters().fade_power > 0.0f)
-            throughput *= blocker.material->interior_attenuation(blocker.t * glm::length(ray.direction));
+        throughput *= fade_before(blocker, ray.direction, blocker.t * glm::length(ray.direction));
         if (lancer::is_black(throughput)) return throughput;
         ray = blocker.spawn_ray_to(target);
     }
     return Color(0.0f);
 }
 
+// walked_transmittance over surfaces the scene gathered in one query
+// (RenderScene::shadow_crossings), in a scene without media.
+inline Color crossed_transmittance(const Ray& ray, const SeeThroughHits& crossed, const Light* own_light) {
+    Color throughput(1.0f);
+    const float scale = glm::length(ray.direction);
+    float previous_t = 0.0f;
+    for (int k = 0; k < crossed.count; ++k) {
+        const Hit& blocker = crossed[k];
+        throughput *= surface_passes(blocker, ray.direction, own_light);
+        throughput *= fade_before(blocker, ray.direction, (blocker.t - previous_t) * scale);
+        if (lancer::is_black(throughput)) return throughput;
+        previous_t = blocker.t;
+    }
+    return throughput;
+}
+
 // What the surfaces between the hit and `target` let through (see
 // transmittance_to), without the atmosphere's and fog's dimming.
 inline Color surfaces_transmittance(const RenderScene& scene, const Ray& ray, const Vec3& target,
                                     const Light* own_light, const InteriorStack* inside = nullptr) {
-    const ShadowBlockers blockers = scene.shadow_blockers(ray);
+    // Without media the surfaces may come gathered with the answer.
+    SeeThroughHits crossed;
+    const ShadowBlockers blockers =
+        scene.has_media() ? scene.shadow_blockers(ray) : scene.shadow_crossings(ray, crossed);
     if (blockers == ShadowBlockers::None) return Color(1.0f);  // the common case: one cheap query
     // An opaque blocker lets nothing through, unless it is this light's own
     // surface (which never blocks it): a delta light has none.
     if (blockers == ShadowBlockers::Opaque && (own_light == nullptr || own_light->is_delta())) return Color(0.0f);
+    if (blockers == ShadowBlockers::SeeThrough && crossed.count >= 0)
+        return crossed_transmittance(ray, crossed, own_light);
     return walked_transmittance(scene, ray, target, own_light, inside);
 }
 
