@@ -47,7 +47,9 @@ class SeeThroughHits {
     int count = -1;  // -1: not gathered; walk them with intersect()
 
     // Surface k, for k < count.
-    const Hit& operator[](int k) const { return *std::launder(reinterpret_cast<const Hit*>(m_storage) + k); }
+    const Hit& operator[](int k) const {
+        return *std::launder(reinterpret_cast<const Hit*>(m_storage + std::size_t(k) * sizeof(Hit)));
+    }
     // Surface k made anew, for the scene to fill.
     Hit& make(int k) { return *::new (static_cast<void*>(m_storage + std::size_t(k) * sizeof(Hit))) Hit(); }
 

@@ -120,6 +120,10 @@ void analytic_occluded(const RTCOccludedFunctionNArguments* args) {
         }
         context->see_through_met = true;
         if (!recording) continue;
+        if (!instance.gathers_crossings) {
+            context->records->overflowed = true;  // its later crossings: the walk's to find
+            continue;
+        }
         // Every crossing on the way, each recorded as analytic_intersect
         // reports it (u: the face; v: the CSG leaf's distance from its root).
         for (int more = 0; more < SeeThroughRecords::kMost; ++more) {

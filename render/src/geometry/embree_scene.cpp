@@ -70,6 +70,7 @@ void EmbreeScene::build() {
     for (Instance& instance : data.instances) {
         if (instance.csg_leaf) continue;  // traced through its tree's root
         instance.blocks_all_light = blocks_all_light(data, instance);
+        instance.gathers_crossings = gathers_crossings(data, instance);
         if (!instance.casts_shadow || instance.blocks_all_light) continue;
         m_has_see_through_caster = true;
         if (instance.kind == ShapeKind::Mesh) m_has_see_through_mesh = true;

@@ -195,8 +195,11 @@ class EmbreeScene final : public RenderScene {
     void prefetch_corner_indices(const PacketAnswers& answers, int lanes) const;
     void prefetch_corners(const PacketAnswers& answers, int lanes) const;
     void complete_packet(const Ray* rays, const PacketAnswers& answers, int lanes, Hit* hits, bool* found) const;
-    // The Hit from what Embree found for `ray` (and the planes outside it).
-    bool complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit) const;
+    // The Hit from what Embree found for `ray` (and, unless told not to
+    // look, the planes outside it, nearer).
+    bool complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit, bool with_unbounded = true) const;
+    // The Hit on what Embree found (a hit, not a miss).
+    bool complete_bvh_hit(const Ray& ray, const EmbreeHit& found, Hit& hit) const;
     // The mesh instance Embree's answer names, or null (analytic or no hit).
     const Instance* mesh_instance_of(const EmbreeHit& found) const;
     void complete_analytic_hit(const Instance& instance, const Ray& ray, float t, int face, Hit& hit) const;

@@ -306,7 +306,8 @@ void EmbreeScene::complete_instance_hit(std::uint32_t index, std::uint32_t leaf,
     hit.emitter = emitter_of(surface, hit.material);
 }
 
-bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit) const {
+bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit, bool with_unbounded) const {
+    if (!with_unbounded) return found.geometry != kInvalidId && complete_bvh_hit(ray, found, hit);
     // Unbounded shapes are outside the BVH: test them against the nearest so far.
     std::uint32_t unbounded_hit = kInvalidId, unbounded_leaf = 0;
     int unbounded_face = 0;
@@ -324,6 +325,10 @@ bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit)
         return true;
     }
     if (found.geometry == kInvalidId) return false;
+    return complete_bvh_hit(ray, found, hit);
+}
+
+bool EmbreeScene::complete_bvh_hit(const Ray& ray, const EmbreeHit& found, Hit& hit) const {
     if (const PlainTriangles* mesh = plain_triangles_of(found.geometry, found.instance)) {
         complete_plain_triangle_hits(&mesh, &found.tfar, &found.primitive, &found.u, &found.v, 1, &hit);
         return true;

@@ -42,6 +42,7 @@ class IsosurfaceShape final : public Shape {
     IsosurfaceShape(const IsosurfaceParameters& p, std::shared_ptr<IsosurfaceGradientRecord> gradients)
         : m_p(p), m_gradients(std::move(gradients)) {}
 
+    bool finds_crossings_past_t_min() const override { return false; }
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
         Chord chord;
         if (!container_chord(o, d, chord)) return;

@@ -273,6 +273,7 @@ class JuliaFractalShape final : public Shape {
         }
     }
 
+    bool finds_crossings_past_t_min() const override { return false; }
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
         march(o, d, t_min, t_max, false, out);
     }

@@ -35,4 +35,16 @@ bool blocks_all_light(const SceneData& data, const Instance& instance) {
     return true;
 }
 
+bool gathers_crossings(const SceneData& data, const Instance& instance) {
+    if (instance.kind == ShapeKind::Csg) {
+        if (instance.csg == nullptr) return false;
+        for (const CsgNode& node : instance.csg->nodes)
+            if (node.operation == CsgNode::Operation::Leaf &&
+                (node.instance >= data.instances.size() || !gathers_crossings(data, data.instances[node.instance])))
+                return false;
+        return true;
+    }
+    return instance.shape == nullptr || instance.shape->finds_crossings_past_t_min();
+}
+
 }  // namespace lancer

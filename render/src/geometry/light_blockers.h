@@ -14,4 +14,8 @@ namespace lancer {
 // light's own surface is seen as one material, without its layers).
 bool blocks_all_light(const SceneData& data, const Instance& instance);
 
+// Whether every crossing of `instance` past some t_min is found by one
+// search from the ray's own origin (Instance::gathers_crossings).
+bool gathers_crossings(const SceneData& data, const Instance& instance);
+
 }  // namespace lancer

@@ -212,12 +212,23 @@ TEST(ShadowBlockers, TheAnswersAgreeWithTheWalk) {
     }
 }
 
+// What casts no shadow is not on a shadow ray's way: a see-through plane in
+// front of the glass (a hit completed on it let everything through), and
+// a faded ball inside a faded one (the walk faded inside it, and began the
+// outer one's fade again at its surface). And a checkered floor.
+const std::string kNotOnTheWay =
+    "plane { y, 1.7 pigment { rgbt 1 } no_shadow }\n"
+    "sphere { <-2, 1, 0>, 0.3 pigment { rgbt 1 } interior { fade_distance 0.2 fade_power 2 } no_shadow }\n"
+    "plane { y, -0.5 pigment { checker rgb 1, rgb 0.5 } }\n";
+
 // shadow_crossings gathers the surfaces a SeeThrough shadow ray crosses in
 // one query: what they let through must be what the walk through them, one
 // intersect() each, finds. Random segments through glass, layers, a
 // texture_map, CSG (a sphere's bubble cut into a box, a merge), meshes,
 // patterns and a faded interior, among far spheres (the BVH); and where two
-// surfaces are too close to tell apart by one query, nothing gathered.
+// surfaces are too close to tell apart by one query, or on an isosurface
+// (whose search finds its later crossings only from a ray started past
+// the first), nothing gathered.
 TEST(ShadowBlockers, GatheredSurfacesLetThroughWhatTheWalkFinds) {
     const std::string objects =
         "sphere { <0, 1, 0>, 0.8 pigment { rgbf <1, 0.8, 0.8, 0.9> } interior { ior 1.5 } }\n"
@@ -233,7 +244,9 @@ TEST(ShadowBlockers, GatheredSurfacesLetThroughWhatTheWalkFinds) {
         " [1 pigment { rgbt 0.5 }] } } }\n"
         "torus { 0.6, 0.2 rotate x * 90 translate <-1, 3.5, 0> pigment { granite color_map { [0 rgbt 1] [1 rgb 0] } } "
         "}\n"
-        "plane { y, -0.5 pigment { checker rgb 1, rgb 0.5 } }\n";
+        "isosurface { function { x*x + y*y + z*z - 0.16 } contained_by { box { -0.5, 0.5 } }"
+        " pigment { rgbf <1, 1, 0.6, 0.8> } translate <2.5, 3.5, 1.5> }\n" +
+        kNotOnTheWay;
     // Five analytic shapes and a plane: traced from the shape list.
     const std::string few =
         "sphere { <0, 1, 0>, 0.8 pigment { rgbf <1, 0.8, 0.8, 0.9> } interior { ior 1.5 } }\n"
@@ -241,8 +254,9 @@ TEST(ShadowBlockers, GatheredSurfacesLetThroughWhatTheWalkFinds) {
         "difference { box { <-2.6, 2, -0.6>, <-1.4, 3, 0.6> } sphere { <-2, 2.5, 0>, 0.4 }"
         " pigment { rgbt <1, 1, 1, 0.6> } }\n"
         "merge { sphere { <0, 2.6, 0>, 0.5 } sphere { <0.5, 2.6, 0>, 0.5 } pigment { rgbf <0.6, 1, 0.6, 0.8> } }\n"
-        "torus { 0.6, 0.2 rotate x * 90 translate <1.5, 1, 0> pigment { rgbf <1, 1, 0.5, 0.5> } }\n"
-        "plane { y, -0.5 pigment { checker rgb 1, rgb 0.5 } }\n";
+        "isosurface { function { x*x + y*y + z*z - 0.16 } contained_by { box { -0.5, 0.5 } }"
+        " pigment { rgbf <1, 1, 0.6, 0.8> } translate <1.5, 1, 0> }\n" +
+        kNotOnTheWay;
     const std::string camera = "camera { location -5*z look_at 0 }\n";
     for (const std::string& text : {objects + far_spheres(), few}) {
         const auto scene = testing::compile_pov_text(camera + text, "<mixed>");

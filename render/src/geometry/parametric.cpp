@@ -71,6 +71,7 @@ class ParametricShape final : public Shape {
   public:
     explicit ParametricShape(const ParametricParameters& p) : m_p(p) { precompute(); }
 
+    bool finds_crossings_past_t_min() const override { return false; }
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
         double enter = 0.0, exit = 0.0;
         // A chord of no length (a flat box, a ray along an edge) holds no

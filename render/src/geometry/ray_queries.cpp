@@ -326,7 +326,9 @@ ShadowBlockers EmbreeScene::shadow_crossings(const Ray& ray, SeeThroughHits& cro
     }
     for (int k = 0; k < count; ++k) {
         Hit& hit = crossed.make(k);
-        if (!complete_hit(ray, begin[k], hit)) return ShadowBlockers::SeeThrough;
+        // The shapes outside the BVH let the ray through (above): none of
+        // them, not even one that casts no shadow, stands for this surface.
+        if (!complete_hit(ray, begin[k], hit, false)) return ShadowBlockers::SeeThrough;
         hit.ray_direction = ray.direction;
         finish_surface(hit, ray.direction, *m_data);
     }

@@ -89,6 +89,9 @@ struct Instance {
     // No shadow ray passes it (light_blockers.h); set when the render
     // scene is built, on every instance but CSG leaves.
     bool blocks_all_light = false;
+    // Its crossings along a ray can be listed in one query (Shape::
+    // finds_crossings_past_t_min, for each CSG leaf): set with blocks_all_light.
+    bool gathers_crossings = true;
     std::int16_t light_group = -1;                // POV's light_group (Hit::light_group)
     bool lit_by_global_lights = true;             // false in a light_group without global_lights
     bool double_illuminate = false;               // POV's (Hit::double_illuminate)

@@ -73,6 +73,12 @@ class Shape {
     // False where the inside reaches beyond bounds(): a disc's inside is
     // POV's half-space behind it, its bounds only the flat disc.
     virtual bool inside_within_bounds() const { return true; }
+    // False for a shape that searches from where a ray enters it and keeps
+    // its first few roots (isosurface, parametric, julia_fractal): its
+    // crossings past a t_min beyond the first are found only by a ray
+    // started there, so a shadow ray's surfaces on it are walked, not
+    // gathered (RenderScene::shadow_crossings).
+    virtual bool finds_crossings_past_t_min() const { return true; }
 };
 
 // Newton steps from p along the gradient onto value = level (an implicit

@@ -35,7 +35,8 @@ ShapeList::Boxes ShapeList::empty_boxes() {
 void ShapeList::add(const Instance& instance, std::uint32_t index, unsigned geometry, unsigned primitive) {
     if (m_shapes.size() >= std::size_t(kLanes)) throw std::logic_error("ShapeList: more shapes than it traces");
     const std::size_t lane = m_shapes.size();
-    m_shapes.push_back(Entry{index, geometry, primitive, instance.casts_shadow, instance.blocks_all_light});
+    m_shapes.push_back(Entry{index, geometry, primitive, instance.casts_shadow, instance.blocks_all_light,
+                             instance.gathers_crossings});
     for (int axis = 0; axis < 3; ++axis) {
         m_boxes.lower[axis][lane] = instance.bounds_lower[axis];
         m_boxes.upper[axis][lane] = instance.bounds_upper[axis];
@@ -149,8 +150,9 @@ ShadowBlockers ShapeList::shadow_blockers(const SceneData& data, const Ray& ray,
         if (!crosses(data, shape, ray, t_near, t_far, t, face, leaf)) continue;
         if (shape.blocks_all_light) return ShadowBlockers::Opaque;
         see_through = true;
+        if (recording && !shape.gathers_crossings) records->overflowed = true;  // the walk's to find
         // Every crossing on the way, each as nearest() reports it.
-        for (int more = 0; recording && more < SeeThroughRecords::kMost; ++more) {
+        for (int more = 0; recording && !records->overflowed && more < SeeThroughRecords::kMost; ++more) {
             records->add(EmbreeHit{t_near, float(t), shape.geometry, shape.primitive, kInvalidId, float(face),
                                    float(shape.instance - leaf)});
             const float past = std::nextafter(float(t), INFINITY);

@@ -55,7 +55,8 @@ class ShapeList {
         std::uint32_t instance;
         unsigned geometry, primitive;
         bool casts_shadow;
-        bool blocks_all_light;  // Instance::blocks_all_light
+        bool blocks_all_light;   // Instance::blocks_all_light
+        bool gathers_crossings;  // Instance::gathers_crossings
     };
     // The shapes' boxes by axis, one lane a shape, so one ray is tested
     // against all at once. The lanes past the shapes hold inverted boxes

@@ -123,6 +123,9 @@ inline Color walked_transmittance(const RenderScene& scene, Ray ray, const Vec3&
     // against pathological stacks of coplanar transparent faces.
     constexpr int kMaxSurfacesCrossed = 64;
     Color throughput(1.0f);
+    // The length run since the last surface that casts shadows: a no_shadow
+    // object is not on the way at all, so it neither fades nor ends a fade.
+    float stretch = 0.0f;
     for (int crossed = 0; crossed < kMaxSurfacesCrossed; ++crossed) {
         Hit blocker;
         if (!scene.intersect(ray, blocker)) return throughput;
@@ -141,7 +144,11 @@ inline Color walked_transmittance(const RenderScene& scene, Ray ray, const Vec3&
                 throughput *= interior_media_transmittance(ray, blocker);
             }
         }
-        throughput *= fade_before(blocker, ray.direction, blocker.t * glm::length(ray.direction));
+        stretch += blocker.t * glm::length(ray.direction);
+        if (blocker.casts_shadow) {
+            throughput *= fade_before(blocker, ray.direction, stretch);
+            stretch = 0.0f;
+        }
         if (lancer::is_black(throughput)) return throughput;
         ray = blocker.spawn_ray_to(target);
     }
