@@ -124,15 +124,21 @@ void analytic_occluded(const RTCOccludedFunctionNArguments* args) {
             context->records->overflowed = true;  // its later crossings: the walk's to find
             continue;
         }
-        // Every crossing on the way, each recorded as analytic_intersect
-        // reports it (u: the face; v: the CSG leaf's distance from its root).
-        for (int more = 0; more < SeeThroughRecords::kMost; ++more) {
-            context->records->add(EmbreeHit{t_near, float(t), args->geomID, args->primID, args->context->instID[0],
-                                            float(face), float(index - leaf)});
-            if (context->records->overflowed) break;
-            const float past = std::nextafter(float(t), INFINITY);
-            if (!(past < t_far) || !intersect_analytic(*group->data, index, o, d, past, t_far, t, face, leaf)) break;
-        }
+        record_crossings(*group->data, index, o, d, t_near, t_far, t, face, leaf,
+                         EmbreeHit{0.0f, 0.0f, args->geomID, args->primID, args->context->instID[0], 0.0f, 0.0f},
+                         *context->records);
+    }
+}
+
+void record_crossings(const SceneData& data, std::uint32_t self, const DVec3& o, const DVec3& d, float t_near,
+                      float t_far, double t, int face, std::uint32_t leaf, const EmbreeHit& ids,
+                      SeeThroughRecords& records) {
+    for (int more = 0; more < SeeThroughRecords::kMost; ++more) {
+        records.add(
+            EmbreeHit{t_near, float(t), ids.geometry, ids.primitive, ids.instance, float(face), float(self - leaf)});
+        if (records.overflowed) break;
+        const float past = std::nextafter(float(t), INFINITY);
+        if (!(past < t_far) || !intersect_analytic(data, self, o, d, past, t_far, t, face, leaf)) break;
     }
 }
 

@@ -132,6 +132,12 @@ void ray_to_object(const Instance& instance, const float org[3], const float dir
 // `self`).
 bool intersect_analytic(const SceneData& data, std::uint32_t self, const DVec3& o, const DVec3& d, double t_min,
                         double t_max, double& t, int& face, std::uint32_t& leaf);
+// Records the crossing intersect_analytic found at t (of `face`, on CSG
+// leaf `leaf`) and every later one before t_far, as analytic_intersect
+// reports them (u: the face; v: the leaf's distance from its root).
+void record_crossings(const SceneData& data, std::uint32_t self, const DVec3& o, const DVec3& d, float t_near,
+                      float t_far, double t, int face, std::uint32_t leaf, const EmbreeHit& ids,
+                      SeeThroughRecords& records);
 void analytic_bounds(const RTCBoundsFunctionArguments* args);
 void analytic_intersect(const RTCIntersectFunctionNArguments* args);
 void analytic_occluded(const RTCOccludedFunctionNArguments* args);

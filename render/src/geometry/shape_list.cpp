@@ -87,12 +87,16 @@ unsigned ShapeList::boxes_met(const Ray& ray, float t_near, float t_far, float* 
 
 // The nearest crossing of one listed shape over [t_near, t_far], as
 // Embree's user-geometry callbacks compute it.
-bool ShapeList::crosses(const SceneData& data, const Entry& shape, const Ray& ray, float t_near, float t_far, double& t,
-                        int& face, std::uint32_t& leaf) {
+void ShapeList::to_object(const SceneData& data, const Entry& shape, const Ray& ray, DVec3& o, DVec3& d) {
     const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
     const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
-    DVec3 o, d;
     ray_to_object(data.instances[shape.instance], org, dir, o, d);
+}
+
+bool ShapeList::crosses(const SceneData& data, const Entry& shape, const Ray& ray, float t_near, float t_far, double& t,
+                        int& face, std::uint32_t& leaf) {
+    DVec3 o, d;
+    to_object(data, shape, ray, o, d);
     return intersect_analytic(data, shape.instance, o, d, t_near, t_far, t, face, leaf);
 }
 
@@ -150,14 +154,16 @@ ShadowBlockers ShapeList::shadow_blockers(const SceneData& data, const Ray& ray,
         if (!crosses(data, shape, ray, t_near, t_far, t, face, leaf)) continue;
         if (shape.blocks_all_light) return ShadowBlockers::Opaque;
         see_through = true;
-        if (recording && !shape.gathers_crossings) records->overflowed = true;  // the walk's to find
-        // Every crossing on the way, each as nearest() reports it.
-        for (int more = 0; recording && !records->overflowed && more < SeeThroughRecords::kMost; ++more) {
-            records->add(EmbreeHit{t_near, float(t), shape.geometry, shape.primitive, kInvalidId, float(face),
-                                   float(shape.instance - leaf)});
-            const float past = std::nextafter(float(t), INFINITY);
-            if (records->overflowed || !(past < t_far) || !crosses(data, shape, ray, past, t_far, t, face, leaf)) break;
+        if (!recording) continue;
+        if (!shape.gathers_crossings) {
+            records->overflowed = true;  // its later crossings: the walk's to find
+            continue;
         }
+        // Every crossing on the way, each as nearest() reports it.
+        DVec3 o, d;
+        to_object(data, shape, ray, o, d);
+        record_crossings(data, shape.instance, o, d, t_near, t_far, t, face, leaf,
+                         EmbreeHit{0.0f, 0.0f, shape.geometry, shape.primitive, kInvalidId, 0.0f, 0.0f}, *records);
     }
     return see_through ? ShadowBlockers::SeeThrough : ShadowBlockers::None;
 }

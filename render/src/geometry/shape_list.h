@@ -69,6 +69,8 @@ class ShapeList {
     // Which boxes the ray's [t_near, t_far] meets, as bits by shape, and
     // where it enters each.
     unsigned boxes_met(const Ray& ray, float t_near, float t_far, float* entry) const;
+    // `ray` in the object space of `shape`.
+    static void to_object(const SceneData& data, const Entry& shape, const Ray& ray, DVec3& o, DVec3& d);
     static bool crosses(const SceneData& data, const Entry& shape, const Ray& ray, float t_near, float t_far, double& t,
                         int& face, std::uint32_t& leaf);
     std::vector<Entry> m_shapes;
