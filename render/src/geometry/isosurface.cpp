@@ -10,6 +10,7 @@
 #include "geometry/isosurface.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 
@@ -31,6 +32,10 @@ constexpr int kSphereWall = 7;
 // still searched in full.
 constexpr long kMostEvaluationsPerSearch = 1L << 18;
 
+double largest_component(const DVec3& v) {
+    return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+}
+
 // Where a line crosses the container: entry and exit parameters and walls.
 struct Chord {
     double enter = 0.0, exit = 0.0;
@@ -46,10 +51,13 @@ class IsosurfaceShape final : public Shape {
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
         Chord chord;
         if (!container_chord(o, d, chord)) return;
-        const double accuracy = m_p.accuracy;
-        const double near_surface = m_p.max_gradient * accuracy * 4.0;
-        Search search{*this, o, d, glm::length(d)};
+        Search search{*this, o, d, glm::length(d), largest_component(o) / largest_component(d)};
         if (!(search.length > 0.0) || !std::isfinite(search.length)) return;
+        // Steps off a surface the ray starts on are no shorter than the
+        // doubles can tell apart there (an `accuracy` of 1e-20 would step
+        // nowhere and find the start again).
+        const double accuracy = std::max(m_p.accuracy, search.resolution(0.0));
+        const double near_surface = m_p.max_gradient * accuracy * 4.0;
 
         ShapeCrossings found;
         double start = std::max(chord.enter, 0.0);
@@ -189,7 +197,8 @@ class IsosurfaceShape final : public Shape {
     struct Search {
         const IsosurfaceShape& shape;
         DVec3 origin, direction;
-        double length;  // |direction|: slopes per unit of object space
+        double length;        // |direction|: slopes per unit of object space
+        double origin_reach;  // the origin's largest component in steps of the direction's
         double sign = 1.0;
         double steepest = 0.0;
         double max_gradient = shape.m_p.max_gradient;
@@ -200,6 +209,12 @@ class IsosurfaceShape final : public Shape {
             return shape.function_at(origin + t * direction) - shape.m_p.threshold;
         }
         double signed_value(double t) { return sign * value(t); }
+
+        // The shortest interval near t whose ends are points the doubles
+        // tell apart: below it the function's values are rounding noise,
+        // and halving them all (an `accuracy` of 1e-20 asks for that)
+        // costs tens of thousands of evaluations a ray for no digit.
+        double resolution(double t) const { return 4.0 * DBL_EPSILON * (origin_reach + std::fabs(t)); }
 
         bool first_root(double a, double b, double& root) {
             const IsosurfaceParameters& p = shape.m_p;
@@ -226,7 +241,7 @@ class IsosurfaceShape final : public Shape {
             // parameter near 1e30, from an isosurface scaled that much,
             // has steps far above any accuracy) counts as short enough:
             // halving it again would recurse without end.
-            if (span < p.accuracy || !(middle > a && middle < b)) {
+            if (span < p.accuracy || span < resolution(b) || !(middle > a && middle < b)) {
                 if (!(fb < 0.0)) return false;
                 root = b;
                 return true;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -244,6 +245,49 @@ TEST(Isosurface, AHugeScaleEndsTheSearchWithinTheStack) {
     // Past what a direction's squared length can hold, the search only
     // has to end.
     crossings_of(*shape, DVec3(0.1, 0.2, -5.0), DVec3(0.0, 0.0, 1e-300), 0.0, HUGE_VAL);
+}
+
+// x - 0.5 through a spline function of x, counting its evaluations.
+std::shared_ptr<sg::Function> counted_plane_function(std::shared_ptr<long> evaluations) {
+    auto f = std::make_shared<sg::Function>();
+    f->parameters = {"x", "y", "z"};
+    f->spline = [evaluations](double x) {
+        ++*evaluations;
+        return std::array<double, 5>{x - 0.5, 0.0, 0.0, 0.0, 0.0};
+    };
+    f->spline_terms = 1;
+    return f;
+}
+
+TEST(Isosurface, AnAccuracyFinerThanTheDoublesCostsWhatTheirSpacingCosts) {
+    // From a point on the plane x = 0.5, rays leaving it at first stay on
+    // it: x + t d.x rounds to 0.5 for t below 1e-16, and there the function
+    // is 0 at both ends of every interval. An accuracy of 1e-20 halved that
+    // stretch down to 1e-20, about 20,000 evaluations a ray, where the
+    // doubles hold no more than an accuracy of 1e-16 finds.
+    auto cost = [](double accuracy, const DVec3& d, size_t& hits) {
+        auto evaluations = std::make_shared<long>(0);
+        auto p = in_box(counted_plane_function(evaluations));
+        p.accuracy = accuracy;
+        p.max_trace = 4;
+        const auto shape = make_isosurface_shape(p);
+        hits = crossings_of(*shape, DVec3(0.5, 0.1, 0.2), d).size();
+        return *evaluations;
+    };
+    for (const DVec3 d : {DVec3(1.0, 0.3, 0.1), DVec3(1e-3, 1.0, 0.0), DVec3(-1.0, 0.2, 0.0)}) {
+        size_t fine_hits = 0, coarse_hits = 0;
+        const long fine = cost(1e-20, d, fine_hits), coarse = cost(1e-16, d, coarse_hits);
+        EXPECT_LE(fine, 2 * coarse) << d.x;
+        EXPECT_EQ(fine_hits, coarse_hits) << d.x;
+    }
+    // Still found where it is, from off the surface.
+    auto evaluations = std::make_shared<long>(0);
+    auto p = in_box(counted_plane_function(evaluations));
+    p.accuracy = 1e-20;
+    const auto shape = make_isosurface_shape(p);
+    const auto found = crossings_of(*shape, DVec3(-1.0, 0.1, 0.2), DVec3(1.0, 0.0, 0.0));
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_NEAR(found[0].t, 1.5, 1e-14);
 }
 
 TEST(Isosurface, RefusesWhatCannotBeSearched) {
