@@ -60,6 +60,14 @@ const BadScene kBadScenes[] = {
     {"UnterminatedComment", "sphere { 0, 1 }\n/* never closed", "unterminated comment", 2, 1},
     {"StrayCharacter", "sphere { 0, 1 } @", "unexpected character '@'", 1, 17},
     {"InvalidUtf8", "sphere { 0, 1 }\n// caf\xE9\n", "invalid UTF-8", 2, 7},
+    // Past runs of ASCII read eight bytes at a time, and UTF-8 counted
+    // as one column a character.
+    {"InvalidUtf8AfterLongRuns", "sphere { 0, 1 } // a comment long enough for words\n// \xC3\xA9t\xC3\xA9 then \xFF\n",
+     "invalid UTF-8", 2, 13},
+    {"Mesh2SectionLinesAndColumns",
+     "mesh2 { vertex_vectors { 3, <0,0,0>,\n <1,0,0>,\n <0,1,0> } face_indices { 1, <0,1,2> } } #declare S = "
+     "\"\xC3\xA9\"; @",
+     "unexpected character '@'", 3, 60},
     {"BinaryFile", with_nul(), "NUL byte", 2, 3},
     {"RunawayWhile", "#while (1)\n#end", "exceeded 10000 iterations", 1, 1},
     {"MacroRecursion", "#macro F(N) F(N + 1) #end\nF(0)", "macro recursion too deep", 1, 13},

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "evaluator.h"
+#include "huge_pages.h"
 
 namespace lancer::parse {
 
@@ -140,6 +141,7 @@ bool Evaluator::read_file(const std::string& path, const sg::SourceLocation& whe
     if (!ec) {
         // Room for the two NULs scan_text appends, so it copies nothing.
         content.reserve(static_cast<std::size_t>(size) + 2);
+        advise_huge_pages(content.data(), content.capacity());
         content.resize(static_cast<std::size_t>(size));
         in.read(content.data(), static_cast<std::streamsize>(size));
         content.resize(static_cast<std::size_t>(in.gcount()));

@@ -6,6 +6,7 @@
 // so a section reads the same either way; this file turns it into the
 // mesh's data, with the checks that need the rest of the mesh.
 #include "evaluator.h"
+#include "huge_pages.h"
 
 namespace lancer::parse {
 
@@ -17,7 +18,7 @@ sg::SourceLocation entry_location(const TokenBuffer& buffer, const RawToken& sec
     sg::SourceLocation where = section.location;
     if (where.line < 1 || where.line > buffer.line_count()) return where;
     const std::string& text = buffer.text;
-    std::size_t offset = buffer.line_starts[where.line - 1];
+    std::size_t offset = buffer.line_starts()[where.line - 1];
     for (int column = 1; column < where.column && offset < text.size(); ++column) {
         ++offset;  // columns count code points: step over continuation bytes too
         while (offset < text.size() && (static_cast<unsigned char>(text[offset]) & 0xC0) == 0x80) ++offset;
@@ -56,7 +57,7 @@ std::function<void(sg::TriangleMesh&)> Evaluator::literal_mesh2_section(const Va
         const bool normals = name == "normal_vectors";
         return [section, normals, count](sg::TriangleMesh& mesh) {
             auto& out = normals ? mesh.normals : mesh.positions;
-            out.reserve(out.size() + count);
+            reserve_on_huge_pages(out, out.size() + count);
             visit_mesh2_entries(*section->buffer, *section->raw, [&](const double* c) {
                 const sg::Vec3 v(c[0], c[1], c[2]);
                 out.push_back(normals && glm::length(v) > 0 ? glm::normalize(v) : v);
@@ -65,7 +66,7 @@ std::function<void(sg::TriangleMesh&)> Evaluator::literal_mesh2_section(const Va
     }
     if (name == "uv_vectors") {
         return [section, count](sg::TriangleMesh& mesh) {
-            mesh.uvs.reserve(mesh.uvs.size() + count);
+            reserve_on_huge_pages(mesh.uvs, mesh.uvs.size() + count);
             visit_mesh2_entries(*section->buffer, *section->raw,
                                 [&](const double* c) { mesh.uvs.emplace_back(c[0], c[1]); });
         };
@@ -81,7 +82,7 @@ std::function<void(sg::TriangleMesh&)> Evaluator::literal_mesh2_section(const Va
             return false;
         };
         if (name == "face_indices") {
-            mesh.faces.reserve(mesh.faces.size() + count);
+            reserve_on_huge_pages(mesh.faces, mesh.faces.size() + count);
             std::size_t e = 0;
             visit_mesh2_entries(*section->buffer, *section->raw, [&](const double* indices) {
                 sg::TriangleMesh::Face face;

@@ -60,6 +60,28 @@ TEST(ParserMesh2Sections, LiteralSectionsReadAsTheGrammarReadsThem) {
     EXPECT_EQ(a->faces[0].normal[1], 1);
 }
 
+// Indices with a point, a sign or leading zeros, and numbers of hundreds
+// of digits, are what the grammar makes of them too.
+TEST(ParserMesh2Sections, NumbersWrittenUnusuallyReadAsTheGrammarReadsThem) {
+    const std::string digits = std::string(305, '0') + "1";  // past what the text alone answers for
+    auto mesh = [&](const char* plus) {
+        return "mesh2 { vertex_vectors { 4, <0" + std::string(plus) + ",0,0>, <1,0,0>, <0,1,0>, <0," + digits +
+               ".5,1e2> }\n face_indices { 2, <0,1.0,2" + plus + ">, <-0,+3,0002.> } }";
+    };
+    const auto literal = parse_ok(mesh(""));
+    const auto expression = parse_ok(mesh("+0"));
+    const auto a = only_mesh(literal);
+    const auto b = only_mesh(expression);
+    EXPECT_EQ(a->positions, b->positions);
+    EXPECT_EQ(a->positions[3], sg::Vec3(0.0, 1.5, 100.0));
+    ASSERT_EQ(a->faces.size(), 2u);
+    ASSERT_EQ(b->faces.size(), 2u);
+    for (std::size_t f = 0; f < 2; ++f)
+        for (int i = 0; i < 3; ++i) EXPECT_EQ(a->faces[f].position[i], b->faces[f].position[i]);
+    EXPECT_EQ(a->faces[1].position[1], 3);
+    EXPECT_EQ(a->faces[1].position[2], 2);
+}
+
 // The same mistakes give the same located errors whichever reads them.
 TEST(ParserMesh2Sections, ErrorsAreTheGrammarsErrors) {
     const char* const cases[][2] = {
@@ -75,6 +97,12 @@ TEST(ParserMesh2Sections, ErrorsAreTheGrammarsErrors) {
          " uv_vectors { 1, <0+0,0,0> } }"},
         {"sphere { <1,\n  1e999, 0>, 1 }", "sphere { <1+0,\n  1e999, 0>, 1 }"},
         {"mesh2 { vertex_vectors { 1, <0,\n 1e999, 0> } }", "mesh2 { vertex_vectors { 1, <0+0,\n 1e999, 0> } }"},
+        {"mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1, <0,-1,2> } }",
+         "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1, <0,-1,2+0> } }"},
+        {"mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1, <0,2147483648,2> } }",
+         "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1, <0,2147483648,2+0> } }"},
+        {"mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1, <0,999999999,2> } }",
+         "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1, <0,999999999,2+0> } }"},
     };
     for (const auto& pair : cases) {
         const Diagnostic literal = first_error(pair[0]);

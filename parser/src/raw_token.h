@@ -74,10 +74,17 @@ struct TokenBuffer {
     }
     // Line `line` (1-based) of the text, without its line break; empty past the end.
     std::string_view line(int line) const;
-    int line_count() const { return static_cast<int>(line_starts.size()); }
+    int line_count() const { return static_cast<int>(line_starts().size()); }
+    // Offset of each line in text: found at the first diagnostic that
+    // shows a line of this file, not for every file (a mesh written a
+    // vertex a line has millions of lines). The parser runs on one thread.
+    const std::vector<std::size_t>& line_starts() const;
 
-    std::string text;                      // as scanned, for diagnostics' caret lines
-    std::vector<std::size_t> line_starts;  // offset of each line in text
+    std::string text;  // as scanned, for diagnostics' caret lines
+
+  private:
+    mutable std::vector<std::size_t> m_line_starts;
+    mutable bool m_lines_found = false;
 };
 
 // Scans `text` into `buffer.tokens`. Invalid UTF-8, NUL bytes, unterminated
