@@ -60,6 +60,19 @@ TEST(ParserMesh2Sections, LiteralSectionsReadAsTheGrammarReadsThem) {
     EXPECT_EQ(a->faces[0].normal[1], 1);
 }
 
+// Every number too large for a double is an error of its own, in a literal
+// vector as among tokens.
+TEST(ParserMesh2Sections, EachNumberTooLargeIsReported) {
+    const auto literal = test::parse_snippet("sphere { <1e400, 2  , 1e999>, 1 }");
+    const auto expression = test::parse_snippet("sphere { <1e400, 2+0, 1e999>, 1 }");
+    ASSERT_EQ(literal.diagnostics.size(), 2u) << test::all_diagnostics(literal);
+    ASSERT_EQ(expression.diagnostics.size(), 2u) << test::all_diagnostics(expression);
+    for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_EQ(literal.diagnostics[i].message, expression.diagnostics[i].message);
+        EXPECT_EQ(literal.diagnostics[i].location.column, expression.diagnostics[i].location.column);
+    }
+}
+
 // Indices with a point, a sign or leading zeros, and numbers of hundreds
 // of digits, are what the grammar makes of them too.
 TEST(ParserMesh2Sections, NumbersWrittenUnusuallyReadAsTheGrammarReadsThem) {
@@ -103,6 +116,12 @@ TEST(ParserMesh2Sections, ErrorsAreTheGrammarsErrors) {
          "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1, <0,2147483648,2+0> } }"},
         {"mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1, <0,999999999,2> } }",
          "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1, <0,999999999,2+0> } }"},
+        // Beyond single precision, which the mesh stores: written with an
+        // exponent, and in 39 digits.
+        {"mesh2 { vertex_vectors { 3, <0,0,0>, <1e39,0,0>, <0,1,0> } face_indices { 1, <0,1,2> } }",
+         "mesh2 { vertex_vectors { 3, <0,0,0>, <1e39+0,0,0>, <0,1,0> } face_indices { 1, <0,1,2> } }"},
+        {"mesh2 { uv_vectors { 1, <0,999999999999999999999999999999999999999> } }",
+         "mesh2 { uv_vectors { 1, <0+0,999999999999999999999999999999999999999> } }"},
     };
     for (const auto& pair : cases) {
         const Diagnostic literal = first_error(pair[0]);
