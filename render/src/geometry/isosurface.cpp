@@ -32,8 +32,13 @@ constexpr int kSphereWall = 7;
 // still searched in full.
 constexpr long kMostEvaluationsPerSearch = 1L << 18;
 
-double largest_component(const DVec3& v) {
-    return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+// How far the ray's origin lies from 0, in steps of d, on the axis where
+// that is least: the coordinate whose doubles t moves across soonest.
+double origin_reach(const DVec3& o, const DVec3& d) {
+    double reach = HUGE_VAL;
+    for (int axis = 0; axis < 3; ++axis)
+        if (d[axis] != 0.0) reach = std::min(reach, std::fabs(o[axis] / d[axis]));
+    return reach;
 }
 
 // Where a line crosses the container: entry and exit parameters and walls.
@@ -51,7 +56,7 @@ class IsosurfaceShape final : public Shape {
     void crossings(const DVec3& o, const DVec3& d, double t_min, double t_max, ShapeCrossings& out) const override {
         Chord chord;
         if (!container_chord(o, d, chord)) return;
-        Search search{*this, o, d, glm::length(d), largest_component(o) / largest_component(d)};
+        Search search{*this, o, d, glm::length(d), origin_reach(o, d)};
         if (!(search.length > 0.0) || !std::isfinite(search.length)) return;
         // Steps off a surface the ray starts on are no shorter than the
         // doubles can tell apart there (an `accuracy` of 1e-20 would step
@@ -197,8 +202,8 @@ class IsosurfaceShape final : public Shape {
     struct Search {
         const IsosurfaceShape& shape;
         DVec3 origin, direction;
-        double length;        // |direction|: slopes per unit of object space
-        double origin_reach;  // the origin's largest component in steps of the direction's
+        double length;  // |direction|: slopes per unit of object space
+        double reach;   // origin_reach(origin, direction)
         double sign = 1.0;
         double steepest = 0.0;
         double max_gradient = shape.m_p.max_gradient;
@@ -211,10 +216,11 @@ class IsosurfaceShape final : public Shape {
         double signed_value(double t) { return sign * value(t); }
 
         // The shortest interval near t whose ends are points the doubles
-        // tell apart: below it the function's values are rounding noise,
-        // and halving them all (an `accuracy` of 1e-20 asks for that)
-        // costs tens of thousands of evaluations a ray for no digit.
-        double resolution(double t) const { return 4.0 * DBL_EPSILON * (origin_reach + std::fabs(t)); }
+        // tell apart on the axis that tells them apart first: below it the
+        // function's values are rounding noise, and halving them all (an
+        // `accuracy` of 1e-20 asks for that) costs tens of thousands of
+        // evaluations a ray for no digit.
+        double resolution(double t) const { return 4.0 * DBL_EPSILON * (reach + std::fabs(t)); }
 
         bool first_root(double a, double b, double& root) {
             const IsosurfaceParameters& p = shape.m_p;

@@ -290,6 +290,20 @@ TEST(Isosurface, AnAccuracyFinerThanTheDoublesCostsWhatTheirSpacingCosts) {
     EXPECT_NEAR(found[0].t, 1.5, 1e-14);
 }
 
+TEST(Isosurface, AFarCoordinateOffTheRaysAxisCostsNoDigits) {
+    // The ray moves along y from x = 1e15: the doubles of x are 0.125
+    // apart there, but only y changes along the ray, and y keeps its digits.
+    auto p = in_box(below_function(0.3), 2e15);
+    p.accuracy = 1e-6;
+    p.open = true;  // no wall where the ray leaves the box
+    const auto shape = make_isosurface_shape(p);
+    for (double x : {1e10, 1e13, 1e15}) {
+        const auto hits = crossings_of(*shape, DVec3(x, 2.0, 0.1), DVec3(0.0, -1.0, 0.0));
+        ASSERT_EQ(hits.size(), 1u) << x;
+        EXPECT_NEAR(hits[0].t, 1.7, 2.0 * p.accuracy) << x;
+    }
+}
+
 TEST(Isosurface, RefusesWhatCannotBeSearched) {
     IsosurfaceParameters p;
     EXPECT_FALSE(make_isosurface_shape(p));  // no function
