@@ -1877,6 +1877,13 @@ camera_item
   | "angle" expr "," expr
       { double h = ev.camera_angle($2, @2), v = ev.camera_angle($4, @4); auto at = LOC(@2);
         $$ = [h, v, at](CameraSpec& c) { c.set_angle(h, v, at, true); }; }
+  /* POV-Ray's comma between a spherical camera's two angles is optional:
+     `angle 360 180`. Written without it, the second is read when it is a
+     number; an expression there needs the comma (POV-Ray reads the first
+     expression as far as it goes, so `angle 360 -180` is 180 there too). */
+  | "angle" expr NUMBER
+      { double h = ev.camera_angle($2, @2), v = ev.camera_angle($3.value, @3); auto at = LOC(@2);
+        $$ = [h, v, at](CameraSpec& c) { c.set_angle(h, v, at, true); }; }
   | "aperture" expr    { double a = ev.to_float($2, @2, "a float aperture"); $$ = [a](CameraSpec& c) { c.aperture = a; c.other_item_seen = true; }; }
   | "blur_samples" expr { $$ = ev.blur_samples($2, @2, nullptr, @2); }
   | "blur_samples" expr "," expr { $$ = ev.blur_samples($2, @2, &$4, @4); }

@@ -676,6 +676,10 @@ TEST(ParserCamera, TypesAndTheirAngles) {
     EXPECT_DOUBLE_EQ(spherical.camera->vertical_angle, 100.0);  // half the first, as POV
     auto both = parse_ok("camera { spherical angle 90, 30 }");
     EXPECT_DOUBLE_EQ(both.camera->vertical_angle, 30.0);
+    // POV-Ray's comma there is optional.
+    auto without_comma = parse_ok("camera { spherical angle 360 180 location 0 }");
+    EXPECT_DOUBLE_EQ(without_comma.camera->horizontal_angle, 360.0);
+    EXPECT_DOUBLE_EQ(without_comma.camera->vertical_angle, 180.0);
     EXPECT_EQ(parse_ok("camera { cylinder 3 }").camera->projection, sg::Camera::Projection::Cylinder3);
     // A bare orthographic angle scales to the look_at distance, keeping direction.
     auto ortho = parse_ok("camera { orthographic location <0, 0, -4> look_at 0 right x up y angle }");
