@@ -62,6 +62,10 @@ const BadScene kBadScenes[] = {
     {"InvalidUtf8", "sphere { 0, 1 }\n// caf\xE9\n", "invalid UTF-8", 2, 7},
     // Past runs of ASCII read eight bytes at a time, and UTF-8 counted
     // as one column a character.
+    {"InvalidUtf8AfterAByteOrderMark",
+     "\xEF\xBB\xBF"
+     "abc\xFF",
+     "invalid UTF-8", 1, 4},
     {"InvalidUtf8AfterLongRuns", "sphere { 0, 1 } // a comment long enough for words\n// \xC3\xA9t\xC3\xA9 then \xFF\n",
      "invalid UTF-8", 2, 13},
     {"Mesh2SectionLinesAndColumns",

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "evaluator.h"
+#include "number_limits.h"
 
 namespace lancer::parse {
 
@@ -62,16 +63,6 @@ double Evaluator::positive(const Value& value, const SourceRange& where, const s
     }
     return f;
 }
-
-namespace {
-
-// What the renderer can hold: it stores geometry and colours in single
-// precision, where 1e39 is infinity and turns a surface black or NaN.
-bool fits_single_precision(double x) {
-    return std::isfinite(x) && std::fabs(x) <= double(std::numeric_limits<float>::max());
-}
-
-}  // namespace
 
 bool Evaluator::check_renderable(const double* values, int count, const SourceRange& where, const std::string& what) {
     for (int i = 0; i < count; ++i) {

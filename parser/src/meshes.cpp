@@ -10,6 +10,7 @@
 
 #include "evaluator.h"
 #include "file_prefix.h"
+#include "number_limits.h"
 #include "obj_faces.h"
 #include "obj_text_check.h"
 #include "polygon_triangulation.h"
@@ -228,21 +229,6 @@ std::function<void(sg::TriangleMesh&)> Evaluator::mesh2_vectors(const std::strin
         }
     };
 }
-
-namespace {
-
-// x as an int when it is a whole number int can hold (a cast of any other
-// value is undefined).
-bool whole_int(double x, int& out) {
-    out = 0;
-    if (!(x == std::floor(x)) || x < double(std::numeric_limits<int>::min()) ||
-        x > double(std::numeric_limits<int>::max()))
-        return false;
-    out = static_cast<int>(x);
-    return true;
-}
-
-}  // namespace
 
 // Said alike whether the grammar or the scanner read the section (mesh2_sections.cpp).
 std::string Evaluator::mesh2_index_out_of_range(const std::string& section, long long index, const char* what,
