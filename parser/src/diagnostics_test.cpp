@@ -59,6 +59,8 @@ const BadScene kBadScenes[] = {
     {"UnterminatedString", "#include \"colors.inc", "unterminated string", 1, 10},
     {"UnterminatedComment", "sphere { 0, 1 }\n/* never closed", "unterminated comment", 2, 1},
     {"StrayCharacter", "sphere { 0, 1 } @", "unexpected character '@'", 1, 17},
+    {"StrayLetterOutsideAscii", "sphere { 0, 1 } // caf\xC3\xA9\n#declare A = \xC3\xA9;",
+     "unexpected character '\xC3\xA9'", 2, 14},
     {"InvalidUtf8", "sphere { 0, 1 }\n// caf\xE9\n", "invalid UTF-8", 2, 7},
     // Past runs of ASCII read eight bytes at a time, and UTF-8 counted
     // as one column a character.
