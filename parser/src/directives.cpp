@@ -1,6 +1,7 @@
 // Directives, executed by the token stream as it meets them: #declare,
 // #local, #undef, conditionals, loops, #switch, #macro, #include, #version,
 // #default and the message directives.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -529,10 +530,13 @@ void Evaluator::directive_include(const RawToken& d) {
         return abort_parse();
     }
     const std::string& name = name_value.text;
-    // Search: the including file's folder, then the include path.
+    // Search: the including file's folder, then the include path, then the
+    // current folder, where POV-Ray looks and where #fopen writes (so that
+    // strings.inc's Parse_String finds the file it has just written).
     std::vector<std::string> folders;
     folders.push_back(m_frames.back()->buffer->folder);
     for (const auto& dir : m_options.include_path) folders.push_back(dir);
+    if (std::find(folders.begin(), folders.end(), std::string()) == folders.end()) folders.push_back("");
     std::string found_name;
     FileSearch search = find_file(name, folders, d.location, "include file", found_name);
     if (search == FileSearch::Refused) return abort_parse();

@@ -130,6 +130,26 @@ TEST_F(UserFileTest, LocatedErrors) {
     EXPECT_TRUE(contains(test::all_diagnostics(object), "strings, floats and vectors"));
 }
 
+// #write writes in the current folder, where POV-Ray also looks for
+// includes: strings.inc's Parse_String includes the file it has just
+// written from the library's folder.
+TEST_F(UserFileTest, AnIncludeFindsWhatTheSceneWroteInTheCurrentFolder) {
+    fs::create_directories(m_dir / "lib" / "work");
+    write("lib/parse_like.inc",
+          "#macro Parse_Like(S) #fopen F \"made.tmp\" write #write (F, S) #fclose F #include \"made.tmp\" #end\n");
+    const fs::path before = fs::current_path();
+    fs::current_path(m_dir / "lib" / "work");
+    ParseOptions options;
+    options.include_path = {path("lib")};
+    const ParseResult result = parse_scene_file(
+        write("scene/scene.pov", "#include \"parse_like.inc\"\nParse_Like(\"sphere { 0, 2 }\")\n"), options);
+    fs::current_path(before);
+    EXPECT_TRUE(result.ok()) << test::all_diagnostics(result);
+    ASSERT_TRUE(result.scene);
+    EXPECT_EQ(result.scene->objects.size(), 1u);
+    EXPECT_TRUE(fs::exists(m_dir / "lib" / "work" / "made.tmp"));
+}
+
 TEST_F(UserFileTest, SafeModeWritesOnlyInTheScenesFolder) {
     const ParseResult outside = parse("#fopen F \"" + path("escape.txt") + "\" write\n", true);
     ASSERT_FALSE(outside.ok());
