@@ -158,7 +158,7 @@ void Parser::stack<Parser::stack_symbol_type, std::vector<Parser::stack_symbol_t
 %nterm <Value> declared_non_scalar declared_identifier array_scalar expr arith postfix primary colour colour_base declared_value string_value bare_colour
 %nterm <std::vector<Value>> arith_seq mesh2_items expr_list opt_args vector_items
 %nterm <std::vector<MacroArgument>> macro_args macro_arg_list macro_arg_list_plain macro_arg_list_object
-%nterm <Value> macro_arg vector_item spline_literal
+%nterm <Value> macro_arg vector_item spline_literal angle_without_comma
 %nterm <std::vector<int>> array_sizes
 %nterm <ArrayInit> array_init array_item array_scalar_item
 %nterm <std::vector<ArrayInit>> array_items
@@ -1879,10 +1879,11 @@ camera_item
         $$ = [h, v, at](CameraSpec& c) { c.set_angle(h, v, at, true); }; }
   /* POV-Ray's comma between a spherical camera's two angles is optional:
      `angle 360 180`. Written without it, the second is read when it is a
-     number; an expression there needs the comma (POV-Ray reads the first
-     expression as far as it goes, so `angle 360 -180` is 180 there too). */
-  | "angle" expr NUMBER
-      { double h = ev.camera_angle($2, @2), v = ev.camera_angle($3.value, @3); auto at = LOC(@2);
+     number, a declared value or in parentheses; other expressions there
+     need the comma (POV-Ray reads the first expression as far as it goes,
+     so `angle 360 -180` is 180 there too). */
+  | "angle" expr angle_without_comma
+      { double h = ev.camera_angle($2, @2), v = ev.camera_angle($3, @3); auto at = LOC(@2);
         $$ = [h, v, at](CameraSpec& c) { c.set_angle(h, v, at, true); }; }
   | "aperture" expr    { double a = ev.to_float($2, @2, "a float aperture"); $$ = [a](CameraSpec& c) { c.aperture = a; c.other_item_seen = true; }; }
   | "blur_samples" expr { $$ = ev.blur_samples($2, @2, nullptr, @2); }
@@ -1893,6 +1894,12 @@ camera_item
   | "bokeh" "{" pigment "}" { auto p = $3; $$ = [p](CameraSpec& c) { c.bokeh = p; c.other_item_seen = true; }; }
   | normal             { auto n = $1; $$ = [n](CameraSpec& c) { c.normal = n; c.other_item_seen = true; }; }
   | transform_item     { sg::Mat4 t = $1; $$ = [t](CameraSpec& c) { c.world_from_camera = t * c.world_from_camera; c.other_item_seen = true; }; }
+  ;
+
+angle_without_comma
+  : NUMBER             { $$ = std::move($1.value); }
+  | VALUE_ID           { $$ = std::move($1.value); }
+  | "(" expr ")"       { $$ = std::move($2); }
   ;
 
 camera_type

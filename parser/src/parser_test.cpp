@@ -680,6 +680,9 @@ TEST(ParserCamera, TypesAndTheirAngles) {
     auto without_comma = parse_ok("camera { spherical angle 360 180 location 0 }");
     EXPECT_DOUBLE_EQ(without_comma.camera->horizontal_angle, 360.0);
     EXPECT_DOUBLE_EQ(without_comma.camera->vertical_angle, 180.0);
+    EXPECT_DOUBLE_EQ(parse_ok("#declare V = 90;\ncamera { spherical angle 360 V }").camera->vertical_angle, 90.0);
+    EXPECT_DOUBLE_EQ(parse_ok("#declare V = 90;\ncamera { spherical angle 360 (V + 10) }").camera->vertical_angle,
+                     100.0);
     EXPECT_EQ(parse_ok("camera { cylinder 3 }").camera->projection, sg::Camera::Projection::Cylinder3);
     // A bare orthographic angle scales to the look_at distance, keeping direction.
     auto ortho = parse_ok("camera { orthographic location <0, 0, -4> look_at 0 right x up y angle }");
