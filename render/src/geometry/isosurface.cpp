@@ -33,11 +33,14 @@ constexpr int kSphereWall = 7;
 constexpr long kMostEvaluationsPerSearch = 1L << 18;
 
 // How far the ray's origin lies from 0, in steps of d, on the axis where
-// that is least: the coordinate whose doubles t moves across soonest.
+// that is least among those the ray really moves along (a component of d
+// a quarter of its largest or more: rounding noise in a turned direction
+// must not count): the coordinate whose doubles t moves across soonest.
 double origin_reach(const DVec3& o, const DVec3& d) {
+    const double largest = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
     double reach = HUGE_VAL;
     for (int axis = 0; axis < 3; ++axis)
-        if (d[axis] != 0.0) reach = std::min(reach, std::fabs(o[axis] / d[axis]));
+        if (std::fabs(d[axis]) >= 0.25 * largest) reach = std::min(reach, std::fabs(o[axis] / d[axis]));
     return reach;
 }
 
