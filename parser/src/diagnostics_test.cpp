@@ -64,6 +64,9 @@ const BadScene kBadScenes[] = {
     {"InvalidUtf8", "sphere { 0, 1 }\n// caf\xE9\n", "invalid UTF-8", 2, 7},
     // Past runs of ASCII read eight bytes at a time, and UTF-8 counted
     // as one column a character.
+    {"OverlongUtf8", "sphere { 0, 1 } // \xC0\x80", "invalid UTF-8 sequence starting with byte 0xC0", 1, 20},
+    {"Utf8Surrogate", "// \xED\xA0\x80", "invalid UTF-8 sequence starting with byte 0xED", 1, 4},
+    {"Utf8PastTheLastCodePoint", "// \xF4\x90\x80\x80", "invalid UTF-8 sequence starting with byte 0xF4", 1, 4},
     {"InvalidUtf8AfterAByteOrderMark",
      "\xEF\xBB\xBF"
      "abc\xFF",
