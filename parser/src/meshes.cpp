@@ -10,6 +10,7 @@
 
 #include "evaluator.h"
 #include "file_prefix.h"
+#include "huge_pages.h"
 #include "number_limits.h"
 #include "obj_faces.h"
 #include "obj_text_check.h"
@@ -454,6 +455,11 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         return shape;
     }
 
+    const ObjTextCheck::Counts& counts = check.counts();
+    reserve_on_huge_pages(mesh->positions, counts.positions);
+    reserve_on_huge_pages(mesh->normals, counts.normals);
+    reserve_on_huge_pages(mesh->uvs, counts.uvs);
+    reserve_on_huge_pages(mesh->faces, counts.triangles);
     ObjFaceReader faces(*mesh);
     ObjMaterialReader materials(*this, found.parent_path(), faces);
     std::string obj_warning, obj_error;

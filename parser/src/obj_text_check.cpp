@@ -1,6 +1,7 @@
 #include "obj_text_check.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 namespace lancer::parse {
@@ -27,8 +28,16 @@ void ObjTextCheck::feed(const char* data, std::size_t size) {
     if (m_after_cr && at < end && *at == '\n') ++at;
     m_after_cr = false;
     // Lines end at \n, \r\n or a lone \r, as tinyobjloader reads them.
+    // The next \n is kept, not searched for again at each line: a file of
+    // lone \r would make that quadratic.
+    const char* newline = nullptr;
     while (at < end) {
-        const char* line_end = std::find_if(at, end, [](char c) { return c == '\n' || c == '\r'; });
+        if (newline < at) {
+            const void* found = std::memchr(at, '\n', std::size_t(end - at));
+            newline = found ? static_cast<const char*>(found) : end;
+        }
+        const void* cr = std::memchr(at, '\r', std::size_t(newline - at));
+        const char* const line_end = cr ? static_cast<const char*>(cr) : newline;
         if (line_end == end) {
             m_partial.append(at, end);
             return;
@@ -61,38 +70,56 @@ void ObjTextCheck::scan_line(const char* begin, const char* end) {
     ++m_line;
     const char* i = begin;
     while (i < end && (*i == ' ' || *i == '\t')) ++i;
-    if (!(i + 1 < end && *i == 'f' && (i[1] == ' ' || i[1] == '\t'))) return;
+    if (end - i < 2) return;
+    auto blank_or_tab = [](char c) { return c == ' ' || c == '\t'; };
+    if (*i == 'v') {
+        // As tinyobjloader tells them apart: "v ", "vn ", "vt ".
+        if (blank_or_tab(i[1])) {
+            ++m_counts.positions;
+        } else if (end - i > 2 && blank_or_tab(i[2])) {
+            if (i[1] == 'n') ++m_counts.normals;
+            if (i[1] == 't') ++m_counts.uvs;
+        }
+        return;
+    }
+    if (!(*i == 'f' && blank_or_tab(i[1]))) return;
     auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
     auto problem = [&](const std::string& why) { m_face_problem = "line " + std::to_string(m_line) + ": " + why; };
     std::size_t vertices = 0;
+    auto is_digit = [](char c) { return c >= '0' && c <= '9'; };
+    constexpr std::uint64_t kIntMax = 2147483647;
+    // v, v/t, v//n, v/t/n, as tinyobjloader reads them (atoi): every number
+    // written must fit an int and not be 0, and what is not a number reads
+    // as 0. A texture or normal index may be left out; the vertex may not.
+    // Parts after the third are not read. OBJ has no comments after a
+    // face's indices.
     for (i += 1; i < end;) {
         while (i < end && blank(*i)) ++i;
         if (i >= end) break;
         ++vertices;
-        const char* const corner_end = std::find_if(i, end, blank);
-        // v, v/t, v//n, v/t/n, as tinyobjloader reads them (atoi): every
-        // number written must fit an int and not be 0, and what is not a
-        // number reads as 0. A texture or normal index may be left out; the
-        // vertex may not. OBJ has no comments after a face's indices.
-        const char* part = i;
-        for (int k = 0; k < 3 && part <= corner_end; ++k) {
-            const char* const part_end = std::find(part, corner_end, '/');
-            if (k == 0 || part_end > part) {
-                const char* c = part;
-                if (c < part_end && (*c == '-' || *c == '+')) ++c;
-                const char* const digits_begin = c;
-                double value = 0.0;
-                for (; c < part_end && *c >= '0' && *c <= '9'; ++c) value = value * 10.0 + (*c - '0');
-                if (c == digits_begin)
-                    return problem("face index \"" + std::string(part, part_end) + "\" is not a number");
-                if (value > 2147483647.0)
-                    return problem("face index " + std::string(digits_begin, c) + " is out of range");
-                if (value == 0.0) return problem("face index 0 (OBJ counts from 1)");
+        for (int k = 0; k < 3; ++k) {
+            const char* const part = i;
+            if (i < end && (*i == '-' || *i == '+')) ++i;
+            const char* const digits_begin = i;
+            // Kept exact up to past INT_MAX, then no longer grown.
+            std::uint64_t value = 0;
+            for (; i < end && is_digit(*i); ++i)
+                if (value <= kIntMax) value = value * 10 + std::uint64_t(*i - '0');
+            const char* const digits_end = i;
+            while (i < end && !blank(*i) && *i != '/') ++i;
+            if (k == 0 || i > part) {
+                if (digits_end == digits_begin)
+                    return problem("face index \"" + std::string(part, i) + "\" is not a number");
+                if (value > kIntMax)
+                    return problem("face index " + std::string(digits_begin, digits_end) + " is out of range");
+                if (value == 0) return problem("face index 0 (OBJ counts from 1)");
             }
-            part = part_end + 1;
+            if (i == end || *i != '/') break;
+            ++i;
         }
-        i = corner_end;
+        while (i < end && !blank(*i)) ++i;
     }
+    if (vertices >= 3) m_counts.triangles += vertices - 2;
     if (vertices > kMaxFaceVertices)
         problem("a face of " + std::to_string(vertices) + " vertices (lancer takes at most " +
                 std::to_string(kMaxFaceVertices) + " per face; split it into smaller polygons)");

@@ -34,6 +34,15 @@ class ObjTextCheck {
     // The first face line tinyobjloader would misread ("line N: why"), or empty.
     const std::string& face_problem() const { return m_face_problem; }
 
+    // What the lines written declare, for reserving the mesh before it is
+    // read: a million-triangle mesh grown as read copied its arrays and
+    // faulted their pages in twice. Estimates only (a polygon with no area
+    // gives fewer triangles than its corners less two).
+    struct Counts {
+        std::size_t positions = 0, normals = 0, uvs = 0, triangles = 0;
+    };
+    const Counts& counts() const { return m_counts; }
+
   private:
     void scan_line(const char* begin, const char* end);
 
@@ -43,6 +52,7 @@ class ObjTextCheck {
     std::string m_partial;       // a line not yet ended
     std::size_t m_line = 0;      // lines scanned
     std::string m_face_problem;  // the first, as "line N: why"
+    Counts m_counts;
 };
 
 }  // namespace lancer::parse

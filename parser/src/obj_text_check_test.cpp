@@ -75,6 +75,23 @@ TEST(ObjTextCheck, BinaryAndUtf16AreFoundAcrossPieces) {
     expect_same_in_every_cut(std::string("\xFF\xFEv\0 \0", 6), {"is UTF-16 text; save it as UTF-8 or ASCII", ""});
 }
 
+// The mesh is reserved from these counts before tinyobjloader reads it.
+TEST(ObjTextCheck, CountsEachKindOfLineAsTinyobjloaderTellsThemApart) {
+    const std::string text =
+        "v 0 0 0\r\n\tv 1 0 0\rv\t0 1 0\nvt 0 0\nvn 0 0 1\nvp 1 2\nvertex 1\nv\n"
+        "f 1 2 3\nf 1 2 3 1/1\n f 1 2\nfo 1 2 3\nusemtl v\n# v 1 1 1\nf 1 2 3 1 2 3";
+    for (std::size_t piece = 1; piece <= text.size(); ++piece) {
+        ObjTextCheck check;
+        for (std::size_t at = 0; at < text.size(); at += piece)
+            check.feed(text.data() + at, std::min(piece, text.size() - at));
+        check.finish();
+        EXPECT_EQ(check.counts().positions, 3u) << "pieces of " << piece;
+        EXPECT_EQ(check.counts().uvs, 1u) << "pieces of " << piece;
+        EXPECT_EQ(check.counts().normals, 1u) << "pieces of " << piece;
+        EXPECT_EQ(check.counts().triangles, 1u + 2u + 4u) << "pieces of " << piece;
+    }
+}
+
 TEST(ObjTextCheck, AFaceOfTooManyVertices) {
     std::string face = "f";
     for (std::size_t i = 0; i <= ObjTextCheck::kMaxFaceVertices; ++i) face += " 1";
