@@ -135,23 +135,6 @@ void EmbreeScene::build() {
                                  primitive);
     }
 
-    m_faces_are_triangles.assign(data.instances.size(), 0);
-    std::map<const MeshData*, bool> identity_of_mesh;
-    for (std::uint32_t index = 0; index < data.instances.size(); ++index) {
-        const Instance& instance = data.instances[index];
-        if (instance.kind != ShapeKind::Mesh || !instance.mesh) continue;
-        const MeshData& mesh = *instance.mesh;
-        auto [found, inserted] = identity_of_mesh.try_emplace(&mesh, true);
-        if (inserted) {
-            for (std::uint32_t t = 0; t < mesh.face_of_triangle.size(); ++t)
-                if (mesh.face_of_triangle[t] != t) {
-                    found->second = false;
-                    break;
-                }
-        }
-        m_faces_are_triangles[index] = found->second ? 1 : 0;
-    }
-
     // Meshes: world-space geometry when used once, instanced otherwise.
     for (std::uint32_t index = 0; index < data.instances.size(); ++index) {
         const Instance& instance = data.instances[index];
@@ -160,8 +143,8 @@ void EmbreeScene::build() {
         if (mesh.indices.empty()) continue;
         if (instance.mesh_in_world) {
             attach(make_triangles(mesh, instance.world_positions), GeometryEntry{nullptr, index});
-            if (m_faces_are_triangles[index] && mesh.normals.empty() && mesh.uvs.empty() &&
-                instance.face_materials.empty() && instance.interior_material == nullptr) {
+            if (mesh.normals.empty() && mesh.uvs.empty() && instance.face_materials.empty() &&
+                instance.interior_material == nullptr) {
                 const unsigned id = unsigned(m_geometries.size() - 1);
                 if (m_plain_triangles.size() <= id) m_plain_triangles.resize(id + 1);
                 m_plain_triangles[id] = PlainTriangles{instance.world_positions.data(),

@@ -213,8 +213,8 @@ class EmbreeScene final : public RenderScene {
     void complete_instance_hit(std::uint32_t index, std::uint32_t leaf, const Ray& ray, float t, int face,
                                Hit& hit) const;
     // `ray_direction` decides POV's interior_texture.
-    void complete_mesh_hit(const Instance& instance, bool faces_are_triangles, std::uint32_t primitive, float b1,
-                           float b2, const Vec3& ray_direction, Hit& hit) const;
+    void complete_mesh_hit(const Instance& instance, std::uint32_t primitive, float b1, float b2,
+                           const Vec3& ray_direction, Hit& hit) const;
 
     std::unique_ptr<SceneData> m_data;
     RTCDevice m_device = nullptr;
@@ -235,8 +235,6 @@ class EmbreeScene final : public RenderScene {
     // Instance::blocks_all_light): any, and any mesh.
     bool m_has_see_through_caster = false;
     bool m_has_see_through_mesh = false;
-    // By instance: a mesh whose triangle i is its face i (no polygons split).
-    std::vector<std::uint8_t> m_faces_are_triangles;
     // By top-level geometry id: plain world meshes (see PlainTriangles).
     std::vector<PlainTriangles> m_plain_triangles;
     // The emitter a hit on `instance` with `material` reports.

@@ -186,11 +186,10 @@ void EmbreeScene::complete_analytic_hit(const Instance& instance, const Ray& ray
     hit.primitive_id = std::uint32_t(face);
 }
 
-void EmbreeScene::complete_mesh_hit(const Instance& instance, bool faces_are_triangles, std::uint32_t primitive,
-                                    float u, float v, const Vec3& ray_direction, Hit& hit) const {
+void EmbreeScene::complete_mesh_hit(const Instance& instance, std::uint32_t primitive, float u, float v,
+                                    const Vec3& ray_direction, Hit& hit) const {
     const MeshData& mesh = *instance.mesh;
-    // Skipping the lookup when triangle i is face i saves one more cold load.
-    const std::uint32_t face_index = faces_are_triangles ? primitive : mesh.face_of_triangle[primitive];
+    const std::uint32_t face_index = primitive;  // triangle i is face i (MeshData::indices)
     const std::vector<float>& positions = traced_positions(instance);
     const float* vertices = positions.data();
     const std::uint32_t* corners = &mesh.indices[3 * primitive];
@@ -344,8 +343,7 @@ bool EmbreeScene::complete_bvh_hit(const Ray& ray, const EmbreeHit& found, Hit& 
     hit = Hit{};
     hit.t = found.tfar;
     const std::uint32_t index = entry.instance;
-    complete_mesh_hit(m_data->instances[index], m_faces_are_triangles[index] != 0, found.primitive, found.u, found.v,
-                      ray.direction, hit);
+    complete_mesh_hit(m_data->instances[index], found.primitive, found.u, found.v, ray.direction, hit);
     const Instance& instance = m_data->instances[index];
     hit.object_id = index;
     hit.interior_id = instance.interior_id;

@@ -39,8 +39,7 @@ struct MeshData {
     std::vector<sg::Vec2> uvs;
     std::vector<sg::TriangleMesh::Face> faces;
     std::vector<float> object_positions;  // xyz per vertex, plus one padding float
-    std::vector<std::uint32_t> indices;   // three per triangle
-    std::vector<std::uint32_t> face_of_triangle;
+    std::vector<std::uint32_t> indices;   // three per triangle; triangle i is faces[i]
     // POV's inside_vector, in world space (POV-Ray never transforms it):
     // only with one has the mesh an inside (the camera's interiors).
     std::optional<sg::Vec3> inside_vector;

@@ -591,6 +591,7 @@ class Builder {
         mesh->object_positions.push_back(0.0f);  // Embree reads 16 bytes per vertex
         mesh->inside_vector = ref->inside_vector;
         const int count = int(ref->positions.size());
+        mesh->indices.reserve(3 * ref->faces.size());
         for (std::uint32_t f = 0; f < ref->faces.size(); ++f) {
             const auto& face = ref->faces[f];
             for (int k = 0; k < 3; ++k)
@@ -599,7 +600,6 @@ class Builder {
                                                    std::to_string(face.position[k]) + " but the mesh has " +
                                                    std::to_string(count) + " vertices");
             for (int k = 0; k < 3; ++k) mesh->indices.push_back(std::uint32_t(face.position[k]));
-            mesh->face_of_triangle.push_back(f);
         }
         const MeshData* result = mesh.get();
         m_data->meshes.push_back(std::move(mesh));
