@@ -87,6 +87,11 @@ check=$(measure "$lancer" check big.pov)
 check_obj=$(measure "$lancer" check obj.pov)
 check_obj_full=$(measure "$lancer" check obj_full.pov)
 render=$(measure "$lancer" render big.pov -o lancer.png --width 1280 --height 960 -i raycast -q)
+# A 1x1 render is the "parse + evaluate + build": all but the tracing.
+build=$(measure "$lancer" render big.pov -o lancer.png --width 1 --height 1 -i raycast -q)
+build_obj=$(measure "$lancer" render obj.pov -o lancer.png --width 1 --height 1 -i raycast -q)
+build_obj_full=$(measure "$lancer" render obj_full.pov -o lancer.png --width 1 --height 1 -i raycast -q)
+render_obj_full=$(measure "$lancer" render obj_full.pov -o lancer.png --width 1280 --height 960 -i raycast -q)
 empty_scene=$(printf '#version 3.7;\ncamera { location -z look_at 0 }\n' > empty.pov; measure "$lancer" check empty.pov)
 if command -v povray > /dev/null; then
   pov=$(measure povray +Ibig.pov +Opov.png +W1280 +H960 -A -D -V +WT2 -GA)
@@ -103,6 +108,10 @@ row "lancer check (mesh2)" "$check"
 row "lancer check (OBJ)" "$check_obj"
 row "lancer check (OBJ with vt and vn)" "$check_obj_full"
 row "lancer check, empty scene" "$empty_scene"
+row "lancer render raycast 1x1 (mesh2)" "$build"
+row "lancer render raycast 1x1 (OBJ)" "$build_obj"
+row "lancer render raycast 1x1 (OBJ with vt and vn)" "$build_obj_full"
+row "lancer render raycast 1280x960 (OBJ with vt and vn)" "$render_obj_full"
 row "lancer render raycast 1280x960" "$render"
 [ -n "$pov" ] && row "povray 1280x960 (+WT2 -A)" "$pov"
 if [ -n "$pov" ]; then
