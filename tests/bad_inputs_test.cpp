@@ -323,6 +323,18 @@ TEST_F(BadFiles, ObjLargerThanTheLimit) {
     EXPECT_NE(all_text(result).find("too large"), std::string::npos) << all_text(result);
 }
 
+// The scene file itself is read as an include is: under the same limit.
+TEST_F(BadFiles, SceneFileLargerThanTheLimit) {
+    ParseOptions options;
+    options.max_file_bytes = 10;
+    ParseResult result = parse("sphere { 0, 1 }\n", options);
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(all_text(result).find("scene file \""), std::string::npos) << all_text(result);
+    EXPECT_NE(all_text(result).find("is too large: 16 bytes (the limit is 10)"), std::string::npos) << all_text(result);
+    options.max_file_bytes = 16;
+    EXPECT_TRUE(parse("sphere { 0, 1 }\n", options).ok());
+}
+
 // ---------------------------------------------------- images, through render
 
 struct BadImages : BadFiles {

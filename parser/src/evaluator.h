@@ -87,8 +87,10 @@ class Evaluator {
     using Kind = Parser::token_kind_type;
 
     explicit Evaluator(const ParseOptions& options);
-    ParseResult run(const std::string& text, const std::string& label, const std::string& path,
-                    const std::string& folder);
+    ParseResult run(std::string text, const std::string& label, const std::string& path, const std::string& folder);
+    // The scene file at `path`, read as an include is (read_file): straight
+    // into one string of its size, within ParseOptions::max_file_bytes.
+    ParseResult run_file(const std::string& path, const std::string& folder);
 
     sg::SceneGraph& scene() { return m_scene; }
     const ParseOptions& options() const { return m_options; }
@@ -534,6 +536,9 @@ class Evaluator {
     // True when the file is no larger than max_file_bytes (or its size is
     // unknown); else false with a located error.
     bool within_file_limit(const std::string& path, const sg::SourceLocation& where, const std::string& what);
+    // run() and run_file(): `text` null reads the file at `path`.
+    ParseResult run_text(std::string* text, const std::string& label, const std::string& path,
+                         const std::string& folder);
     // Reads a whole file after checking its size against max_file_bytes;
     // false with a located error when it cannot.
     bool read_file(const std::string& path, const sg::SourceLocation& where, const std::string& what,

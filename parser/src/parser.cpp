@@ -3,7 +3,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "evaluator.h"
 #include "parse_stack.h"
@@ -25,8 +24,17 @@ bool is_identifier(const std::string& name) {
 
 }  // namespace
 
-ParseResult Evaluator::run(const std::string& text, const std::string& label, const std::string& path,
+ParseResult Evaluator::run(std::string text, const std::string& label, const std::string& path,
                            const std::string& folder) {
+    return run_text(&text, label, path, folder);
+}
+
+ParseResult Evaluator::run_file(const std::string& path, const std::string& folder) {
+    return run_text(nullptr, path, path, folder);
+}
+
+ParseResult Evaluator::run_text(std::string* text, const std::string& label, const std::string& path,
+                                const std::string& folder) {
     m_scene.main_file = path.empty() ? label : path;
     init_safe_roots(folder);
     if (m_options.image_size_from_command_line) {
@@ -45,7 +53,11 @@ ParseResult Evaluator::run(const std::string& text, const std::string& label, co
         store(declaration.name,
               number ? Value::number(*number) : Value::string(std::get<std::string>(declaration.value)), false, {});
     }
-    if (push_file(text, label, path, folder, {})) {
+    std::string read;
+    if (text == nullptr &&
+        read_file(path, sg::SourceLocation{std::make_shared<const std::string>(path), 0, 0}, "scene file", read))
+        text = &read;
+    if (text != nullptr && push_file(std::move(*text), label, path, folder, {})) {
         m_pending.push_back(Pending{
             nullptr, std::make_shared<const Symbol>(Parser::token::TOK_START_SCENE, SourceRange{}), nullptr, 0, false});
         Parser parser(*this);
@@ -100,12 +112,10 @@ ParseResult parse_scene_file(const std::string& path, const ParseOptions& option
         result.diagnostics.push_back(diagnostic);
         return result;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
     ParseResult result;
     parse::run_on_parse_stack([&] {
         parse::Evaluator evaluator(options);
-        result = evaluator.run(text.str(), path, path, fs::path(path).parent_path().string());
+        result = evaluator.run_file(path, fs::path(path).parent_path().string());
     });
     return result;
 }
