@@ -77,6 +77,8 @@ camera { location <0, 3, -3> look_at 0 }
 light_source { <3, 5, -4> color rgb 1 }
 object { BigMesh pigment { rgb <0.8, 0.6, 0.4> } }
 EOF
+# The same mesh written in the scene file itself, as some exporters do.
+{ echo '#version 3.7;'; cat "$work/big.inc"; sed -n '/^camera/,$p' "$work/big.pov"; } > "$work/big_main.pov"
 triangles=$((2 * (columns - 1) * (rows - 1)))
 echo "scene: $triangles triangles, include of $(du -m "$work/big.inc" | cut -f1) MB; $runs runs each, medians"
 
@@ -84,6 +86,7 @@ echo "scene: $triangles triangles, include of $(du -m "$work/big.inc" | cut -f1)
 
 cd "$work"
 check=$(measure "$lancer" check big.pov)
+check_main=$(measure "$lancer" check big_main.pov)
 check_obj=$(measure "$lancer" check obj.pov)
 check_obj_full=$(measure "$lancer" check obj_full.pov)
 render=$(measure "$lancer" render big.pov -o lancer.png --width 1280 --height 960 -i raycast -q)
@@ -105,6 +108,7 @@ row() {
   printf '| %s | %s | %s | %d | %d |\n' "$1" "$2" "$3" $(($4 / 1024)) $(($4 * 1024 / triangles))
 }
 row "lancer check (mesh2)" "$check"
+row "lancer check (mesh2 in the scene file)" "$check_main"
 row "lancer check (OBJ)" "$check_obj"
 row "lancer check (OBJ with vt and vn)" "$check_obj_full"
 row "lancer check, empty scene" "$empty_scene"
