@@ -1,13 +1,18 @@
 // Bad OBJ, MTL and image files, and the resource limits: each gets a located
 // error (or a warning and a sensible result), never a crash, a hang or a
 // partial image. The files are generated in a temporary folder.
+#include <sys/stat.h>
+
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iterator>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -333,6 +338,24 @@ TEST_F(BadFiles, SceneFileLargerThanTheLimit) {
     EXPECT_NE(all_text(result).find("is too large: 16 bytes (the limit is 10)"), std::string::npos) << all_text(result);
     options.max_file_bytes = 16;
     EXPECT_TRUE(parse("sphere { 0, 1 }\n", options).ok());
+}
+
+// A named pipe as the scene: read from the one opening. Opened a second
+// time, it waited for a writer that had already written and gone.
+TEST_F(BadFiles, SceneFromANamedPipeIsReadOnce) {
+    const std::string pipe = (temp.path() / "scene.pov").string();
+    ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
+    std::thread writer([&] { std::ofstream(pipe) << "sphere { 0, 1 }\n"; });
+    std::future<ParseResult> result = std::async(std::launch::async, [&] { return parse_scene_file(pipe); });
+    writer.join();
+    if (result.wait_for(std::chrono::seconds(20)) != std::future_status::ready) {
+        std::ofstream{pipe};  // a second writer lets the stuck reading end
+        result.wait();
+        FAIL() << "the scene's reading waited for a second writer";
+    }
+    const ParseResult parsed = result.get();
+    ASSERT_TRUE(parsed.ok()) << all_text(parsed);
+    EXPECT_EQ(parsed.scene->objects.size(), 1u);
 }
 
 // ---------------------------------------------------- images, through render

@@ -25,6 +25,7 @@
 // read, a value never depends on when bison decides to reduce.
 #pragma once
 
+#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -88,9 +89,11 @@ class Evaluator {
 
     explicit Evaluator(const ParseOptions& options);
     ParseResult run(std::string text, const std::string& label, const std::string& path, const std::string& folder);
-    // The scene file at `path`, read as an include is (read_file): straight
-    // into one string of its size, within ParseOptions::max_file_bytes.
-    ParseResult run_file(const std::string& path, const std::string& folder);
+    // The scene file at `path`, open as `file`, read as an include is
+    // (read_file): straight into one string of its size, within
+    // ParseOptions::max_file_bytes. Read from `file`, not opened again: a
+    // named pipe opened a second time waits for a writer that has gone.
+    ParseResult run_file(std::ifstream& file, const std::string& path, const std::string& folder);
 
     sg::SceneGraph& scene() { return m_scene; }
     const ParseOptions& options() const { return m_options; }
@@ -536,13 +539,16 @@ class Evaluator {
     // True when the file is no larger than max_file_bytes (or its size is
     // unknown); else false with a located error.
     bool within_file_limit(const std::string& path, const sg::SourceLocation& where, const std::string& what);
-    // run() and run_file(): `text` null reads the file at `path`.
-    ParseResult run_text(std::string* text, const std::string& label, const std::string& path,
+    // run() and run_file(): `text` null reads `file`, the one at `path`.
+    ParseResult run_text(std::string* text, std::ifstream* file, const std::string& label, const std::string& path,
                          const std::string& folder);
     // Reads a whole file after checking its size against max_file_bytes;
     // false with a located error when it cannot.
     bool read_file(const std::string& path, const sg::SourceLocation& where, const std::string& what,
                    std::string& text);
+    // read_file for the file at `path` already open as `in`.
+    bool read_open_file(std::ifstream& in, const std::string& path, const sg::SourceLocation& where,
+                        const std::string& what, std::string& text);
     // Counts triangles against max_triangles; false (error reported once) past it.
     bool add_triangles(long count, const sg::SourceLocation& where);
 

@@ -127,13 +127,18 @@ bool Evaluator::within_file_limit(const std::string& path, const sg::SourceLocat
 bool Evaluator::read_file(const std::string& path, const sg::SourceLocation& where, const std::string& what,
                           std::string& text) {
     if (!within_file_limit(path, where, what)) return false;
-    std::error_code ec;
-    auto size = fs::file_size(path, ec);
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         error(where, "cannot read " + what + " \"" + path + "\"");
         return false;
     }
+    return read_open_file(in, path, where, what, text);
+}
+
+bool Evaluator::read_open_file(std::ifstream& in, const std::string& path, const sg::SourceLocation& where,
+                               const std::string& what, std::string& text) {
+    std::error_code ec;
+    const auto size = fs::file_size(path, ec);
     // Read straight into a string of the file's size (a stream copy would
     // grow and copy it several times), then whatever follows; the limit
     // holds also for what has no size to ask first (a pipe, a device).

@@ -26,15 +26,15 @@ bool is_identifier(const std::string& name) {
 
 ParseResult Evaluator::run(std::string text, const std::string& label, const std::string& path,
                            const std::string& folder) {
-    return run_text(&text, label, path, folder);
+    return run_text(&text, nullptr, label, path, folder);
 }
 
-ParseResult Evaluator::run_file(const std::string& path, const std::string& folder) {
-    return run_text(nullptr, path, path, folder);
+ParseResult Evaluator::run_file(std::ifstream& file, const std::string& path, const std::string& folder) {
+    return run_text(nullptr, &file, path, path, folder);
 }
 
-ParseResult Evaluator::run_text(std::string* text, const std::string& label, const std::string& path,
-                                const std::string& folder) {
+ParseResult Evaluator::run_text(std::string* text, std::ifstream* file, const std::string& label,
+                                const std::string& path, const std::string& folder) {
     m_scene.main_file = path.empty() ? label : path;
     init_safe_roots(folder);
     if (m_options.image_size_from_command_line) {
@@ -54,9 +54,11 @@ ParseResult Evaluator::run_text(std::string* text, const std::string& label, con
               number ? Value::number(*number) : Value::string(std::get<std::string>(declaration.value)), false, {});
     }
     std::string read;
-    if (text == nullptr &&
-        read_file(path, sg::SourceLocation{std::make_shared<const std::string>(path), 0, 0}, "scene file", read))
-        text = &read;
+    if (text == nullptr) {
+        const sg::SourceLocation where{std::make_shared<const std::string>(path), 0, 0};
+        if (within_file_limit(path, where, "scene file") && read_open_file(*file, path, where, "scene file", read))
+            text = &read;
+    }
     if (text != nullptr && push_file(std::move(*text), label, path, folder, {})) {
         m_pending.push_back(Pending{
             nullptr, std::make_shared<const Symbol>(Parser::token::TOK_START_SCENE, SourceRange{}), nullptr, 0, false});
@@ -115,7 +117,7 @@ ParseResult parse_scene_file(const std::string& path, const ParseOptions& option
     ParseResult result;
     parse::run_on_parse_stack([&] {
         parse::Evaluator evaluator(options);
-        result = evaluator.run_file(path, fs::path(path).parent_path().string());
+        result = evaluator.run_file(in, path, fs::path(path).parent_path().string());
     });
     return result;
 }
