@@ -8,6 +8,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <new>
+#include <stdexcept>
 
 namespace lancer::parse {
 
@@ -29,9 +31,18 @@ inline void advise_huge_pages(const void* data, std::size_t bytes) {
 #endif
 }
 
+// Room for `count` elements, reserved ahead to spare the copies and page
+// faults of growing: an estimate, so where the system refuses that much
+// address space, the vector is left to grow as it is filled.
 template <typename Vector>
 void reserve_on_huge_pages(Vector& v, std::size_t count) {
-    v.reserve(count);
+    try {
+        v.reserve(count);
+    } catch (const std::bad_alloc&) {
+        return;
+    } catch (const std::length_error&) {
+        return;
+    }
     advise_huge_pages(v.data() + v.size(), (v.capacity() - v.size()) * sizeof(*v.data()));
 }
 

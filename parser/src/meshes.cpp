@@ -459,7 +459,11 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
     reserve_on_huge_pages(mesh->positions, counts.positions);
     reserve_on_huge_pages(mesh->normals, counts.normals);
     reserve_on_huge_pages(mesh->uvs, counts.uvs);
-    reserve_on_huge_pages(mesh->faces, counts.triangles);
+    // Triangles and quads reserve what they make. A polygon of many corners
+    // may make few triangles (none without area, at 2 bytes a corner): it
+    // does not reserve more than twice the faces, nor past the scene's limit.
+    const auto triangle_budget = std::size_t(std::max(0L, m_options.max_triangles - m_triangles));
+    reserve_on_huge_pages(mesh->faces, std::min({counts.triangles, 2 * counts.faces, triangle_budget}));
     ObjFaceReader faces(*mesh);
     ObjMaterialReader materials(*this, found.parent_path(), faces);
     std::string obj_warning, obj_error;

@@ -32,7 +32,7 @@ void ObjTextCheck::feed(const char* data, std::size_t size) {
     // lone \r would make that quadratic.
     const char* newline = nullptr;
     while (at < end) {
-        if (newline < at) {
+        if (newline == nullptr || newline < at) {
             const void* found = std::memchr(at, '\n', std::size_t(end - at));
             newline = found ? static_cast<const char*>(found) : end;
         }
@@ -119,7 +119,10 @@ void ObjTextCheck::scan_line(const char* begin, const char* end) {
         }
         while (i < end && !blank(*i)) ++i;
     }
-    if (vertices >= 3) m_counts.triangles += vertices - 2;
+    if (vertices >= 3) {
+        ++m_counts.faces;
+        m_counts.triangles += vertices - 2;
+    }
     if (vertices > kMaxFaceVertices)
         problem("a face of " + std::to_string(vertices) + " vertices (lancer takes at most " +
                 std::to_string(kMaxFaceVertices) + " per face; split it into smaller polygons)");

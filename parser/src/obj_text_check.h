@@ -39,7 +39,9 @@ class ObjTextCheck {
     // faulted their pages in twice. Estimates only (a polygon with no area
     // gives fewer triangles than its corners less two).
     struct Counts {
-        std::size_t positions = 0, normals = 0, uvs = 0, triangles = 0;
+        std::size_t positions = 0, normals = 0, uvs = 0;
+        std::size_t faces = 0;      // of three or more vertices
+        std::size_t triangles = 0;  // each face's vertices less two
     };
     const Counts& counts() const { return m_counts; }
 

@@ -88,6 +88,7 @@ TEST(ObjTextCheck, CountsEachKindOfLineAsTinyobjloaderTellsThemApart) {
         EXPECT_EQ(check.counts().positions, 3u) << "pieces of " << piece;
         EXPECT_EQ(check.counts().uvs, 1u) << "pieces of " << piece;
         EXPECT_EQ(check.counts().normals, 1u) << "pieces of " << piece;
+        EXPECT_EQ(check.counts().faces, 3u) << "pieces of " << piece;
         EXPECT_EQ(check.counts().triangles, 1u + 2u + 4u) << "pieces of " << piece;
     }
 }
