@@ -91,12 +91,12 @@ void ObjTextCheck::scan_line(const char* begin, const char* end) {
     // v, v/t, v//n, v/t/n, as tinyobjloader reads them (atoi): every number
     // written must fit an int and not be 0, and what is not a number reads
     // as 0. A texture or normal index may be left out; the vertex may not.
-    // Parts after the third are not read. OBJ has no comments after a
-    // face's indices.
+    // OBJ has no comments after a face's indices.
     for (i += 1; i < end;) {
         while (i < end && blank(*i)) ++i;
         if (i >= end) break;
         ++vertices;
+        const char* const corner = i;
         for (int k = 0; k < 3; ++k) {
             const char* const part = i;
             if (i < end && (*i == '-' || *i == '+')) ++i;
@@ -115,9 +115,15 @@ void ObjTextCheck::scan_line(const char* begin, const char* end) {
                 if (value == 0) return problem("face index 0 (OBJ counts from 1)");
             }
             if (i == end || *i != '/') break;
+            // tinyobjloader reads what follows a third number's '/' as
+            // another corner, of vertex 0: say what is wrong with the text.
+            if (k == 2) {
+                while (i < end && !blank(*i)) ++i;
+                return problem("face corner \"" + std::string(corner, i) +
+                               "\" has more than three parts (OBJ writes v, v/vt, v//vn or v/vt/vn)");
+            }
             ++i;
         }
-        while (i < end && !blank(*i)) ++i;
     }
     if (vertices >= 3) {
         ++m_counts.faces;

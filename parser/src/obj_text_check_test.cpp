@@ -60,6 +60,15 @@ TEST(ObjTextCheck, IndicesOfZeroAndWordsAreFoundWithTheirLine) {
     expect_same_in_every_cut(head + "f /1 2 3\n", {"", "line 5: face index \"\" is not a number"});
 }
 
+TEST(ObjTextCheck, ACornerOfFourPartsIsNamed) {
+    const std::string head = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n";
+    const std::string why = "\" has more than three parts (OBJ writes v, v/vt, v//vn or v/vt/vn)";
+    expect_same_in_every_cut(head + "f 1 2/1/1/1 3\n", {"", "line 6: face corner \"2/1/1/1" + why});
+    expect_same_in_every_cut(head + "f 1/1//\t2 3\n", {"", "line 6: face corner \"1/1//" + why});
+    expect_same_in_every_cut(head + "f 1 2 3//1/\r\n", {"", "line 6: face corner \"3//1/" + why});
+    expect_same_in_every_cut(head + "f 1//1 2/1 3/1/1\n", {"", ""});
+}
+
 TEST(ObjTextCheck, AnEmptyPieceChangesNothing) {
     ObjTextCheck check;
     for (const char* piece : {"v 0 0 0\r", "", "\nf 1 2 0\n"}) check.feed(piece, std::string(piece).size());
