@@ -119,6 +119,36 @@ double lattice_sum(const glm::dvec3& p) {
     const LatticeCell c = lattice_cell(p);
     const CornerStarts s = corner_starts(c);
     const double gx = c.fx - 1.0, gy = c.fy - 1.0, gz = c.fz - 1.0;
+#if defined(__SSE2__)
+    // The lower and upper corner on x side by side (SSE2: each lane rounds
+    // as corner_term does, multiply and add apart), then the eight terms
+    // summed one by one in POV's order, so the sum is the scalar one's.
+    const __m128d half = _mm_set1_pd(0.5);
+    const __m128d dx = _mm_set_pd(gx, c.fx);
+    const auto pair = [&](int lower, int upper, double w_lower, double w_upper, double dy, double dz) {
+        const double* a = &kLatticeValues[lower];
+        const double* b = &kLatticeValues[upper];
+        const __m128d a01 = _mm_loadu_pd(a), a23 = _mm_loadu_pd(a + 2);
+        const __m128d b01 = _mm_loadu_pd(b), b23 = _mm_loadu_pd(b + 2);
+        __m128d term =
+            _mm_add_pd(_mm_mul_pd(_mm_unpacklo_pd(a01, b01), half), _mm_mul_pd(_mm_unpackhi_pd(a01, b01), dx));
+        term = _mm_add_pd(term, _mm_mul_pd(_mm_unpacklo_pd(a23, b23), _mm_set1_pd(dy)));
+        term = _mm_add_pd(term, _mm_mul_pd(_mm_unpackhi_pd(a23, b23), _mm_set1_pd(dz)));
+        return _mm_mul_pd(_mm_set_pd(w_upper, w_lower), term);
+    };
+    const __m128d y0z0 = pair(s.at[0][0][0], s.at[1][0][0], c.w_x0y0 * c.w_z0, c.w_x1y0 * c.w_z0, c.fy, c.fz);
+    const __m128d y1z0 = pair(s.at[0][1][0], s.at[1][1][0], c.w_x0y1 * c.w_z0, c.w_x1y1 * c.w_z0, gy, c.fz);
+    const __m128d y0z1 = pair(s.at[0][0][1], s.at[1][0][1], c.w_x0y0 * c.w_z1, c.w_x1y0 * c.w_z1, c.fy, gz);
+    const __m128d y1z1 = pair(s.at[0][1][1], s.at[1][1][1], c.w_x0y1 * c.w_z1, c.w_x1y1 * c.w_z1, gy, gz);
+    alignas(16) double terms[8];
+    _mm_store_pd(terms, y0z0);
+    _mm_store_pd(terms + 2, y1z0);
+    _mm_store_pd(terms + 4, y0z1);
+    _mm_store_pd(terms + 6, y1z1);
+    double sum = terms[0];
+    for (int i = 1; i < 8; ++i) sum += terms[i];
+    return sum;
+#else
     double sum = corner_term(s.at[0][0][0], c.w_x0y0 * c.w_z0, c.fx, c.fy, c.fz);
     sum += corner_term(s.at[1][0][0], c.w_x1y0 * c.w_z0, gx, c.fy, c.fz);
     sum += corner_term(s.at[0][1][0], c.w_x0y1 * c.w_z0, c.fx, gy, c.fz);
@@ -128,6 +158,7 @@ double lattice_sum(const glm::dvec3& p) {
     sum += corner_term(s.at[0][1][1], c.w_x0y1 * c.w_z1, c.fx, gy, gz);
     sum += corner_term(s.at[1][1][1], c.w_x1y1 * c.w_z1, gx, gy, gz);
     return sum;
+#endif
 }
 
 double clamp_unit(double value) {
