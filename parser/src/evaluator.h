@@ -26,6 +26,7 @@
 #pragma once
 
 #include <fstream>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -539,9 +540,10 @@ class Evaluator {
     // True when the file is no larger than max_file_bytes (or its size is
     // unknown); else false with a located error.
     bool within_file_limit(const std::string& path, const sg::SourceLocation& where, const std::string& what);
-    // run() and run_file(): `text` null reads `file`, the one at `path`.
-    ParseResult run_text(std::string* text, std::ifstream* file, const std::string& label, const std::string& path,
-                         const std::string& folder);
+    // run() and run_file(), given how to get the main file's text (false:
+    // it could not be read, and an error says why).
+    ParseResult run_with(const std::function<bool(std::string&)>& read_text, const std::string& label,
+                         const std::string& path, const std::string& folder);
     // Reads a whole file after checking its size against max_file_bytes;
     // false with a located error when it cannot.
     bool read_file(const std::string& path, const sg::SourceLocation& where, const std::string& what,

@@ -26,14 +26,25 @@ bool is_identifier(const std::string& name) {
 
 ParseResult Evaluator::run(std::string text, const std::string& label, const std::string& path,
                            const std::string& folder) {
-    return run_text(&text, nullptr, label, path, folder);
+    return run_with(
+        [&](std::string& read) {
+            read = std::move(text);
+            return true;
+        },
+        label, path, folder);
 }
 
 ParseResult Evaluator::run_file(std::ifstream& file, const std::string& path, const std::string& folder) {
-    return run_text(nullptr, &file, path, path, folder);
+    const sg::SourceLocation where{std::make_shared<const std::string>(path), 0, 0};
+    return run_with(
+        [&](std::string& read) {
+            return within_file_limit(path, where, "scene file") &&
+                   read_open_file(file, path, where, "scene file", read);
+        },
+        path, path, folder);
 }
 
-ParseResult Evaluator::run_text(std::string* text, std::ifstream* file, const std::string& label,
+ParseResult Evaluator::run_with(const std::function<bool(std::string&)>& read_text, const std::string& label,
                                 const std::string& path, const std::string& folder) {
     m_scene.main_file = path.empty() ? label : path;
     init_safe_roots(folder);
@@ -53,13 +64,8 @@ ParseResult Evaluator::run_text(std::string* text, std::ifstream* file, const st
         store(declaration.name,
               number ? Value::number(*number) : Value::string(std::get<std::string>(declaration.value)), false, {});
     }
-    std::string read;
-    if (text == nullptr) {
-        const sg::SourceLocation where{std::make_shared<const std::string>(path), 0, 0};
-        if (within_file_limit(path, where, "scene file") && read_open_file(*file, path, where, "scene file", read))
-            text = &read;
-    }
-    if (text != nullptr && push_file(std::move(*text), label, path, folder, {})) {
+    std::string text;
+    if (read_text(text) && push_file(std::move(text), label, path, folder, {})) {
         m_pending.push_back(Pending{
             nullptr, std::make_shared<const Symbol>(Parser::token::TOK_START_SCENE, SourceRange{}), nullptr, 0, false});
         Parser parser(*this);
