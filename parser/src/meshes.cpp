@@ -9,11 +9,11 @@
 #include <tiny_obj_loader.h>
 
 #include "evaluator.h"
-#include "file_prefix.h"
 #include "huge_pages.h"
 #include "number_limits.h"
 #include "obj_faces.h"
 #include "obj_text_check.h"
+#include "obj_text_without_faces.h"
 #include "polygon_triangulation.h"
 
 namespace lancer::parse {
@@ -416,10 +416,11 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
     mesh->source = found.string();
 
     // The text is checked first (obj_text_check.h), then read by
-    // tinyobjloader, each from the file a piece at a time: the file (a
-    // regular one, as find_file found it) is read twice rather than held
-    // whole, the second time no further than the first, and a file that
-    // changed between the two is an error.
+    // tinyobjloader, its face lines by lancer (obj_text_without_faces.h),
+    // each from the file a piece at a time: the file (a regular one, as
+    // find_file found it) is read twice rather than held whole, the second
+    // time no further than the first, and a file that changed between the
+    // two is an error.
     ObjTextCheck check;
     auto stamp = [&] {
         std::error_code ignored;
@@ -439,7 +440,8 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         }
         check.feed(piece.data(), std::size_t(in.gcount()));
     }
-    FilePrefix obj_file(found, checked);
+    ObjFaceReader faces(*mesh);
+    ObjTextWithoutFaces obj_file(found, checked, faces);
     if (in.bad() || !obj_file.is_open()) {
         error(where.begin, "cannot read OBJ file \"" + found.string() + "\"");
         return shape;
@@ -464,7 +466,6 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
     // does not reserve more than twice the faces, nor past the scene's limit.
     const auto triangle_budget = std::size_t(std::max(0L, m_options.max_triangles - m_triangles));
     reserve_on_huge_pages(mesh->faces, std::min({counts.triangles, 2 * counts.faces, triangle_budget}));
-    ObjFaceReader faces(*mesh);
     ObjMaterialReader materials(*this, found.parent_path(), faces);
     std::string obj_warning, obj_error;
     // Streamed: each face goes into the mesh as it is read (obj_faces.h).

@@ -40,6 +40,8 @@ class ObjFaceReader {
     // drops normal and uv indices that name nothing, and checks that every
     // face's vertices exist. False when one does not (see bad_face).
     bool finish();
+    // One face line's corners, as tinyobjloader's index callback hands them.
+    void add_face(const tinyobj::index_t* indices, int count);
 
     struct Skipped {
         std::size_t count = 0;
@@ -76,7 +78,6 @@ class ObjFaceReader {
     };
 
     void add_vertex(double x, double y, double z);
-    void add_face(const tinyobj::index_t* indices, int count);
     void use_material(const char* name);
     void start_group(std::string name);
     std::string label() const;

@@ -1,0 +1,191 @@
+#include "obj_text_without_faces.h"
+
+#include <algorithm>
+#include <climits>
+#include <cstring>
+
+namespace lancer::parse {
+namespace {
+
+bool blank_or_tab(char c) {
+    return c == ' ' || c == '\t';
+}
+
+// atoi of the text from `at` (C's isspace skipped first, as atoi does),
+// which may run past `end`'s corner into the next: tinyobjloader reads
+// "1/ 2" as vertex 1 with texture coordinate 2, then a corner 2.
+int atoi_like(const char* at, const char* end) {
+    auto digit = [](char c) { return unsigned(c - '0') < 10u; };
+    // Most indices: up to nine digits, which cannot overflow.
+    {
+        unsigned value = 0;
+        const char* i = at;
+        for (; i < end && i - at < 9 && digit(*i); ++i) value = value * 10 + unsigned(*i - '0');
+        if (i > at && (i == end || !digit(*i))) return int(value);
+    }
+    while (at < end && (*at == ' ' || *at == '\t' || *at == '\n' || *at == '\v' || *at == '\f' || *at == '\r')) ++at;
+    bool negative = false;
+    if (at < end && (*at == '+' || *at == '-')) negative = *at++ == '-';
+    // strtol's value saturated to long, then narrowed to int as glibc's atoi.
+    unsigned long magnitude = 0;
+    const unsigned long most =
+        negative ? 0UL - static_cast<unsigned long>(LONG_MIN) : static_cast<unsigned long>(LONG_MAX);
+    for (; at < end && digit(*at); ++at) {
+        const unsigned d = unsigned(*at - '0');
+        magnitude = magnitude > (most - d) / 10 ? most : magnitude * 10 + d;
+    }
+    const long value = negative ? (magnitude == most ? LONG_MIN : -long(magnitude)) : long(magnitude);
+    return int(value);
+}
+
+// strcspn(at, "/ \t\r") within the line.
+const char* past_number(const char* at, const char* end) {
+    while (at < end && *at != '/' && *at != ' ' && *at != '\t' && *at != '\r') ++at;
+    return at;
+}
+
+}  // namespace
+
+ObjTextWithoutFaces::ObjTextWithoutFaces(const std::filesystem::path& path, std::uintmax_t limit, ObjFaceReader& faces,
+                                         std::size_t piece_bytes)
+    : m_file(path, std::ios::binary),
+      m_left(limit),
+      m_piece(std::max<std::size_t>(1, piece_bytes)),
+      m_faces(faces),
+      m_text(m_piece) {}
+
+bool ObjTextWithoutFaces::read_more() {
+    if (m_at_end) return false;
+    // What is left moves to the front; a line longer than the buffer grows it.
+    std::memmove(m_text.data(), m_text.data() + m_start, m_filled - m_start);
+    m_filled -= m_start;
+    m_start = 0;
+    m_newline_known = false;
+    if (m_filled == m_text.size()) m_text.resize(2 * m_text.size());
+    std::streamsize got = 0;
+    if (m_left > 0 && m_file) {
+        const std::size_t room = std::min(m_text.size() - m_filled, m_piece);
+        m_file.read(m_text.data() + m_filled, std::streamsize(std::min<std::uintmax_t>(room, m_left)));
+        got = m_file.gcount();
+    }
+    if (got <= 0) {
+        m_at_end = true;
+        return false;
+    }
+    m_left -= std::uintmax_t(got);
+    m_filled += std::size_t(got);
+    return true;
+}
+
+bool ObjTextWithoutFaces::line_at(std::size_t at, std::size_t& end, std::size_t& next) {
+    // Lines end at \n, \r\n or a lone \r, as tinyobjloader reads them.
+    if (m_face_waits && at == m_waiting_face) {
+        // Found before, its \r perhaps made a \n since.
+        m_face_waits = false;
+        end = m_waiting_face_end;
+        next = m_waiting_face_next;
+        return true;
+    }
+    // The next \n is kept, not searched for again at each line: a file of
+    // lone \r would make that quadratic.
+    char* const text = m_text.data();
+    if (!m_newline_known || m_newline < at) {
+        const void* newline = std::memchr(text + at, '\n', m_filled - at);
+        m_newline = newline ? std::size_t(static_cast<const char*>(newline) - text) : m_filled;
+        m_newline_known = true;
+    }
+    const std::size_t newline_at = m_newline;
+    const void* cr = std::memchr(text + at, '\r', newline_at - at);
+    end = cr ? std::size_t(static_cast<const char*>(cr) - text) : newline_at;
+    if (end == m_filled) {
+        next = end;
+        return m_at_end && at < m_filled;  // the last line, unended
+    }
+    if (text[end] == '\n') {
+        next = end + 1;
+        return true;
+    }
+    if (end + 1 == m_filled && !m_at_end) return false;  // a \n may follow
+    if (end + 1 < m_filled && text[end + 1] == '\n') {
+        next = end + 2;
+        return true;
+    }
+    // A lone \r becomes \n: tinyobjloader peeks past a \r for its \n, which
+    // at the end of a run would ask for the text after it too early.
+    text[end] = '\n';
+    next = end + 1;
+    return true;
+}
+
+ObjTextWithoutFaces::int_type ObjTextWithoutFaces::underflow() {
+    if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
+    // Everything handed over before has been read.
+    for (;;) {
+        std::size_t at = m_start, run_end = m_start;
+        std::size_t end = 0, next = 0;
+        while (line_at(at, end, next)) {
+            const char* line = m_text.data() + at;
+            while (line < m_text.data() + end && blank_or_tab(*line)) ++line;
+            const bool face = m_text.data() + end - line >= 2 && line[0] == 'f' && blank_or_tab(line[1]);
+            if (face) {
+                if (run_end > m_start) {
+                    // The lines before it are read first.
+                    m_face_waits = true;
+                    m_waiting_face = at;
+                    m_waiting_face_end = end;
+                    m_waiting_face_next = next;
+                    break;
+                }
+                read_face(line, m_text.data() + end);
+                m_start = run_end = next;
+            } else {
+                run_end = next;
+            }
+            at = next;
+        }
+        if (run_end > m_start) {
+            char* const begin = m_text.data() + m_start;
+            setg(begin, begin, m_text.data() + run_end);
+            m_start = run_end;
+            return traits_type::to_int_type(*gptr());
+        }
+        if (!read_more()) {
+            // At the end every line has been taken or handed over.
+            if (m_start == m_filled) return traits_type::eof();
+        }
+    }
+}
+
+void ObjTextWithoutFaces::read_face(const char* at, const char* end) {
+    // As tinyobjloader: past "f" and the blank after it, then corners
+    // v, v/vt, v//vn or v/vt/vn until the line's end.
+    at += 2;
+    while (at < end && blank_or_tab(*at)) ++at;
+    m_corners.clear();
+    while (at < end) {
+        tinyobj::index_t corner{0, 0, 0};
+        corner.vertex_index = atoi_like(at, end);
+        at = past_number(at, end);
+        if (at < end && *at == '/') {
+            ++at;
+            if (at < end && *at == '/') {
+                ++at;
+                corner.normal_index = atoi_like(at, end);
+                at = past_number(at, end);
+            } else {
+                corner.texcoord_index = atoi_like(at, end);
+                at = past_number(at, end);
+                if (at < end && *at == '/') {
+                    ++at;
+                    corner.normal_index = atoi_like(at, end);
+                    at = past_number(at, end);
+                }
+            }
+        }
+        m_corners.push_back(corner);
+        while (at < end && (blank_or_tab(*at) || *at == '\r')) ++at;
+    }
+    if (!m_corners.empty()) m_faces.add_face(m_corners.data(), int(m_corners.size()));
+}
+
+}  // namespace lancer::parse

@@ -1,0 +1,116 @@
+// Face lines read by lancer instead of tinyobjloader (obj_text_without_faces.h):
+// for every text, and wherever the file's pieces are cut, the mesh, its
+// warnings and the face a message would name are what tinyobjloader's own
+// reading of the whole text gives.
+#include "obj_text_without_faces.h"
+
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "temp_folder.h"
+
+namespace lancer::parse {
+namespace {
+
+// Everything the reader made, as text to compare.
+std::string outcome(sg::TriangleMesh& mesh, ObjFaceReader& faces, bool loaded, const std::string& warnings) {
+    std::ostringstream out;
+    const bool finished = faces.finish();
+    out << "loaded " << loaded << " finished " << finished << " bad '" << faces.bad_face << "' short "
+        << faces.short_faces << " misnamed " << faces.misnamed_normals << "/" << faces.misnamed_uvs << " crossing "
+        << faces.crossing.count << " '" << faces.crossing.first << "' flat " << faces.flat.count << " '"
+        << faces.flat.first << "' warnings '" << warnings << faces.warnings << "'\n";
+    out << mesh.positions.size() << " positions, " << mesh.normals.size() << " normals, " << mesh.uvs.size()
+        << " uvs\n";
+    for (const sg::TriangleMesh::Face& face : mesh.faces) {
+        for (int i = 0; i < 3; ++i) out << face.position[i] << "/" << face.uv[i] << "/" << face.normal[i] << " ";
+        out << "m" << face.material << "\n";
+    }
+    return out.str();
+}
+
+std::string read_by_tinyobjloader(const std::string& text) {
+    sg::TriangleMesh mesh;
+    ObjFaceReader faces(mesh);
+    std::istringstream in(text);
+    std::string warnings, errors;
+    const bool loaded =
+        tinyobj::LoadObjWithCallback(in, ObjFaceReader::callbacks(), &faces, nullptr, &warnings, &errors);
+    return outcome(mesh, faces, loaded, warnings + errors);
+}
+
+std::string read_with_faces_aside(const std::string& path, std::size_t size, std::size_t piece) {
+    sg::TriangleMesh mesh;
+    ObjFaceReader faces(mesh);
+    ObjTextWithoutFaces text(path, size, faces, piece);
+    std::istream in(&text);
+    std::string warnings, errors;
+    const bool loaded =
+        tinyobj::LoadObjWithCallback(in, ObjFaceReader::callbacks(), &faces, nullptr, &warnings, &errors);
+    EXPECT_FALSE(text.failed());
+    return outcome(mesh, faces, loaded, warnings + errors);
+}
+
+void expect_as_tinyobjloader_reads_it(const std::string& text) {
+    test::TempFolder temp;
+    const std::string path = temp.write("model.obj", text);
+    const std::string expected = read_by_tinyobjloader(text);
+    for (std::size_t piece = 1; piece <= text.size() + 1; ++piece)
+        EXPECT_EQ(read_with_faces_aside(path, text.size(), piece), expected) << "pieces of " << piece;
+}
+
+TEST(ObjTextWithoutFaces, EveryKindOfLineEnd) {
+    expect_as_tinyobjloader_reads_it(
+        "v 0 0 0\r\nv 1 0 0\rv 0 1 0\nf 1 2 3\rf 3 2 1\r\nvt 0 0\nvt 1 0\rvt 0 1\r\n"
+        "f 1/1 2/2 3/3\r\rf 1/3 2/2 3/1\n\nf 2 3 1");
+}
+
+TEST(ObjTextWithoutFaces, FacesSeeOnlyTheVerticesBeforeThem) {
+    // Relative indices count back from what is read so far; a polygon
+    // naming a later vertex waits for it in its place.
+    expect_as_tinyobjloader_reads_it(
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nf 1 2 4 5\n"
+        "v 5 0 0\nv 6 0 0\nv 5 1 0\nf -3 -2 -1\nf 1 2 6\nv 1 1 0\n");
+}
+
+TEST(ObjTextWithoutFaces, CornersOfEveryShape) {
+    expect_as_tinyobjloader_reads_it(
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 1\nvn 0 0 1\n"
+        "f 1//1 2//1 3//1\nf 1/1/1 2/2/1 3/1/1\nf 1/1 2/2 3/1\nf 1/ 2/ 3/\nf 1/1/ 2/2/ 3/2/\n"
+        "f +1 +2 +3\nf 1x 2y/2 3z//1\nf\t1\t2\t3\t\n  \tf 4 3 2  \nf 1 2 -1\n");
+}
+
+TEST(ObjTextWithoutFaces, AtoiQuirksAreKept) {
+    // atoi skips blanks: tinyobjloader reads "1/ 2" as vertex 1 with
+    // texture coordinate 2, then a corner of vertex 2.
+    expect_as_tinyobjloader_reads_it("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 1\nf 1/ 2 3 4\nf 3/\v1 2 1\n");
+}
+
+TEST(ObjTextWithoutFaces, LinesThatAreNotFaces) {
+    expect_as_tinyobjloader_reads_it(
+        "# f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\nfo 1 2 3\nf\nf \nf 1 2\nf 1\n"
+        "g part one\nf 1 2 3\no thing\nf 3 2 1\nusemtl red\nf 1 3 2\ns 1\nf 2 1 3\n#\nf 1 2 3 # comment?\n");
+}
+
+TEST(ObjTextWithoutFaces, FacesNamingNoVertexAreReportedInFileOrder) {
+    expect_as_tinyobjloader_reads_it("v 0 0 0\nv 1 0 0\nv 0 1 0\ng a\nf 1 2 3\nf 1 2 9 8\ng b\nf 1 2 7\nf -5 1 2\n");
+}
+
+TEST(ObjTextWithoutFaces, OnlyFacesOrNothing) {
+    expect_as_tinyobjloader_reads_it("f 1 2 3\nf 4 5 6\n");
+    expect_as_tinyobjloader_reads_it("\n");
+    expect_as_tinyobjloader_reads_it("f 1 2 3");
+}
+
+TEST(ObjTextWithoutFaces, ReadsNoFurtherThanTheLimit) {
+    test::TempFolder temp;
+    const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 3 2 1\n";
+    const std::string path = temp.write("model.obj", text + "f 1 3 2\nv 9 9 9\n");
+    for (std::size_t piece : {1, 3, 64})
+        EXPECT_EQ(read_with_faces_aside(path, text.size(), piece), read_by_tinyobjloader(text));
+}
+
+}  // namespace
+}  // namespace lancer::parse
