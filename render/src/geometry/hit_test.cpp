@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "lancer/hit.h"
 
@@ -46,6 +47,30 @@ TEST(HitOffsetOrigin, StepsOneFloatAwayAsNextafterDoes) {
                         << "value " << value << " axis " << axis << ": " << got[axis] << " != " << want[axis];
                 }
             }
+}
+
+TEST(HitOffsetOrigin, RandomHitsStepAsNextafterDoes) {
+    // Positions of every scale and sign, errors and normals at random, some
+    // axes of the normal exactly zero (no step there).
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f), exponent(-40.0f, 38.0f);
+    auto coordinate = [&] { return unit(random) * std::pow(10.0f, exponent(random)); };
+    for (int i = 0; i < 100000; ++i) {
+        Hit hit;
+        hit.position = Vec3(coordinate(), coordinate(), coordinate());
+        Vec3 normal(unit(random), unit(random), unit(random));
+        if (i % 3 == 0) normal[i % 7 % 3] = 0.0f;
+        if (!(glm::length(normal) > 0.0f)) continue;
+        hit.geometric_normal = glm::normalize(normal);
+        hit.position_error = glm::abs(hit.position) * (1e-7f * std::fabs(unit(random)));
+        const Vec3 direction(unit(random), unit(random), unit(random));
+        const Vec3 got = hit.offset_origin(direction), want = expected_origin(hit, direction);
+        for (int axis = 0; axis < 3; ++axis) {
+            ASSERT_EQ(std::signbit(got[axis]), std::signbit(want[axis])) << i;
+            ASSERT_TRUE(got[axis] == want[axis] || (std::isnan(got[axis]) && std::isnan(want[axis])))
+                << "hit " << i << " axis " << axis << ": " << got[axis] << " != " << want[axis];
+        }
+    }
 }
 
 TEST(HitOffsetOrigin, AnOriginLandingOnZeroStepsToTheSmallestFloat) {
