@@ -379,6 +379,20 @@ TEST(SobolSampler, EveryDimensionIsStratified) {
     }
 }
 
+// The first 256 points of each dimension come from a table, the rest are
+// built from the direction numbers: 1024 points stratify only if both
+// give the same sequence.
+TEST(SobolSampler, StratifiedAcrossTheTabulatedPoints) {
+    auto sampler = make_sobol_sampler(5);
+    constexpr int kN = 1024, kDims = 53;
+    std::vector<std::set<int>> strata(kDims);
+    for (int i = 0; i < kN; ++i) {
+        sampler->start_sample(2, 9, i);
+        for (int d = 0; d < kDims; ++d) strata[d].insert(int(sampler->next_1d() * kN));
+    }
+    for (int d = 0; d < kDims; ++d) EXPECT_EQ(strata[d].size(), std::size_t(kN)) << "dimension " << d;
+}
+
 TEST(SobolSampler, FirstPairIsA02Net) {
     auto sampler = make_sobol_sampler(7);
     constexpr int kLog = 8, kN = 1 << kLog;
