@@ -52,20 +52,30 @@ ObjTextWithoutFaces::ObjTextWithoutFaces(const std::filesystem::path& path, std:
       m_left(limit),
       m_piece(std::max<std::size_t>(1, piece_bytes)),
       m_faces(faces),
-      m_text(m_piece) {}
+      m_capacity(m_piece),
+      m_text(new char[m_capacity]) {}
 
 bool ObjTextWithoutFaces::read_more() {
     if (m_at_end) return false;
-    // What is left moves to the front; a line longer than the buffer grows it.
-    std::memmove(m_text.data(), m_text.data() + m_start, m_filled - m_start);
-    m_filled -= m_start;
-    m_start = 0;
+    // What is left moves to the front; a line longer than the buffer grows
+    // it, and is then read in pieces of the buffer's room.
+    if (m_start > 0) {
+        std::memmove(m_text.get(), m_text.get() + m_start, m_filled - m_start);
+        m_filled -= m_start;
+        m_unended_from -= std::min(m_unended_from, m_start);
+        m_start = 0;
+    }
     m_newline_known = false;
-    if (m_filled == m_text.size()) m_text.resize(2 * m_text.size());
+    if (m_filled == m_capacity) {
+        // Not zeroed first: every byte is read into before it is used.
+        std::unique_ptr<char[]> grown(new char[2 * m_capacity]);
+        std::memcpy(grown.get(), m_text.get(), m_filled);
+        m_text = std::move(grown);
+        m_capacity *= 2;
+    }
     std::streamsize got = 0;
     if (m_left > 0 && m_file) {
-        const std::size_t room = std::min(m_text.size() - m_filled, m_piece);
-        m_file.read(m_text.data() + m_filled, std::streamsize(std::min<std::uintmax_t>(room, m_left)));
+        m_file.read(m_text.get() + m_filled, std::streamsize(std::min<std::uintmax_t>(m_capacity - m_filled, m_left)));
         got = m_file.gcount();
     }
     if (got <= 0) {
@@ -86,26 +96,32 @@ bool ObjTextWithoutFaces::line_at(std::size_t at, std::size_t& end, std::size_t&
         next = m_waiting_face_next;
         return true;
     }
-    // The next \n is kept, not searched for again at each line: a file of
-    // lone \r would make that quadratic.
-    char* const text = m_text.data();
+    // Searches resume where the last one stopped: the next \n is kept
+    // rather than searched for at each line (a file of lone \r), and a line
+    // longer than what is read is not searched again from its start.
+    char* const text = m_text.get();
+    const std::size_t from = std::max(at, m_unended_from);
     if (!m_newline_known || m_newline < at) {
-        const void* newline = std::memchr(text + at, '\n', m_filled - at);
+        const void* newline = std::memchr(text + from, '\n', m_filled - from);
         m_newline = newline ? std::size_t(static_cast<const char*>(newline) - text) : m_filled;
         m_newline_known = true;
     }
     const std::size_t newline_at = m_newline;
-    const void* cr = std::memchr(text + at, '\r', newline_at - at);
+    const void* cr = std::memchr(text + from, '\r', newline_at - std::min(newline_at, from));
     end = cr ? std::size_t(static_cast<const char*>(cr) - text) : newline_at;
     if (end == m_filled) {
         next = end;
+        m_unended_from = m_filled;
         return m_at_end && at < m_filled;  // the last line, unended
     }
     if (text[end] == '\n') {
         next = end + 1;
         return true;
     }
-    if (end + 1 == m_filled && !m_at_end) return false;  // a \n may follow
+    if (end + 1 == m_filled && !m_at_end) {  // a \n may follow
+        m_unended_from = end;
+        return false;
+    }
     if (end + 1 < m_filled && text[end + 1] == '\n') {
         next = end + 2;
         return true;
@@ -124,9 +140,9 @@ ObjTextWithoutFaces::int_type ObjTextWithoutFaces::underflow() {
         std::size_t at = m_start, run_end = m_start;
         std::size_t end = 0, next = 0;
         while (line_at(at, end, next)) {
-            const char* line = m_text.data() + at;
-            while (line < m_text.data() + end && blank_or_tab(*line)) ++line;
-            const bool face = m_text.data() + end - line >= 2 && line[0] == 'f' && blank_or_tab(line[1]);
+            const char* line = m_text.get() + at;
+            while (line < m_text.get() + end && blank_or_tab(*line)) ++line;
+            const bool face = m_text.get() + end - line >= 2 && line[0] == 'f' && blank_or_tab(line[1]);
             if (face) {
                 if (run_end > m_start) {
                     // The lines before it are read first.
@@ -136,7 +152,7 @@ ObjTextWithoutFaces::int_type ObjTextWithoutFaces::underflow() {
                     m_waiting_face_next = next;
                     break;
                 }
-                read_face(line, m_text.data() + end);
+                read_face(line, m_text.get() + end);
                 m_start = run_end = next;
             } else {
                 run_end = next;
@@ -144,8 +160,8 @@ ObjTextWithoutFaces::int_type ObjTextWithoutFaces::underflow() {
             at = next;
         }
         if (run_end > m_start) {
-            char* const begin = m_text.data() + m_start;
-            setg(begin, begin, m_text.data() + run_end);
+            char* const begin = m_text.get() + m_start;
+            setg(begin, begin, m_text.get() + run_end);
             m_start = run_end;
             return traits_type::to_int_type(*gptr());
         }

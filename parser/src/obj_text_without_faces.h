@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <streambuf>
 #include <vector>
 
@@ -28,7 +29,7 @@ namespace lancer::parse {
 class ObjTextWithoutFaces : public std::streambuf {
   public:
     // The first `limit` bytes of the file at `path` (what the text check
-    // read), read `piece_bytes` at a time.
+    // read), read into a buffer of `piece_bytes` (grown for a longer line).
     ObjTextWithoutFaces(const std::filesystem::path& path, std::uintmax_t limit, ObjFaceReader& faces,
                         std::size_t piece_bytes = std::size_t(1) << 20);
     bool is_open() const { return m_file.is_open(); }
@@ -52,10 +53,13 @@ class ObjTextWithoutFaces : public std::streambuf {
     std::size_t m_piece;
     bool m_at_end = false;
     ObjFaceReader& m_faces;
-    std::vector<char> m_text;  // [m_start, m_filled): read, not yet handed over or taken
+    std::size_t m_capacity;
+    std::unique_ptr<char[]> m_text;  // [m_start, m_filled): read, not yet handed over or taken
     std::size_t m_start = 0, m_filled = 0;
     std::size_t m_newline = 0;  // the first \n at or after the line being found, or m_filled
     bool m_newline_known = false;
+    // The line not yet ended holds no \n or \r before this.
+    std::size_t m_unended_from = 0;
     // The face line that ended the run handed over last, as line_at found it.
     bool m_face_waits = false;
     std::size_t m_waiting_face = 0, m_waiting_face_end = 0, m_waiting_face_next = 0;
