@@ -50,9 +50,8 @@ ObjTextWithoutFaces::ObjTextWithoutFaces(const std::filesystem::path& path, std:
                                          std::size_t piece_bytes)
     : m_file(path, std::ios::binary),
       m_left(limit),
-      m_piece(std::max<std::size_t>(1, piece_bytes)),
       m_faces(faces),
-      m_capacity(m_piece),
+      m_capacity(std::max<std::size_t>(1, piece_bytes)),
       m_text(new char[m_capacity]) {}
 
 bool ObjTextWithoutFaces::read_more() {

@@ -29,7 +29,7 @@ namespace lancer::parse {
 class ObjTextWithoutFaces : public std::streambuf {
   public:
     // The first `limit` bytes of the file at `path` (what the text check
-    // read), read into a buffer of `piece_bytes` (grown for a longer line).
+    // read), through a buffer of `piece_bytes` (grown for a longer line).
     ObjTextWithoutFaces(const std::filesystem::path& path, std::uintmax_t limit, ObjFaceReader& faces,
                         std::size_t piece_bytes = std::size_t(1) << 20);
     bool is_open() const { return m_file.is_open(); }
@@ -43,17 +43,16 @@ class ObjTextWithoutFaces : public std::streambuf {
     // More of the file after what is kept; false at its end.
     bool read_more();
     // The line starting at m_text[at]: where it ends and where the next one
-    // starts. False when its end is not read yet.
-    // A lone \r is made a \n.
+    // starts (a lone \r it ends with is made a \n). False when its end is
+    // not read yet.
     bool line_at(std::size_t at, std::size_t& end, std::size_t& next);
     void read_face(const char* begin, const char* end);
 
     std::ifstream m_file;
     std::uintmax_t m_left;
-    std::size_t m_piece;
     bool m_at_end = false;
     ObjFaceReader& m_faces;
-    std::size_t m_capacity;
+    std::size_t m_capacity;          // of m_text
     std::unique_ptr<char[]> m_text;  // [m_start, m_filled): read, not yet handed over or taken
     std::size_t m_start = 0, m_filled = 0;
     std::size_t m_newline = 0;  // the first \n at or after the line being found, or m_filled
