@@ -92,12 +92,19 @@ const DirectionNumbers& reversed_direction_numbers() {
     return table;
 }
 
-// The first kTabulatedPoints points of every dimension, reversed, as
-// value() would XOR them together from the direction numbers: point i of
-// dimension d at [i * dimensions + d], so one sample's dimensions share
-// cache lines. Renders of up to 256 samples a pixel (nearly all) take
-// every point from here; the XOR of one direction number a set bit of the
-// index cost about a quarter of the sampler's instructions.
+// Point `index` of the dimension with reversed direction numbers v,
+// reversed: the XOR of the direction numbers of the index's set bits.
+std::uint32_t reversed_point(const std::array<std::uint32_t, kBits>& v, std::uint32_t index) {
+    std::uint32_t x = 0;
+    for (std::uint32_t i = index; i != 0; i &= i - 1) x ^= v[std::size_t(__builtin_ctz(i))];
+    return x;
+}
+
+// The first kTabulatedPoints points of every dimension as reversed_point
+// gives them, point i of dimension d at [i * dimensions + d] so that one
+// sample's dimensions share cache lines. Renders of up to 256 samples a
+// pixel (nearly all) take every point from here: building a point at each
+// value cost about a quarter of the sampler's instructions.
 constexpr std::uint32_t kTabulatedPoints = 256;
 
 const std::vector<std::uint32_t>& tabulated_points() {
@@ -105,11 +112,7 @@ const std::vector<std::uint32_t>& tabulated_points() {
         const DirectionNumbers& v = reversed_direction_numbers();
         std::vector<std::uint32_t> points(kTabulatedPoints * v.size());
         for (std::uint32_t index = 0; index < kTabulatedPoints; ++index)
-            for (std::size_t d = 0; d < v.size(); ++d) {
-                std::uint32_t x = 0;
-                for (std::uint32_t i = index; i != 0; i &= i - 1) x ^= v[d][std::size_t(__builtin_ctz(i))];
-                points[index * v.size() + d] = x;
-            }
+            for (std::size_t d = 0; d < v.size(); ++d) points[index * v.size() + d] = reversed_point(v[d], index);
         return points;
     }();
     return table;
@@ -177,15 +180,8 @@ class SobolSampler final : public Sampler {
         const std::uint64_t dim_key = mix64(m_pixel_key + 0x9e3779b97f4a7c15ull * (dimension + 1));
         if (dimension >= m_table->size())
             return to_unit_float(std::uint32_t(mix64(dim_key ^ (std::uint64_t(m_index) << 17)) >> 32));
-        // Point m_index of this dimension, reversed: XOR of the (reversed)
-        // direction numbers of its set bits.
-        std::uint32_t x = 0;
-        if (m_index_points != nullptr) {
-            x = m_index_points[dimension];
-        } else {
-            const auto& v = (*m_table)[dimension];
-            for (std::uint32_t i = m_index; i != 0; i &= i - 1) x ^= v[std::size_t(__builtin_ctz(i))];
-        }
+        const std::uint32_t x =
+            m_index_points != nullptr ? m_index_points[dimension] : reversed_point((*m_table)[dimension], m_index);
         return to_unit_float(reverse_bits(owen_scramble_reversed(x, std::uint32_t(dim_key >> 32))));
     }
 
