@@ -215,9 +215,11 @@ Bsdf::Bsdf(const Material& material, const SurfaceSample& surface, const Hit& hi
 Color Bsdf::eval(const Vec3& wi) const {
     const float cos_i = glm::dot(m_n, wi);
     if (cos_i <= 0.0f || m_p_smooth <= 0.0f) return Color(0.0f);
-    return (m_material.diffuse_brdf_at_opacity(m_surface, m_n, wi, 1.0f - m_transparency) * m_diffuse_scale +
-            m_material.glossy_brdf(m_surface, m_n, m_wo, wi)) *
-           cos_i;
+    const Color diffuse =
+        m_material.diffuse_brdf_at_opacity(m_surface, m_n, wi, 1.0f - m_transparency) * m_diffuse_scale;
+    // Most surfaces have no highlight: glossy_brdf would only say 0.
+    if (!m_material.has_glossy()) return diffuse * cos_i;
+    return (diffuse + m_material.glossy_brdf(m_surface, m_n, m_wo, wi)) * cos_i;
 }
 
 float Bsdf::smooth_pdf(const Vec3& wi) const {
