@@ -267,6 +267,11 @@ int check_arguments(const RenderArguments& arguments) {
         print_error("--stats needs a file name");
         return kExitUsage;
     }
+    // Not a file named "-" where standard output was meant.
+    if (arguments.stats == "-") {
+        print_error("--stats writes a file; '-' (standard output) is not offered: name a file such as stats.json");
+        return kExitUsage;
+    }
     if (!arguments.output.empty() && !is_supported_image_extension(arguments.output)) {
         print_error("cannot write '" + arguments.output +
                     "': unknown image extension (use .png, .jpg, .exr, .hdr, .tif or .tiff)");

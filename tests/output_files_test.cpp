@@ -112,6 +112,12 @@ TEST_F(OutputFiles, EmptyNamesAreUsageErrors) {
     EXPECT_NE(empty_stats.exit_code, 0);
     EXPECT_CONTAINS(empty_stats.output, "--stats needs a file name");
     EXPECT_FALSE(fs::exists(in_folder("ball.png")));
+    // "-" is not taken as a file name, as standard output is not offered.
+    const CommandResult dash_stats = render("-o '" + in_folder("out.png") + "' --stats -");
+    EXPECT_EQ(dash_stats.exit_code, 2) << dash_stats.output;
+    EXPECT_CONTAINS(dash_stats.output, "'-' (standard output) is not offered");
+    EXPECT_FALSE(fs::exists(source_path("-")));  // where lancer runs here
+    EXPECT_FALSE(fs::exists(in_folder("out.png")));
 }
 
 // A render killed during its final write (SIGKILL, a second SIGINT) runs
