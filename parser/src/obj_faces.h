@@ -1,5 +1,7 @@
 // An OBJ's vertices and faces read straight into a mesh, as
-// tinyobjloader's streaming reader (LoadObjWithCallback) hands them over.
+// tinyobjloader's streaming reader (LoadObjWithCallback) hands them over
+// (the faces, read by lancer, through the same add_face:
+// obj_text_without_faces.h).
 //
 // tinyobjloader's LoadObj keeps every face in a vector of its own and every
 // attribute twice (its arrays, then lancer's): a million-triangle OBJ with
