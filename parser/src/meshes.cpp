@@ -13,7 +13,7 @@
 #include "number_limits.h"
 #include "obj_faces.h"
 #include "obj_text_check.h"
-#include "obj_text_without_faces.h"
+#include "obj_text_without_geometry.h"
 #include "polygon_triangulation.h"
 
 namespace lancer::parse {
@@ -416,7 +416,7 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
     mesh->source = found.string();
 
     // The text is checked first (obj_text_check.h), then read by
-    // tinyobjloader, its face lines by lancer (obj_text_without_faces.h),
+    // tinyobjloader, its geometry lines by lancer (obj_text_without_geometry.h),
     // each from the file a piece at a time: the file (a regular one, as
     // find_file found it) is read twice rather than held whole, the second
     // time no further than the first, and a file that changed between the
@@ -441,7 +441,7 @@ ShapePtr Evaluator::make_obj_mesh(const Value& file, const SourceRange& where, c
         check.feed(piece.data(), std::size_t(in.gcount()));
     }
     ObjFaceReader faces(*mesh);
-    ObjTextWithoutFaces obj_file(found, checked, faces);
+    ObjTextWithoutGeometry obj_file(found, checked, faces);
     if (in.bad() || !obj_file.is_open()) {
         error(where.begin, "cannot read OBJ file \"" + found.string() + "\"");
         return shape;

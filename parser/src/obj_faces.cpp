@@ -35,10 +35,10 @@ tinyobj::callback_t ObjFaceReader::callbacks() {
     callbacks.vertex_cb = [](void* user_data, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z,
                              tinyobj::real_t) { reader(user_data).add_vertex(x, y, z); };
     callbacks.normal_cb = [](void* user_data, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z) {
-        reader(user_data).m_mesh.normals.emplace_back(x, y, z);
+        reader(user_data).add_normal(x, y, z);
     };
     callbacks.texcoord_cb = [](void* user_data, tinyobj::real_t u, tinyobj::real_t v, tinyobj::real_t) {
-        reader(user_data).m_mesh.uvs.emplace_back(u, v);
+        reader(user_data).add_uv(u, v);
     };
     callbacks.index_cb = [](void* user_data, tinyobj::index_t* indices, int count) {
         reader(user_data).add_face(indices, count);

@@ -1,7 +1,7 @@
 // An OBJ's vertices and faces read straight into a mesh, as
-// tinyobjloader's streaming reader (LoadObjWithCallback) hands them over
-// (the faces, read by lancer, through the same add_face:
-// obj_text_without_faces.h).
+// tinyobjloader's streaming reader (LoadObjWithCallback) would hand them
+// over: lancer reads those lines itself (obj_text_without_geometry.h) and
+// calls the same add_vertex, add_normal, add_uv and add_face.
 //
 // tinyobjloader's LoadObj keeps every face in a vector of its own and every
 // attribute twice (its arrays, then lancer's): a million-triangle OBJ with
@@ -44,6 +44,10 @@ class ObjFaceReader {
     bool finish();
     // One face line's corners, as tinyobjloader's index callback hands them.
     void add_face(const tinyobj::index_t* indices, int count);
+    // One v, vn or vt line's numbers, as its callbacks hand them.
+    void add_vertex(double x, double y, double z);
+    void add_normal(float x, float y, float z) { m_mesh.normals.emplace_back(x, y, z); }
+    void add_uv(float u, float v) { m_mesh.uvs.emplace_back(u, v); }
 
     struct Skipped {
         std::size_t count = 0;
@@ -79,7 +83,6 @@ class ObjFaceReader {
         std::string label;
     };
 
-    void add_vertex(double x, double y, double z);
     void use_material(const char* name);
     void start_group(std::string name);
     std::string label() const;

@@ -1,9 +1,11 @@
-// Face lines read by lancer instead of tinyobjloader (obj_text_without_faces.h):
-// for every text, and wherever the file's pieces are cut, the mesh, its
-// warnings and the face a message would name are what tinyobjloader's own
-// reading of the whole text gives.
-#include "obj_text_without_faces.h"
+// Geometry lines read by lancer instead of tinyobjloader
+// (obj_text_without_geometry.h): for every text, and wherever the file's
+// pieces are cut, the mesh (every number to the bit), its warnings and the
+// face a message would name are what tinyobjloader's own reading of the
+// whole text gives.
+#include "obj_text_without_geometry.h"
 
+#include <cstdio>
 #include <sstream>
 #include <string>
 
@@ -24,6 +26,15 @@ std::string outcome(sg::TriangleMesh& mesh, ObjFaceReader& faces, bool loaded, c
         << faces.flat.first << "' warnings '" << warnings << faces.warnings << "'\n";
     out << mesh.positions.size() << " positions, " << mesh.normals.size() << " normals, " << mesh.uvs.size()
         << " uvs\n";
+    // Every number exactly (hexadecimal), a sign of zero and NaN included.
+    char number[64];
+    auto put = [&](double value) {
+        std::snprintf(number, sizeof number, " %a", value);
+        out << number;
+    };
+    for (const auto& p : mesh.positions) put(p.x), put(p.y), put(p.z), out << "\n";
+    for (const auto& n : mesh.normals) put(n.x), put(n.y), put(n.z), out << "\n";
+    for (const auto& uv : mesh.uvs) put(uv.x), put(uv.y), out << "\n";
     for (const sg::TriangleMesh::Face& face : mesh.faces) {
         for (int i = 0; i < 3; ++i) out << face.position[i] << "/" << face.uv[i] << "/" << face.normal[i] << " ";
         out << "m" << face.material << "\n";
@@ -44,7 +55,7 @@ std::string read_by_tinyobjloader(const std::string& text) {
 std::string read_with_faces_aside(const std::string& path, std::size_t size, std::size_t piece) {
     sg::TriangleMesh mesh;
     ObjFaceReader faces(mesh);
-    ObjTextWithoutFaces text(path, size, faces, piece);
+    ObjTextWithoutGeometry text(path, size, faces, piece);
     std::istream in(&text);
     std::string warnings, errors;
     const bool loaded =
@@ -61,13 +72,13 @@ void expect_as_tinyobjloader_reads_it(const std::string& text) {
         EXPECT_EQ(read_with_faces_aside(path, text.size(), piece), expected) << "pieces of " << piece;
 }
 
-TEST(ObjTextWithoutFaces, EveryKindOfLineEnd) {
+TEST(ObjTextWithoutGeometry, EveryKindOfLineEnd) {
     expect_as_tinyobjloader_reads_it(
         "v 0 0 0\r\nv 1 0 0\rv 0 1 0\nf 1 2 3\rf 3 2 1\r\nvt 0 0\nvt 1 0\rvt 0 1\r\n"
         "f 1/1 2/2 3/3\r\rf 1/3 2/2 3/1\n\nf 2 3 1");
 }
 
-TEST(ObjTextWithoutFaces, FacesSeeOnlyTheVerticesBeforeThem) {
+TEST(ObjTextWithoutGeometry, FacesSeeOnlyTheVerticesBeforeThem) {
     // Relative indices count back from what is read so far; a polygon
     // naming a later vertex waits for it in its place.
     expect_as_tinyobjloader_reads_it(
@@ -75,36 +86,49 @@ TEST(ObjTextWithoutFaces, FacesSeeOnlyTheVerticesBeforeThem) {
         "v 5 0 0\nv 6 0 0\nv 5 1 0\nf -3 -2 -1\nf 1 2 6\nv 1 1 0\n");
 }
 
-TEST(ObjTextWithoutFaces, CornersOfEveryShape) {
+TEST(ObjTextWithoutGeometry, CornersOfEveryShape) {
     expect_as_tinyobjloader_reads_it(
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 1\nvn 0 0 1\n"
         "f 1//1 2//1 3//1\nf 1/1/1 2/2/1 3/1/1\nf 1/1 2/2 3/1\nf 1/ 2/ 3/\nf 1/1/ 2/2/ 3/2/\n"
         "f +1 +2 +3\nf 1x 2y/2 3z//1\nf\t1\t2\t3\t\n  \tf 4 3 2  \nf 1 2 -1\n");
 }
 
-TEST(ObjTextWithoutFaces, AtoiQuirksAreKept) {
+TEST(ObjTextWithoutGeometry, AtoiQuirksAreKept) {
     // atoi skips blanks: tinyobjloader reads "1/ 2" as vertex 1 with
     // texture coordinate 2, then a corner of vertex 2.
     expect_as_tinyobjloader_reads_it("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 1\nf 1/ 2 3 4\nf 3/\v1 2 1\n");
 }
 
-TEST(ObjTextWithoutFaces, LinesThatAreNotFaces) {
+TEST(ObjTextWithoutGeometry, LinesThatAreNotFaces) {
     expect_as_tinyobjloader_reads_it(
         "# f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\nfo 1 2 3\nf\nf \nf 1 2\nf 1\n"
         "g part one\nf 1 2 3\no thing\nf 3 2 1\nusemtl red\nf 1 3 2\ns 1\nf 2 1 3\n#\nf 1 2 3 # comment?\n");
 }
 
-TEST(ObjTextWithoutFaces, FacesNamingNoVertexAreReportedInFileOrder) {
+TEST(ObjTextWithoutGeometry, FacesNamingNoVertexAreReportedInFileOrder) {
     expect_as_tinyobjloader_reads_it("v 0 0 0\nv 1 0 0\nv 0 1 0\ng a\nf 1 2 3\nf 1 2 9 8\ng b\nf 1 2 7\nf -5 1 2\n");
 }
 
-TEST(ObjTextWithoutFaces, OnlyFacesOrNothing) {
+TEST(ObjTextWithoutGeometry, NumbersOfEveryForm) {
+    // tinyobjloader's number fields: signs, leading and trailing points,
+    // exponents, junk after a number, fields that are not numbers (their
+    // default), missing fields, overflow and underflow.
+    expect_as_tinyobjloader_reads_it(
+        "v 1 2 3\nv -1.5 +2.25 .5\nv -.5 5. 1.e2\nv 1e5 -2E-3 +3e+2\nv 0.1 0.2 0.3\n"
+        "v 123456789 0.000001 1234.5678\nv 1.5x 2e3y 7abc\nv x 2 3\nv 1\nv\t4\t5\t6\t7\nv . -. +.\n"
+        "v 1e 1e+ 2\nv 1e999 -1e999 1e-999\nv 0e999 -0 0.0\nv inf nan 3\nv 1e99999999999 2 3\n"
+        "v 3.14159265358979323846 2.718281828459045 1.4142135623730951\nv -.e5 .e1 0.e400\n"
+        "vn 0 0 1\nvn .6 -.8\nvn 1e-40 1e-46 -1e-39\nvt 0.25 0.75\nvt 1\nvt 0.5 0.5 0.5\nvt a b\n"
+        "v  \t 7 8 9  \nvn\t1 2 3\nv1 2 3\nvx 1 2 3\n");
+}
+
+TEST(ObjTextWithoutGeometry, OnlyFacesOrNothing) {
     expect_as_tinyobjloader_reads_it("f 1 2 3\nf 4 5 6\n");
     expect_as_tinyobjloader_reads_it("\n");
     expect_as_tinyobjloader_reads_it("f 1 2 3");
 }
 
-TEST(ObjTextWithoutFaces, ReadsNoFurtherThanTheLimit) {
+TEST(ObjTextWithoutGeometry, ReadsNoFurtherThanTheLimit) {
     test::TempFolder temp;
     const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 3 2 1\n";
     const std::string path = temp.write("model.obj", text + "f 1 3 2\nv 9 9 9\n");

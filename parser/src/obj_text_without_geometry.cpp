@@ -1,8 +1,12 @@
-#include "obj_text_without_faces.h"
+#include "obj_text_without_geometry.h"
 
 #include <algorithm>
+#include <charconv>
 #include <climits>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 
 namespace lancer::parse {
 namespace {
@@ -44,17 +48,83 @@ const char* past_number(const char* at, const char* end) {
     return at;
 }
 
+bool is_digit(char c) {
+    return unsigned(c - '0') < 10u;
+}
+
+// One number field as tinyobjloader's parseReal reads it (its
+// tryParseDouble): [+-], digits or a point, [. digits], [e [+-] digits],
+// whatever follows ignored; a field that does not start so is `fallback`.
+// The value is the decimal's, correctly rounded: tinyobjloader's own sum
+// of digits may differ in a double's last bits, which the float it keeps
+// hides but at a near-tie.
+double obj_real(const char* s, const char* e, double fallback) {
+    if (s >= e) return fallback;
+    const char* i = s;
+    const bool negative = *i == '-';
+    if (*i == '+' || *i == '-') ++i;
+    const char* const number = i;
+    bool nonzero = false;
+    if (!(i < e && *i == '.')) {
+        const char* const digits = i;
+        for (; i < e && is_digit(*i); ++i) nonzero = nonzero || *i != '0';
+        if (i == digits) return fallback;
+    }
+    if (i < e && *i == '.')
+        for (++i; i < e && is_digit(*i); ++i) nonzero = nonzero || *i != '0';
+    int exponent = 0;
+    if (i < e && (*i == 'e' || *i == 'E')) {
+        ++i;
+        bool exponent_negative = false;
+        if (i < e && (*i == '+' || *i == '-')) exponent_negative = *i++ == '-';
+        const char* const digits = i;
+        for (; i < e && is_digit(*i); ++i) {
+            if (exponent > INT_MAX / 10) return fallback;  // as tinyobjloader refuses it
+            exponent = exponent * 10 + (*i - '0');
+        }
+        if (i == digits) return fallback;
+        if (exponent_negative) exponent = -exponent;
+    }
+    if (!nonzero) {
+        // tinyobjloader's 0 * 5^exponent * 2^exponent: not a number once
+        // 5^exponent overflows.
+        const double zero = exponent != 0 ? std::ldexp(0.0 * std::pow(5.0, exponent), exponent) : 0.0;
+        return negative ? -1.0 * zero : zero;
+    }
+    double value = 0.0;
+    const std::from_chars_result read = std::from_chars(number, i, value);
+    if (read.ec == std::errc::result_out_of_range) value = std::strtod(std::string(number, i).c_str(), nullptr);
+    return negative ? -value : value;
+}
+
+// The fields of a v, vn or vt line after its keyword: tinyobjloader's
+// parseReal for each, blanks before it skipped, the field up to a blank.
+class NumberFields {
+  public:
+    NumberFields(const char* at, const char* end) : m_at(at), m_end(end) {}
+    float next(double fallback) {
+        while (m_at < m_end && blank_or_tab(*m_at)) ++m_at;
+        const char* const field = m_at;
+        while (m_at < m_end && !blank_or_tab(*m_at) && *m_at != '\r') ++m_at;
+        return float(obj_real(field, m_at, fallback));
+    }
+
+  private:
+    const char* m_at;
+    const char* m_end;
+};
+
 }  // namespace
 
-ObjTextWithoutFaces::ObjTextWithoutFaces(const std::filesystem::path& path, std::uintmax_t limit, ObjFaceReader& faces,
-                                         std::size_t piece_bytes)
+ObjTextWithoutGeometry::ObjTextWithoutGeometry(const std::filesystem::path& path, std::uintmax_t limit,
+                                               ObjFaceReader& faces, std::size_t piece_bytes)
     : m_file(path, std::ios::binary),
       m_left(limit),
       m_faces(faces),
       m_capacity(std::max<std::size_t>(1, piece_bytes)),
       m_text(new char[m_capacity]) {}
 
-bool ObjTextWithoutFaces::read_more() {
+bool ObjTextWithoutGeometry::read_more() {
     if (m_at_end) return false;
     // What is left moves to the front; a line longer than the buffer grows
     // it, and is then read in pieces of the buffer's room.
@@ -86,13 +156,13 @@ bool ObjTextWithoutFaces::read_more() {
     return true;
 }
 
-bool ObjTextWithoutFaces::line_at(std::size_t at, std::size_t& end, std::size_t& next) {
+bool ObjTextWithoutGeometry::line_at(std::size_t at, std::size_t& end, std::size_t& next) {
     // Lines end at \n, \r\n or a lone \r, as tinyobjloader reads them.
-    if (m_face_waits && at == m_waiting_face) {
+    if (m_line_waits && at == m_waiting_line) {
         // Found before, its \r perhaps made a \n since.
-        m_face_waits = false;
-        end = m_waiting_face_end;
-        next = m_waiting_face_next;
+        m_line_waits = false;
+        end = m_waiting_line_end;
+        next = m_waiting_line_next;
         return true;
     }
     // Searches resume where the last one stopped: the next \n is kept
@@ -132,7 +202,7 @@ bool ObjTextWithoutFaces::line_at(std::size_t at, std::size_t& end, std::size_t&
     return true;
 }
 
-ObjTextWithoutFaces::int_type ObjTextWithoutFaces::underflow() {
+ObjTextWithoutGeometry::int_type ObjTextWithoutGeometry::underflow() {
     if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
     // Everything handed over before has been read.
     for (;;) {
@@ -140,18 +210,19 @@ ObjTextWithoutFaces::int_type ObjTextWithoutFaces::underflow() {
         std::size_t end = 0, next = 0;
         while (line_at(at, end, next)) {
             const char* line = m_text.get() + at;
-            while (line < m_text.get() + end && blank_or_tab(*line)) ++line;
-            const bool face = m_text.get() + end - line >= 2 && line[0] == 'f' && blank_or_tab(line[1]);
-            if (face) {
+            const char* const line_end = m_text.get() + end;
+            while (line < line_end && blank_or_tab(*line)) ++line;
+            const LineKind kind = kind_of(line, line_end);
+            if (kind != LineKind::Other) {
                 if (run_end > m_start) {
                     // The lines before it are read first.
-                    m_face_waits = true;
-                    m_waiting_face = at;
-                    m_waiting_face_end = end;
-                    m_waiting_face_next = next;
+                    m_line_waits = true;
+                    m_waiting_line = at;
+                    m_waiting_line_end = end;
+                    m_waiting_line_next = next;
                     break;
                 }
-                read_face(line, m_text.get() + end);
+                read_line(kind, line, line_end);
                 m_start = run_end = next;
             } else {
                 run_end = next;
@@ -171,7 +242,42 @@ ObjTextWithoutFaces::int_type ObjTextWithoutFaces::underflow() {
     }
 }
 
-void ObjTextWithoutFaces::read_face(const char* at, const char* end) {
+ObjTextWithoutGeometry::LineKind ObjTextWithoutGeometry::kind_of(const char* line, const char* end) {
+    // As tinyobjloader tells them apart, in its order.
+    const std::ptrdiff_t size = end - line;
+    if (size >= 2 && line[0] == 'v' && blank_or_tab(line[1])) return LineKind::Vertex;
+    if (size >= 3 && line[0] == 'v' && line[1] == 'n' && blank_or_tab(line[2])) return LineKind::Normal;
+    if (size >= 3 && line[0] == 'v' && line[1] == 't' && blank_or_tab(line[2])) return LineKind::TextureCoordinate;
+    if (size >= 2 && line[0] == 'f' && blank_or_tab(line[1])) return LineKind::Face;
+    return LineKind::Other;
+}
+
+void ObjTextWithoutGeometry::read_line(LineKind kind, const char* at, const char* end) {
+    switch (kind) {
+    case LineKind::Vertex: {
+        NumberFields fields(at + 2, end);
+        const float x = fields.next(0.0), y = fields.next(0.0), z = fields.next(0.0);
+        m_faces.add_vertex(x, y, z);  // a fourth number (w) is read by nobody
+        return;
+    }
+    case LineKind::Normal: {
+        NumberFields fields(at + 3, end);
+        const float x = fields.next(0.0), y = fields.next(0.0), z = fields.next(0.0);
+        m_faces.add_normal(x, y, z);
+        return;
+    }
+    case LineKind::TextureCoordinate: {
+        NumberFields fields(at + 3, end);
+        const float u = fields.next(0.0), v = fields.next(0.0);
+        m_faces.add_uv(u, v);
+        return;
+    }
+    case LineKind::Face: read_face(at, end); return;
+    case LineKind::Other: return;
+    }
+}
+
+void ObjTextWithoutGeometry::read_face(const char* at, const char* end) {
     // As tinyobjloader: past "f" and the blank after it, then corners
     // v, v/vt, v//vn or v/vt/vn until the line's end.
     at += 2;
