@@ -4,6 +4,7 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -52,13 +53,14 @@ bool is_digit(char c) {
     return unsigned(c - '0') < 10u;
 }
 
-// One number field as tinyobjloader's parseReal reads it (its
-// tryParseDouble): [+-], digits or a point, [. digits], [e [+-] digits],
-// whatever follows ignored; a field that does not start so is `fallback`.
-// The value is the decimal's, correctly rounded: tinyobjloader's own sum
-// of digits may differ in a double's last bits, which the float it keeps
-// hides but at a near-tie.
-double obj_real(const char* s, const char* e, double fallback) {
+// One number field where tinyobjloader's parseReal (its tryParseDouble)
+// finds one: [+-], digits or a point, [. digits], [e [+-] digits], whatever
+// follows ignored; any other field is `fallback`. The value is the decimal
+// written, rounded once to the float kept. tinyobjloader's sum of digits,
+// rounded to a double and then to a float, can land one float away near a
+// tie, and its arithmetic overflows on fields of hundreds of digits or
+// exponents past 2^31 (0e999 is not a number there, 0 here).
+float obj_real(const char* s, const char* e, float fallback) {
     if (s >= e) return fallback;
     const char* i = s;
     const bool negative = *i == '-';
@@ -72,28 +74,22 @@ double obj_real(const char* s, const char* e, double fallback) {
     }
     if (i < e && *i == '.')
         for (++i; i < e && is_digit(*i); ++i) nonzero = nonzero || *i != '0';
-    int exponent = 0;
     if (i < e && (*i == 'e' || *i == 'E')) {
         ++i;
-        bool exponent_negative = false;
-        if (i < e && (*i == '+' || *i == '-')) exponent_negative = *i++ == '-';
+        if (i < e && (*i == '+' || *i == '-')) ++i;
         const char* const digits = i;
+        std::int64_t exponent = 0;
         for (; i < e && is_digit(*i); ++i) {
-            if (exponent > INT_MAX / 10) return fallback;  // as tinyobjloader refuses it
+            if (exponent > INT_MAX / 10) return fallback;  // tinyobjloader refuses such a field
             exponent = exponent * 10 + (*i - '0');
         }
         if (i == digits) return fallback;
-        if (exponent_negative) exponent = -exponent;
     }
-    if (!nonzero) {
-        // tinyobjloader's 0 * 5^exponent * 2^exponent: not a number once
-        // 5^exponent overflows.
-        const double zero = exponent != 0 ? std::ldexp(0.0 * std::pow(5.0, exponent), exponent) : 0.0;
-        return negative ? -1.0 * zero : zero;
-    }
-    double value = 0.0;
+    if (!nonzero) return negative ? -0.0f : 0.0f;
+    float value = 0.0f;
     const std::from_chars_result read = std::from_chars(number, i, value);
-    if (read.ec == std::errc::result_out_of_range) value = std::strtod(std::string(number, i).c_str(), nullptr);
+    // Past the floats: infinity, or zero (a denormal where there is one).
+    if (read.ec == std::errc::result_out_of_range) value = std::strtof(std::string(number, i).c_str(), nullptr);
     return negative ? -value : value;
 }
 
@@ -102,11 +98,11 @@ double obj_real(const char* s, const char* e, double fallback) {
 class NumberFields {
   public:
     NumberFields(const char* at, const char* end) : m_at(at), m_end(end) {}
-    float next(double fallback) {
+    float next(float fallback) {
         while (m_at < m_end && blank_or_tab(*m_at)) ++m_at;
         const char* const field = m_at;
         while (m_at < m_end && !blank_or_tab(*m_at) && *m_at != '\r') ++m_at;
-        return float(obj_real(field, m_at, fallback));
+        return obj_real(field, m_at, fallback);
     }
 
   private:
@@ -256,19 +252,19 @@ void ObjTextWithoutGeometry::read_line(LineKind kind, const char* at, const char
     switch (kind) {
     case LineKind::Vertex: {
         NumberFields fields(at + 2, end);
-        const float x = fields.next(0.0), y = fields.next(0.0), z = fields.next(0.0);
+        const float x = fields.next(0.0f), y = fields.next(0.0f), z = fields.next(0.0f);
         m_faces.add_vertex(x, y, z);  // a fourth number (w) is read by nobody
         return;
     }
     case LineKind::Normal: {
         NumberFields fields(at + 3, end);
-        const float x = fields.next(0.0), y = fields.next(0.0), z = fields.next(0.0);
+        const float x = fields.next(0.0f), y = fields.next(0.0f), z = fields.next(0.0f);
         m_faces.add_normal(x, y, z);
         return;
     }
     case LineKind::TextureCoordinate: {
         NumberFields fields(at + 3, end);
-        const float u = fields.next(0.0), v = fields.next(0.0);
+        const float u = fields.next(0.0f), v = fields.next(0.0f);
         m_faces.add_uv(u, v);
         return;
     }

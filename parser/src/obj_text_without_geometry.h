@@ -8,10 +8,11 @@
 // million-triangle OBJ. Here each line is read in one pass, meaning what
 // tinyobjloader makes of it: a face as its parseRawTriple (atoi's quirks
 // kept), a number field as its parseReal (the same fields accepted, the
-// same defaults), valued as the decimal correctly rounded to a double and
-// then to the float tinyobjloader keeps. Its own sum of digits lands one
-// float away at an exact tie between two floats (38 of 200,000 random
-// numbers of up to 17 digits); the value here is the one rounding to even.
+// same defaults), valued as the decimal written rounded once to the float
+// tinyobjloader keeps. Its own sum of digits, rounded to a double and then
+// to a float, lands one float away near a tie (38 of 200,000 random
+// numbers of up to 17 digits), and its arithmetic overflows on fields of
+// hundreds of digits or exponents past 2^31.
 //
 // Order is kept: the text is handed over in runs of lines that end before a
 // line read here, and tinyobjloader asks for more only when it has read the

@@ -6,8 +6,11 @@
 #include "obj_text_without_geometry.h"
 
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -116,10 +119,50 @@ TEST(ObjTextWithoutGeometry, NumbersOfEveryForm) {
     expect_as_tinyobjloader_reads_it(
         "v 1 2 3\nv -1.5 +2.25 .5\nv -.5 5. 1.e2\nv 1e5 -2E-3 +3e+2\nv 0.1 0.2 0.3\n"
         "v 123456789 0.000001 1234.5678\nv 1.5x 2e3y 7abc\nv x 2 3\nv 1\nv\t4\t5\t6\t7\nv . -. +.\n"
-        "v 1e 1e+ 2\nv 1e999 -1e999 1e-999\nv 0e999 -0 0.0\nv inf nan 3\nv 1e99999999999 2 3\n"
+        "v 1e 1e+ 2\nv 1e999 -1e999 1e-999\nv 0e99 -0 0.0\nv inf nan 3\nv 1e99999999999 2 3\n"
         "v 3.14159265358979323846 2.718281828459045 1.4142135623730951\nv -.e5 .e1 0.e400\n"
         "vn 0 0 1\nvn .6 -.8\nvn 1e-40 1e-46 -1e-39\nvt 0.25 0.75\nvt 1\nvt 0.5 0.5 0.5\nvt a b\n"
         "v  \t 7 8 9  \nvn\t1 2 3\nv1 2 3\nvx 1 2 3\n");
+}
+
+// Where tinyobjloader's arithmetic is not the decimal's: a number is the
+// decimal written, rounded once to a float (strtof's value), at a tie, just
+// off one, over hundreds of digits and with exponents past 2^31.
+TEST(ObjTextWithoutGeometry, NumbersAreTheirDecimalsRoundedOnce) {
+    const std::vector<std::string> fields = {"0e999",
+                                             "-0.0e999",
+                                             "-1.913208e+09",
+                                             "5.06470e+08",
+                                             "5.606209653261e-17",
+                                             "-2.039405178067e-08",
+                                             "1" + std::string(309, '0') + "e-309",
+                                             "-0." + std::string(420, '0') + "1e421",
+                                             "1e2147483648",
+                                             "1e-2147483648",
+                                             "-1e2147483647",
+                                             "3.4028235e38",
+                                             "3.4028236e38",
+                                             "1e-45",
+                                             "7e-46",
+                                             "0.1",
+                                             "-123.456"};
+    std::string text;
+    for (const std::string& field : fields) text += "vn " + field + " 0 0\n";
+    test::TempFolder temp;
+    const std::string path = temp.write("model.obj", text);
+    sg::TriangleMesh mesh;
+    ObjFaceReader faces(mesh);
+    ObjTextWithoutGeometry reading(path, text.size(), faces);
+    std::istream in(&reading);
+    std::string warnings, errors;
+    ASSERT_TRUE(tinyobj::LoadObjWithCallback(in, ObjFaceReader::callbacks(), &faces, nullptr, &warnings, &errors));
+    ASSERT_EQ(mesh.normals.size(), fields.size());
+    for (std::size_t k = 0; k < fields.size(); ++k) {
+        const float expected = std::strtof(fields[k].c_str(), nullptr);
+        const float got = float(mesh.normals[k].x);
+        EXPECT_EQ(std::memcmp(&got, &expected, sizeof got), 0)
+            << fields[k].substr(0, 40) << ": " << got << " against strtof's " << expected;
+    }
 }
 
 TEST(ObjTextWithoutGeometry, OnlyFacesOrNothing) {
