@@ -16,6 +16,17 @@ const char* not_text(const std::string& head, bool has_nul) {
     return nullptr;
 }
 
+ObjLineKind obj_line_kind(const char* line, const char* end) {
+    // In tinyobjloader's order: "v ", "vn ", "vt ", "f ".
+    auto blank_or_tab = [](char c) { return c == ' ' || c == '\t'; };
+    const std::ptrdiff_t size = end - line;
+    if (size >= 2 && line[0] == 'v' && blank_or_tab(line[1])) return ObjLineKind::Vertex;
+    if (size >= 3 && line[0] == 'v' && line[1] == 'n' && blank_or_tab(line[2])) return ObjLineKind::Normal;
+    if (size >= 3 && line[0] == 'v' && line[1] == 't' && blank_or_tab(line[2])) return ObjLineKind::TextureCoordinate;
+    if (size >= 2 && line[0] == 'f' && blank_or_tab(line[1])) return ObjLineKind::Face;
+    return ObjLineKind::Other;
+}
+
 void ObjTextCheck::feed(const char* data, std::size_t size) {
     if (size == 0) return;
     if (m_head.size() < 4) m_head.append(data, std::min(4 - m_head.size(), size));
@@ -70,19 +81,13 @@ void ObjTextCheck::scan_line(const char* begin, const char* end) {
     ++m_line;
     const char* i = begin;
     while (i < end && (*i == ' ' || *i == '\t')) ++i;
-    if (end - i < 2) return;
-    auto blank_or_tab = [](char c) { return c == ' ' || c == '\t'; };
-    if (*i == 'v') {
-        // As tinyobjloader tells them apart: "v ", "vn ", "vt ".
-        if (blank_or_tab(i[1])) {
-            ++m_counts.positions;
-        } else if (end - i > 2 && blank_or_tab(i[2])) {
-            if (i[1] == 'n') ++m_counts.normals;
-            if (i[1] == 't') ++m_counts.uvs;
-        }
-        return;
+    switch (obj_line_kind(i, end)) {
+    case ObjLineKind::Vertex: ++m_counts.positions; return;
+    case ObjLineKind::Normal: ++m_counts.normals; return;
+    case ObjLineKind::TextureCoordinate: ++m_counts.uvs; return;
+    case ObjLineKind::Other: return;
+    case ObjLineKind::Face: break;
     }
-    if (!(*i == 'f' && blank_or_tab(i[1]))) return;
     auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
     auto problem = [&](const std::string& why) { m_face_problem = "line " + std::to_string(m_line) + ": " + why; };
     std::size_t vertices = 0;

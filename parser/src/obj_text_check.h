@@ -18,6 +18,11 @@ inline const char* not_text(const std::string& text) {
     return not_text(text.substr(0, 4), text.find('\0') != std::string::npos);
 }
 
+// An OBJ line's kind as tinyobjloader tells them apart, from the line's
+// first character after its blanks to its end.
+enum class ObjLineKind { Vertex, Normal, TextureCoordinate, Face, Other };
+ObjLineKind obj_line_kind(const char* line, const char* end);
+
 class ObjTextCheck {
   public:
     // Vertices one face may have. Faces are triangulated in O(n log n)

@@ -16,17 +16,20 @@ bool blank_or_tab(char c) {
     return c == ' ' || c == '\t';
 }
 
+bool is_digit(char c) {
+    return unsigned(c - '0') < 10u;
+}
+
 // atoi of the text from `at` (C's isspace skipped first, as atoi does),
 // which may run past `end`'s corner into the next: tinyobjloader reads
 // "1/ 2" as vertex 1 with texture coordinate 2, then a corner 2.
 int atoi_like(const char* at, const char* end) {
-    auto digit = [](char c) { return unsigned(c - '0') < 10u; };
     // Most indices: up to nine digits, which cannot overflow.
     {
         unsigned value = 0;
         const char* i = at;
-        for (; i < end && i - at < 9 && digit(*i); ++i) value = value * 10 + unsigned(*i - '0');
-        if (i > at && (i == end || !digit(*i))) return int(value);
+        for (; i < end && i - at < 9 && is_digit(*i); ++i) value = value * 10 + unsigned(*i - '0');
+        if (i > at && (i == end || !is_digit(*i))) return int(value);
     }
     while (at < end && (*at == ' ' || *at == '\t' || *at == '\n' || *at == '\v' || *at == '\f' || *at == '\r')) ++at;
     bool negative = false;
@@ -35,7 +38,7 @@ int atoi_like(const char* at, const char* end) {
     unsigned long magnitude = 0;
     const unsigned long most =
         negative ? 0UL - static_cast<unsigned long>(LONG_MIN) : static_cast<unsigned long>(LONG_MAX);
-    for (; at < end && digit(*at); ++at) {
+    for (; at < end && is_digit(*at); ++at) {
         const unsigned d = unsigned(*at - '0');
         magnitude = magnitude > (most - d) / 10 ? most : magnitude * 10 + d;
     }
@@ -47,10 +50,6 @@ int atoi_like(const char* at, const char* end) {
 const char* past_number(const char* at, const char* end) {
     while (at < end && *at != '/' && *at != ' ' && *at != '\t' && *at != '\r') ++at;
     return at;
-}
-
-bool is_digit(char c) {
-    return unsigned(c - '0') < 10u;
 }
 
 // One number field where tinyobjloader's parseReal (its tryParseDouble)
@@ -208,8 +207,8 @@ ObjTextWithoutGeometry::int_type ObjTextWithoutGeometry::underflow() {
             const char* line = m_text.get() + at;
             const char* const line_end = m_text.get() + end;
             while (line < line_end && blank_or_tab(*line)) ++line;
-            const LineKind kind = kind_of(line, line_end);
-            if (kind != LineKind::Other) {
+            const ObjLineKind kind = obj_line_kind(line, line_end);
+            if (kind != ObjLineKind::Other) {
                 if (run_end > m_start) {
                     // The lines before it are read first.
                     m_line_waits = true;
@@ -238,38 +237,28 @@ ObjTextWithoutGeometry::int_type ObjTextWithoutGeometry::underflow() {
     }
 }
 
-ObjTextWithoutGeometry::LineKind ObjTextWithoutGeometry::kind_of(const char* line, const char* end) {
-    // As tinyobjloader tells them apart, in its order.
-    const std::ptrdiff_t size = end - line;
-    if (size >= 2 && line[0] == 'v' && blank_or_tab(line[1])) return LineKind::Vertex;
-    if (size >= 3 && line[0] == 'v' && line[1] == 'n' && blank_or_tab(line[2])) return LineKind::Normal;
-    if (size >= 3 && line[0] == 'v' && line[1] == 't' && blank_or_tab(line[2])) return LineKind::TextureCoordinate;
-    if (size >= 2 && line[0] == 'f' && blank_or_tab(line[1])) return LineKind::Face;
-    return LineKind::Other;
-}
-
-void ObjTextWithoutGeometry::read_line(LineKind kind, const char* at, const char* end) {
+void ObjTextWithoutGeometry::read_line(ObjLineKind kind, const char* at, const char* end) {
     switch (kind) {
-    case LineKind::Vertex: {
+    case ObjLineKind::Vertex: {
         NumberFields fields(at + 2, end);
         const float x = fields.next(0.0f), y = fields.next(0.0f), z = fields.next(0.0f);
         m_faces.add_vertex(x, y, z);  // a fourth number (w) is read by nobody
         return;
     }
-    case LineKind::Normal: {
+    case ObjLineKind::Normal: {
         NumberFields fields(at + 3, end);
         const float x = fields.next(0.0f), y = fields.next(0.0f), z = fields.next(0.0f);
         m_faces.add_normal(x, y, z);
         return;
     }
-    case LineKind::TextureCoordinate: {
+    case ObjLineKind::TextureCoordinate: {
         NumberFields fields(at + 3, end);
         const float u = fields.next(0.0f), v = fields.next(0.0f);
         m_faces.add_uv(u, v);
         return;
     }
-    case LineKind::Face: read_face(at, end); return;
-    case LineKind::Other: return;
+    case ObjLineKind::Face: read_face(at, end); return;
+    case ObjLineKind::Other: return;
     }
 }
 

@@ -31,6 +31,7 @@
 #include <tiny_obj_loader.h>
 
 #include "obj_faces.h"
+#include "obj_text_check.h"
 
 namespace lancer::parse {
 
@@ -54,10 +55,8 @@ class ObjTextWithoutGeometry : public std::streambuf {
     // starts (a lone \r it ends with is made a \n). False when its end is
     // not read yet.
     bool line_at(std::size_t at, std::size_t& end, std::size_t& next);
-    enum class LineKind { Vertex, Normal, TextureCoordinate, Face, Other };
-    static LineKind kind_of(const char* line, const char* end);
     // A line of a kind read here, from its keyword.
-    void read_line(LineKind kind, const char* begin, const char* end);
+    void read_line(ObjLineKind kind, const char* begin, const char* end);
     void read_face(const char* begin, const char* end);
 
     std::ifstream m_file;

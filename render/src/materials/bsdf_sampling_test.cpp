@@ -364,33 +364,28 @@ TEST(BsdfSampling, PovPeakHighlightsCanReflectMoreThanTheyReceive) {
 
 // ------------------------------------------------------------------ Sobol
 
+// Points 0 .. n-1 of a pixel put one value in each of n strata of every
+// tabulated dimension.
+void expect_every_dimension_stratified(std::uint64_t seed, int n, int pixel_x, int pixel_y) {
+    constexpr int kDims = 53;
+    auto sampler = make_sobol_sampler(seed);
+    std::vector<std::set<int>> strata(kDims);
+    for (int i = 0; i < n; ++i) {
+        sampler->start_sample(pixel_x, pixel_y, std::uint32_t(i));
+        for (int d = 0; d < kDims; ++d) strata[d].insert(int(sampler->next_1d() * float(n)));
+    }
+    for (int d = 0; d < kDims; ++d) EXPECT_EQ(strata[d].size(), std::size_t(n)) << "dimension " << d;
+}
+
 TEST(SobolSampler, EveryDimensionIsStratified) {
-    auto sampler = make_sobol_sampler(42);
-    constexpr int kN = 256, kDims = 53;
-    std::vector<std::vector<float>> values(kDims);
-    for (int i = 0; i < kN; ++i) {
-        sampler->start_sample(3, 7, i);
-        for (int d = 0; d < kDims; ++d) values[d].push_back(sampler->next_1d());
-    }
-    for (int d = 0; d < kDims; ++d) {
-        std::set<int> strata;
-        for (float v : values[d]) strata.insert(int(v * kN));
-        EXPECT_EQ(strata.size(), std::size_t(kN)) << "dimension " << d;
-    }
+    expect_every_dimension_stratified(42, 256, 3, 7);
 }
 
 // The first 256 points of each dimension come from a table, the rest are
 // built from the direction numbers: 1024 points stratify only if both
 // give the same sequence.
 TEST(SobolSampler, StratifiedAcrossTheTabulatedPoints) {
-    auto sampler = make_sobol_sampler(5);
-    constexpr int kN = 1024, kDims = 53;
-    std::vector<std::set<int>> strata(kDims);
-    for (int i = 0; i < kN; ++i) {
-        sampler->start_sample(2, 9, i);
-        for (int d = 0; d < kDims; ++d) strata[d].insert(int(sampler->next_1d() * kN));
-    }
-    for (int d = 0; d < kDims; ++d) EXPECT_EQ(strata[d].size(), std::size_t(kN)) << "dimension " << d;
+    expect_every_dimension_stratified(5, 1024, 2, 9);
 }
 
 TEST(SobolSampler, FirstPairIsA02Net) {
