@@ -127,7 +127,10 @@ void ObjFaceReader::add_face(const tinyobj::index_t* indices, int count) {
         return;
     }
     // Room for its triangles until its vertices are read.
+    // Its corners are set too: a mesh whose reading fails keeps these slots,
+    // and whoever looks at it must not read indeterminate values.
     sg::TriangleMesh::Face empty;
+    empty.position[0] = empty.position[1] = empty.position[2] = -1;
     empty.material = kEmptySlot;
     m_waiting.push_back({m_mesh.faces.size(), m_corners, m_material, ordinal, label()});
     m_mesh.faces.insert(m_mesh.faces.end(), std::size_t(count - 2), empty);
