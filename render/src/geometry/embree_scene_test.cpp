@@ -4,8 +4,10 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
+#include "geometry/embree_scene.h"
 #include "lancer/host/scene_compiler.h"
 #include "lancer/render_scene.h"
 #include "lancer/scene_error.h"
@@ -479,6 +481,37 @@ TEST(EmbreeScene, OptionsBackgroundAndDefaultCamera) {
     Hit hit;
     EXPECT_FALSE(scene->intersect(make_ray(Vec3(0), Vec3(0, 0, 1)), hit));
     EXPECT_FALSE(scene->occluded(make_ray(Vec3(0), Vec3(0, 0, 1))));
+}
+
+// Boxes in the BVH are Embree triangles, whose distances round apart from
+// the box's own; a ray inside a box standing on a plane meets its bottom
+// and the floor at one distance, and must see the floor (as with the
+// analytic box, tests/reference/pov/glass_on_floor.pov), not the bottom
+// face by the rounding of Embree's distance.
+TEST(EmbreeScene, FromInsideABoxStandingOnAPlaneTheFloorIsSeen) {
+    std::string text =
+        "plane { y, 0 }\n"
+        "box { <-0.6, 0, -0.6>, <0.6, 1.2, 0.6> rotate y*-20 translate <-1.6, 0, 0.1> }\n"
+        "box { <-0.55, 0, -0.5>, <0.55, 1.5, 0.5> rotate y*30 scale 1.3 translate <0, 0, -0.1> }\n"
+        "box { <1.0, 0, -0.4>, <2.2, 1.6, 0.8> }\n";
+    for (int i = 0; i < 8; ++i) text += "sphere { <" + std::to_string(50 + 3 * i) + ", 10, 0>, 1 }\n";
+    const auto scene = compile_pov_text(text);
+    ASSERT_FALSE(dynamic_cast<const embree::EmbreeScene&>(*scene).traces_shape_list());
+    const Vec3 centres[] = {Vec3(1.6f, 0.7f, 0.2f), Vec3(0.0f, 0.7f, -0.1f), Vec3(-1.6f, 0.7f, 0.1f)};
+    std::mt19937 random(5);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    int floor = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Vec3 origin = centres[i % 3] + Vec3(0.2f * unit(random), 0.3f * unit(random), 0.2f * unit(random));
+        // Steeply down, so that the bottom is met before any side.
+        const Vec3 direction = glm::normalize(Vec3(0.15f * unit(random), -1.0f, 0.15f * unit(random)));
+        Hit hit;
+        ASSERT_TRUE(scene->intersect(make_ray(origin, direction), hit)) << i;
+        EXPECT_EQ(hit.position.y, 0.0f) << i;
+        EXPECT_GT(hit.geometric_normal.y, 0.5f) << "the bottom face, not the floor: ray " << i;
+        floor += hit.geometric_normal.y > 0.5f;
+    }
+    EXPECT_EQ(floor, 3000);
 }
 
 }  // namespace
