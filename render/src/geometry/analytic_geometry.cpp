@@ -142,9 +142,9 @@ void record_crossings(const SceneData& data, std::uint32_t self, const DVec3& o,
     }
 }
 
-// During occluded(): rejects hits on meshes (and boxes traced as triangles) of
-// no_shadow objects, and for shadow_blockers() those on ones that may let
-// light through (noting them), so that only an opaque one ends the query.
+// During occluded(): rejects hits on meshes of no_shadow objects, and for
+// shadow_blockers() those on meshes that may let light through (noting
+// them), so that only an opaque one ends the query.
 void shadow_filter(const RTCFilterFunctionNArguments* args) {
     auto* context = reinterpret_cast<ShadowContext*>(args->context);
     for (unsigned i = 0; i < args->N; ++i) {
@@ -153,11 +153,8 @@ void shadow_filter(const RTCFilterFunctionNArguments* args) {
         if (top == kInvalidId) top = RTCHitN_geomID(args->hit, args->N, i);
         if (top >= context->geometries->size()) continue;
         const GeometryEntry& entry = (*context->geometries)[top];
-        if (entry.group && !entry.group->box_triangles) continue;
-        const std::uint32_t index =
-            entry.group ? group_primitive(*entry.group, RTCHitN_primID(args->hit, args->N, i), 0.0f).instance
-                        : entry.instance;
-        const Instance& instance = context->data->instances[index];
+        if (entry.group) continue;
+        const Instance& instance = context->data->instances[entry.instance];
         if (!instance.casts_shadow) {
             args->valid[i] = 0;
         } else if (context->classify && !instance.blocks_all_light) {

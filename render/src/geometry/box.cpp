@@ -52,14 +52,6 @@ bool intersect_box(const AnalyticBox& b, const DVec3& o, const DVec3& d, double 
     return false;
 }
 
-bool box_face_distance(const AnalyticBox& b, const DVec3& o, const DVec3& d, int face, double& t) {
-    const int axis = face / 2;
-    if (d[axis] == 0.0) return false;
-    const double inverse = 1.0 / d[axis];
-    t = ((face % 2 == 1 ? b.upper[axis] : b.lower[axis]) - o[axis]) * inverse;
-    return true;
-}
-
 namespace {
 
 // POV's box (u,v): the six faces laid out as an unfolded cube, four side

@@ -65,63 +65,6 @@ RTCGeometry EmbreeScene::make_triangles(const MeshData& mesh, const std::vector<
     return geometry;
 }
 
-AnalyticGroup* EmbreeScene::take_box_triangles(std::map<ShapeKind, AnalyticGroup*>& groups) {
-    const auto found = groups.find(ShapeKind::Box);
-    if (found == groups.end()) return nullptr;
-    AnalyticGroup& boxes = *found->second;
-    m_groups.push_back(std::make_unique<AnalyticGroup>());
-    AnalyticGroup& triangles = *m_groups.back();
-    triangles.data = m_data.get();
-    triangles.kind = ShapeKind::Box;
-    triangles.box_triangles = true;
-    // A box flat along an axis stays analytic: its two faces there meet a
-    // ray at one distance, and only the slab test knows which it enters.
-    const auto moves_to_triangles = [&](std::uint32_t index) {
-        const AnalyticBox& box = m_data->instances[index].box;
-        const bool solid = box.upper.x > box.lower.x && box.upper.y > box.lower.y && box.upper.z > box.lower.z;
-        if (solid) triangles.instances.push_back(index);
-        return solid;
-    };
-    boxes.instances.erase(std::remove_if(boxes.instances.begin(), boxes.instances.end(), moves_to_triangles),
-                          boxes.instances.end());
-    if (boxes.instances.empty()) groups.erase(found);
-    return triangles.instances.empty() ? nullptr : &triangles;
-}
-
-RTCGeometry EmbreeScene::make_box_triangles(const AnalyticGroup& boxes) {
-    const std::size_t count = boxes.instances.size();
-    RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    // Embree's own buffers: it pads the vertices for its SIMD loads.
-    auto* vertices = static_cast<float*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 8 * count));
-    auto* triangles = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), 12 * count));
-    for (std::size_t k = 0; k < count; ++k) {
-        const Instance& instance = m_data->instances[boxes.instances[k]];
-        const AnalyticBox& box = instance.box;
-        // Corner c has the upper x when bit 0 is set, y bit 1, z bit 2.
-        for (int c = 0; c < 8; ++c) {
-            const DVec3 corner((c & 1) ? box.upper.x : box.lower.x, (c & 2) ? box.upper.y : box.lower.y,
-                               (c & 4) ? box.upper.z : box.lower.z);
-            const DVec3 world = instance.placement.point_to_world(corner);
-            for (int i = 0; i < 3; ++i) vertices[3 * (8 * k + std::size_t(c)) + std::size_t(i)] = float(world[i]);
-        }
-        // Face f (box_surface's numbering) lies on the lower or upper side
-        // of axis f / 2: its corners in order around it.
-        for (int face = 0; face < 6; ++face) {
-            const int axis = face / 2, across = 1 << ((axis + 1) % 3), along = 1 << ((axis + 2) % 3);
-            const int side = face % 2 == 1 ? 1 << axis : 0;
-            const int around[4] = {side, side | across, side | across | along, side | along};
-            const int corners[6] = {around[0], around[1], around[2], around[0], around[2], around[3]};
-            for (int i = 0; i < 6; ++i)
-                triangles[3 * (12 * k + 2 * std::size_t(face)) + std::size_t(i)] =
-                    std::uint32_t(8 * k + std::size_t(corners[i]));
-        }
-    }
-    rtcCommitGeometry(geometry);
-    return geometry;
-}
-
 void EmbreeScene::build() {
     SceneData& data = *m_data;
     for (Instance& instance : data.instances) {
@@ -132,6 +75,16 @@ void EmbreeScene::build() {
         m_has_see_through_caster = true;
         if (instance.kind == ShapeKind::Mesh) m_has_see_through_mesh = true;
     }
+    m_has_no_shadow_mesh = std::any_of(data.instances.begin(), data.instances.end(),
+                                       [](const Instance& i) { return i.kind == ShapeKind::Mesh && !i.casts_shadow; });
+    // The filter of shadow queries (shadow_filter), in every scene a mesh
+    // may be traced in: an instanced mesh's own scene needs the flag too.
+    const RTCSceneFlags scene_flags = RTCSceneFlags(
+        kSceneFlags | (m_has_no_shadow_mesh || m_has_see_through_mesh ? RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION : 0));
+    m_scene = rtcNewScene(m_device);
+    rtcSetSceneFlags(m_scene, scene_flags);
+    rtcSetSceneBuildQuality(m_scene, kBuildQuality);
+
     // Analytic kinds present in the scene, one user geometry each.
     std::map<ShapeKind, AnalyticGroup*> groups;
     for (std::uint32_t index = 0; index < data.instances.size(); ++index) {
@@ -167,27 +120,6 @@ void EmbreeScene::build() {
     for (const auto& [kind, group] : groups) bounded_shapes += group->instances.size();
     m_has_meshes = has_meshes;
     m_traces_list = !has_meshes && bounded_shapes <= ShapeList::kMostShapes;
-    AnalyticGroup* box_triangles = m_traces_list ? nullptr : take_box_triangles(groups);
-
-    // Whether shadow queries need shadow_filter: an object Embree
-    // intersects itself that casts no shadow, or may let light through.
-    m_has_no_shadow_mesh = std::any_of(data.instances.begin(), data.instances.end(),
-                                       [](const Instance& i) { return i.kind == ShapeKind::Mesh && !i.casts_shadow; });
-    if (box_triangles)
-        for (const std::uint32_t index : box_triangles->instances) {
-            const Instance& box = data.instances[index];
-            m_has_no_shadow_mesh = m_has_no_shadow_mesh || !box.casts_shadow;
-            m_has_see_through_mesh = m_has_see_through_mesh || (box.casts_shadow && !box.blocks_all_light);
-        }
-    // The filter of shadow queries (shadow_filter), in every scene a mesh
-    // may be traced in: an instanced mesh's own scene needs the flag too.
-    const RTCSceneFlags scene_flags = RTCSceneFlags(
-        kSceneFlags | (m_has_no_shadow_mesh || m_has_see_through_mesh ? RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION : 0));
-    m_scene = rtcNewScene(m_device);
-    rtcSetSceneFlags(m_scene, scene_flags);
-    rtcSetSceneBuildQuality(m_scene, kBuildQuality);
-    if (box_triangles) attach(make_box_triangles(*box_triangles), GeometryEntry{box_triangles, 0});
-
     for (auto& [kind, group] : groups) {
         RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(geometry, unsigned(group->instances.size()));

@@ -6,9 +6,7 @@
 //
 // Geometry IDs index our own tables: analytic shapes (spheres, boxes,
 // rectangle lights) are one user geometry per kind whose primitive IDs index
-// the instance table, except that boxes in a BVH scene are one geometry of
-// Embree's own triangles, twelve a box (AnalyticGroup::box_triangles); a mesh
-// used once is a world-space triangle geometry;
+// the instance table; a mesh used once is a world-space triangle geometry;
 // a mesh used several times is built once in its own Embree scene and
 // instanced. Unbounded shapes (planes, quadrics, CSG trees without a finite
 // box) live outside the BVH and are tested analytically after it.
@@ -49,23 +47,7 @@ struct AnalyticGroup {
     const SceneData* data = nullptr;
     ShapeKind kind = ShapeKind::Sphere;
     std::vector<std::uint32_t> instances;
-    // Boxes as Embree triangles: primitives 12k + 2f and 12k + 2f + 1 are
-    // face f of instances[k] (box_surface's numbering). Embree's own
-    // triangle test costs less than a call of analytic_intersect; the hit
-    // is then completed on the box itself.
-    bool box_triangles = false;
 };
-
-// The instance and face an Embree answer on a group's primitive names (a
-// user geometry's intersect callback reports the face as u).
-struct GroupPrimitive {
-    std::uint32_t instance;
-    int face;
-};
-inline GroupPrimitive group_primitive(const AnalyticGroup& group, std::uint32_t primitive, float u) {
-    if (group.box_triangles) return {group.instances[primitive / 12], int(primitive % 12 / 2)};
-    return {group.instances[primitive], int(u)};
-}
 
 // What an Embree geometry id of the top-level scene stands for.
 struct GeometryEntry {
@@ -213,10 +195,6 @@ class EmbreeScene final : public RenderScene {
     bool nearest_visible_hit(const Ray& ray, Hit& hit) const;
     void build();
     RTCGeometry make_triangles(const MeshData& mesh, const std::vector<float>& positions);
-    // Moves the boxes of `groups` that Embree can trace as triangles (all but
-    // flat ones) to a group of their own, returned (null if none).
-    AnalyticGroup* take_box_triangles(std::map<ShapeKind, AnalyticGroup*>& groups);
-    RTCGeometry make_box_triangles(const AnalyticGroup& boxes);
     // intersect_batch's stages for coherent rays (see there); packets of kPacketLanes rays.
     static constexpr int kPacketLanes = kMaxLanes;
     void trace_packet(const Ray* rays, int lanes, PacketAnswers& answers) const;
@@ -228,8 +206,6 @@ class EmbreeScene final : public RenderScene {
     bool complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit, bool with_unbounded = true) const;
     // The Hit on what Embree found (a hit, not a miss).
     bool complete_bvh_hit(const Ray& ray, const EmbreeHit& found, Hit& hit) const;
-    // `found`, at the box's own distance when it is on a box traced as triangles.
-    EmbreeHit on_box_face(const Ray& ray, const EmbreeHit& found) const;
     // The mesh instance Embree's answer names, or null (analytic or no hit).
     const Instance* mesh_instance_of(const EmbreeHit& found) const;
     void complete_analytic_hit(const Instance& instance, const Ray& ray, float t, int face, Hit& hit) const;
@@ -254,11 +230,9 @@ class EmbreeScene final : public RenderScene {
     bool m_has_meshes = false;  // without, camera packets prefetch no triangles
     std::string m_device_error;
     InteriorStack m_camera_interiors;
-    // Of the objects Embree intersects itself (meshes, boxes as triangles),
-    // whether any casts no shadow; shadow queries then need shadow_filter.
     bool m_has_no_shadow_mesh = false;
     // Shadow casters that may let light through somewhere (not
-    // Instance::blocks_all_light): any, and any Embree intersects itself.
+    // Instance::blocks_all_light): any, and any mesh.
     bool m_has_see_through_caster = false;
     bool m_has_see_through_mesh = false;
     // By top-level geometry id: plain world meshes (see PlainTriangles).

@@ -483,11 +483,11 @@ TEST(EmbreeScene, OptionsBackgroundAndDefaultCamera) {
     EXPECT_FALSE(scene->occluded(make_ray(Vec3(0), Vec3(0, 0, 1))));
 }
 
-// Boxes in the BVH are Embree triangles, whose distances round apart from
-// the box's own; a ray inside a box standing on a plane meets its bottom
-// and the floor at one distance, and must see the floor (as with the
-// analytic box, tests/reference/pov/glass_on_floor.pov), not the bottom
-// face by the rounding of Embree's distance.
+// A ray inside a box standing on a plane meets its bottom and the floor at
+// one distance, and must see the floor, as POV-Ray does
+// (tests/reference/pov/glass_on_floor.pov, a scene of a few shapes, traced
+// from the shape list): here among enough shapes to be traced through the
+// BVH, with turned and scaled boxes.
 TEST(EmbreeScene, FromInsideABoxStandingOnAPlaneTheFloorIsSeen) {
     std::string text =
         "plane { y, 0 }\n"

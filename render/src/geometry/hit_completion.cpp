@@ -305,27 +305,7 @@ void EmbreeScene::complete_instance_hit(std::uint32_t index, std::uint32_t leaf,
     hit.emitter = emitter_of(surface, hit.material);
 }
 
-EmbreeHit EmbreeScene::on_box_face(const Ray& ray, const EmbreeHit& found) const {
-    if (found.geometry == kInvalidId) return found;
-    const GeometryEntry& entry = m_geometries[found.instance != kInvalidId ? found.instance : found.geometry];
-    if (!entry.group || !entry.group->box_triangles) return found;
-    // Embree's distance to its triangle, through the box's corners rounded
-    // to floats, is not quite the face's: the hit takes the distance the
-    // box's own test gives, before it is weighed against the planes (a box
-    // standing on one meets it exactly where its bottom is).
-    const GroupPrimitive named = group_primitive(*entry.group, found.primitive, found.u);
-    DVec3 o, d;
-    const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
-    const float dir[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
-    ray_to_object(m_data->instances[named.instance], org, dir, o, d);
-    EmbreeHit on_face = found;
-    if (double t; box_face_distance(m_data->instances[named.instance].box, o, d, named.face, t))
-        on_face.tfar = float(t);
-    return on_face;
-}
-
-bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& embree_found, Hit& hit, bool with_unbounded) const {
-    const EmbreeHit found = on_box_face(ray, embree_found);
+bool EmbreeScene::complete_hit(const Ray& ray, const EmbreeHit& found, Hit& hit, bool with_unbounded) const {
     if (!with_unbounded) return found.geometry != kInvalidId && complete_bvh_hit(ray, found, hit);
     // Unbounded shapes are outside the BVH: test them against the nearest so far.
     std::uint32_t unbounded_hit = kInvalidId, unbounded_leaf = 0;
@@ -356,22 +336,8 @@ bool EmbreeScene::complete_bvh_hit(const Ray& ray, const EmbreeHit& found, Hit& 
     const unsigned top = found.instance != kInvalidId ? found.instance : found.geometry;
     const GeometryEntry& entry = m_geometries[top];
     if (entry.group) {
-        const GroupPrimitive named = group_primitive(*entry.group, found.primitive, found.u);
-        const std::uint32_t index = named.instance;
-        if (!entry.group->box_triangles) {
-            complete_instance_hit(index, index - std::uint32_t(found.v), ray, found.tfar, named.face, hit);
-            return true;
-        }
-        complete_instance_hit(index, index, ray, found.tfar, named.face, hit);
-        const Instance& box = m_data->instances[index];
-        // The point lies on the box's face; Embree's triangles, through its
-        // corners rounded to floats, may lie up to a rounding of the
-        // largest corner coordinate off it (none when the box is not
-        // transformed: the face's coordinate is then the corners' float).
-        if (!box.placement.identity) {
-            const Vec3 reach = glm::max(glm::abs(box.bounds_lower), glm::abs(box.bounds_upper));
-            hit.position_error += Vec3(2.0f * FLT_EPSILON * std::max({reach.x, reach.y, reach.z}));
-        }
+        const std::uint32_t index = entry.group->instances[found.primitive];
+        complete_instance_hit(index, index - std::uint32_t(found.v), ray, found.tfar, int(found.u), hit);
         return true;
     }
     hit = Hit{};

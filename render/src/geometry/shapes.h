@@ -72,10 +72,6 @@ struct AnalyticRectangle {
 bool intersect_sphere(const AnalyticSphere& s, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t);
 bool intersect_box(const AnalyticBox& b, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t,
                    int& face);
-// Where o + t d meets the plane of box face `face`, computed as
-// intersect_box computes it (so the same to the bit); false when the ray
-// runs along that plane.
-bool box_face_distance(const AnalyticBox& b, const DVec3& o, const DVec3& d, int face, double& t);
 bool intersect_plane(const AnalyticPlane& p, const DVec3& o, const DVec3& d, double t_min, double t_max, double& t);
 // intersect_plane on the plane dot(p, normal) = distance.
 inline bool cross_plane(const DVec3& normal, double distance, const DVec3& o, const DVec3& d, double t_min,
