@@ -126,9 +126,8 @@ void ObjFaceReader::add_face(const tinyobj::index_t* indices, int count) {
         add_polygon(m_corners, m_material, label(), ordinal, m_mesh.faces.size(), m_mesh.faces.size());
         return;
     }
-    // Room for its triangles until its vertices are read.
-    // Its corners are set too: a mesh whose reading fails keeps these slots,
-    // and whoever looks at it must not read indeterminate values.
+    // Room for its triangles until its vertices are read. A reading that
+    // fails leaves these slots in the mesh: their corners are set too.
     sg::TriangleMesh::Face empty;
     empty.position[0] = empty.position[1] = empty.position[2] = -1;
     empty.material = kEmptySlot;

@@ -500,7 +500,6 @@ TEST(EmbreeScene, FromInsideABoxStandingOnAPlaneTheFloorIsSeen) {
     const Vec3 centres[] = {Vec3(1.6f, 0.7f, 0.2f), Vec3(0.0f, 0.7f, -0.1f), Vec3(-1.6f, 0.7f, 0.1f)};
     std::mt19937 random(5);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
-    int floor = 0;
     for (int i = 0; i < 3000; ++i) {
         const Vec3 origin = centres[i % 3] + Vec3(0.2f * unit(random), 0.3f * unit(random), 0.2f * unit(random));
         // Steeply down, so that the bottom is met before any side.
@@ -508,10 +507,8 @@ TEST(EmbreeScene, FromInsideABoxStandingOnAPlaneTheFloorIsSeen) {
         Hit hit;
         ASSERT_TRUE(scene->intersect(make_ray(origin, direction), hit)) << i;
         EXPECT_EQ(hit.position.y, 0.0f) << i;
-        EXPECT_GT(hit.geometric_normal.y, 0.5f) << "the bottom face, not the floor: ray " << i;
-        floor += hit.geometric_normal.y > 0.5f;
+        EXPECT_GT(hit.geometric_normal.y, 0.5f) << "the box's bottom face, not the floor: ray " << i;
     }
-    EXPECT_EQ(floor, 3000);
 }
 
 }  // namespace
